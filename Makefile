@@ -1,0 +1,47 @@
+# The course's commands.  `make lab` and `make test` set up a fresh machine by themselves.
+SHELL := /bin/bash
+PYTHON ?= python3
+VENV := .venv
+BIN := $(CURDIR)/$(VENV)/bin
+STAMP := $(VENV)/.installed
+ARGS ?=
+# Every command below sees the virtual environment first, so the notebooks' "python3" kernel
+# (whose kernel.json runs `python`) is the environment's Python.
+export PATH := $(BIN):$(PATH)
+export PYTHONHASHSEED := 0
+
+.PHONY: lab test outputs slides bench venv clean
+
+$(STAMP): pyproject.toml
+	@bash scripts/make_venv.sh "$(PYTHON)" "$(VENV)"
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e '.[lab,test]'
+	@touch $(STAMP)
+
+venv: $(STAMP)
+
+## make lab: install everything into .venv and open JupyterLab on the course map.
+lab: $(STAMP)
+	$(BIN)/jupyter lab --ServerApp.root_dir="$(CURDIR)" $(ARGS) course/index.ipynb
+
+## make test: unit, property, doctest, notebook (nbval), widget-sweep and browser tests.
+test: $(STAMP)
+	@bash scripts/setup_browser.sh
+	@start=$$(date +%s); status=0; \
+	$(BIN)/python -m pytest -rs --nbval-lax tests goldman_lib course $(ARGS) || status=$$?; \
+	echo "make test: total wall time $$(( $$(date +%s) - start )) s"; exit $$status
+
+## make outputs: re-execute every notebook from a clean kernel and store its outputs (the nbval baseline).
+outputs: $(STAMP)
+	$(BIN)/python scripts/execute_notebooks.py course/*.ipynb
+
+## make slides: an offline reveal.js deck per chapter in build/slides/.
+slides: $(STAMP)
+	$(BIN)/python scripts/build_slides.py
+
+## make bench: speed against reference libraries, printed as ratios.
+bench: $(STAMP)
+	$(BIN)/python -m benchmarks
+
+clean:
+	rm -rf build .pytest_cache tests/browser/screenshots

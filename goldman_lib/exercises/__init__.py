@@ -1,0 +1,137 @@
+"""Exercise checkers: every exercise of every chapter is checked by a function that says right or
+wrong *and why*.
+
+A checker takes the learner's answer and returns a :class:`Result`.  A ``Result`` renders in a
+notebook as a green or red box with the reason ("your point is 0.03 from the curve at t=0.4"), and
+as one line of plain text everywhere else, so nbval compares it.  The chapter checkers live beside
+this module, one module a chapter (``goldman_lib.exercises.ch01``, ``...ch24``); they are built from
+the small helpers here so that every chapter's feedback reads alike.
+
+A learner who has not answered yet (the answer is ``None`` or ``...``) is told so, not failed:
+
+>>> check_number(None, 2.0, what="the perimeter")
+Not answered yet: replace None with the perimeter.
+>>> check_number(6.0, 6.0, what="the perimeter")
+Correct: the perimeter is 6.
+>>> check_number(5.5, 6.0, what="the perimeter", hint="a hexagon has six sides")
+Not yet: the perimeter should be 6, you gave 5.5 (off by 0.5). Hint: a hexagon has six sides.
+"""
+
+from __future__ import annotations
+
+import html
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Result", "correct", "wrong", "unanswered", "is_unanswered", "check_number",
+           "check_points", "fmt"]
+
+
+def fmt(x, digits: int = 4) -> str:
+    """Format a number or small array compactly and deterministically for feedback messages.
+
+    >>> fmt(0.30000000000000004), fmt(2.0), fmt([1, 0.5])
+    ('0.3', '2', '(1, 0.5)')
+    """
+    arr = np.asarray(x, dtype=float)
+    if arr.ndim == 0:
+        v = float(arr)
+        if v == 0:
+            v = 0.0
+        return f"{v:.{digits}g}"
+    return "(" + ", ".join(fmt(v, digits) for v in arr.ravel()) + ")"
+
+
+@dataclass(frozen=True)
+class Result:
+    """The verdict of a checker: ``correct`` (bool), ``message`` (why), ``answered`` (bool).
+
+    ``bool(result)`` is ``result.correct``.  Renders as a coloured box in JupyterLab and as one
+    line of text (``Correct: ...`` / ``Not yet: ...``) in plain-text outputs.
+    """
+
+    correct: bool
+    message: str
+    answered: bool = True
+
+    def __bool__(self) -> bool:
+        return self.correct
+
+    @property
+    def verdict(self) -> str:
+        if not self.answered:
+            return "Not answered yet"
+        return "Correct" if self.correct else "Not yet"
+
+    def __repr__(self) -> str:
+        return f"{self.verdict}: {self.message}"
+
+    def _repr_html_(self) -> str:
+        colour, mark = (("#1b7f3b", "&#10004;") if self.correct else
+                        ("#8a6d00", "&#9998;") if not self.answered else ("#b3261e", "&#10008;"))
+        return (f'<div style="border-left:4px solid {colour};padding:4px 10px;margin:4px 0;">'
+                f'<b style="color:{colour}">{mark} {self.verdict}:</b> {html.escape(self.message)}</div>')
+
+
+def correct(message: str) -> Result:
+    """A right answer, with what makes it right."""
+    return Result(True, message)
+
+
+def wrong(message: str) -> Result:
+    """A wrong answer, with what is wrong about it."""
+    return Result(False, message)
+
+
+def unanswered(what: str) -> Result:
+    """The learner has not replaced the ``None`` (or ``...``) in the exercise cell yet."""
+    return Result(False, f"replace None with {what}.", answered=False)
+
+
+def is_unanswered(answer) -> bool:
+    """True for the stand-ins an exercise cell starts with: ``None`` and ``...``."""
+    return answer is None or answer is Ellipsis
+
+
+def check_number(answer, expected: float, *, what: str, tol: float = 1e-6, hint: str | None = None) -> Result:
+    """Check a single number against ``expected`` within ``tol`` (absolute)."""
+    if is_unanswered(answer):
+        return unanswered(what)
+    try:
+        value = float(answer)
+    except (TypeError, ValueError):
+        return wrong(f"{what} should be a number; you gave {answer!r}.")
+    if abs(value - expected) <= tol:
+        return correct(f"{what} is {fmt(expected)}.")
+    msg = f"{what} should be {fmt(expected)}, you gave {fmt(value)} (off by {fmt(abs(value - expected), 2)})."
+    return wrong(msg + (f" Hint: {hint}." if hint else ""))
+
+
+def check_points(answer, expected, *, what: str, tol: float = 1e-6, hint: str | None = None) -> Result:
+    """Check an array of points against ``expected`` (same shape) within ``tol`` per coordinate,
+    naming the first point that is off.
+
+    >>> check_points([[0, 0], [1, 1.1]], [[0, 0], [1, 1]], what="the control points")
+    Not yet: point 1 of the control points should be (1, 1), you gave (1, 1.1) (0.1 away).
+    """
+    if is_unanswered(answer):
+        return unanswered(what)
+    try:
+        got = np.asarray(answer, dtype=float)
+    except (TypeError, ValueError):
+        return wrong(f"{what} should be an array of numbers; you gave {answer!r}.")
+    exp = np.asarray(expected, dtype=float)
+    if got.shape != exp.shape:
+        return wrong(f"{what} should have shape {exp.shape}; yours has shape {got.shape}.")
+    if not np.all(np.isfinite(got)):
+        return wrong(f"{what} contain a NaN or infinite value.")
+    err = np.abs(got - exp).reshape(-1, exp.shape[-1]) if exp.ndim else np.abs(got - exp).reshape(1, 1)
+    bad = np.flatnonzero(err.max(axis=1) > tol)
+    if bad.size == 0:
+        return correct(f"{what} match.")
+    k = int(bad[0])
+    g, e = got.reshape(err.shape)[k], exp.reshape(err.shape)[k]
+    msg = (f"point {k} of {what} should be {fmt(e)}, you gave {fmt(g)} "
+           f"({fmt(np.linalg.norm(g - e), 2)} away).")
+    return wrong(msg + (f" Hint: {hint}." if hint else ""))

@@ -1,0 +1,156 @@
+"""Checks on the arguments of the public functions, with messages that name the parameter and
+the rule it breaks.
+
+Every public function of ``goldman_lib`` validates at its boundary through these helpers, so a
+learner who passes the wrong thing reads, for instance, ``t must be finite; t[3] is nan`` rather
+than a NaN in a plot or a broadcasting error from deep inside numpy.
+
+>>> as_points([[0, 0], [1, 2]], "ctrl").shape
+(2, 2)
+>>> as_points([[0, 0], [1, float("nan")]], "ctrl")
+Traceback (most recent call last):
+...
+ValueError: ctrl must be finite; ctrl[1, 1] is nan
+"""
+
+from __future__ import annotations
+
+import numbers
+
+import numpy as np
+
+__all__ = ["as_points", "as_parameter", "as_int", "as_float", "check_finite"]
+
+
+def _index(arr, flat):
+    idx = np.unravel_index(flat, arr.shape)
+    return ", ".join(str(int(i)) for i in idx)
+
+
+def check_finite(arr: np.ndarray, name: str) -> np.ndarray:
+    """Raise ``ValueError`` naming the first non-finite entry of ``arr``; return ``arr``.
+
+    >>> check_finite(np.array([1.0, np.inf]), "t")
+    Traceback (most recent call last):
+    ...
+    ValueError: t must be finite; t[1] is inf
+    """
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        flat = int(np.flatnonzero(bad)[0])
+        if arr.ndim == 0:
+            raise ValueError(f"{name} must be finite; {name} is {arr.item()}")
+        raise ValueError(f"{name} must be finite; {name}[{_index(arr, flat)}] is {arr.flat[flat]}")
+    return arr
+
+
+def _as_float_array(x, name: str) -> np.ndarray:
+    if isinstance(x, (str, bytes)):
+        raise TypeError(f"{name} must be numeric, not {type(x).__name__}")
+    try:
+        arr = np.asarray(x, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"{name} must be a numeric array-like; got {type(x).__name__} ({exc})") from None
+    return arr
+
+
+def as_points(x, name: str, *, ndim: int | None = 2, dim: int | tuple[int, ...] | None = None,
+              min_count: int = 1) -> np.ndarray:
+    """Return ``x`` as a finite float array of points with coordinates in the last axis.
+
+    ndim: the required number of axes (2 for a polygon ``(n, d)``, 3 for a patch net
+    ``(m, n, d)``), or None for any number >= 1.  dim: the allowed point dimension(s).
+    min_count: the least number of points along each leading axis.
+
+    >>> as_points([[0, 0, 0]], "ctrl", dim=2)
+    Traceback (most recent call last):
+    ...
+    ValueError: ctrl must hold 2-dimensional points (last axis of length 2); got shape (1, 3)
+    """
+    arr = _as_float_array(x, name)
+    if ndim is not None and arr.ndim != ndim:
+        shape = {1: "(d,)", 2: "(n, d)", 3: "(m, n, d)"}.get(ndim, f"{ndim} axes")
+        raise ValueError(f"{name} must have shape {shape} with coordinates in the last axis; got shape {arr.shape}")
+    if arr.ndim == 0:
+        raise ValueError(f"{name} must be an array of points, not a scalar")
+    if dim is not None:
+        dims = (dim,) if isinstance(dim, int) else tuple(dim)
+        if arr.shape[-1] not in dims:
+            want = " or ".join(str(d) for d in dims)
+            raise ValueError(f"{name} must hold {want}-dimensional points (last axis of length {want}); got shape {arr.shape}")
+    elif arr.shape[-1] < 1:
+        raise ValueError(f"{name} must hold points with at least one coordinate; got shape {arr.shape}")
+    for axis, count in enumerate(arr.shape[:-1]):
+        if count < min_count:
+            raise ValueError(f"{name} must hold at least {min_count} point(s) along axis {axis}; got shape {arr.shape}")
+    return check_finite(arr, name)
+
+
+def as_parameter(t, name: str = "t", *, low: float | None = None, high: float | None = None) -> np.ndarray:
+    """Return a parameter (scalar or array) as a finite float array, optionally inside [low, high].
+
+    >>> as_parameter([0.0, 0.5], "t").tolist()
+    [0.0, 0.5]
+    >>> as_parameter(2.0, "t", low=0.0, high=1.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: t must lie in [0.0, 1.0]; t is 2.0
+    """
+    arr = check_finite(_as_float_array(t, name), name)
+    for bound, bad in ((low, arr < low if low is not None else None), (high, arr > high if high is not None else None)):
+        if bad is not None and bad.any():
+            flat = int(np.flatnonzero(bad)[0])
+            where = name if arr.ndim == 0 else f"{name}[{_index(arr, flat)}]"
+            raise ValueError(f"{name} must lie in [{low}, {high}]; {where} is {arr.flat[flat]}")
+    return arr
+
+
+def as_int(x, name: str, *, minimum: int | None = None, maximum: int | None = None) -> int:
+    """Return ``x`` as an ``int``; bools and non-integral floats are a ``TypeError``.
+
+    >>> as_int(3, "n", minimum=0)
+    3
+    >>> as_int(2.5, "n")
+    Traceback (most recent call last):
+    ...
+    TypeError: n must be an integer; got 2.5
+    >>> as_int(-1, "order", minimum=0)
+    Traceback (most recent call last):
+    ...
+    ValueError: order must be >= 0; got -1
+    """
+    if isinstance(x, bool) or not isinstance(x, numbers.Integral):
+        if isinstance(x, numbers.Real) and not isinstance(x, bool) and float(x).is_integer():
+            x = int(x)
+        else:
+            raise TypeError(f"{name} must be an integer; got {x!r}")
+    x = int(x)
+    if minimum is not None and x < minimum:
+        raise ValueError(f"{name} must be >= {minimum}; got {x}")
+    if maximum is not None and x > maximum:
+        raise ValueError(f"{name} must be <= {maximum}; got {x}")
+    return x
+
+
+def as_float(x, name: str, *, positive: bool = False, nonzero: bool = False) -> float:
+    """Return ``x`` as a finite ``float``.
+
+    >>> as_float("1", "step")
+    Traceback (most recent call last):
+    ...
+    TypeError: step must be a real number; got '1'
+    >>> as_float(0, "factor", nonzero=True)
+    Traceback (most recent call last):
+    ...
+    ValueError: factor must be nonzero; got 0.0
+    """
+    if isinstance(x, bool) or not isinstance(x, numbers.Real):
+        raise TypeError(f"{name} must be a real number; got {x!r}")
+    x = float(x)
+    if not np.isfinite(x):
+        raise ValueError(f"{name} must be finite; got {x}")
+    if positive and x <= 0:
+        raise ValueError(f"{name} must be positive; got {x}")
+    if nonzero and x == 0:
+        raise ValueError(f"{name} must be nonzero; got {x}")
+    return x

@@ -1,0 +1,207 @@
+"""The widget pattern shared by every chapter (CONVENTIONS, "Views and widgets").
+
+A widget factory builds its figure or three.js renderer once, then returns an
+:class:`InteractiveView`: a box of controls (sliders, pickers, a program editor) beside the view,
+whose ``update(**values)`` is a *plain function*.  Moving a control calls ``update`` with the
+controls' values; ``update`` changes data in place (``line.set_data``, a ``BufferAttribute.array``)
+and returns what it drew as arrays, so tests can call it for any slider value and check the result.
+
+Two promises every view keeps:
+
+* **No traceback, ever.**  If ``update`` raises (a learner typed a program that does not parse,
+  three collinear points where a triangle is needed), the message is shown beside the drawing in
+  the status line and the last good drawing stays.
+* **A static fallback image.**  Displaying the view also stores a PNG of it (the view at its
+  default values) in the same output, as ipympl does for its canvas: JupyterLab with a kernel shows
+  the live widget, while GitHub, nbconvert and the offline deck show the picture.
+
+Tests sweep every control over its range with :meth:`InteractiveView.sweep_values`.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import io
+import itertools
+from typing import Callable, Mapping
+
+import ipywidgets as widgets
+import numpy as np
+
+__all__ = ["InteractiveView", "figure_widget", "figure_png", "control_grid"]
+
+
+def figure_png(fig) -> bytes:
+    """PNG bytes of a matplotlib figure as it is drawn now (the static fallback image)."""
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=fig.dpi, metadata={"Software": None})
+    return buf.getvalue()
+
+
+def figure_widget(fig) -> widgets.DOMWidget:
+    """The widget that shows ``fig``: its ipympl canvas under ``%matplotlib widget``; otherwise
+    (inline backend, plain Python) an ``Image`` widget that :class:`InteractiveView` refreshes."""
+    if isinstance(fig.canvas, widgets.DOMWidget):
+        return fig.canvas
+    return widgets.Image(value=figure_png(fig), format="png")
+
+
+def _control_values(w: widgets.Widget, n: int) -> list:
+    """``n`` values spread over a control's range, ends included (all options of a picker)."""
+    if isinstance(w, (widgets.IntSlider, widgets.BoundedIntText)):
+        vals = np.linspace(w.min, w.max, min(n, w.max - w.min + 1))
+        return sorted({int(round(v)) for v in vals})
+    if isinstance(w, (widgets.FloatSlider, widgets.BoundedFloatText, widgets.FloatLogSlider)):
+        return [float(v) for v in np.linspace(w.min, w.max, n)]
+    if isinstance(w, (widgets.Dropdown, widgets.ToggleButtons, widgets.RadioButtons, widgets.SelectionSlider)):
+        return [value for _, value in _options(w)]
+    if isinstance(w, widgets.Checkbox):
+        return [False, True]
+    return [w.value]
+
+
+def _options(w):
+    opts = w.options
+    if isinstance(opts, Mapping):
+        return list(opts.items())
+    return [(o, o) if not isinstance(o, tuple) else o for o in opts]
+
+
+def control_grid(controls: Mapping[str, widgets.Widget], n: int = 3, max_full: int = 400, seed: int = 0) -> list[dict]:
+    """Value combinations covering each control's range, corners included.
+
+    If the full grid has at most ``max_full`` points it is returned whole.  Otherwise: every
+    control swept over its ``n`` values with the others at their defaults, at their minima and at
+    their maxima; the two all-min / all-max corners; and ``max_full`` seeded random corners.
+    """
+    names = list(controls)
+    axes = [_control_values(controls[k], n) for k in names]
+    total = int(np.prod([len(a) for a in axes]))
+    if total <= max_full:
+        return [dict(zip(names, combo)) for combo in itertools.product(*axes)]
+    default = {k: controls[k].value for k in names}
+    lows = {k: a[0] for k, a in zip(names, axes)}
+    highs = {k: a[-1] for k, a in zip(names, axes)}
+    combos = [lows, highs]
+    for base in (default, lows, highs):
+        for k, a in zip(names, axes):
+            for v in a:
+                combos.append({**base, k: v})
+    rng = np.random.default_rng(seed)
+    for _ in range(max_full):
+        combos.append({k: (a[0] if rng.random() < 0.5 else a[-1]) for k, a in zip(names, axes)})
+    return combos
+
+
+class InteractiveView(widgets.VBox):
+    """Controls + a view + a plain ``update`` callback + a static fallback image.
+
+    controls: ``{name: widget}``; each widget's ``value`` is passed to ``update`` by that name.
+    views: the widgets that show the result (an ipympl canvas, a three.js renderer, ...).
+    update: ``update(**values) -> dict`` of what was drawn (arrays; an optional ``"status"``
+    string is shown in the status line).  figure: the matplotlib figure to redraw after an update,
+    if any.  static: a callable returning PNG bytes for the fallback image (default: the figure's).
+    side: put the controls to the right of the view instead of below it.
+    """
+
+    def __init__(self, *, controls: Mapping[str, widgets.Widget], views: list, update: Callable[..., dict],
+                 figure=None, static: Callable[[], bytes] | None = None, title: str = "",
+                 side: bool = False, extra: list | None = None):
+        self.controls = dict(controls)
+        self.update = update
+        self.figure = figure
+        self._static = static
+        self.title = title
+        self.status = widgets.HTML(value="", layout=widgets.Layout(min_height="1.6em"))
+        self.last_error: str | None = None
+        self.last_result: dict = {}
+        self._views = list(views)
+        control_box = widgets.VBox(list(self.controls.values()) + list(extra or []),
+                                   layout=widgets.Layout(min_width="300px" if side else None))
+        # CSS classes the browser tests use to find each view and its display.
+        display_box = widgets.VBox(self._views)
+        display_box.add_class("goldman-display")
+        control_box.add_class("goldman-controls")
+        if side:
+            body = [widgets.HBox([display_box, control_box]), self.status]
+        else:
+            body = [display_box, control_box, self.status]
+        if title:
+            body = [widgets.HTML(f"<b>{html.escape(title)}</b>")] + body
+        super().__init__(body)
+        self.add_class("goldman-interactive")
+        for w in self.controls.values():
+            w.observe(self._on_change, names="value")
+        self.refresh()
+
+    # -- the plain-function side -------------------------------------------------------------
+    def values(self) -> dict:
+        """The controls' current values, by name."""
+        return {k: w.value for k, w in self.controls.items()}
+
+    def set_values(self, **values) -> dict:
+        """Set controls (as a learner would) and return what the view then shows."""
+        for k in values:
+            if k not in self.controls:
+                raise KeyError(f"no control named {k!r}; controls are {sorted(self.controls)}")
+        self._muted = True
+        try:
+            for k, v in values.items():
+                self.controls[k].value = v
+        finally:
+            self._muted = False
+        self.refresh()
+        return self.last_result
+
+    def sweep_values(self, n: int = 3, max_full: int = 400) -> list[dict]:
+        """Value combinations over every control's range, corners included (for tests)."""
+        return control_grid(self.controls, n=n, max_full=max_full)
+
+    # -- the widget side -----------------------------------------------------------------------
+    def refresh(self):
+        """Call ``update`` with the current values; show a message instead of a traceback."""
+        try:
+            result = self.update(**self.values()) or {}
+        except Exception as exc:  # noqa: BLE001 - a widget must never show a traceback
+            self.last_error = f"{type(exc).__name__}: {exc}"
+            self.status.value = (f'<span style="color:#b3261e">&#9888; {html.escape(str(exc))}</span>')
+            return
+        self.last_error = None
+        self.last_result = result
+        status = result.get("status", "")
+        self.status.value = html.escape(status) if status else ""
+        self._redraw()
+
+    _muted = False
+
+    def _on_change(self, change):
+        if not self._muted:
+            self.refresh()
+
+    def _redraw(self):
+        if self.figure is None:
+            return
+        canvas = self.figure.canvas
+        if isinstance(canvas, widgets.DOMWidget):
+            canvas.draw_idle()
+        else:
+            for v in self._views:
+                if isinstance(v, widgets.Image):
+                    v.value = figure_png(self.figure)
+
+    def static_png(self) -> bytes:
+        """PNG bytes of the view as it is now: the static fallback image."""
+        if self._static is not None:
+            return self._static()
+        if self.figure is not None:
+            return figure_png(self.figure)
+        return b""
+
+    def _repr_mimebundle_(self, **kwargs):
+        data = super()._repr_mimebundle_(**kwargs)
+        png = self.static_png()
+        if png:
+            data["image/png"] = base64.b64encode(png).decode("ascii")
+        data["text/plain"] = f"[interactive view{': ' + self.title if self.title else ''}; run the notebook to use it]"
+        return data

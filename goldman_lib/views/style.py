@@ -1,0 +1,81 @@
+"""One look for every chapter: figure size, dpi, palette and the axes style of 2D views.
+
+>>> new_axes()[0].get_size_inches().tolist()
+[5.6, 4.2]
+"""
+
+from __future__ import annotations
+
+import matplotlib
+
+FIGSIZE = (5.6, 4.2)      # inches; 560 x 420 px at DPI: fits beside sliders on a deck slide
+WIDE_FIGSIZE = (9.6, 4.2)  # two panels side by side
+DPI = 100
+
+PALETTE = {
+    "curve": "#1f4e9c",        # the curve, the turtle's path
+    "control": "#7a7a7a",      # control polygon / net
+    "point": "#d1495b",        # the highlighted point (curve point at t, turtle position)
+    "accent": "#edae49",       # a second highlight (elevated polygon, construction)
+    "good": "#1b7f3b",
+    "surface": "#66a3d2",
+}
+
+#: colours of the de Casteljau construction levels, level 1 first.
+LEVELS = ["#00798c", "#30a24b", "#edae49", "#d1495b", "#8f2d56", "#5c3c92", "#3d5a80", "#9c6644"]
+
+
+def level_colour(k: int) -> str:
+    """Colour of construction level ``k`` (1-based), cycling through :data:`LEVELS`."""
+    return LEVELS[(k - 1) % len(LEVELS)]
+
+
+def new_figure(figsize=FIGSIZE, **kwargs):
+    """A new matplotlib figure in the house style that is never shown by itself.
+
+    Through pyplot so that, in a notebook that chose ``%matplotlib widget``, ``fig.canvas`` is
+    the ipympl widget; inside ``plt.ioff()`` so that creating it does not display it.
+    """
+    import matplotlib.pyplot as plt
+
+    with plt.ioff():
+        fig = plt.figure(figsize=figsize, dpi=DPI, **kwargs)
+    canvas = fig.canvas
+    for attr, value in (("header_visible", False), ("footer_visible", False),
+                        ("toolbar_visible", False), ("resizable", False)):
+        if hasattr(canvas, attr):
+            try:
+                setattr(canvas, attr, value)
+            except Exception:  # pragma: no cover - older ipympl
+                pass
+    return fig
+
+
+def new_axes(figsize=FIGSIZE, equal: bool = True):
+    """A figure with one styled 2D axes; returns ``(fig, ax)``."""
+    fig = new_figure(figsize)
+    ax = fig.add_subplot(1, 1, 1)
+    style_axes(ax, equal=equal)
+    return fig, ax
+
+
+def style_axes(ax, equal: bool = True):
+    """Apply the house style to a 2D axes: equal aspect (optional), light grid, no top/right spines."""
+    if equal:
+        ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, color="#e4e4e4", linewidth=0.6)
+    ax.set_axisbelow(True)
+    for side in ("top", "right"):
+        ax.spines[side].set_visible(False)
+    return ax
+
+
+def get_axes(ax=None, equal: bool = True):
+    """Return ``ax`` if given, else the axes of a new house-style figure."""
+    if ax is not None:
+        return ax
+    return new_axes(equal=equal)[1]
+
+
+__all__ = ["FIGSIZE", "WIDE_FIGSIZE", "DPI", "PALETTE", "LEVELS", "level_colour", "new_figure",
+           "new_axes", "style_axes", "get_axes", "matplotlib"]

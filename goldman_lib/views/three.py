@@ -1,0 +1,210 @@
+"""Every use of pythreejs in the course goes through this module.
+
+pythreejs 2.4 (three.js r97) is unmaintained upstream; keeping it behind :class:`SceneView` means
+the 3D back end can be replaced in one place.  A ``SceneView`` builds its renderer, camera, orbit
+controls, lights and axes **once**; afterwards the geometry of each named primitive (a mesh, line
+segments, points) is updated in place by assigning a new ``BufferAttribute.array``, which is all a
+slider callback has to do.  It also keeps a numpy copy of every primitive, so it can draw a static
+fallback picture of itself with matplotlib (:meth:`SceneView.to_png`) for pages without a kernel.
+
+The scene is z-up, as the book's pictures of patches are.
+
+>>> view = SceneView(width=200, height=150)
+>>> view.add_points("p", [[0, 0, 0], [1, 1, 1]])
+>>> view.set_points("p", [[0, 0, 1], [1, 1, 0]])
+>>> view.data("p")["positions"].shape
+(2, 3)
+"""
+
+from __future__ import annotations
+
+import io
+
+import numpy as np
+
+from goldman_lib.validation import as_points
+
+__all__ = ["SceneView", "grid_triangles", "vertex_normals"]
+
+
+def grid_triangles(rows: int, cols: int) -> np.ndarray:
+    """Triangle indices ``(2*(rows-1)*(cols-1), 3)`` of a ``rows x cols`` grid of vertices stored
+    row by row (as ``grid.reshape(-1, 3)`` stores them).
+
+    >>> grid_triangles(2, 2).tolist()
+    [[0, 2, 1], [1, 2, 3]]
+    """
+    r, c = np.meshgrid(np.arange(rows - 1), np.arange(cols - 1), indexing="ij")
+    a = (r * cols + c).ravel()
+    b, d, e = a + 1, a + cols, a + cols + 1
+    return np.concatenate([np.stack([a, d, b], 1), np.stack([b, d, e], 1)]).reshape(2, -1, 3).transpose(1, 0, 2).reshape(-1, 3)
+
+
+def vertex_normals(positions: np.ndarray, triangles: np.ndarray) -> np.ndarray:
+    """Unit vertex normals: area-weighted sums of the face normals around each vertex.
+
+    >>> vertex_normals(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0]]), np.array([[0, 1, 2]])).tolist()
+    [[0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0]]
+    """
+    p = positions[triangles]
+    fn = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    n = np.zeros_like(positions)
+    for k in range(3):
+        np.add.at(n, triangles[:, k], fn)
+    length = np.linalg.norm(n, axis=1, keepdims=True)
+    return np.divide(n, length, out=np.zeros_like(n) + [0.0, 0.0, 1.0], where=length > 1e-300)
+
+
+class SceneView:
+    """A three.js view built once, with named primitives updated in place.
+
+    width, height: canvas size in pixels.  camera_position: where the camera starts (it looks at
+    ``target`` and orbits around it with the mouse).  axes: draw x (red), y (green), z (blue) axes
+    of length ``axes`` (0 for none).
+    """
+
+    def __init__(self, width: int = 480, height: int = 360, camera_position=(3.0, -4.0, 3.0),
+                 target=(0.0, 0.0, 0.0), axes: float = 1.0, background: str = "#ffffff"):
+        import pythreejs as p3
+
+        self._p3 = p3
+        self._items: dict[str, dict] = {}
+        self.target = tuple(float(v) for v in target)
+        self.camera_position = tuple(float(v) for v in camera_position)
+        key = p3.DirectionalLight(color="#ffffff", position=[3, 5, 8], intensity=0.7)
+        self.camera = p3.PerspectiveCamera(position=list(self.camera_position), up=[0, 0, 1],
+                                           aspect=width / height, fov=40, children=[key])
+        children = [self.camera, p3.AmbientLight(color="#ffffff", intensity=0.45)]
+        if axes:
+            children.append(p3.AxesHelper(size=float(axes)))
+        self.scene = p3.Scene(children=children, background=background)
+        self.controls = p3.OrbitControls(controlling=self.camera, target=list(self.target))
+        self.renderer = p3.Renderer(camera=self.camera, scene=self.scene, controls=[self.controls],
+                                    width=width, height=height, antialias=True)
+        self.camera.lookAt(list(self.target))
+
+    # -- building ------------------------------------------------------------------------------
+    def _attr(self, arr, dtype=np.float32):
+        return self._p3.BufferAttribute(array=np.ascontiguousarray(arr, dtype=dtype), normalized=False)
+
+    def add_mesh(self, name: str, positions, triangles, color: str = "#66a3d2", opacity: float = 1.0):
+        """A shaded triangle mesh: positions ``(n, 3)``, triangles ``(k, 3)`` vertex indices."""
+        p3 = self._p3
+        pos = as_points(positions, "positions", dim=3)
+        tri = np.asarray(triangles, dtype=np.uint32)
+        if tri.ndim != 2 or tri.shape[1] != 3 or (tri.size and tri.max() >= len(pos)):
+            raise ValueError(f"triangles must have shape (k, 3) with indices below {len(pos)}; got shape {tri.shape}")
+        geom = p3.BufferGeometry(attributes={
+            "position": self._attr(pos), "normal": self._attr(vertex_normals(pos, tri)),
+            "index": self._attr(tri.ravel(), np.uint32)})
+        material = p3.MeshPhongMaterial(color=color, side="DoubleSide", shininess=40,
+                                        transparent=opacity < 1, opacity=opacity)
+        obj = p3.Mesh(geometry=geom, material=material)
+        self._add(name, obj, geom, kind="mesh", positions=pos, triangles=tri, color=color)
+
+    def add_segments(self, name: str, positions, segments, color: str = "#7a7a7a"):
+        """Line segments between ``positions[segments[:, 0]]`` and ``positions[segments[:, 1]]``."""
+        pos = as_points(positions, "positions", dim=3)
+        seg = np.asarray(segments, dtype=np.int64)
+        if seg.ndim != 2 or seg.shape[1] != 2 or (seg.size and seg.max() >= len(pos)):
+            raise ValueError(f"segments must have shape (k, 2) with indices below {len(pos)}; got shape {seg.shape}")
+        geom = self._p3.BufferGeometry(attributes={"position": self._attr(pos[seg].reshape(-1, 3))})
+        obj = self._p3.LineSegments(geometry=geom, material=self._p3.LineBasicMaterial(color=color, linewidth=2))
+        self._add(name, obj, geom, kind="segments", positions=pos, segments=seg, color=color)
+
+    def add_points(self, name: str, positions, color: str = "#d1495b", size: float = 0.12):
+        """Round-ish dots of world size ``size`` at ``positions`` ``(n, 3)``."""
+        pos = as_points(positions, "positions", dim=3)
+        geom = self._p3.BufferGeometry(attributes={"position": self._attr(pos)})
+        obj = self._p3.Points(geometry=geom, material=self._p3.PointsMaterial(color=color, size=size))
+        self._add(name, obj, geom, kind="points", positions=pos, color=color)
+
+    def _add(self, name, obj, geom, **data):
+        if name in self._items:
+            raise ValueError(f"name {name!r} is already used in this scene")
+        self._items[name] = {"object": obj, "geometry": geom, **data}
+        self.scene.children = tuple(self.scene.children) + (obj,)
+
+    # -- updating in place ---------------------------------------------------------------------
+    def _item(self, name, kind):
+        if name not in self._items or self._items[name]["kind"] != kind:
+            raise KeyError(f"no {kind} named {name!r} in this scene")
+        return self._items[name]
+
+    def _same_shape(self, name, old, new):
+        if new.shape != old.shape:
+            raise ValueError(f"positions for {name!r} must keep shape {old.shape}; got {new.shape}")
+
+    def set_mesh(self, name: str, positions):
+        """New vertex positions (same count) for mesh ``name``; normals are recomputed."""
+        item = self._item(name, "mesh")
+        pos = as_points(positions, "positions", dim=3)
+        self._same_shape(name, item["positions"], pos)
+        item["positions"] = pos
+        attrs = item["geometry"].attributes
+        attrs["normal"].array = vertex_normals(pos, item["triangles"]).astype(np.float32)
+        attrs["position"].array = pos.astype(np.float32)
+
+    def set_segments(self, name: str, positions):
+        """New endpoint positions (same count) for the segments ``name``."""
+        item = self._item(name, "segments")
+        pos = as_points(positions, "positions", dim=3)
+        self._same_shape(name, item["positions"], pos)
+        item["positions"] = pos
+        item["geometry"].attributes["position"].array = pos[item["segments"]].reshape(-1, 3).astype(np.float32)
+
+    def set_points(self, name: str, positions):
+        """New positions (same count) for the points ``name``."""
+        item = self._item(name, "points")
+        pos = as_points(positions, "positions", dim=3)
+        self._same_shape(name, item["positions"], pos)
+        item["positions"] = pos
+        item["geometry"].attributes["position"].array = pos.astype(np.float32)
+
+    def data(self, name: str) -> dict:
+        """The numpy data behind primitive ``name`` (``positions`` and, for meshes, ``triangles``)."""
+        return {k: v for k, v in self._items[name].items() if k not in ("object", "geometry")}
+
+    @property
+    def widget(self):
+        """The ipywidget to display (the three.js renderer)."""
+        return self.renderer
+
+    # -- the static fallback -------------------------------------------------------------------
+    def to_png(self, figsize=(4.8, 3.6), dpi: int = 100) -> bytes:
+        """PNG bytes of the scene drawn by matplotlib from the camera's starting direction."""
+        from matplotlib.colors import LightSource, to_rgb
+        from matplotlib.figure import Figure
+        from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+        fig = Figure(figsize=figsize, dpi=dpi)
+        ax = fig.add_subplot(1, 1, 1, projection="3d")
+        d = np.subtract(self.camera_position, self.target)
+        ax.view_init(elev=np.degrees(np.arctan2(d[2], np.hypot(d[0], d[1]))), azim=np.degrees(np.arctan2(d[1], d[0])))
+        light = LightSource(azdeg=315, altdeg=45)
+        everything = []
+        for item in self._items.values():
+            pos = item["positions"]
+            everything.append(pos)
+            if item["kind"] == "mesh":
+                tris = pos[item["triangles"]]
+                normals = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
+                shade = light.shade_normals(normals, fraction=0.9)
+                colors = np.clip(np.asarray(to_rgb(item["color"]))[None] * (0.45 + 0.55 * shade[:, None]), 0, 1)
+                ax.add_collection3d(Poly3DCollection(tris, facecolors=colors, edgecolors="none"))
+            elif item["kind"] == "segments":
+                for a, b in item["segments"]:
+                    ax.plot(*pos[[a, b]].T, color=item["color"], linewidth=1.2)
+            else:
+                ax.scatter(*pos.T, color=item["color"], s=18, depthshade=False)
+        if everything:
+            pts = np.concatenate(everything)
+            lo, hi = pts.min(0), pts.max(0)
+            mid, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9)
+            for setter, m in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), mid):
+                setter(m - half, m + half)
+        ax.set_box_aspect((1, 1, 1))
+        ax.set_xlabel("x"), ax.set_ylabel("y"), ax.set_zlabel("z")
+        buf = io.BytesIO()
+        fig.savefig(buf, format="png", metadata={"Software": None})
+        return buf.getvalue()
