@@ -1,0 +1,24 @@
+"""goldman_lib and its algorithm modules import without the heavy view libraries."""
+
+import subprocess
+import sys
+
+import pytest
+
+HEAVY = ("matplotlib", "pythreejs", "ipywidgets")
+
+
+@pytest.mark.parametrize("module", ["goldman_lib", "goldman_lib.turtle", "goldman_lib.bezier",
+                                    "goldman_lib.exercises", "goldman_lib.validation"])
+def test_import_is_light(module):
+    code = (f"import sys, {module}\n"
+            f"heavy = [m for m in {HEAVY!r} if m in sys.modules]\n"
+            "print(','.join(heavy))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "", f"importing {module} imported {out.stdout.strip()}"
+
+
+def test_views_import_heavy_libraries_lazily_only_where_needed():
+    code = "import sys, goldman_lib.views.three as t; print('pythreejs' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "False", "views.three must import pythreejs only when a SceneView is built"
