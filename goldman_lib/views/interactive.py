@@ -102,12 +102,14 @@ class InteractiveView(widgets.VBox):
     update: ``update(**values) -> dict`` of what was drawn (arrays; an optional ``"status"``
     string is shown in the status line).  figure: the matplotlib figure to redraw after an update,
     if any.  static: a callable returning PNG bytes for the fallback image (default: the figure's).
-    side: put the controls to the right of the view instead of below it.
+    side: put the controls to the right of the view instead of below it.  arrange: the widgets
+    of the control area if not simply the controls in order (e.g. sliders in a grid).  extra:
+    more widgets under the controls (a program editor's help text, a reset button).
     """
 
     def __init__(self, *, controls: Mapping[str, widgets.Widget], views: list, update: Callable[..., dict],
                  figure=None, static: Callable[[], bytes] | None = None, title: str = "",
-                 side: bool = False, extra: list | None = None):
+                 side: bool = False, extra: list | None = None, arrange: list | None = None):
         self.controls = dict(controls)
         self.update = update
         self.figure = figure
@@ -117,7 +119,7 @@ class InteractiveView(widgets.VBox):
         self.last_error: str | None = None
         self.last_result: dict = {}
         self._views = list(views)
-        control_box = widgets.VBox(list(self.controls.values()) + list(extra or []),
+        control_box = widgets.VBox(list(arrange or self.controls.values()) + list(extra or []),
                                    layout=widgets.Layout(min_width="300px" if side else None))
         # CSS classes the browser tests use to find each view and its display.
         display_box = widgets.VBox(self._views)
