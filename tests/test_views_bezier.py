@@ -1,0 +1,84 @@
+"""Chapter 24 widgets: every callback swept over its slider ranges (corners included) draws
+finite geometry that agrees with the library, and never lets an exception escape."""
+
+import numpy as np
+import pytest
+
+from goldman_lib import bezier
+from goldman_lib.views import bezier as views
+
+FACTORIES = [views.de_casteljau_explorer, views.degree_elevation_view, views.bernstein_view, views.patch_editor]
+
+
+def finite(obj):
+    if isinstance(obj, dict):
+        return all(finite(v) for k, v in obj.items() if k != "status")
+    if isinstance(obj, (list, tuple)):
+        return all(finite(v) for v in obj)
+    return bool(np.all(np.isfinite(np.asarray(obj, dtype=float))))
+
+
+@pytest.mark.parametrize("factory", FACTORIES, ids=lambda f: f.__name__)
+def test_sweep_every_slider_range(factory):
+    view = factory()
+    combos = view.sweep_values()
+    assert len(combos) >= 3
+    for values in combos:
+        result = view.update(**values)
+        assert finite(result), f"non-finite drawing at {values}"
+        assert isinstance(result["status"], str) and result["status"]
+
+
+@pytest.mark.parametrize("factory", FACTORIES, ids=lambda f: f.__name__)
+def test_view_shows_no_traceback_and_has_a_fallback_image(factory):
+    view = factory()
+    for values in view.sweep_values()[:20]:
+        view.set_values(**values)
+        assert view.last_error is None, view.last_error
+    assert view.static_png().startswith(b"\x89PNG")
+
+
+def test_explorer_draws_the_de_casteljau_point_of_the_slider_polygon():
+    view = views.de_casteljau_explorer()
+    result = view.set_values(t=0.5, x0=0, y0=0, x1=0, y1=2, x2=2, y2=2, x3=2, y3=0)
+    # closed form for this cubic at t = 1/2: (P0 + 3P1 + 3P2 + P3) / 8 = (1, 1.5)
+    np.testing.assert_allclose(result["point"], [1.0, 1.5])
+    np.testing.assert_allclose(result["levels"][0], [[0, 1], [1, 2], [2, 1]])
+
+
+def test_elevation_keeps_the_curve_and_closes_in_on_it():
+    view = views.degree_elevation_view()
+    gaps = [view.update(times=k)["gap"] for k in (0, 4, 12)]
+    assert gaps[0] > gaps[1] > gaps[2]
+    elevated = view.update(times=3)["polygon"]
+    t = np.linspace(0, 1, 11)
+    np.testing.assert_allclose(bezier.de_casteljau(elevated, t), bezier.de_casteljau(views.DEFAULT_CUBIC, t), atol=1e-12)
+
+
+def test_bernstein_view_values_sum_to_one():
+    view = views.bernstein_view()
+    for n in (0, 1, 5, 12):
+        values = view.update(n=n, t=0.3)["values"]
+        assert values.shape == (n + 1,) and values.sum() == pytest.approx(1.0)
+
+
+def test_patch_editor_moves_the_net_and_updates_geometry_in_place():
+    view = views.patch_editor()
+    attr = view.scene._items["patch"]["geometry"].attributes["position"]
+    before = np.array(attr.array)
+    result = view.set_values(z11=-2.0)
+    assert result["net"][1, 1, 2] == -2.0
+    assert view.scene._items["patch"]["geometry"].attributes["position"] is attr
+    assert not np.allclose(before, attr.array)
+    # the drawn surface is the library's patch of the drawn net, corner to corner
+    np.testing.assert_allclose(result["surface"][0, 0], result["net"][0, 0])
+    np.testing.assert_allclose(result["surface"][-1, -1], result["net"][-1, -1])
+
+
+def test_factories_reject_bad_input_naming_the_parameter():
+    with pytest.raises(ValueError, match="ctrl must hold 2-dimensional points"):
+        views.de_casteljau_explorer(ctrl=np.zeros((4, 3)))
+    with pytest.raises(ValueError, match="ctrl must be at least a biquadratic net"):
+        views.patch_editor(ctrl=np.zeros((2, 2, 3)))
+    with pytest.raises(TypeError, match="max_times must be an integer"):
+        views.degree_elevation_view(max_times=2.5)
