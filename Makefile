@@ -22,7 +22,7 @@ venv: $(STAMP)
 
 ## make lab: install everything into .venv and open JupyterLab on the course map.
 lab: $(STAMP)
-	$(BIN)/jupyter lab --ServerApp.root_dir="$(CURDIR)" $(ARGS) course/index.ipynb
+	$(BIN)/jupyter lab --ServerApp.root_dir="$(CURDIR)" $$([ "$$(id -u)" = 0 ] && echo --allow-root) $(ARGS) course/index.ipynb
 
 ## make test: unit, property, doctest, notebook (nbval), widget-sweep and browser tests.
 test: $(STAMP)
