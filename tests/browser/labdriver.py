@@ -1,0 +1,248 @@
+"""Driving JupyterLab through ``window.jupyterapp`` (exposed by ``--LabApp.expose_app_in_browser``)
+and comparing what the page shows by pixels (element screenshots decoded with Pillow).
+
+Nothing here saves a notebook: autosave is off in the test settings and documents are closed
+without saving, so running a chapter never rewrites the file others are editing.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import time
+import urllib.request
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from PIL import Image
+
+WIDGET_MIME = "application/vnd.jupyter.widget-view+json"
+
+
+# -- pixels ----------------------------------------------------------------------------------------
+@dataclass
+class PixelStats:
+    width: int
+    height: int
+    colours: int          # distinct colours (quantised to 5 bits per channel)
+    ink: float            # fraction of pixels that differ from the most common colour
+
+    def nonblank(self, min_ink: float = 0.004, min_colours: int = 3) -> bool:
+        return self.width > 0 and self.height > 0 and self.colours >= min_colours and self.ink >= min_ink
+
+    def __str__(self):
+        return f"{self.width}x{self.height}, {self.colours} colours, {self.ink:.1%} ink"
+
+
+def _rgb(png: bytes) -> np.ndarray:
+    return np.asarray(Image.open(io.BytesIO(png)).convert("RGB"), dtype=np.int16)
+
+
+def pixel_stats(png: bytes, threshold: int = 16) -> PixelStats:
+    """Colour count and the fraction of pixels away from the background (most common) colour."""
+    a = _rgb(png)
+    h, w = a.shape[:2]
+    if a.size == 0:
+        return PixelStats(w, h, 0, 0.0)
+    flat = a.reshape(-1, 3)
+    q = (flat >> 3).astype(np.int32)
+    keys = (q[:, 0] << 10) | (q[:, 1] << 5) | q[:, 2]
+    values, counts = np.unique(keys, return_counts=True)
+    bg_key = values[np.argmax(counts)]
+    bg = flat[keys == bg_key][0]
+    ink = float((np.abs(flat - bg).max(axis=1) > threshold).mean())
+    return PixelStats(w, h, len(values), ink)
+
+
+def changed_fraction(before: bytes, after: bytes, threshold: int = 24) -> float:
+    """Fraction of pixels whose colour moved by more than ``threshold`` in some channel (the
+    images are compared over their common top-left region if their sizes differ)."""
+    a, b = _rgb(before), _rgb(after)
+    h, w = min(a.shape[0], b.shape[0]), min(a.shape[1], b.shape[1])
+    if h == 0 or w == 0:
+        return 0.0
+    d = np.abs(a[:h, :w] - b[:h, :w]).max(axis=2) > threshold
+    size_change = 1.0 - (h * w) / max(a.shape[0] * a.shape[1], b.shape[0] * b.shape[1])
+    return float(d.mean()) + size_change
+
+
+def wait_for(predicate, timeout: float, interval: float = 0.25, message: str = "condition"):
+    """Poll ``predicate()`` until it returns something truthy; return it, or raise after ``timeout``."""
+    deadline = time.monotonic() + timeout
+    last = None
+    while True:
+        last = predicate()
+        if last:
+            return last
+        if time.monotonic() > deadline:
+            raise TimeoutError(f"timed out after {timeout:.0f} s waiting for {message}")
+        time.sleep(interval)
+
+
+# -- JupyterLab --------------------------------------------------------------------------------------
+_JS_OPEN = """
+async (path) => {
+  const app = window.jupyterapp;
+  const w = await app.commands.execute('docmanager:open', {path, factory: 'Notebook'});
+  await w.context.ready;
+  await w.sessionContext.ready;
+  app.shell.activateById(w.id);
+  window.__goldmanNotebook = w;
+  return w.id;
+}
+"""
+
+_JS_RUN_ALL = """
+async () => {
+  const app = window.jupyterapp;
+  const w = window.__goldmanNotebook;
+  app.shell.activateById(w.id);
+  await app.commands.execute('notebook:clear-all-cell-outputs');
+  // do not await: run-all resolves only when every cell has run; we poll instead
+  app.commands.execute('notebook:run-all-cells');
+  return true;
+}
+"""
+
+_JS_STATE = """
+() => {
+  const w = window.__goldmanNotebook;
+  const kernel = w.sessionContext.session && w.sessionContext.session.kernel;
+  const code = w.content.widgets.filter(c => c.model.type === 'code' && c.model.sharedModel.getSource().trim());
+  const pending = code.filter(c => c.model.executionCount == null || c.model.executionState === 'running' ||
+                                   (c.promptNode && c.promptNode.textContent.includes('*'))).length;
+  const errors = [];
+  code.forEach((c, i) => {
+    for (const o of c.model.outputs.toJSON()) {
+      if (o.output_type === 'error') errors.push(`cell ${i}: ${o.ename}: ${o.evalue}`);
+      if (o.output_type === 'stream' && o.name === 'stderr' && /Traceback/.test(o.text)) errors.push(`cell ${i}: ${o.text.slice(0, 400)}`);
+    }
+  });
+  return {status: kernel ? kernel.status : 'no kernel', pending, total: code.length, errors};
+}
+"""
+
+_JS_DOM_PROBLEMS = """
+() => {
+  const nb = window.__goldmanNotebook.node;
+  const out = [];
+  nb.querySelectorAll('.jp-RenderedText[data-mime-type="application/vnd.jupyter.stderr"]').forEach(e => {
+    if (/Traceback|Error/.test(e.textContent)) out.push('stderr: ' + e.textContent.slice(0, 400));
+  });
+  nb.querySelectorAll('.jp-OutputArea-output').forEach(e => {
+    const t = e.textContent || '';
+    if (/Error displaying widget|Error rendering|model not found|Failed to load model class/i.test(t)) out.push('widget: ' + t.slice(0, 300));
+  });
+  nb.querySelectorAll('.jupyter-widgets').forEach(e => {
+    if (/Error displaying widget/.test(e.textContent || '')) out.push('widget error view: ' + e.textContent.slice(0, 300));
+  });
+  return out;
+}
+"""
+
+# How many outputs carry a widget view, and how many have rendered it (or an error) in the DOM.
+_JS_WIDGETS_RENDERED = f"""
+() => {{
+  const w = window.__goldmanNotebook;
+  let expected = 0;
+  w.content.widgets.filter(c => c.model.type === 'code').forEach(c => {{
+    for (const o of c.model.outputs.toJSON()) if (o.data && o.data['{WIDGET_MIME}']) expected += 1;
+  }});
+  const outs = Array.from(w.node.querySelectorAll('.jp-OutputArea-output'));
+  const rendered = outs.filter(o => o.querySelector('.jupyter-widgets, .jupyter-widget') || /Error displaying widget/.test(o.textContent)).length;
+  const canvases = Array.from(w.node.querySelectorAll('.jupyter-widgets canvas, .jupyter-widget canvas'));
+  const sized = canvases.filter(c => c.width > 0 && c.height > 0).length;
+  return {{expected, rendered, canvases: canvases.length, sized}};
+}}
+"""
+
+
+class Lab:
+    """One browser page with JupyterLab, and the notebook currently open in it."""
+
+    def __init__(self, page, server: dict):
+        self.page = page
+        self.server = server
+
+    def load(self):
+        url, token = self.server["url"], self.server["token"]
+        self.page.goto(f"{url}/lab?reset&token={token}", wait_until="domcontentloaded")
+        self.page.wait_for_function("() => window.jupyterapp !== undefined", timeout=90_000)
+        self.page.evaluate("async () => { await window.jupyterapp.started; await window.jupyterapp.restored; }")
+
+    def command(self, name: str, args: dict | None = None):
+        return self.page.evaluate("async ([n, a]) => { const r = await window.jupyterapp.commands.execute(n, a || {}); "
+                                  "return (r === undefined || r === null || typeof r !== 'object') ? r : true; }", [name, args])
+
+    def open(self, relpath: str) -> str:
+        """Open a notebook (path relative to the server root) and wait for its kernel."""
+        return self.page.evaluate(_JS_OPEN, relpath)
+
+    def run_all(self, timeout: float = 240) -> dict:
+        """Clear outputs, run every cell, wait until each non-empty code cell has an execution count
+        and the kernel is idle (or a cell failed); then wait for widget views to render."""
+        self.page.evaluate(_JS_RUN_ALL)
+        idle_polls = 0
+
+        def done():
+            nonlocal idle_polls
+            st = self.page.evaluate(_JS_STATE)
+            if st["status"] == "idle" and (st["pending"] == 0 or st["errors"]):
+                idle_polls += 1
+            else:
+                idle_polls = 0
+            return st if idle_polls >= 3 else None
+
+        state = wait_for(done, timeout, interval=0.3, message="all cells to run and the kernel to be idle")
+        if not state["errors"]:
+            wait_for(lambda: (lambda s: s["rendered"] >= s["expected"] and s["sized"] == s["canvases"])(
+                self.page.evaluate(_JS_WIDGETS_RENDERED)), 60, message="widget views to render")
+        return state
+
+    def dom_problems(self) -> list[str]:
+        return self.page.evaluate(_JS_DOM_PROBLEMS)
+
+    def shutdown_all(self):
+        """Shut down every kernel session on the server (documents are never saved)."""
+        url, token = self.server["url"], self.server["token"]
+        try:
+            with urllib.request.urlopen(f"{url}/api/sessions?token={token}", timeout=10) as r:
+                sessions = json.load(r)
+            for s in sessions:
+                req = urllib.request.Request(f"{url}/api/sessions/{s['id']}?token={token}", method="DELETE")
+                urllib.request.urlopen(req, timeout=30).close()
+        except OSError as exc:
+            print(f"could not shut down kernels: {exc}")
+
+
+def screenshot(locator, path: Path | None = None) -> bytes:
+    """Element screenshot (scrolled into view first), optionally also written to ``path``."""
+    locator.scroll_into_view_if_needed()
+    png = locator.screenshot(animations="disabled")
+    if path is not None:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_bytes(png)
+    return png
+
+
+def wait_nonblank(locator, timeout: float = 30, **kw) -> tuple[bytes, PixelStats]:
+    """Screenshot ``locator`` until it shows something (returns the last try if it never does)."""
+    deadline = time.monotonic() + timeout
+    while True:
+        png = screenshot(locator)
+        st = pixel_stats(png)
+        if st.nonblank(**kw) or time.monotonic() > deadline:
+            return png, st
+        time.sleep(0.5)
+
+
+def wait_changed(locator, before: bytes, tolerance: float, timeout: float = 20) -> tuple[bytes, float]:
+    """Screenshot ``locator`` until it differs from ``before`` by more than ``tolerance``."""
+    deadline = time.monotonic() + timeout
+    while True:
+        png = screenshot(locator)
+        frac = changed_fraction(before, png)
+        if frac > tolerance or time.monotonic() > deadline:
+            return png, frac
+        time.sleep(0.4)
