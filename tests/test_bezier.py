@@ -523,3 +523,12 @@ def test_no_nan_for_legitimate_edge_cases():
     assert gb.derivative(c, [0.2, 0.4], 1).tolist() == [[0, 0, 0]] * 2
     assert gb.elevate_degree(c).tolist() == [[1, 2, 3]] * 2
     assert gb.smooth_join(c, "C1", degree=2).tolist() == [[1, 2, 3], [1, 2, 3]]
+
+
+@pytest.mark.parametrize("n", [0, 1, 1001])
+def test_bernstein_evaluate_low_and_very_high_degree(n):
+    ctrl = RNG.uniform(-1, 1, (n + 1, 2))
+    t = np.array([0.0, 0.37, 0.5, 1.0])
+    ref = binom.pmf(np.arange(n + 1), n, t[:, None]) @ ctrl
+    assert np.allclose(gb.bernstein_evaluate(ctrl, t), ref, atol=1e-12)
+    assert gb.bernstein_evaluate(ctrl, 0.25).shape == (2,)

@@ -1,0 +1,85 @@
+"""Timing helpers shared by the benchmark modules.
+
+>>> t = best_time(lambda: sum(range(100)), repeat=3, number=10)
+>>> t > 0
+True
+>>> line = report("sum", 2e-3, 1e-3, "builtin")   # doctest: +NORMALIZE_WHITESPACE
+sum  ours  2.00 ms  builtin  1.00 ms  ours/reference = 2.0x
+"""
+
+from __future__ import annotations
+
+import time
+
+__all__ = ["best_time", "best_times", "report", "fmt_time"]
+
+
+def best_time(fn, repeat: int = 7, number: int = 0, budget: float = 0.2) -> float:
+    """Seconds per call of ``fn()``: the best of ``repeat`` rounds of ``number`` calls each.
+
+    ``number=0`` picks it so that one round takes about ``budget / repeat`` seconds (at least one
+    call).  The best round, not the mean, is reported: it is the least disturbed by other load.
+    """
+    fn()  # warm up (imports, caches, allocations)
+    if number <= 0:
+        start = time.perf_counter()
+        fn()
+        once = max(time.perf_counter() - start, 1e-7)
+        number = max(1, int(budget / repeat / once))
+    best = float("inf")
+    for _ in range(repeat):
+        start = time.perf_counter()
+        for _ in range(number):
+            fn()
+        best = min(best, (time.perf_counter() - start) / number)
+    return best
+
+
+def best_times(*fns, repeat: int = 9, budget: float = 0.3) -> list[float]:
+    """Seconds per call of each ``fn()``, measured in interleaved rounds (best of ``repeat``).
+
+    Alternating the functions round by round exposes them to the same machine load, so their
+    ratio is steadier than from two separate :func:`best_time` calls on a shared machine.
+
+    >>> a, b = best_times(lambda: sum(range(10)), lambda: sum(range(1000)), repeat=3)
+    >>> a < b
+    True
+    """
+    numbers = []
+    for fn in fns:
+        fn()
+        start = time.perf_counter()
+        fn()
+        once = max(time.perf_counter() - start, 1e-7)
+        numbers.append(max(1, int(budget / len(fns) / repeat / once)))
+    best = [float("inf")] * len(fns)
+    for _ in range(repeat):
+        for i, (fn, number) in enumerate(zip(fns, numbers)):
+            start = time.perf_counter()
+            for _ in range(number):
+                fn()
+            best[i] = min(best[i], (time.perf_counter() - start) / number)
+    return best
+
+
+def fmt_time(seconds: float) -> str:
+    """Format a duration with a unit that suits it: ``12.3 us``, ``4.56 ms``, ``1.20 s``."""
+    if seconds < 1e-3:
+        return f"{seconds * 1e6:.1f} us"
+    if seconds < 1:
+        return f"{seconds * 1e3:.2f} ms"
+    return f"{seconds:.2f} s"
+
+
+def report(name: str, ours: float, ref: float | None = None, ref_name: str = "reference") -> str:
+    """Print and return one line: our time, the reference's time and ``ours/reference = R x``.
+
+    With ``ref=None`` only our time is printed (for callbacks that have no reference library).
+    """
+    if ref is None:
+        line = f"{name:<44} ours {fmt_time(ours):>10}"
+    else:
+        line = (f"{name:<44} ours {fmt_time(ours):>10}   {ref_name} {fmt_time(ref):>10}   "
+                f"ours/reference = {ours / ref:.1f}x")
+    print(line, flush=True)
+    return line
