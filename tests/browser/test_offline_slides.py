@@ -1,0 +1,157 @@
+"""`make slides`: the offline reveal.js deck of a chapter opens from file:// with no network, Reveal
+initialises, each slide heading is a slide, and the widget views appear as their static PNGs.
+
+The deck is built with scripts/build_slides.py into build/slides/ (its vendor/ copy of reveal.js,
+require.js, jQuery and MathJax is fetched with npm on the first build and reused afterwards).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import re
+from html.parser import HTMLParser
+
+import nbformat
+import pytest
+
+from .conftest import LAB_ROOT, REPO, SCREENSHOTS, course_notebooks
+
+pytestmark = pytest.mark.browser
+
+PREFERRED = "24_bezier_curves_and_surfaces.ipynb"
+
+
+def _load_build_slides():
+    spec = importlib.util.spec_from_file_location("build_slides", REPO / "scripts" / "build_slides.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _chapter():
+    """The Bezier chapter if it exists, else the chapter with the most stored images."""
+    notebooks = course_notebooks()
+    for nb in notebooks:
+        if nb.name == PREFERRED:
+            return nb
+    def images(path):
+        nb = nbformat.read(path, as_version=4)
+        return sum("image/png" in o.get("data", {}) for c in nb.cells if c.cell_type == "code" for o in c.outputs)
+    ranked = sorted(notebooks, key=lambda p: (-images(p), p.name))
+    return ranked[0] if ranked else None
+
+
+class _Resources(HTMLParser):
+    """Every URL the page would load by itself: script src, link href, img/iframe/source src."""
+
+    def __init__(self):
+        super().__init__()
+        self.urls: list[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if tag in ("script", "img", "iframe", "source", "audio", "video", "embed") and a.get("src"):
+            self.urls.append(a["src"])
+        if tag == "link" and a.get("href"):
+            self.urls.append(a["href"])
+
+
+def _slide_headings(nb) -> list[list[str]]:
+    """Words of the heading that opens each slide/subslide markdown cell (math left out)."""
+    out = []
+    for cell in nb.cells:
+        st = cell.metadata.get("slideshow", {}).get("slide_type")
+        if cell.cell_type != "markdown" or st not in ("slide", "subslide"):
+            continue
+        m = re.search(r"^\s{0,3}#{1,6}\s+(.+)$", cell.source, re.M)
+        if m:
+            text = re.sub(r"\$[^$]*\$", " ", m.group(1))
+            words = re.findall(r"[A-Za-z0-9]+", text)
+            if words:
+                out.append(words)
+    return out
+
+
+def test_offline_deck(browser_page):
+    chapter = _chapter()
+    if chapter is None:
+        pytest.skip("no notebooks in course/ yet")
+    build_slides = _load_build_slides()
+    deck = build_slides.build_deck(chapter)
+    html = deck.read_text(encoding="utf-8")
+
+    # 1. Nothing is fetched from a CDN: every script/link/img the page loads is local or inline.
+    parser = _Resources()
+    parser.feed(html)
+    remote = [u for u in parser.urls if re.match(r"^(https?:)?//", u)]
+    assert not remote, f"{deck.name} loads remote resources: {remote}"
+    assert not re.search(r"""import\s+\w+\s+from\s+['"](https?:)?//""", html), "a module import from a CDN remains"
+    # (https:// still occurs in comments of the inlined CSS and of the template's script, e.g.
+    # "https://github.com/hakimel/reveal.js#configuration"; comments load nothing.)
+
+    # 2. Open it from file:// with every non-local request blocked and recorded.
+    page = browser_page
+    requested: list[str] = []
+
+    def guard(route):
+        url = route.request.url
+        if url.startswith(("file:", "data:", "blob:", "about:")):
+            route.continue_()
+        else:
+            requested.append(url)
+            route.abort()
+
+    page.route("**/*", guard)
+    page.goto(deck.as_uri(), wait_until="load")
+    page.wait_for_function("() => !!document.querySelector('.reveal.ready')", timeout=60_000)
+    sections = page.evaluate("() => document.querySelectorAll('.reveal .slides section').length")
+    assert sections > 3, f"only {sections} reveal.js sections"
+    assert not requested, f"the deck tried to reach the network: {requested}"
+
+    # 3. Every slide heading is inside a section.
+    nb = nbformat.read(chapter, as_version=4)
+    heading_texts = page.evaluate("""() => Array.from(document.querySelectorAll(
+        '.reveal .slides section h1, .reveal .slides section h2, .reveal .slides section h3, .reveal .slides section h4'))
+        .map(h => h.textContent)""")
+    missing = []
+    for words in _slide_headings(nb):
+        if not any(all(w in text for w in words) for text in heading_texts):
+            missing.append(" ".join(words))
+    assert not missing, f"slide headings not found as slides: {missing}"
+
+    # 4. Widget outputs show their stored PNG; images decode.
+    nb_static = nbformat.read(chapter, as_version=4)
+    expected = 0
+    for cell in nb_static.cells:
+        if cell.cell_type == "code" and cell.metadata.get("slideshow", {}).get("slide_type") != "skip":
+            expected += sum("image/png" in o.get("data", {}) for o in cell.outputs)
+    images = page.evaluate("""() => Array.from(document.querySelectorAll('.reveal .slides img'))
+        .filter(i => i.src.startsWith('data:image/png')).map(i => i.naturalWidth)""")
+    assert len(images) >= expected, f"{len(images)} PNG images in the deck, expected at least {expected}"
+    assert all(w > 0 for w in images), "a PNG image in the deck does not decode"
+    assert "[interactive view" not in page.inner_text("body"), "a widget placeholder text is shown instead of its image"
+    assert page.locator('script[type="application/vnd.jupyter.widget-view+json"]').count() == 0
+
+    # 5. MathJax (local) typesets the LaTeX of the markdown cells.
+    has_math = any(c.cell_type == "markdown" and re.search(r"\$[^$]+\$", c.source) for c in nb.cells
+                   if c.metadata.get("slideshow", {}).get("slide_type") != "skip")
+    if has_math:
+        page.wait_for_function("() => !!document.querySelector('.MathJax_CHTML, .MathJax')", timeout=60_000)
+    SCREENSHOTS.mkdir(parents=True, exist_ok=True)
+    page.screenshot(path=str(SCREENSHOTS / f"offline-deck-{chapter.stem}.png"))
+    if images:   # also look at the first slide that shows a static image of a view
+        page.evaluate("""() => {
+            const img = Array.from(document.querySelectorAll('.reveal .slides img')).find(i => i.src.startsWith('data:image/png'));
+            const tops = Array.from(document.querySelectorAll('.reveal .slides > section'));
+            const h = tops.findIndex(s => s.contains(img));
+            const subs = Array.from(tops[h].querySelectorAll(':scope > section'));
+            const v = Math.max(0, subs.findIndex(s => s.contains(img)));
+            location.hash = `#/${h}/${v}`;
+        }""")
+        page.wait_for_function("() => { const s = document.querySelector('.reveal .slides section.present img'); return !!s; }",
+                               timeout=20_000)
+        page.wait_for_timeout(800)   # the slide transition
+        page.screenshot(path=str(SCREENSHOTS / f"offline-deck-{chapter.stem}-image.png"))
+    print(f"\noffline deck {deck.relative_to(REPO) if deck.is_relative_to(REPO) else deck}: "
+          f"{sections} sections, {len(heading_texts)} headings, {len(images)} PNG images "
+          f"(expected >= {expected}), math={'typeset' if has_math else 'none'}, no network requests")
