@@ -260,7 +260,7 @@ def program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> 
     program: the initial text.  The turtle starts at ``(0, 0)`` heading ``(1, 0)``.  A program
     that does not parse leaves the last good drawing and shows the parser's message
     ("line 2, column 9: expected ...") in the status line.  An example picker fills the box
-    with the programs of :data:`EXAMPLES`.  ``update(program)`` returns ``{"polylines",
+    with the programs of :data:`EXAMPLES` (``view.examples``).  ``update(program)`` returns ``{"polylines",
     "point", "direction", "status"}`` and raises ValueError (TurtleSyntaxError) for a program
     that does not parse or is too long.
 
@@ -297,6 +297,8 @@ def program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> 
                   f"the turtle ends at ({t.point[0]:.3g}, {t.point[1]:.3g}) heading {heading + 0.0:.4g}°")
         return {"polylines": t.polylines, "point": t.point, "direction": t.direction, "status": status}
 
-    return InteractiveView(controls={"program": box}, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls={"program": box}, views=[figure_widget(fig)], update=update, figure=fig,
                            title="Turtle program editor", side=True,
                            extra=[picker, widgets.HTML(_HELP, layout=widgets.Layout(width="330px"))])
+    view.examples = picker  # the example picker (not a control: it only fills the text box)
+    return view
