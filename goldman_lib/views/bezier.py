@@ -156,7 +156,7 @@ def de_casteljau_explorer(ctrl=DEFAULT_CUBIC, t: float = 0.4, box=(-1.0, 5.0, -1
                            title="de Casteljau explorer", arrange=[controls["t"], grid])
 
 
-def degree_elevation_view(ctrl=DEFAULT_CUBIC, max_times: int = 12) -> InteractiveView:
+def degree_elevation_view(ctrl=DEFAULT_CUBIC, times: int = 2, max_times: int = 12) -> InteractiveView:
     """A slider for how many times the degree is elevated (Goldman §24.5.3): the curve stays the
     same while the elevated control polygons close in on it.
 
@@ -187,7 +187,8 @@ def degree_elevation_view(ctrl=DEFAULT_CUBIC, max_times: int = 12) -> Interactiv
                 "status": f"degree {n} -> {n + times}: {len(pts)} control points, "
                           f"farthest control point {gap:.3f} from the curve"}
 
-    controls = {"times": int_slider("elevate", 0, 0, max_times)}
+    times = as_int(times, "times", minimum=0, maximum=max_times)
+    controls = {"times": int_slider("elevate", times, 0, max_times)}
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="degree elevation")
 

@@ -1,0 +1,67 @@
+"""Time every widget callback at its chapter's default size (target: under 50 ms a slider move).
+
+For a matplotlib view the cost of a slider move is ``update`` (the library call and the in-place
+``set_data``) plus one full Agg redraw of the figure, which is what ipympl does before sending the
+picture; both are printed.  For a three.js view it is ``update`` alone (the browser renders).
+Each callback is timed while cycling through values from its own slider ranges, so no cache of
+a single position flatters it.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+from benchmarks.timing import best_time, fmt_time  # noqa: E402
+from goldman_lib.views import bezier as bezier_views  # noqa: E402
+
+TARGET = 0.050  # seconds
+
+
+def _factories():
+    factories = [("ch24 de_casteljau_explorer", bezier_views.de_casteljau_explorer),
+                 ("ch24 degree_elevation_view", bezier_views.degree_elevation_view),
+                 ("ch24 bernstein_view", bezier_views.bernstein_view),
+                 ("ch24 patch_editor (three.js)", bezier_views.patch_editor)]
+    try:
+        from goldman_lib.views import turtle as turtle_views
+    except ImportError:  # chapter 1 views not present
+        return factories
+    factories = [("ch01 polygon_explorer", turtle_views.polygon_explorer),
+                 ("ch01 program_editor", turtle_views.program_editor)] + factories
+    return factories
+
+
+def time_callback(view) -> tuple[float, float | None]:
+    """(seconds per update, seconds per update + full redraw or None for three.js views)."""
+    values = itertools.cycle(view.sweep_values(n=5)[:50] or [view.values()])
+    update = lambda: view.update(**next(values))  # noqa: E731
+    alone = best_time(update, repeat=5)
+    if view.figure is None:
+        return alone, None
+
+    def update_and_draw():
+        update()
+        view.figure.canvas.draw()
+
+    return alone, best_time(update_and_draw, repeat=5)
+
+
+def main():
+    worst = 0.0
+    for name, factory in _factories():
+        view = factory()
+        alone, drawn = time_callback(view)
+        total = drawn if drawn is not None else alone
+        worst = max(worst, total)
+        drawn_text = f"update + redraw {fmt_time(drawn):>10}" if drawn is not None else "(rendered by the browser)"
+        verdict = "ok" if total < TARGET else "OVER 50 ms"
+        print(f"{name:<36} update {fmt_time(alone):>10}   {drawn_text}   {verdict}")
+    print(f"slowest callback: {fmt_time(worst)} (target {fmt_time(TARGET)})")
+
+
+if __name__ == "__main__":
+    main()
