@@ -287,14 +287,14 @@ def _as_program(program, name: str = "program") -> Program:
 def _biggest_repeat(items):
     """The REPEAT whose expansion is largest (to name it in the too-many-commands message)."""
     best = None
-    todo = list(items)
-    while todo:
-        it = todo.pop()
+    pending = list(items)
+    while pending:
+        it = pending.pop()
         if isinstance(it, Repeat):
             size = it.count * _count(it.body)
             if best is None or size > best[0]:
                 best = (size, it)
-            todo.extend(it.body)
+            pending.extend(it.body)
     return best
 
 

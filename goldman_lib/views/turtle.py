@@ -101,6 +101,8 @@ class _PathArtists:
         (self.start,) = ax.plot([], [], "o", markersize=5, markerfacecolor="white",
                                 markeredgecolor=pal["control"], zorder=3)
         (self.turtle,) = ax.plot([], [], linestyle="none", markersize=13, color=pal["point"], zorder=4)
+        # Equal scales by shrinking the axes box, never by overriding the limits set below.
+        ax.set_adjustable("box")
         self.ax = ax
 
     def set(self, polylines, start, point, direction):
