@@ -47,7 +47,8 @@ def fmt(x, digits: int = 4) -> str:
 class Result:
     """The verdict of a checker: ``correct`` (bool), ``message`` (why), ``answered`` (bool).
 
-    ``bool(result)`` is ``result.correct``.  Renders as a coloured box in JupyterLab and as one
+    ``bool(result)`` is ``result.correct``: a wrong ``Result`` is falsy, so a helper returning
+    "a Result or None" must be tested with ``is not None``, not truthiness.  Renders as a coloured box in JupyterLab and as one
     line of text (``Correct: ...`` / ``Not yet: ...``) in plain-text outputs.
     """
 
@@ -104,7 +105,7 @@ def check_number(answer, expected: float, *, what: str, tol: float = 1e-6, hint:
         return wrong(f"{what} should be a number; you gave {answer!r}.")
     if abs(value - expected) <= tol:
         return correct(f"{what} is {fmt(expected)}.")
-    msg = f"{what} should be {fmt(expected)}, you gave {fmt(value)} (off by {fmt(abs(value - expected), 2)})."
+    msg = f"{what} should be {fmt(expected)}, you gave {fmt(value)} (off by {fmt(abs(value - expected), 3)})."
     return wrong(msg + (f" Hint: {hint}." if hint else ""))
 
 
@@ -133,5 +134,5 @@ def check_points(answer, expected, *, what: str, tol: float = 1e-6, hint: str | 
     k = int(bad[0])
     g, e = got.reshape(err.shape)[k], exp.reshape(err.shape)[k]
     msg = (f"point {k} of {what} should be {fmt(e)}, you gave {fmt(g)} "
-           f"({fmt(np.linalg.norm(g - e), 2)} away).")
+           f"({fmt(np.linalg.norm(g - e), 3)} away).")
     return wrong(msg + (f" Hint: {hint}." if hint else ""))

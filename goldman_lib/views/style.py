@@ -60,9 +60,12 @@ def new_axes(figsize=FIGSIZE, equal: bool = True):
 
 
 def style_axes(ax, equal: bool = True):
-    """Apply the house style to a 2D axes: equal aspect (optional), light grid, no top/right spines."""
+    """Apply the house style to a 2D axes: equal aspect (optional), light grid, no top/right spines.
+
+    Equal aspect adjusts the axes box, not the data limits, so a view may fix its limits.
+    """
     if equal:
-        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_aspect("equal", adjustable="box")
     ax.grid(True, color="#e4e4e4", linewidth=0.6)
     ax.set_axisbelow(True)
     for side in ("top", "right"):
