@@ -36,17 +36,15 @@ Importing this module imports numpy only.
 
 from __future__ import annotations
 
-import bisect
 import difflib
 import math
-import numbers
 import re
 from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_int, as_points, check_finite
+from goldman_lib.validation import as_float, as_int, as_points
 
 __all__ = ["FORWARD", "MOVE", "TURN", "RESIZE", "COMMANDS", "MAX_COMMANDS", "MAX_DEPTH",
            "TurtleSyntaxError", "Command", "Repeat", "Program", "Trace", "Turtle",

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Result", "correct", "wrong", "unanswered", "is_unanswered", "check_number",
+__all__ = ["Result", "correct", "wrong", "unanswered", "is_unanswered", "read_number", "check_number",
            "check_points", "fmt"]
 
 
@@ -95,14 +95,29 @@ def is_unanswered(answer) -> bool:
     return answer is None or answer is Ellipsis
 
 
-def check_number(answer, expected: float, *, what: str, tol: float = 1e-6, hint: str | None = None) -> Result:
-    """Check a single number against ``expected`` within ``tol`` (absolute)."""
+def read_number(answer, what: str, unit: str = "number") -> tuple[float | None, Result | None]:
+    """Read a learner's numeric answer: ``(value, None)`` for a finite number, otherwise
+    ``(None, result)`` with the verdict to return (not answered yet, not a number, not finite).
+
+    >>> read_number("abc", "the angle", "number of degrees")
+    (None, Not yet: the angle should be a number of degrees; you gave 'abc'.)
+    """
     if is_unanswered(answer):
-        return unanswered(what)
+        return None, unanswered(what)
     try:
         value = float(answer)
     except (TypeError, ValueError):
-        return wrong(f"{what} should be a number; you gave {answer!r}.")
+        return None, wrong(f"{what} should be a {unit}; you gave {answer!r}.")
+    if not np.isfinite(value):
+        return None, wrong(f"{what} should be a finite {unit}; you gave {answer!r}.")
+    return value, None
+
+
+def check_number(answer, expected: float, *, what: str, tol: float = 1e-6, hint: str | None = None) -> Result:
+    """Check a single number against ``expected`` within ``tol`` (absolute)."""
+    value, problem = read_number(answer, what)
+    if problem is not None:
+        return problem
     if abs(value - expected) <= tol:
         return correct(f"{what} is {fmt(expected)}.")
     msg = f"{what} should be {fmt(expected)}, you gave {fmt(value)} (off by {fmt(abs(value - expected), 3)})."

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import turtle
-from goldman_lib.exercises import (Result, check_number, check_points, correct, fmt, is_unanswered,
+from goldman_lib.exercises import (Result, read_number, check_number, check_points, correct, fmt, is_unanswered,
                                    unanswered, wrong)
 
 __all__ = ["exercise_hexagon", "exercise_star_angle", "exercise_five_pointed_star",
@@ -142,14 +142,9 @@ def exercise_star_angle(answer, n: int = 7, k: int = 3) -> Result:
     Not yet: 51.43 degrees draws the regular 7-gon {7/1}. The star {7/3} joins every 3rd point, so the turtle turns 3 times as far: 360*3/7.
     """
     what = f"the turning angle of the {{{n}/{k}}} star"
-    if is_unanswered(answer):
-        return unanswered(what)
-    try:
-        a = float(answer)
-    except (TypeError, ValueError):
-        return wrong(f"{what} should be a number of degrees; you gave {answer!r}.")
-    if not np.isfinite(a):
-        return wrong(f"{what} should be a finite number of degrees; you gave {answer!r}.")
+    a, problem = read_number(answer, what, "number of degrees")
+    if problem is not None:
+        return problem
     expected = 360.0 * k / n
     r = a % 360.0
     for target in (expected, 360.0 - expected):
@@ -223,12 +218,9 @@ def exercise_total_turning(answer) -> Result:
     """
     what = "the total turning"
     expected = turtle.total_turning(turtle.star(7, 3))
-    if is_unanswered(answer):
-        return unanswered(what)
-    try:
-        a = float(answer)
-    except (TypeError, ValueError):
-        return wrong(f"{what} should be a number of degrees; you gave {answer!r}.")
+    a, problem = read_number(answer, what, "number of degrees")
+    if problem is not None:
+        return problem
     if abs(a - 360.0) <= 1e-6:
         return wrong("360 is the total turning around a simple polygon; the {7/3} star winds round its centre "
                      "3 times, so the turtle turns 3 * 360 = 1080 degrees.")
