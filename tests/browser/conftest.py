@@ -77,7 +77,7 @@ def lab_server():
         path = settings / rel
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(json.dumps(value))
-    for d in ("config", "runtime", "workspaces", "ipython"):
+    for d in ("config", "runtime", "workspaces", "ipython", "checkpoints"):
         (tmp / d).mkdir()
     bindir = os.path.dirname(sys.executable)
     env = dict(os.environ)
@@ -97,6 +97,8 @@ def lab_server():
         f"--LabApp.user_settings_dir={settings}", f"--LabApp.workspaces_dir={tmp / 'workspaces'}",
         "--LabApp.news_url=", "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
         "--ServerApp.terminals_enabled=False",
+        # Lab writes a checkpoint when it opens a notebook: keep those out of course/.
+        f"--FileCheckpoints.root_dir={tmp / 'checkpoints'}",
     ]
     if hasattr(os, "geteuid") and os.geteuid() == 0:   # containers and CI runners often run as root
         cmd.append("--allow-root")

@@ -89,7 +89,7 @@ async (path) => {
   await w.sessionContext.ready;
   app.shell.activateById(w.id);
   window.__goldmanNotebook = w;
-  return w.id;
+  return {id: w.id, windowingMode: w.content.notebookConfig.windowingMode};
 }
 """
 
@@ -128,7 +128,7 @@ _JS_DOM_PROBLEMS = """
   const nb = window.__goldmanNotebook.node;
   const out = [];
   nb.querySelectorAll('.jp-RenderedText[data-mime-type="application/vnd.jupyter.stderr"]').forEach(e => {
-    if (/Traceback|Error/.test(e.textContent)) out.push('stderr: ' + e.textContent.slice(0, 400));
+    if (/Traceback/.test(e.textContent)) out.push('stderr: ' + e.textContent.slice(0, 400));
   });
   nb.querySelectorAll('.jp-OutputArea-output').forEach(e => {
     const t = e.textContent || '';
@@ -177,7 +177,14 @@ class Lab:
 
     def open(self, relpath: str) -> str:
         """Open a notebook (path relative to the server root) and wait for its kernel."""
-        return self.page.evaluate(_JS_OPEN, relpath)
+        opened = self.page.evaluate(_JS_OPEN, relpath)
+        # A deck left running (by a test that failed half-way) would hide most cells.
+        if self.page.evaluate("() => !!document.querySelector('.jp-Deck')"):
+            self.command("deck:stop")
+            self.page.wait_for_function("() => !document.querySelector('.jp-Deck')", timeout=30_000)
+        # The isolated settings turn windowing off so every cell is in the DOM; say so if not.
+        assert opened["windowingMode"] == "none", f"notebook windowing is {opened['windowingMode']!r}, not 'none'"
+        return opened["id"]
 
     def run_all(self, timeout: float = 240) -> dict:
         """Clear outputs, run every cell, wait until each non-empty code cell has an execution count
