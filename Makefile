@@ -28,7 +28,7 @@ lab: $(STAMP)
 test: $(STAMP)
 	@bash scripts/setup_browser.sh
 	@start=$$(date +%s); status=0; \
-	$(BIN)/python -m pytest -rs --nbval-lax tests goldman_lib course $(ARGS) || status=$$?; \
+	$(BIN)/python -m pytest -rs --nbval-lax tests goldman_lib benchmarks course $(ARGS) || status=$$?; \
 	echo "make test: total wall time $$(( $$(date +%s) - start )) s"; exit $$status
 
 ## make outputs: re-execute every notebook from a clean kernel and store its outputs (the nbval baseline).
