@@ -249,12 +249,12 @@ def patch_editor(ctrl=DEFAULT_PATCH, resolution: int = 24, width: int = 480, hei
                                    np.stack([idx[:-1, :].ravel(), idx[1:, :].ravel()], 1)])
     center = base.reshape(-1, 3).mean(0)
     scene = SceneView(width=width, height=height, target=tuple(center),
-                      camera_position=tuple(center + np.array([4.5, -5.5, 4.5])), axes=1.0)
+                      camera_position=tuple(center + np.array([3.2, -4.0, 3.4])), axes=1.0)
     surface = bezier.patch_evaluate_grid(base, grid_u, grid_u)
     scene.add_mesh("patch", surface.reshape(-1, 3), grid_triangles(resolution, resolution), color=style.PALETTE["surface"])
     scene.add_segments("net", base.reshape(-1, 3), net_segments, color="#555555")
     scene.add_points("control points", base.reshape(-1, 3), color="#333333", size=0.12)
-    scene.add_points("P(u,v)", base[:1, 0], color=style.PALETTE["point"], size=0.25)
+    scene.add_points("P(u,v)", base[:1, 0], color=style.PALETTE["point"], size=0.35)
 
     controls = {f"z{i}{j}": float_slider(f"z{i}{j}", float(base[i, j, 2]), -2.0, 3.0, 0.1) for i, j in movable}
     controls["u"] = float_slider("u", 0.5, 0.0, 1.0, 0.01)

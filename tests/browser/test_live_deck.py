@@ -47,8 +47,7 @@ _JS_SLIDE = """
 
 
 def test_live_deck_three_view_responds(request):
-    if not (LAB_ROOT / DECK_NOTEBOOK).exists():
-        pytest.skip(f"{DECK_NOTEBOOK} does not exist yet (the Bezier chapter is being written)")
+    assert (LAB_ROOT / DECK_NOTEBOOK).exists(), f"{DECK_NOTEBOOK} is missing: the live-deck test needs it"
     lab = request.getfixturevalue("lab")
     page = lab.page
     lab.open(DECK_NOTEBOOK)

@@ -51,7 +51,19 @@ def test_notebook_runs_and_views_respond(lab, notebook):
         display = view.locator(".goldman-display").first
         handles = view.locator(".goldman-controls .noUi-handle")
         if handles.count() == 0:
-            report.append(f"  view {i}: no slider, not moved")
+            # A program editor: type a new program, leave the box (continuous_update=False), and
+            # the drawing must change.
+            box = view.locator(".goldman-controls textarea").first
+            assert box.count(), f"{rel}: interactive view {i} has neither a slider nor a text box"
+            before, st = wait_nonblank(display)
+            box.scroll_into_view_if_needed()
+            box.fill("REPEAT 3 [FORWARD 2 TURN 120]\nMOVE 3\nREPEAT 4 [FORWARD 1 TURN 90]")
+            box.press("Tab")
+            after, frac = wait_changed(display, before, CHANGE_TOLERANCE, timeout=15)
+            (SCREENSHOTS / f"{stem}-view{i}-before.png").write_bytes(before)
+            (SCREENSHOTS / f"{stem}-view{i}-after.png").write_bytes(after)
+            report.append(f"  view {i}: typed a program, changed {frac:.1%} of the display")
+            assert frac > CHANGE_TOLERANCE, f"{rel}: typing a program into view {i} did not change its drawing"
             continue
         before, st = wait_nonblank(display)
         (SCREENSHOTS / f"{stem}-view{i}-before.png").write_bytes(before)
