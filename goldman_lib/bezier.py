@@ -299,7 +299,7 @@ def derivative(ctrl, t, order=1) -> np.ndarray:
 
 
 def elevate_degree(ctrl, times=1) -> np.ndarray:
-    """Control points of the same curve written with degree n+times (Goldman §24.5.3, §24.4).
+    """Control points of the same curve written with degree n+times (Goldman §24.5, as a consequence of uniqueness).
 
     One elevation: ``Q_0 = P_0``, ``Q_k = k/(n+1) P_{k-1} + (1 - k/(n+1)) P_k``, ``Q_{n+1} = P_n``.
     The new control polygon lies closer to the curve; repeated elevation converges to it.

@@ -51,7 +51,7 @@ PROBLEMS = {
         f"{_pts(HODOGRAPH_CTRL)} (Goldman §24.5)."),
     "check_degree_elevation": (
         f"Elevate the quadratic with control points {_pts(ELEVATION_CTRL)} to degree 3: give the four new "
-        f"control points (Goldman §24.5.3)."),
+        f"control points (Goldman §24.5)."),
     "check_c1_join": (
         f"A second cubic Q continues the cubic with control points {_pts(JOIN_CTRL)}, over a parameter interval "
         f"of the same length. Give Q0 and Q1 so that the join is C1 (Goldman §24.5.1)."),
@@ -137,7 +137,7 @@ def check_hodograph(answer) -> Result:
 
 
 def check_degree_elevation(answer) -> Result:
-    """Check the control points of ``ELEVATION_CTRL`` elevated to degree 3 (Goldman §24.5.3).
+    """Check the control points of ``ELEVATION_CTRL`` elevated to degree 3 (Goldman §24.5).
 
     answer: (4, 2).  Recognises the weights swapped between ``P_{k-1}`` and ``P_k`` and a wrong
     number of points.

@@ -157,7 +157,7 @@ def de_casteljau_explorer(ctrl=DEFAULT_CUBIC, t: float = 0.4, box=(-1.0, 5.0, -1
 
 
 def degree_elevation_view(ctrl=DEFAULT_CUBIC, times: int = 2, max_times: int = 12) -> InteractiveView:
-    """A slider for how many times the degree is elevated (Goldman §24.5.3): the curve stays the
+    """A slider for how many times the degree is elevated (Goldman §24.5): the curve stays the
     same while the elevated control polygons close in on it.
 
     ``update(times)`` returns the elevated polygon and the largest distance from its points to
