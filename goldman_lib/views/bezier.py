@@ -149,11 +149,11 @@ def de_casteljau_explorer(ctrl=DEFAULT_CUBIC, t: float = 0.4, box=(-1.0, 5.0, -1
         return {"curve": crv, "polygon": pts, "levels": steps[1:], "point": c,
                 "status": f"t = {t:.2f}:  C(t) = ({c[0]:.3f}, {c[1]:.3f}); {n} levels of affine combinations"}
 
-    # The point sliders two to a row (x, y), so a cubic fits on one deck slide.
-    grid = widgets.GridBox([controls[f"{a}{k}"] for k in range(n + 1) for a in "xy"],
-                           layout=widgets.Layout(grid_template_columns="repeat(2, 290px)"))
+    # Controls beside the figure, t first and set apart, so the view fits on one deck slide.
+    points_label = widgets.HTML("<small>control points</small>")
+    arrange = [controls["t"], points_label] + [controls[f"{a}{k}"] for k in range(n + 1) for a in "xy"]
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="de Casteljau explorer", arrange=[controls["t"], grid])
+                           title="de Casteljau explorer", arrange=arrange, side=True)
 
 
 def degree_elevation_view(ctrl=DEFAULT_CUBIC, times: int = 2, max_times: int = 12) -> InteractiveView:
