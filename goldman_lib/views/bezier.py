@@ -16,12 +16,12 @@ import numpy as np
 from goldman_lib import bezier
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, figure_widget
+from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.three import SceneView, grid_triangles
 
 __all__ = ["plot_control_polygon", "plot_curve", "plot_construction", "plot_bernstein",
            "de_casteljau_explorer", "degree_elevation_view", "bernstein_view", "patch_editor",
-           "DEFAULT_CUBIC", "DEFAULT_PATCH", "float_slider", "int_slider"]
+           "DEFAULT_CUBIC", "DEFAULT_PATCH"]
 
 #: The cubic the chapter starts from (a gentle S with a loop-free hull).
 DEFAULT_CUBIC = np.array([[0.0, 0.0], [1.0, 2.5], [3.0, 2.5], [4.0, 0.5]])
@@ -38,24 +38,6 @@ def _default_patch() -> np.ndarray:
 
 #: The bicubic patch of the three.js view: control net ``(4, 4, 3)``.
 DEFAULT_PATCH = _default_patch()
-
-
-def float_slider(description: str, value: float, low: float, high: float, step: float = 0.05, width: str = "290px"):
-    """A compact float slider in the house style (label width fixed so stacks of sliders align)."""
-    import ipywidgets as widgets
-
-    return widgets.FloatSlider(value=value, min=low, max=high, step=step, description=description,
-                               continuous_update=True, readout_format=".2f",
-                               style={"description_width": "48px"}, layout=widgets.Layout(width=width))
-
-
-def int_slider(description: str, value: int, low: int, high: int, width: str = "290px"):
-    """A compact integer slider in the house style."""
-    import ipywidgets as widgets
-
-    return widgets.IntSlider(value=value, min=low, max=high, step=1, description=description,
-                             continuous_update=True, style={"description_width": "48px"},
-                             layout=widgets.Layout(width=width))
 
 
 # -- static plots -------------------------------------------------------------------------------

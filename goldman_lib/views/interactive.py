@@ -29,7 +29,24 @@ from typing import Callable, Mapping
 import ipywidgets as widgets
 import numpy as np
 
-__all__ = ["InteractiveView", "figure_widget", "figure_png", "control_grid"]
+__all__ = ["InteractiveView", "figure_widget", "figure_png", "control_grid", "float_slider", "int_slider"]
+
+
+def float_slider(description: str, value: float, low: float, high: float, step: float = 0.05, *,
+                 width: str = "290px", label_width: str = "48px", readout: str = ".2f") -> widgets.FloatSlider:
+    """A compact float slider in the house style: fixed label width so stacks of sliders align,
+    and ``continuous_update`` on (callbacks are fast enough to follow the drag)."""
+    return widgets.FloatSlider(value=value, min=low, max=high, step=step, description=description,
+                               continuous_update=True, readout_format=readout,
+                               style={"description_width": label_width}, layout=widgets.Layout(width=width))
+
+
+def int_slider(description: str, value: int, low: int, high: int, *, width: str = "290px",
+               label_width: str = "48px") -> widgets.IntSlider:
+    """A compact integer slider in the house style."""
+    return widgets.IntSlider(value=value, min=low, max=high, step=1, description=description,
+                             continuous_update=True, style={"description_width": label_width},
+                             layout=widgets.Layout(width=width))
 
 
 def figure_png(fig) -> bytes:

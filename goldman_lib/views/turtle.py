@@ -26,7 +26,7 @@ import numpy as np
 from goldman_lib import turtle
 from goldman_lib.validation import as_float, as_int, as_points
 from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, figure_widget
+from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
 __all__ = ["plot_polylines", "plot_program", "polygon_explorer", "program_editor", "EXAMPLES",
            "DEFAULT_PROGRAM", "stroke_data", "heading_marker"]
@@ -209,23 +209,17 @@ def polygon_explorer(angle: float = 72.0, step: float = 1.0, repetitions: int = 
     >>> polygon_explorer(144, 1, 5).last_result["closes"]
     True
     """
-    import ipywidgets as widgets
 
     angle = as_float(angle, "angle")
     step = as_float(step, "step", positive=True)
     repetitions = as_int(repetitions, "repetitions", minimum=1, maximum=120)
     factor = as_float(factor, "factor", positive=True)
-    lay = widgets.Layout(width="330px")
-    sty = {"description_width": "80px"}
+    wide = {"width": "330px", "label_width": "80px"}
     controls = {
-        "angle": widgets.FloatSlider(value=angle, min=0, max=360, step=0.5, description="TURN angle",
-                                     readout_format=".1f", layout=lay, style=sty),
-        "step": widgets.FloatSlider(value=step, min=0.1, max=3, step=0.1, description="FORWARD",
-                                    readout_format=".1f", layout=lay, style=sty),
-        "repetitions": widgets.IntSlider(value=repetitions, min=1, max=120, description="REPEAT",
-                                         layout=lay, style=sty),
-        "factor": widgets.FloatSlider(value=factor, min=0.8, max=1.2, step=0.01, description="RESIZE",
-                                      readout_format=".2f", layout=lay, style=sty),
+        "angle": float_slider("TURN angle", angle, 0, 360, 0.5, readout=".1f", **wide),
+        "step": float_slider("FORWARD", step, 0.1, 3, 0.1, readout=".1f", **wide),
+        "repetitions": int_slider("REPEAT", repetitions, 1, 120, **wide),
+        "factor": float_slider("RESIZE", factor, 0.8, 1.2, 0.01, **wide),
     }
     fig, ax = style.new_axes(figsize)
     artists = _PathArtists(ax)
