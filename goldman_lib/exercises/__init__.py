@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Result", "correct", "wrong", "unanswered", "is_unanswered", "read_number", "check_number",
+__all__ = ["Result", "correct", "wrong", "unanswered", "is_unanswered", "read_number", "read_points", "check_number",
            "check_points", "fmt"]
 
 
@@ -113,6 +113,25 @@ def read_number(answer, what: str, unit: str = "number") -> tuple[float | None, 
     return value, None
 
 
+def read_points(answer, what: str, ask: str | None = None) -> tuple[np.ndarray | None, Result | None]:
+    """Read a learner's array answer (points, vectors): ``(array, None)`` if it is finite numbers,
+    otherwise ``(None, result)`` with the verdict to return.  ``ask`` is what the "not answered
+    yet" message asks for (default ``what``).
+
+    >>> read_points([[0, 1], [2, "x"]], "the control points")
+    (None, Not yet: the control points should be numbers; you gave [[0, 1], [2, 'x']].)
+    """
+    if is_unanswered(answer):
+        return None, unanswered(ask or what)
+    try:
+        arr = np.asarray(answer, dtype=float)
+    except (TypeError, ValueError):
+        return None, wrong(f"{what} should be numbers; you gave {answer!r}.")
+    if not np.all(np.isfinite(arr)):
+        return None, wrong(f"{what} contain a NaN or infinite value.")
+    return arr, None
+
+
 def check_number(answer, expected: float, *, what: str, tol: float = 1e-6, hint: str | None = None) -> Result:
     """Check a single number against ``expected`` within ``tol`` (absolute)."""
     value, problem = read_number(answer, what)
@@ -131,17 +150,12 @@ def check_points(answer, expected, *, what: str, tol: float = 1e-6, hint: str | 
     >>> check_points([[0, 0], [1, 1.1]], [[0, 0], [1, 1]], what="the control points")
     Not yet: point 1 of the control points should be (1, 1), you gave (1, 1.1) (0.1 away).
     """
-    if is_unanswered(answer):
-        return unanswered(what)
-    try:
-        got = np.asarray(answer, dtype=float)
-    except (TypeError, ValueError):
-        return wrong(f"{what} should be an array of numbers; you gave {answer!r}.")
+    got, problem = read_points(answer, what)
+    if problem is not None:
+        return problem
     exp = np.asarray(expected, dtype=float)
     if got.shape != exp.shape:
         return wrong(f"{what} should have shape {exp.shape}; yours has shape {got.shape}.")
-    if not np.all(np.isfinite(got)):
-        return wrong(f"{what} contain a NaN or infinite value.")
     err = np.abs(got - exp).reshape(-1, exp.shape[-1]) if exp.ndim else np.abs(got - exp).reshape(1, 1)
     bad = np.flatnonzero(err.max(axis=1) > tol)
     if bad.size == 0:

@@ -17,7 +17,7 @@ import numpy as np
 
 from goldman_lib import bezier
 from goldman_lib.exercises import (Result, check_number, check_points, correct, fmt, is_unanswered,
-                                   unanswered, wrong)
+                                   read_points, wrong)
 
 __all__ = ["PROBLEMS", "DE_CASTELJAU_CTRL", "DE_CASTELJAU_T", "HODOGRAPH_CTRL", "ELEVATION_CTRL",
            "JOIN_CTRL", "BERNSTEIN_N", "BERNSTEIN_K", "BERNSTEIN_T",
@@ -60,16 +60,6 @@ PROBLEMS = {
 }
 
 
-def _as_array(answer, what):
-    try:
-        arr = np.asarray(answer, dtype=float)
-    except (TypeError, ValueError):
-        return None, wrong(f"{what} should be numbers; you gave {answer!r}.")
-    if not np.all(np.isfinite(arr)):
-        return None, wrong(f"{what} contain a NaN or infinite value.")
-    return arr, None
-
-
 def check_de_casteljau_point(answer) -> Result:
     """Check the point of the cubic ``DE_CASTELJAU_CTRL`` at ``t = DE_CASTELJAU_T`` (Goldman §24.2).
 
@@ -85,9 +75,7 @@ def check_de_casteljau_point(answer) -> Result:
     Not yet: (1.25, 2.25) is a point of level 2 of the construction, not the end: a cubic needs 3 levels of affine combinations.
     """
     what = f"the point at t={fmt(DE_CASTELJAU_T)}"
-    if is_unanswered(answer):
-        return unanswered(what + " as [x, y]")
-    got, err = _as_array(answer, "your point")
+    got, err = read_points(answer, "your point", ask=what + " as [x, y]")
     if err is not None:
         return err
     if got.shape != (2,):
@@ -120,9 +108,7 @@ def check_hodograph(answer) -> Result:
     Not yet: these are the differences P_{k+1} - P_k; the hodograph multiplies them by the degree n = 3.
     """
     what = "the hodograph's control points"
-    if is_unanswered(answer):
-        return unanswered(what)
-    got, err = _as_array(answer, what)
+    got, err = read_points(answer, what)
     if err is not None:
         return err
     n = len(HODOGRAPH_CTRL) - 1
@@ -148,9 +134,7 @@ def check_degree_elevation(answer) -> Result:
     Not yet: the weights are swapped: Q_k = k/(n+1) P_(k-1) + (1 - k/(n+1)) P_k gives P_(k-1) the weight k/(n+1).
     """
     what = "the elevated control points"
-    if is_unanswered(answer):
-        return unanswered(what)
-    got, err = _as_array(answer, what)
+    got, err = read_points(answer, what)
     if err is not None:
         return err
     P = ELEVATION_CTRL
@@ -180,9 +164,7 @@ def check_c1_join(answer) -> Result:
     Not yet: the tangent direction is right, so the join is G1, but not C1: with equal parameter intervals Q1 - Q0 must equal P3 - P2 = (1, -1), yours is (2, -2).
     """
     what = "Q0 and Q1"
-    if is_unanswered(answer):
-        return unanswered(what + " as [[x0, y0], [x1, y1]]")
-    got, err = _as_array(answer, what)
+    got, err = read_points(answer, what, ask=what + " as [[x0, y0], [x1, y1]]")
     if err is not None:
         return err
     if got.shape != (2, 2):
