@@ -191,7 +191,7 @@ def browser_page(browser_context, request):
 
 
 @pytest.fixture
-def lab(lab_server, browser_page):
+def lab(browser_page, lab_server):  # the browser first: without chromium, skip before starting Lab
     """A page with JupyterLab loaded (workspace reset) and ``window.jupyterapp`` restored."""
     from .labdriver import Lab
 
