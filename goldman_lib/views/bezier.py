@@ -106,10 +106,10 @@ def de_casteljau_explorer(ctrl=DEFAULT_CUBIC, t: float = 0.4, box=(-1.0, 5.0, -1
     ax.set_xlim(xmin, xmax)
     ax.set_ylim(ymin, ymax)
     ax.set_aspect("equal", adjustable="box")
-    (polygon,) = ax.plot([], [], "o--", color=style.PALETTE["control"], markersize=6, linewidth=1)
-    (curve,) = ax.plot([], [], color=style.PALETTE["curve"], linewidth=2.4)
-    levels = [ax.plot([], [], "o-", color=style.level_colour(k), markersize=4, linewidth=1.2)[0] for k in range(1, n)]
-    (point,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=9, zorder=5)
+    # The artists are drawn once by the static plot functions, then moved in place by update.
+    polygon = plot_control_polygon(ctrl, ax, labels=False)
+    curve = plot_curve(ctrl, ax)
+    levels, point = plot_construction(ctrl, t, ax)
     ax.set_title("de Casteljau construction", fontsize=10)
     samples = np.linspace(0.0, 1.0, 160)
 
@@ -182,11 +182,9 @@ def bernstein_view(n: int = 3, t: float = 0.4, max_degree: int = 12) -> Interact
     ``update(n, t)`` returns the basis values at ``t``.
     """
     fig, ax = style.new_axes(equal=False)
+    lines = plot_bernstein(max_degree, ax)  # one line per basis function of the largest degree
     ax.set_xlim(0, 1)
-    ax.set_ylim(-0.02, 1.02)
-    ax.set_xlabel("t")
     samples = np.linspace(0.0, 1.0, 200)
-    lines = [ax.plot([], [], linewidth=1.6)[0] for _ in range(max_degree + 1)]
     marker = ax.axvline(t, color=style.PALETTE["point"], linewidth=1)
     (dots,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=5)
 
