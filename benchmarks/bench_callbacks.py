@@ -16,23 +16,14 @@ import matplotlib
 matplotlib.use("Agg")
 
 from benchmarks.timing import best_time, fmt_time  # noqa: E402
-from goldman_lib.views import bezier as bezier_views  # noqa: E402
+from goldman_lib.views.interactive import discover_factories  # noqa: E402
 
 TARGET = 0.050  # seconds
 
 
 def _factories():
-    factories = [("ch24 de_casteljau_explorer", bezier_views.de_casteljau_explorer),
-                 ("ch24 degree_elevation_view", bezier_views.degree_elevation_view),
-                 ("ch24 bernstein_view", bezier_views.bernstein_view),
-                 ("ch24 patch_editor (three.js)", bezier_views.patch_editor)]
-    try:
-        from goldman_lib.views import turtle as turtle_views
-    except ImportError:  # chapter 1 views not present
-        return factories
-    factories = [("ch01 polygon_explorer", turtle_views.polygon_explorer),
-                 ("ch01 program_editor", turtle_views.program_editor)] + factories
-    return factories
+    """Every widget factory of goldman_lib.views (found by its ``-> InteractiveView`` annotation)."""
+    return discover_factories()
 
 
 def time_callback(view) -> tuple[float, float | None]:
@@ -50,9 +41,11 @@ def time_callback(view) -> tuple[float, float | None]:
     return alone, best_time(update_and_draw, repeat=5)
 
 
-def main():
+def main(only: str | None = None):
     worst = 0.0
     for name, factory in _factories():
+        if only and only not in name:
+            continue
         view = factory()
         alone, drawn = time_callback(view)
         total = drawn if drawn is not None else alone

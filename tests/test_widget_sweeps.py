@@ -5,28 +5,15 @@ view has a static fallback PNG.  A new chapter's widgets are covered as soon as 
 chapter tests add checks of *what* is drawn.
 """
 
-import importlib
-import inspect
-import pkgutil
-
 import numpy as np
 import pytest
 
-import goldman_lib.views
+from goldman_lib.views import interactive
 from goldman_lib.views.interactive import InteractiveView
 
 
 def discover_factories():
-    found = []
-    for info in pkgutil.iter_modules(goldman_lib.views.__path__):
-        module = importlib.import_module(f"goldman_lib.views.{info.name}")
-        for name, fn in inspect.getmembers(module, inspect.isfunction):
-            if fn.__module__ != module.__name__ or name.startswith("_"):
-                continue
-            ret = inspect.signature(fn).return_annotation
-            if ret in (InteractiveView, "InteractiveView"):
-                found.append(pytest.param(fn, id=f"{info.name}.{name}"))
-    return found
+    return [pytest.param(fn, id=name) for name, fn in interactive.discover_factories()]
 
 
 FACTORIES = discover_factories()

@@ -29,7 +29,8 @@ from typing import Callable, Mapping
 import ipywidgets as widgets
 import numpy as np
 
-__all__ = ["InteractiveView", "figure_widget", "figure_png", "control_grid", "float_slider", "int_slider"]
+__all__ = ["InteractiveView", "figure_widget", "figure_png", "control_grid", "float_slider", "int_slider",
+           "discover_factories"]
 
 
 def float_slider(description: str, value: float, low: float, high: float, step: float = 0.05, *,
@@ -224,3 +225,27 @@ class InteractiveView(widgets.VBox):
             data["image/png"] = base64.b64encode(png).decode("ascii")
         data["text/plain"] = f"[interactive view{': ' + self.title if self.title else ''}; run the notebook to use it]"
         return data
+
+
+def discover_factories() -> list[tuple[str, Callable[[], "InteractiveView"]]]:
+    """Every public widget factory of ``goldman_lib.views``, found by its return annotation
+    (``-> InteractiveView``), as ``("module.name", factory)`` pairs sorted by name.
+
+    The widget sweeps (tests) and the callback benchmark both use this list, so a new chapter's
+    widgets are swept and timed as soon as their factories exist.
+    """
+    import importlib
+    import inspect
+    import pkgutil
+
+    import goldman_lib.views as views_pkg
+
+    found = []
+    for info in pkgutil.iter_modules(views_pkg.__path__):
+        module = importlib.import_module(f"goldman_lib.views.{info.name}")
+        for name, fn in inspect.getmembers(module, inspect.isfunction):
+            if fn.__module__ != module.__name__ or name.startswith("_"):
+                continue
+            if inspect.signature(fn).return_annotation in (InteractiveView, "InteractiveView"):
+                found.append((f"{info.name}.{name}", fn))
+    return sorted(found)
