@@ -1,0 +1,384 @@
+"""Two-dimensional affine transformations as 3x3 matrices (Goldman §4.2-4.7).
+
+The book's convention, used everywhere in this course: **points are row vectors and a
+transformation acts on the right**.  A point ``P = (x, y)`` gets affine coordinates ``(x, y, 1)``
+and a vector ``v = (a, b)`` gets ``(a, b, 0)``; an affine map is a 3x3 matrix
+
+    M = | a  b  0 |        (x, y, 1) @ M = (a x + c y + e,  b x + d y + f,  1)
+        | c  d  0 |
+        | e  f  1 |
+
+whose upper-left 2x2 block ``L`` is the linear part and whose **last row** ``(e, f)`` is the
+translation (§4.5).  Vectors ignore the translation: ``(a, b, 0) @ M = (a, b) @ L``.  Composition
+reads left to right: ``P @ M1 @ M2`` applies ``M1`` first, so ``compose(M1, M2) = M1 @ M2``.
+
+Angles are in degrees (counterclockwise positive), as in the turtle language.
+
+>>> M = compose(rotation(90), translation([1, 0]))
+>>> apply([[1, 0]], M).round(12)
+array([[1., 1.]])
+
+Importing this module imports numpy only.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .validation import as_float, as_points, check_finite
+
+__all__ = [
+    "identity", "translation", "rotation", "scaling", "directional_scaling", "shear", "similarity",
+    "from_parameters", "to_parameters", "affine_from_point_and_vectors", "affine_from_points",
+    "apply", "apply_vectors", "compose", "inverse", "as_affine", "linear_part", "translation_part",
+    "fixed_point", "is_conformal",
+]
+
+
+def _cos_sin(angle: float) -> tuple[float, float]:
+    """cos and sin of an angle in degrees, exact at multiples of 90 degrees."""
+    a = float(angle) % 360.0
+    exact = {0.0: (1.0, 0.0), 90.0: (0.0, 1.0), 180.0: (-1.0, 0.0), 270.0: (0.0, -1.0)}
+    if a in exact:
+        return exact[a]
+    r = math.radians(a)
+    return math.cos(r), math.sin(r)
+
+
+def _point(p, name: str) -> np.ndarray:
+    return as_points(p, name, ndim=1, dim=2)
+
+
+def _matrix(L, t=(0.0, 0.0)) -> np.ndarray:
+    M = np.eye(3)
+    M[:2, :2] = L
+    M[2, :2] = t
+    return M
+
+
+def _about(M: np.ndarray, center) -> np.ndarray:
+    """Conjugate ``M`` by the translation taking ``center`` to the origin (a map about a point)."""
+    if center is None:
+        return M
+    c = _point(center, "center")
+    return translation(-c) @ M @ translation(c)
+
+
+def as_affine(M, name: str = "M") -> np.ndarray:
+    """Validate a 3x3 affine matrix (or a stack ``(..., 3, 3)``) in the row-vector convention (§4.5).
+
+    The last column must be ``(0, 0, 1)``: the translation sits in the last row.  Returns a float
+    copy.  Raises ValueError naming ``name`` and the rule it breaks.
+
+    >>> as_affine([[1, 0, 0], [0, 1, 0], [2, 3, 1]])[2]
+    array([2., 3., 1.])
+    >>> as_affine([[1, 0, 2], [0, 1, 3], [0, 0, 1]])
+    Traceback (most recent call last):
+    ...
+    ValueError: M must have last column (0, 0, 1) (row-vector convention: the translation is the last row); got column [2. 3. 1.]
+    """
+    try:
+        arr = np.array(M, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"{name} must be a 3x3 numeric matrix; got {type(M).__name__}") from exc
+    if arr.ndim < 2 or arr.shape[-2:] != (3, 3):
+        raise ValueError(f"{name} must have shape (3, 3) (or a stack (k, 3, 3)); got shape {arr.shape}")
+    check_finite(arr, name)
+    col = arr[..., :, 2]
+    bad = ~np.all(np.isclose(col, [0.0, 0.0, 1.0], atol=1e-12), axis=-1)
+    if np.any(bad):
+        where = np.argwhere(np.atleast_1d(bad))[0]
+        shown = col if arr.ndim == 2 else col[tuple(where)]
+        label = name if arr.ndim == 2 else f"{name}[{', '.join(map(str, where))}]"
+        raise ValueError(f"{label} must have last column (0, 0, 1) (row-vector convention: the translation "
+                         f"is the last row); got column {shown}")
+    return arr
+
+
+def identity() -> np.ndarray:
+    """The identity map (Goldman §4.5).
+
+    >>> identity()[2]
+    array([0., 0., 1.])
+    """
+    return np.eye(3)
+
+
+def translation(v) -> np.ndarray:
+    """Translation by the vector ``v`` (Goldman §4.2.1): ``P -> P + v``; ``v`` is the last row.
+
+    v: (2,).  Raises ValueError if ``v`` is not a finite 2-vector.
+
+    >>> apply([[1, 1]], translation([2, -1]))
+    array([[3., 0.]])
+    """
+    return _matrix(np.eye(2), _point(v, "v"))
+
+
+def rotation(angle, center=None) -> np.ndarray:
+    """Rotation by ``angle`` degrees counterclockwise about ``center`` (default the origin) (Goldman §4.2.2).
+
+    About the origin the linear part is ``[[cos, sin], [-sin, cos]]`` (row vectors, acting on the
+    right); about a point Q it is ``T(-Q) R T(Q)`` (§4.4).
+
+    >>> apply([[2, 1]], rotation(90, center=[1, 1])).round(12)
+    array([[1., 2.]])
+    """
+    c, s = _cos_sin(as_float(angle, "angle"))
+    return _about(_matrix([[c, s], [-s, c]]), center)
+
+
+def scaling(factor, center=None) -> np.ndarray:
+    """Scaling about ``center`` (default the origin) (Goldman §4.2.3, §4.7.2).
+
+    factor: a number (uniform scaling, §4.2.3) or a pair ``(sx, sy)`` (nonuniform scaling along the
+    coordinate axes).  A zero factor is allowed (it collapses the plane onto a line or point, as
+    the condensation maps of an IFS may); use :func:`inverse` to find out if a map is invertible.
+
+    >>> apply([[3, 1]], scaling(2, center=[1, 1]))
+    array([[5., 1.]])
+    >>> apply([[1, 1]], scaling([2, 3]))
+    array([[2., 3.]])
+    """
+    f = np.array(factor, dtype=float)
+    if f.ndim == 0:
+        f = np.array([f, f])
+    if f.shape != (2,):
+        raise ValueError(f"factor must be a number or a pair (sx, sy); got shape {f.shape}")
+    check_finite(f, "factor")
+    return _about(_matrix(np.diag(f)), center)
+
+
+def directional_scaling(factor, direction, center=None) -> np.ndarray:
+    """Nonuniform scaling by ``factor`` along ``direction`` about ``center`` (Goldman §4.7.2).
+
+    Components parallel to the unit vector ``w`` are multiplied by ``factor``; perpendicular
+    components are unchanged: ``v -> v + (factor - 1) (v . w) w``.
+
+    direction: (2,) nonzero vector.  Raises ValueError for a zero direction.
+
+    >>> apply([[1, 1]], directional_scaling(3, [1, 0]))
+    array([[3., 1.]])
+    """
+    s = as_float(factor, "factor")
+    w = _point(direction, "direction")
+    n = math.hypot(*w)
+    if n == 0:
+        raise ValueError("direction must be a nonzero vector; got (0, 0)")
+    w = w / n
+    return _about(_matrix(np.eye(2) + (s - 1.0) * np.outer(w, w)), center)
+
+
+def shear(k, center=None) -> np.ndarray:
+    """The horizontal shear ``(x, y) -> (x + k y, y)`` about ``center`` (Goldman §4.7).
+
+    >>> apply([[1, 2]], shear(0.5))
+    array([[2., 2.]])
+    """
+    return _about(_matrix([[1.0, 0.0], [as_float(k, "k"), 1.0]]), center)
+
+
+def similarity(scale, angle, translate=(0.0, 0.0), *, reflect: bool = False) -> np.ndarray:
+    """A conformal map: scale by ``scale``, optionally reflect in the x-axis, rotate by ``angle``
+    degrees, then translate (Goldman §8.3: the maps of a conformal IFS).
+
+    >>> apply([[1, 0]], similarity(0.5, 90, [1, 1])).round(12)
+    array([[1. , 1.5]])
+    """
+    M = scaling(as_float(scale, "scale"))
+    if reflect:
+        M = M @ scaling([1.0, -1.0])
+    return M @ rotation(angle) @ translation(translate)
+
+
+def from_parameters(angle=0.0, scale=(1.0, 1.0), shear=0.0, translate=(0.0, 0.0)) -> np.ndarray:
+    """The map "scale, then shear, then rotate, then translate" (the IFS editor's sliders).
+
+    ``M = S(sx, sy) H(shear) R(angle) T(translate)``, so a point is scaled along the axes first,
+    sheared ``(x, y) -> (x + shear y, y)``, rotated counterclockwise by ``angle`` degrees and
+    translated last.  Every 2D affine map has this form (:func:`to_parameters` inverts it), so a
+    handful of sliders reach every map.
+
+    >>> M = from_parameters(angle=30, scale=(0.5, 0.25), shear=0.2, translate=(1, 2))
+    >>> np.allclose(from_parameters(**to_parameters(M)), M)
+    True
+    """
+    H = _matrix([[1.0, 0.0], [as_float(shear, "shear"), 1.0]])
+    return scaling(scale) @ H @ rotation(angle) @ translation(translate)
+
+
+def to_parameters(M) -> dict:
+    """The parameters ``angle, scale, shear, translate`` with ``from_parameters(**p) == M``.
+
+    Write the linear part as ``L = D H R`` (diagonal, shear, rotation).  Row 0 of ``L`` is
+    ``sx (cos a, sin a)``, which gives ``a`` and ``sx >= 0``; row 1 times ``R^T`` is
+    ``(sy h, sy)``.  A reflection shows up as ``sy < 0``.  If row 0 is zero the angle is taken as 0.
+
+    >>> p = to_parameters(rotation(90) @ translation([1, 2]))
+    >>> round(p["angle"], 9), p["scale"], p["translate"]
+    (90.0, (1.0, 1.0), (1.0, 2.0))
+    """
+    M = as_affine(M)
+    L = M[:2, :2]
+    sx = math.hypot(L[0, 0], L[0, 1])
+    angle = math.degrees(math.atan2(L[0, 1], L[0, 0])) if sx > 0 else 0.0
+    c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+    R = np.array([[c, s], [-s, c]])
+    v = L[1] @ R.T
+    sy = float(v[1])
+    h = float(v[0] / sy) if sy != 0 else 0.0
+    return {"angle": angle, "scale": (float(sx), sy), "shear": h,
+            "translate": (float(M[2, 0]), float(M[2, 1]))}
+
+
+def affine_from_point_and_vectors(point, vectors, image_point, image_vectors) -> np.ndarray:
+    """The unique affine map sending a point and two vectors to given images (Goldman §4.7.1).
+
+    point, image_point: (2,).  vectors, image_vectors: (2, 2), one vector per row; the two
+    ``vectors`` must be linearly independent.  Then ``L = V^-1 W`` and the translation makes
+    ``point -> image_point``.  Raises ValueError if the vectors are parallel.
+
+    >>> M = affine_from_point_and_vectors([0, 0], [[1, 0], [0, 1]], [1, 1], [[0, 1], [-1, 0]])
+    >>> np.allclose(M, rotation(90) @ translation([1, 1]))
+    True
+    """
+    P = _point(point, "point")
+    Q = _point(image_point, "image_point")
+    V = as_points(vectors, "vectors", dim=2)
+    W = as_points(image_vectors, "image_vectors", dim=2)
+    if V.shape != (2, 2) or W.shape != (2, 2):
+        raise ValueError(f"vectors and image_vectors must each hold two 2D vectors, shape (2, 2); "
+                         f"got {V.shape} and {W.shape}")
+    det = V[0, 0] * V[1, 1] - V[0, 1] * V[1, 0]
+    if abs(det) <= 1e-12 * max(1.0, float(np.abs(V).max()) ** 2):
+        raise ValueError(f"vectors must be linearly independent; {V[0]} and {V[1]} are parallel")
+    L = np.linalg.solve(V, W)
+    return _matrix(L, Q - P @ L)
+
+
+def affine_from_points(src, dst) -> np.ndarray:
+    """The unique affine map sending three non-collinear points to three points (Goldman §4.7.3).
+
+    src, dst: (3, 2).  Solves ``[src | 1] @ M = [dst | 1]``.  Raises ValueError if the source
+    points are collinear (then no map, or infinitely many, exist).
+
+    >>> M = affine_from_points([[0, 0], [1, 0], [0, 1]], [[1, 1], [3, 1], [1, 4]])
+    >>> M.round(12)
+    array([[2., 0., 0.],
+           [0., 3., 0.],
+           [1., 1., 1.]])
+    """
+    A = as_points(src, "src", dim=2)
+    B = as_points(dst, "dst", dim=2)
+    if A.shape != (3, 2) or B.shape != (3, 2):
+        raise ValueError(f"src and dst must each hold three 2D points, shape (3, 2); got {A.shape} and {B.shape}")
+    u, v = A[1] - A[0], A[2] - A[0]
+    area2 = u[0] * v[1] - u[1] * v[0]
+    scale = max(1.0, float(np.abs(A - A[0]).max()) ** 2)
+    if abs(area2) <= 1e-12 * scale:
+        raise ValueError(f"src points must not be collinear; {A.tolist()} lie on one line")
+    H = np.column_stack([A, np.ones(3)])
+    M = np.linalg.solve(H, np.column_stack([B, np.ones(3)]))
+    M[:, 2] = (0.0, 0.0, 1.0)
+    return M
+
+
+def apply(points, M) -> np.ndarray:
+    """Apply an affine map to points (Goldman §4.5): ``Q = [P 1] @ M``.
+
+    points: (..., 2).  M: (3, 3).  Returns the same shape as ``points``.
+
+    >>> apply([[0, 0], [1, 0]], translation([0, 1]))
+    array([[0., 1.],
+           [1., 1.]])
+    """
+    P = as_points(points, "points", ndim=None, dim=2)
+    M = as_affine(M)
+    return P @ M[:2, :2] + M[2, :2]
+
+
+def apply_vectors(vectors, M) -> np.ndarray:
+    """Apply an affine map to vectors (Goldman §4.5): ``[v 0] @ M``, the translation ignored.
+
+    >>> apply_vectors([[1, 0]], translation([5, 5]))
+    array([[1., 0.]])
+    """
+    V = as_points(vectors, "vectors", ndim=None, dim=2)
+    return V @ as_affine(M)[:2, :2]
+
+
+def compose(*maps) -> np.ndarray:
+    """The map that applies ``maps[0]`` first, then ``maps[1]``, ... (Goldman §4.3): their product
+    left to right, since points are row vectors.
+
+    >>> np.allclose(compose(translation([1, 0]), rotation(90)), translation([1, 0]) @ rotation(90))
+    True
+    """
+    out = np.eye(3)
+    for i, M in enumerate(maps):
+        out = out @ as_affine(M, f"maps[{i}]")
+    return out
+
+
+def inverse(M) -> np.ndarray:
+    """The inverse affine map (Goldman §4.3).  Raises ValueError if ``M`` is singular.
+
+    >>> np.allclose(inverse(rotation(30)) @ rotation(30), np.eye(3))
+    True
+    """
+    M = as_affine(M)
+    det = np.linalg.det(M[:2, :2])
+    if abs(det) < 1e-14:
+        raise ValueError(f"M must be invertible; its linear part has determinant {det:.3g}")
+    out = np.linalg.inv(M)
+    out[:, 2] = (0.0, 0.0, 1.0)
+    return out
+
+
+def linear_part(M) -> np.ndarray:
+    """The 2x2 linear part of an affine map (acting on row vectors).
+
+    >>> linear_part(scaling(2))
+    array([[2., 0.],
+           [0., 2.]])
+    """
+    return as_affine(M)[..., :2, :2].copy()
+
+
+def translation_part(M) -> np.ndarray:
+    """The translation of an affine map: its last row, the image of the origin.
+
+    >>> translation_part(translation([1, 2]))
+    array([1., 2.])
+    """
+    return as_affine(M)[..., 2, :2].copy()
+
+
+def fixed_point(M) -> np.ndarray:
+    """The fixed point ``P = P M`` of an affine map (Goldman §6.2, §7.2).
+
+    Solves ``P (I - L) = t``.  Every contraction has exactly one fixed point.  Raises ValueError if
+    ``I - L`` is singular (no fixed point, or a whole line of them).
+
+    >>> fixed_point(scaling(0.5, center=[2, 1]))
+    array([2., 1.])
+    """
+    M = as_affine(M)
+    A = np.eye(2) - M[:2, :2]
+    if abs(np.linalg.det(A)) < 1e-14:
+        raise ValueError("M must have a unique fixed point; I - L is singular (1 is an eigenvalue of its linear part)")
+    return np.linalg.solve(A.T, M[2, :2])
+
+
+def is_conformal(M, tol: float = 1e-9) -> bool:
+    """Whether a map preserves angles (a similarity: rotation, uniform scaling, reflection,
+    translation), Goldman §8.3.  True iff ``L L^T`` is a multiple of the identity.
+
+    >>> is_conformal(similarity(0.5, 30, [1, 2])), is_conformal(scaling([1, 2]))
+    (True, False)
+    """
+    L = as_affine(M)[:2, :2]
+    G = L @ L.T
+    return bool(abs(G[0, 1]) <= tol * max(1.0, abs(G[0, 0])) and abs(G[0, 0] - G[1, 1]) <= tol * max(1.0, abs(G[0, 0])))

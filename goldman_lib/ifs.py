@@ -1,0 +1,356 @@
+"""Iterated function systems and their fractals (Goldman §6.1-6.4).
+
+An IFS is a finite list of affine maps ``w_1, ..., w_k`` of the plane (3x3 matrices in the book's
+row-vector convention of :mod:`goldman_lib.affine`: ``Q = [x y 1] @ M``, translation in the last
+row).  Its attractor is the unique compact set ``A = w_1(A) ∪ ... ∪ w_k(A)`` (§6.3); with a
+condensation set ``C`` it is ``A = C ∪ w_1(A) ∪ ... ∪ w_k(A)`` (§6.4).  Two algorithms draw it:
+
+* :func:`deterministic` applies every map to the current set, level after level (§6.1): after
+  ``L`` levels a start set of ``m`` points becomes ``k**L * m`` points, in blocks, so a start
+  polyline stays a polyline in every copy.
+* :func:`chaos_game` (the random algorithm) moves a point by a randomly chosen map, again and
+  again.  Many independent points move at once (numpy), each starting at the fixed point of the
+  first map, which lies on the attractor, so every point returned lies on the attractor.
+
+Ready-made systems: :func:`sierpinski`, :func:`koch`, :func:`barnsley_fern`, :func:`dragon`,
+:func:`c_curve`, :func:`tree` (with a trunk as condensation set), :func:`sierpinski_carpet`,
+:func:`cantor`; :data:`STANDARD` maps their names to the constructors.
+
+>>> pts = deterministic(sierpinski(), levels=3)
+>>> pts.shape
+(27, 2)
+
+Importing this module imports numpy only.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import affine
+from .validation import as_int, as_points, check_finite
+
+__all__ = ["IFS", "deterministic", "chaos_game", "map_images", "UNIT_SQUARE", "MAX_POINTS", "STANDARD",
+           "sierpinski", "koch", "barnsley_fern", "dragon", "c_curve", "tree", "sierpinski_carpet", "cantor"]
+
+#: The most points :func:`deterministic` or :func:`chaos_game` will produce (memory guard).
+MAX_POINTS = 5_000_000
+
+#: The unit square as a closed polyline, the default shape whose images show what each map does.
+UNIT_SQUARE = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]])
+
+
+def _rng(rng) -> np.random.Generator:
+    if isinstance(rng, np.random.Generator):
+        return rng
+    if rng is None or isinstance(rng, (int, np.integer)):
+        return np.random.default_rng(rng)
+    raise TypeError(f"rng must be a numpy.random.Generator, an int seed or None; got {type(rng).__name__}")
+
+
+class IFS:
+    """An iterated function system: affine maps, chaos-game probabilities, a condensation set
+    (Goldman §6.1-6.4).
+
+    maps: a sequence of 3x3 affine matrices (row-vector convention), or a ``(k, 3, 3)`` array.
+    probabilities: ``(k,)`` non-negative weights for the chaos game, normalised to sum 1; by
+    default proportional to each map's area factor ``|det L|`` (with a floor of 1% of the
+    largest, so a map that flattens the plane is still chosen sometimes).  condensation: an
+    optional ``(m, 2)`` polyline, the condensation set of §6.4 (drawn by :func:`deterministic`).
+
+    Raises ValueError naming the map or probability that breaks a rule.
+
+    >>> s = IFS([affine.scaling(0.5), affine.scaling(0.5, center=[1, 0])])
+    >>> len(s), s.probabilities.tolist()
+    (2, [0.5, 0.5])
+    """
+
+    def __init__(self, maps, probabilities=None, condensation=None, name: str = ""):
+        arr = affine.as_affine(maps, "maps")
+        if arr.ndim == 2:
+            arr = arr[None]
+        if arr.ndim != 3 or len(arr) == 0:
+            raise ValueError(f"maps must be a non-empty list of 3x3 matrices; got shape {arr.shape}")
+        self.maps = arr
+        self.probabilities = self._probabilities(probabilities)
+        self.condensation = None if condensation is None else as_points(condensation, "condensation", dim=2)
+        self.name = str(name)
+
+    def _probabilities(self, probabilities) -> np.ndarray:
+        k = len(self.maps)
+        if probabilities is None:
+            area = np.abs(np.linalg.det(self.maps[:, :2, :2]))
+            top = area.max()
+            w = np.maximum(area, 0.01 * top) if top > 0 else np.ones(k)
+        else:
+            w = np.array(probabilities, dtype=float).reshape(-1)
+            if w.shape != (k,):
+                raise ValueError(f"probabilities must have one entry per map ({k}); got {w.size}")
+            check_finite(w, "probabilities")
+            if np.any(w < 0):
+                i = int(np.argmax(w < 0))
+                raise ValueError(f"probabilities must be non-negative; probabilities[{i}]={w[i]:g}")
+            if w.sum() <= 0:
+                raise ValueError("probabilities must not all be zero")
+        return w / w.sum()
+
+    def __len__(self) -> int:
+        return len(self.maps)
+
+    @property
+    def linear_parts(self) -> np.ndarray:
+        """``(k, 2, 2)`` linear parts of the maps."""
+        return self.maps[:, :2, :2]
+
+    @property
+    def translations(self) -> np.ndarray:
+        """``(k, 2)`` translations (the last rows)."""
+        return self.maps[:, 2, :2]
+
+    def fixed_points(self) -> np.ndarray:
+        """``(k, 2)`` fixed points of the maps (Goldman §6.2); each lies on the attractor when the
+        maps are contractions.  Raises ValueError if a map has no unique fixed point."""
+        return np.array([affine.fixed_point(M) for M in self.maps])
+
+    def __repr__(self) -> str:
+        extra = ", with condensation" if self.condensation is not None else ""
+        return f"IFS({self.name or 'unnamed'!r}, {len(self)} maps{extra})"
+
+
+def _as_ifs(system) -> IFS:
+    if isinstance(system, IFS):
+        return system
+    try:
+        return IFS(system)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"system must be an IFS or a list of 3x3 affine maps ({exc})") from exc
+
+
+def _apply_all(pts: np.ndarray, L: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Every map applied to every point: ``(k * N, 2)``, in blocks of N per map."""
+    return (np.matmul(pts[None], L) + t[:, None, :]).reshape(-1, 2)
+
+
+def deterministic(system, levels, start=None) -> np.ndarray:
+    """The deterministic algorithm: apply every map of the IFS to the set, ``levels`` times (Goldman §6.1, §6.3).
+
+    system: an :class:`IFS` (or a list of maps).  levels: int >= 0.  start: ``(m, 2)`` points, by
+    default the fixed point of the first map (a point of the attractor, so every point returned is
+    on the attractor).  Without a condensation set the result is ``W^levels(start)``: ``k**levels
+    * m`` points, in blocks of ``m`` (``result.reshape(-1, m, 2)`` gives the copies of a start
+    polyline; the copy ``w_{i_L}(...w_{i_1}(start))`` is block number ``i_L i_{L-1} ... i_1`` read
+    in base k, so the copies of a curve's pieces come in order along the curve).  With a condensation set ``C`` (§6.4) it is ``A_levels`` where ``A_0 = start`` (or
+    ``C``) and ``A_{n+1} = C ∪ W(A_n)``, with ``C``'s copies again in blocks of ``len(C)``.
+
+    Raises ValueError if the result would exceed :data:`MAX_POINTS` points.
+
+    >>> deterministic(IFS([affine.scaling(0.5), affine.scaling(0.5, center=[1, 0])]), 2, start=[[0, 0], [1, 0]])
+    array([[0.  , 0.  ],
+           [0.25, 0.  ],
+           [0.25, 0.  ],
+           [0.5 , 0.  ],
+           [0.5 , 0.  ],
+           [0.75, 0.  ],
+           [0.75, 0.  ],
+           [1.  , 0.  ]])
+    """
+    s = _as_ifs(system)
+    levels = as_int(levels, "levels", minimum=0)
+    C = s.condensation
+    if start is None:
+        pts = C if C is not None else s.fixed_points()[:1]
+    else:
+        pts = as_points(start, "start", dim=2)
+    k = len(s)
+    if C is None:
+        total = len(pts) * k ** levels
+    else:
+        total = len(pts) * k ** levels + len(C) * sum(k ** j for j in range(levels))
+    if total > MAX_POINTS:
+        raise ValueError(f"levels={levels} would make {total:,} points; at most {MAX_POINTS:,} "
+                         f"(use fewer levels or a smaller start set)")
+    L, t = s.linear_parts, s.translations
+    for _ in range(levels):
+        pts = _apply_all(pts, L, t)
+        if C is not None:
+            pts = np.concatenate([C, pts])
+    return pts
+
+
+def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096) -> np.ndarray:
+    """The random algorithm (chaos game) for the attractor of an IFS (Goldman §6.3).
+
+    ``chains`` points move at once; at each step each is replaced by its image under a map
+    chosen at random with the IFS's probabilities.  Every chain starts at the fixed point of the
+    first map, which lies on the attractor, and the first ``burn_in`` steps are discarded as well,
+    so every point returned lies on the attractor (up to rounding).  The condensation set, if
+    any, is not used (it belongs to the deterministic algorithm, §6.4).
+
+    system: an :class:`IFS`.  n: number of points (1 <= n <= MAX_POINTS).  rng: a
+    ``numpy.random.Generator``, an int seed or None.  Returns ``(n, 2)``.
+    Raises ValueError if the points escape to infinity (the maps are not contractive).
+
+    >>> chaos_game(sierpinski(), 4, rng=0).shape
+    (4, 2)
+    """
+    s = _as_ifs(system)
+    n = as_int(n, "n", minimum=1, maximum=MAX_POINTS)
+    burn_in = as_int(burn_in, "burn_in", minimum=0)
+    chains = min(as_int(chains, "chains", minimum=1), n)
+    gen = _rng(rng)
+    k = len(s)
+    steps = -(-n // chains)
+    try:
+        start = affine.fixed_point(s.maps[0])
+    except ValueError:
+        start = np.zeros(2)
+    idx = gen.choice(k, size=(burn_in + steps, chains), p=s.probabilities)
+    L, t = s.linear_parts, s.translations
+    a, b, c, d = L[:, 0, 0], L[:, 0, 1], L[:, 1, 0], L[:, 1, 1]
+    e, f = t[:, 0], t[:, 1]
+    x = np.full(chains, start[0])
+    y = np.full(chains, start[1])
+    out = np.empty((steps, 2, chains))
+    with np.errstate(over="ignore", invalid="ignore"):
+        for step in range(burn_in + steps):
+            i = idx[step]
+            x, y = x * a[i] + y * c[i] + e[i], x * b[i] + y * d[i] + f[i]
+            if step >= burn_in:
+                out[step - burn_in, 0] = x
+                out[step - burn_in, 1] = y
+    pts = out.transpose(0, 2, 1).reshape(-1, 2)[:n]
+    if not np.all(np.isfinite(pts)):
+        raise ValueError("the chaos game's points escaped to infinity: the maps must be contractions "
+                         "(every map shrinks distances)")
+    return pts
+
+
+def map_images(system, shape=None) -> np.ndarray:
+    """The image of a shape under each map of the IFS: ``(k, m, 2)`` (Goldman §6.1).
+
+    shape: ``(m, 2)`` polyline, default :data:`UNIT_SQUARE`; the images show at a glance how each
+    map moves, turns, shears and shrinks the plane.
+
+    >>> map_images(IFS([affine.scaling(0.5)]))[0, 2]
+    array([0.5, 0.5])
+    """
+    s = _as_ifs(system)
+    P = UNIT_SQUARE if shape is None else as_points(shape, "shape", dim=2)
+    return np.matmul(P[None], s.linear_parts) + s.translations[:, None, :]
+
+
+# -- the standard systems --------------------------------------------------------------------------
+
+def sierpinski() -> IFS:
+    """The Sierpinski gasket (Goldman §6.1): three maps scaling by 1/2 about the corners of an
+    equilateral triangle with vertices (0, 0), (1, 0), (1/2, sqrt(3)/2).
+
+    >>> deterministic(sierpinski(), 1).round(3).tolist()
+    [[0.0, 0.0], [0.5, 0.0], [0.25, 0.433]]
+    """
+    corners = [(0.0, 0.0), (1.0, 0.0), (0.5, math.sqrt(3) / 2)]
+    return IFS([affine.scaling(0.5, center=c) for c in corners], name="Sierpinski gasket")
+
+
+def koch() -> IFS:
+    """The Koch curve from (0, 0) to (1, 0) (Goldman §6.1): four similarities with ratio 1/3.
+
+    >>> len(koch()), deterministic(koch(), 0, start=[[0, 0], [1, 0]]).tolist()
+    (4, [[0.0, 0.0], [1.0, 0.0]])
+    """
+    third = 1.0 / 3.0
+    peak = (0.5, math.sqrt(3) / 6)
+    maps = [affine.similarity(third, 0),
+            affine.similarity(third, 60, (third, 0.0)),
+            affine.similarity(third, -60, peak),
+            affine.similarity(third, 0, (2 * third, 0.0))]
+    return IFS(maps, name="Koch curve")
+
+
+def barnsley_fern() -> IFS:
+    """Barnsley's fern (Goldman §6.3) with its classic probabilities 0.01, 0.85, 0.07, 0.07.
+
+    The classic coefficients act on column vectors, ``(x, y) -> A (x, y) + b``; in the row-vector
+    convention the linear part is ``A`` transposed.
+
+    >>> barnsley_fern().probabilities.tolist()
+    [0.01, 0.85, 0.07, 0.07]
+    """
+    coeffs = [  # a, b, c, d, e, f for x' = a x + b y + e, y' = c x + d y + f
+        (0.0, 0.0, 0.0, 0.16, 0.0, 0.0),
+        (0.85, 0.04, -0.04, 0.85, 0.0, 1.6),
+        (0.20, -0.26, 0.23, 0.22, 0.0, 1.6),
+        (-0.15, 0.28, 0.26, 0.24, 0.0, 0.44),
+    ]
+    maps = [np.array([[a, c, 0.0], [b, d, 0.0], [e, f, 1.0]]) for a, b, c, d, e, f in coeffs]
+    return IFS(maps, probabilities=[0.01, 0.85, 0.07, 0.07], name="Barnsley fern")
+
+
+def dragon() -> IFS:
+    """Heighway's dragon from (0, 0) to (1, 0) (Goldman §6.1): two similarities with ratio
+    1/sqrt(2), turning by 45 and 135 degrees: ``z -> (1+i) z / 2`` and ``z -> 1 - (1-i) z / 2``.
+    The two halves meet at (1/2, 1/2); the second map's fixed point is (3/5, 1/5).
+
+    >>> dragon().fixed_points().round(12).tolist()
+    [[0.0, 0.0], [0.6, 0.2]]
+    """
+    r = 1.0 / math.sqrt(2)
+    return IFS([affine.similarity(r, 45), affine.similarity(r, 135, (1.0, 0.0))], name="dragon")
+
+
+def c_curve() -> IFS:
+    """Lévy's C-curve from (0, 0) to (1, 0) (Goldman §6.1): two similarities with ratio
+    1/sqrt(2), turning by +45 and -45 degrees.
+
+    >>> c_curve().fixed_points().round(12).tolist()
+    [[0.0, 0.0], [1.0, 0.0]]
+    """
+    r = 1.0 / math.sqrt(2)
+    return IFS([affine.similarity(r, 45), affine.similarity(r, -45, (0.5, 0.5))], name="C-curve")
+
+
+def tree(angle: float = 30.0, ratio: float = 0.6) -> IFS:
+    """A fractal tree (Goldman §6.4): a trunk from (0, 0) to (0, 1) as condensation set and two
+    maps that shrink by ``ratio`` and turn by ``±angle`` degrees onto the top of the trunk.
+
+    >>> t = tree(); t.condensation.tolist(), len(t)
+    ([[0.0, 0.0], [0.0, 1.0]], 2)
+    """
+    trunk = np.array([[0.0, 0.0], [0.0, 1.0]])
+    return IFS([affine.similarity(ratio, angle, (0.0, 1.0)), affine.similarity(ratio, -angle, (0.0, 1.0))],
+               condensation=trunk, name="fractal tree")
+
+
+def sierpinski_carpet() -> IFS:
+    """The Sierpinski carpet: eight maps scaling the unit square by 1/3 onto its border cells.
+
+    >>> len(sierpinski_carpet())
+    8
+    """
+    cells = [(i, j) for i in range(3) for j in range(3) if (i, j) != (1, 1)]
+    return IFS([affine.scaling(1 / 3) @ affine.translation([i / 3, j / 3]) for i, j in cells],
+               name="Sierpinski carpet")
+
+
+def cantor() -> IFS:
+    """The Cantor set on [0, 1] (two maps scaling by 1/3 about 0 and about 1).
+
+    >>> deterministic(cantor(), 1, start=[[0, 0], [1, 0]]).tolist()
+    [[0.0, 0.0], [0.3333333333333333, 0.0], [0.6666666666666667, 0.0], [1.0, 0.0]]
+    """
+    return IFS([affine.scaling(1 / 3), affine.scaling(1 / 3, center=[1, 0])], name="Cantor set")
+
+
+#: Name -> constructor of every ready-made system (the IFS editor's presets).
+STANDARD = {
+    "Sierpinski gasket": sierpinski,
+    "Koch curve": koch,
+    "Barnsley fern": barnsley_fern,
+    "dragon": dragon,
+    "C-curve": c_curve,
+    "fractal tree": tree,
+    "Sierpinski carpet": sierpinski_carpet,
+    "Cantor set": cantor,
+}
