@@ -351,27 +351,53 @@ def de_boor_steps(ctrl, knots, degree, u) -> list[np.ndarray]:
 # §27.3 the global de Boor algorithm and the B-spline basis
 # --------------------------------------------------------------------------------------------
 
-def _pyramid(P: np.ndarray, t: np.ndarray, p: int, u: np.ndarray, k: np.ndarray) -> np.ndarray:
-    """de Boor's pyramid for flat u (N,) with spans k (N,), ctrl P (n+1, d); returns (d, N).
+# de Boor's pyramid for many parameters.  The per-span data (the p+1 control points of each span,
+# and the weights a = (u - t_i)/(t_{i+p+1-r} - t_i) = A u + B of every pyramid node) are tabulated
+# once, then gathered for each parameter with one row-gather per table.  Parameters are processed
+# in blocks of about 1000: every temporary then stays below glibc's 128 KB mmap threshold, so no
+# call pays page faults on freshly mapped memory (that, not the arithmetic, would dominate).
+_BLOCK_BYTES = 96 * 1024
 
-    Points are kept as (d, N) rows (one per pyramid node), updated in place."""
-    PT = P.T                                                   # (d, n+1)
-    rows = [PT[:, k - p + j] for j in range(p + 1)]           # fancy indexing copies
-    if p == 0:
-        return rows[0]
-    # knots t[k-p+1 .. k+p] for every parameter: row q holds t[k - p + 1 + q]
-    tk = t[k[None, :] + np.arange(-p + 1, p + 1)[:, None]]     # (2p, N)
-    buf = np.empty_like(rows[0])
-    for r in range(1, p + 1):
-        for j in range(p, r - 1, -1):
-            # i = k - p + j; lo = t[i] = tk[j - 1]; hi = t[i + p + 1 - r] = tk[j + p - r]
-            lo = tk[j - 1]
-            alpha = (u - lo) / (tk[j + p - r] - lo)
-            row = rows[j]
-            row -= rows[j - 1]
-            row *= alpha
-            row += rows[j - 1]
-    return rows[p]
+
+def _pyramid_tables(P: np.ndarray, t: np.ndarray, p: int):
+    n, d = P.shape[0] - 1, P.shape[1]
+    ks = np.arange(p, n + 1)
+    win = np.lib.stride_tricks.sliding_window_view(P, (p + 1, d))[:, 0]      # (n+1-p, p+1, d)
+    ctab = np.ascontiguousarray(win.reshape(n + 1 - p, (p + 1) * d))
+    nodes = [(r, j) for r in range(1, p + 1) for j in range(p, r - 1, -1)]
+    if not nodes:
+        return ctab, np.zeros((n + 1 - p, 0)), nodes
+    lo = np.stack([t[ks - p + j] for r, j in nodes], 1)
+    hi = np.stack([t[ks + j + 1 - r] for r, j in nodes], 1)
+    den = hi - lo
+    A = np.divide(1.0, den, out=np.zeros_like(den), where=den > 0)  # den = 0 only on empty spans
+    return ctab, np.ascontiguousarray(np.concatenate([A, -lo * A], 1)), nodes
+
+
+def _pyramid(P: np.ndarray, t: np.ndarray, p: int, u: np.ndarray, k: np.ndarray) -> np.ndarray:
+    """de Boor's pyramid for flat u (N,) with non-empty spans k (N,), ctrl P (n+1, d); returns (d, N)."""
+    d = P.shape[1]
+    ctab, wtab, nodes = _pyramid_tables(P, t, p)
+    idx = k - p
+    out = np.empty((d, u.size))
+    block = max(64, _BLOCK_BYTES // (8 * max(ctab.shape[1], wtab.shape[1], 1)))
+    m = len(nodes)
+    for s in range(0, u.size, block):
+        ub, ib = u[s:s + block], idx[s:s + block]
+        C = np.take(ctab, ib, axis=0).T.reshape(p + 1, d, ub.size)
+        rows = [np.ascontiguousarray(C[j]) for j in range(p + 1)]
+        if m:
+            G = np.take(wtab, ib, axis=0).T
+            alpha = np.empty(ub.size)
+            for q, (r, j) in enumerate(nodes):
+                np.multiply(G[q], ub, out=alpha)
+                alpha += G[m + q]
+                row = rows[j]                # P_j <- P_{j-1} + a (P_j - P_{j-1})
+                row -= rows[j - 1]
+                row *= alpha
+                row += rows[j - 1]
+        out[:, s:s + block] = rows[p]
+    return out
 
 
 def _basis_local(t: np.ndarray, p: int, u: np.ndarray, k: np.ndarray) -> np.ndarray:
@@ -462,4 +488,517 @@ def global_de_boor(ctrl, knots, degree, u) -> np.ndarray:
     P, t, p = _curve_args(ctrl, knots, degree)
     return basis(t, p, u) @ P
 
-__all__ = [_n for _n in __all__ if _n in globals()]  # (temporary: the rest of the chapter follows)
+
+# --------------------------------------------------------------------------------------------
+# §27.4 derivatives and smoothness at the knots
+# --------------------------------------------------------------------------------------------
+
+def _derivative_ctrl(P: np.ndarray, t: np.ndarray, p: int):
+    """Control points and knots of the derivative (no validation); p >= 1."""
+    den = t[p + 1:p + 1 + P.shape[0] - 1] - t[1:P.shape[0]]
+    diff = P[1:] - P[:-1]
+    scale = np.divide(p, den, out=np.zeros_like(den), where=den > 0)
+    return diff * scale[:, None], t[1:-1], p - 1
+
+
+def derivative_ctrl(ctrl, knots, degree):
+    """The derivative of a B-spline curve as a B-spline of one degree less (Goldman §27.4).
+
+    ``C'(u) = sum_i Q_i N_{i+1,p-1}(u)`` with ``Q_i = p (P_{i+1} - P_i) / (t_{i+p+1} - t_{i+1})``
+    on the knots ``t_1 .. t_{n+p}`` (the end knots dropped).  Where ``t_{i+p+1} = t_{i+1}`` (a knot
+    of multiplicity p+1, where the curve may jump) the basis function of ``Q_i`` vanishes and
+    ``Q_i`` is set to 0.
+
+    ctrl: (n+1, d) with n >= 1.  knots: (n+p+2,).  degree: p >= 1.
+    Returns ``(Q, knots', p - 1)`` with Q (n, d) and knots' (n+p,).
+    Raises ValueError for a bad curve or degree 0.
+
+    >>> Q, t1, p1 = derivative_ctrl([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2)
+    >>> Q.tolist(), t1.tolist(), p1
+    ([[2.0, 4.0], [2.0, -4.0]], [0.0, 0.0, 1.0, 1.0], 1)
+    """
+    P, t, p = _curve_args(ctrl, knots, degree)
+    if p < 1:
+        raise ValueError("degree must be >= 1 to differentiate (a degree-0 spline is piecewise constant)")
+    return _derivative_ctrl(P, t, p)
+
+
+def _evaluate(P: np.ndarray, t: np.ndarray, p: int, flat: np.ndarray, side: str = "right") -> np.ndarray:
+    """Validated data, flat u: (N, d)."""
+    k = _spans(t, p, flat, side)
+    return _pyramid(P, t, p, flat, k).T
+
+
+def derivative(ctrl, knots, degree, u, order: int = 1, side: str = "right") -> np.ndarray:
+    """The ``order``-th derivative of a B-spline curve at u (Goldman §27.4).
+
+    Differentiates the control polygon ``order`` times (:func:`derivative_ctrl`) and runs de Boor
+    on the result.  At a knot the derivative may jump: ``side="right"`` gives the derivative from
+    the right (the polynomial of the span starting at u), ``side="left"`` from the left.  Above the
+    degree the derivative is 0.
+
+    ctrl: (n+1, d).  knots: (n+p+2,).  degree: p.  u: scalar or array inside the domain.
+    order: int >= 0.  Returns u.shape + (d,).
+    Raises ValueError as :func:`de_boor`, for a negative order, or a side other than left/right.
+
+    >>> derivative([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, 0.5).tolist()
+    [2.0, 0.0]
+    """
+    P, t, p = _curve_args(ctrl, knots, degree)
+    order = as_int(order, "order", minimum=0)
+    if side not in ("left", "right"):
+        raise ValueError(f"side must be 'left' or 'right'; got {side!r}")
+    u = _check_u(u, t, p)
+    flat = u.reshape(-1)
+    if order > p:
+        return np.zeros(u.shape + (P.shape[1],))
+    Q, s, q = P, t, p
+    # spans are located on the original knots, so a one-sided limit keeps its side at every order
+    k = _spans(t, p, flat, side)
+    for _ in range(order):
+        Q, s, q = _derivative_ctrl(Q, s, q)
+    out = _pyramid(Q, s, q, flat, k - order).T
+    return out.reshape(u.shape + (P.shape[1],))
+
+
+def continuity_at(knots, degree, value) -> int:
+    """The order of continuity ``C^(p - m)`` of every B-spline at a knot of multiplicity ``m`` (Goldman §27.4).
+
+    Returns ``degree - multiplicity(knots, value)``: ``p`` (a polynomial, C^infinity in fact)
+    where value is not a knot, ``-1`` where the curve may jump (multiplicity p+1).
+
+    >>> continuity_at([0, 0, 0, 0, 0.5, 0.5, 1, 1, 1, 1], 3, 0.5)
+    1
+    """
+    t = check_knots(knots, degree)
+    return int(degree) - multiplicity(t, value)
+
+
+def derivative_jumps(ctrl, knots, degree, value) -> np.ndarray:
+    """The jumps ``|C^(r)(value+) - C^(r)(value-)|`` of the derivatives r = 0..p at an interior parameter (Goldman §27.4).
+
+    At a knot of multiplicity m the first ``p - m + 1`` entries (orders 0 .. p-m) are 0 up to
+    rounding: the curve is ``C^(p-m)`` there.
+
+    ctrl: (n+1, d).  knots: (n+p+2,).  degree: p.  value: a scalar strictly inside the domain.
+    Returns (p+1,) Euclidean lengths of the jumps.
+
+    >>> derivative_jumps([[0], [0], [1], [0]], [0, 0, 0, 0.5, 1, 1, 1], 2, 0.5).round(12).tolist()
+    [0.0, 0.0, 16.0]
+    """
+    P, t, p = _curve_args(ctrl, knots, degree)
+    x = _check_u(as_float(value, "value"), t, p, "value")
+    if not t[p] < x < t[t.size - p - 1]:
+        raise ValueError(f"value must lie strictly inside the domain ({_fmt(t[p])}, {_fmt(t[t.size - p - 1])}); got {_fmt(x)}")
+    out = np.empty(p + 1)
+    for r in range(p + 1):
+        right = derivative(P, t, p, x, r, side="right")
+        left = derivative(P, t, p, x, r, side="left")
+        out[r] = np.linalg.norm(right - left)
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# §27.6 every spline is a B-spline
+# --------------------------------------------------------------------------------------------
+
+def _elementary_symmetric(args: np.ndarray) -> np.ndarray:
+    """e_0 .. e_p of p numbers (the coefficients of prod (1 + a_i x))."""
+    e = np.zeros(args.size + 1)
+    e[0] = 1.0
+    for a in args:
+        e[1:] = e[1:] + a * e[:-1]
+    return e
+
+
+def _monomial_blossom(coeffs: np.ndarray, args: np.ndarray) -> np.ndarray:
+    """Blossom of sum_m coeffs[m] t^m (coeffs (p+1, d)) at p arguments: sum_m c_m e_m / C(p, m)."""
+    p = args.size
+    e = _elementary_symmetric(args)
+    w = e / np.array([math.comb(p, m) for m in range(p + 1)], dtype=float)
+    return w @ coeffs
+
+
+def spline_to_bspline(pieces, breaks, continuity):
+    """Write a piecewise polynomial with given smoothness in B-spline form (Goldman §27.6).
+
+    Piece ``i`` is the polynomial ``sum_m pieces[i, m] u^m`` on ``[breaks[i], breaks[i+1]]``
+    (power coefficients in the global parameter u, lowest first, as numpy.polynomial).  At the
+    interior break ``breaks[i]`` the pieces join with ``C^c`` continuity, ``c = continuity[i-1]``
+    in ``-1 .. p-1``.  The knot vector repeats each interior break ``p - c`` times and each end
+    ``p + 1`` times, and the control point ``P_j`` is the blossom of any piece whose span lies
+    in the support of ``N_{j,p}``, at ``(t_{j+1}, ..., t_{j+p})`` -- the smoothness is exactly
+    what makes these blossoms agree (the dual functional property).
+
+    pieces: (L, p+1, d).  breaks: (L+1,) strictly increasing.  continuity: an int for every
+    break or (L-1,) ints in -1 .. p-1.  Returns ``(ctrl, knots, p)``.
+    Raises ValueError if the shapes disagree, the breaks do not increase, a continuity is out
+    of range, or the pieces do not actually join with the stated smoothness (naming the break).
+
+    >>> # the parabola u^2 on [0, 2], cut at 1 with C^1 continuity
+    >>> ctrl, knots, p = spline_to_bspline([[[0], [0], [1]], [[0], [0], [1]]], [0, 1, 2], 1)
+    >>> ctrl.ravel().tolist(), knots.tolist()
+    ([0.0, 0.0, 2.0, 4.0], [0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0])
+    """
+    C = as_points(pieces, "pieces", ndim=3)
+    L, p1, d = C.shape
+    p = p1 - 1
+    br = as_parameter(breaks, "breaks").reshape(-1)
+    if br.size != L + 1:
+        raise ValueError(f"breaks must hold len(pieces) + 1 = {L + 1} numbers; got {br.size}")
+    if np.any(np.diff(br) <= 0):
+        i = int(np.flatnonzero(np.diff(br) <= 0)[0]) + 1
+        raise ValueError(f"breaks must be strictly increasing; breaks[{i}]={_fmt(br[i])} <= breaks[{i - 1}]={_fmt(br[i - 1])}")
+    cont = np.asarray(continuity)
+    if cont.ndim == 0:
+        cont = np.full(max(L - 1, 0), cont)
+    cont = np.asarray([as_int(c, "continuity", minimum=-1, maximum=p - 1) for c in cont.reshape(-1)], dtype=int)
+    if cont.size != L - 1:
+        raise ValueError(f"continuity must hold one order per interior break, {L - 1}; got {cont.size}")
+    knots = np.concatenate([np.full(p + 1, br[0])] + [np.full(p - c, b) for b, c in zip(br[1:-1], cont)]
+                           + [np.full(p + 1, br[-1])])
+    n = knots.size - p - 2
+    ctrl = np.empty((n + 1, d))
+    piece_of_span = np.searchsorted(br, knots[:-1], side="right") - 1
+    for j in range(n + 1):
+        k = next(k for k in range(max(j, p), min(j + p, n) + 1) if knots[k] < knots[k + 1])
+        ctrl[j] = _monomial_blossom(C[piece_of_span[k]], knots[j + 1:j + p + 1])
+    # check: the B-spline must reproduce every piece (it does iff the stated smoothness holds)
+    back, _ = bspline_to_pieces(ctrl, knots, p)
+    scale = max(1.0, float(np.abs(C).max()))
+    bad = np.abs(back - C).max(axis=(1, 2)) > 1e-8 * scale * (1 + np.abs(br).max()) ** p
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        where = max(i, 1)
+        raise ValueError(f"pieces must join with the stated continuity; piece {i} is not reproduced "
+                         f"(check the smoothness at breaks[{where}]={_fmt(br[where])})")
+    return ctrl, knots, p
+
+
+def bspline_to_pieces(ctrl, knots, degree):
+    """The polynomial pieces of a B-spline curve in power form (Goldman §27.6).
+
+    For every non-empty knot span ``[t_k, t_{k+1}]`` of the domain, the coefficients of
+    ``sum_m c_m u^m`` (global parameter, lowest first), found from the right derivatives at
+    ``t_k`` (Taylor) and expanded about 0.
+
+    ctrl: (n+1, d).  knots: (n+p+2,).  degree: p.
+    Returns ``(pieces, breaks)``: pieces (L, p+1, d), breaks (L+1,).
+
+    >>> pieces, breaks = bspline_to_pieces([[0], [0], [2], [4]], [0, 0, 0, 1, 2, 2, 2], 2)
+    >>> pieces[:, :, 0].round(12).tolist(), breaks.tolist()
+    ([[0.0, 0.0, 1.0], [0.0, 0.0, 1.0]], [0.0, 1.0, 2.0])
+    """
+    P, t, p = _curve_args(ctrl, knots, degree)
+    n = P.shape[0] - 1
+    starts = np.array([k for k in range(p, n + 1) if t[k] < t[k + 1]])
+    a = t[starts]
+    breaks = np.append(a, t[n + 1])
+    taylor = np.stack([derivative(P, t, p, a, r) / math.factorial(r) for r in range(p + 1)], 1)  # (L, p+1, d)
+    pieces = np.zeros_like(taylor)
+    for m in range(p + 1):            # c_m (u - a)^m = sum_j c_m C(m, j) (-a)^(m-j) u^j
+        for j in range(m + 1):
+            pieces[:, j] += taylor[:, m] * (math.comb(m, j) * (-a) ** (m - j))[:, None]
+    return pieces, breaks
+
+
+# --------------------------------------------------------------------------------------------
+# §27.7 properties: local support, local control
+# --------------------------------------------------------------------------------------------
+
+def support(knots, degree, i) -> tuple[float, float]:
+    """The interval ``[t_i, t_{i+p+1}]`` outside which the basis function ``N_{i,p}`` vanishes (Goldman §27.7).
+
+    >>> support([0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1], 2, 3)
+    (0.25, 1.0)
+    """
+    t = check_knots(knots, degree)
+    p = int(degree)
+    i = as_int(i, "i", minimum=0, maximum=t.size - p - 2)
+    return float(t[i]), float(t[i + p + 1])
+
+
+def affected_span(knots, degree, i) -> tuple[float, float]:
+    """The part of the domain that moves when control point ``P_i`` moves: local control (Goldman §27.7).
+
+    It is the support of ``N_{i,p}`` cut to the domain ``[t_p, t_{n+1}]``.
+
+    >>> affected_span([0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1], 2, 0)
+    (0.0, 0.25)
+    """
+    t = check_knots(knots, degree)
+    p = int(degree)
+    lo, hi = support(t, p, i)
+    return max(lo, float(t[p])), min(hi, float(t[t.size - p - 1]))
+
+
+# --------------------------------------------------------------------------------------------
+# §27.8 tensor-product B-spline surfaces
+# --------------------------------------------------------------------------------------------
+
+def _surface_args(ctrl, knots_u, knots_v, degree_u, degree_v, cname="ctrl"):
+    P = as_points(ctrl, cname, ndim=3)
+    pu = as_int(degree_u, "degree_u", minimum=0)
+    pv = as_int(degree_v, "degree_v", minimum=0)
+    tu = check_knots(knots_u, pu, P.shape[0], "knots_u")
+    tv = check_knots(knots_v, pv, P.shape[1], "knots_v")
+    return P, tu, tv, pu, pv
+
+
+def _basis_dense(t: np.ndarray, p: int, flat: np.ndarray) -> np.ndarray:
+    n = t.size - p - 2
+    k = _spans(t, p, flat)
+    local = _basis_local(t, p, flat, k)
+    out = np.zeros((flat.size, n + 1))
+    rows = np.arange(flat.size)
+    for j in range(p + 1):
+        out[rows, k - p + j] = local[j]
+    return out
+
+
+def surface_de_boor(ctrl, knots_u, knots_v, degree_u, degree_v, u, v) -> np.ndarray:
+    """Evaluate a tensor-product B-spline surface at parameter pairs (u, v) (Goldman §27.8).
+
+    ``S(u, v) = sum_i sum_j N_{i,p}(u) N_{j,q}(v) P_ij``: de Boor in v along each of the p+1 rows
+    of the control net that matter for u's span, then de Boor in u on the results -- computed
+    here with the p+1 and q+1 non-zero basis functions of the two spans.
+
+    ctrl: (m+1, n+1, d).  knots_u: (m+p+2,).  knots_v: (n+q+2,).  degree_u: p.  degree_v: q.
+    u, v: scalars or arrays that broadcast, inside their domains.  Returns broadcast shape + (d,).
+    Raises ValueError naming the knot vector or parameter that breaks a rule.
+
+    >>> net = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]
+    >>> surface_de_boor(net, [0, 0, 1, 1], [0, 0, 1, 1], 1, 1, 0.5, 0.5).tolist()
+    [0.5, 0.5, 0.25]
+    """
+    P, tu, tv, pu, pv = _surface_args(ctrl, knots_u, knots_v, degree_u, degree_v)
+    u = _check_u(u, tu, pu, "u")
+    v = _check_u(v, tv, pv, "v")
+    u, v = np.broadcast_arrays(u, v)
+    fu, fv = u.reshape(-1), v.reshape(-1)
+    ku, kv = _spans(tu, pu, fu), _spans(tv, pv, fv)
+    Nu = _basis_local(tu, pu, fu, ku)            # (p+1, N)
+    Nv = _basis_local(tv, pv, fv, kv)            # (q+1, N)
+    out = np.zeros((fu.size, P.shape[2]))
+    for a in range(pu + 1):
+        for b in range(pv + 1):
+            out += (Nu[a] * Nv[b])[:, None] * P[ku - pu + a, kv - pv + b]
+    return out.reshape(u.shape + (P.shape[2],))
+
+
+def surface_grid(ctrl, knots_u, knots_v, degree_u, degree_v, u, v) -> np.ndarray:
+    """Evaluate a tensor-product B-spline surface on the grid u x v as ``N(u) P N(v)^T`` (Goldman §27.8).
+
+    One product of basis matrices per coordinate: ``N(u)`` (a, m+1) from :func:`basis`, the net
+    (m+1, n+1), ``N(v)^T`` (n+1, b).  The fast path for meshes.
+
+    ctrl: (m+1, n+1, d).  u: (a,), v: (b,) 1-D parameter arrays inside the domains.
+    Returns (a, b, d) with ``[i, j] = S(u[i], v[j])``.
+
+    >>> net = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]
+    >>> surface_grid(net, [0, 0, 1, 1], [0, 0, 1, 1], 1, 1, [0, 1], [0, 0.5, 1])[:, :, 2].tolist()
+    [[0.0, 0.0, 0.0], [0.0, 0.5, 1.0]]
+    """
+    P, tu, tv, pu, pv = _surface_args(ctrl, knots_u, knots_v, degree_u, degree_v)
+    u = _check_u(u, tu, pu, "u")
+    v = _check_u(v, tv, pv, "v")
+    for name, arr in (("u", u), ("v", v)):
+        if arr.ndim != 1:
+            raise ValueError(f"{name} must be a 1-D array of parameters; got shape {arr.shape}")
+    Nu = _basis_dense(tu, pu, u)                  # (a, m+1)
+    Nv = _basis_dense(tv, pv, v)                  # (b, n+1)
+    out = Nu @ P.transpose(2, 0, 1) @ Nv.T        # (d, a, b)
+    return np.ascontiguousarray(np.moveaxis(out, 0, -1))
+
+
+# --------------------------------------------------------------------------------------------
+# §27.9 NURBS
+# --------------------------------------------------------------------------------------------
+
+def _weights(weights, shape, name="weights") -> np.ndarray:
+    w = np.asarray(as_parameter(weights, name), dtype=float)
+    if w.shape != shape:
+        raise ValueError(f"{name} must have shape {shape} (one weight per control point); got {w.shape}")
+    bad = np.flatnonzero(w.reshape(-1) <= 0)
+    if bad.size:
+        idx = ", ".join(str(int(i)) for i in np.unravel_index(int(bad[0]), w.shape))
+        raise ValueError(f"{name} must be positive; {name}[{idx}] is {_fmt(w.reshape(-1)[bad[0]])}")
+    return w
+
+
+def nurbs_curve(ctrl, weights, knots, degree, u) -> np.ndarray:
+    """Evaluate a NURBS curve ``sum w_k N_k(u) P_k / sum w_k N_k(u)`` (Goldman §27.9).
+
+    The rational curve is the perspective projection of the polynomial B-spline with
+    homogeneous control points ``(w_k P_k, w_k)``: run de Boor on those, then divide by the last
+    coordinate.
+
+    ctrl: (n+1, d).  weights: (n+1,) positive.  knots: (n+p+2,).  degree: p.  u: scalar or array
+    inside the domain.  Returns u.shape + (d,).
+    Raises ValueError for non-positive or mis-shaped weights, and as :func:`de_boor`.
+
+    >>> c = nurbs_curve([[1, 0], [1, 1], [0, 1]], [1, 2 ** -0.5, 1], [0, 0, 0, 1, 1, 1], 2, 0.5)
+    >>> round(float(np.hypot(*c)), 12)
+    1.0
+    """
+    P, t, p = _curve_args(ctrl, knots, degree)
+    w = _weights(weights, (P.shape[0],))
+    H = np.concatenate([P * w[:, None], w[:, None]], axis=1)
+    u = _check_u(u, t, p)
+    flat = u.reshape(-1)
+    h = _evaluate(H, t, p, flat)
+    return (h[:, :-1] / h[:, -1:]).reshape(u.shape + (P.shape[1],))
+
+
+def _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v):
+    P, tu, tv, pu, pv = _surface_args(ctrl, knots_u, knots_v, degree_u, degree_v)
+    w = _weights(weights, P.shape[:2])
+    H = np.concatenate([P * w[..., None], w[..., None]], axis=2)
+    return H, tu, tv, pu, pv
+
+
+def nurbs_surface(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> np.ndarray:
+    """Evaluate a NURBS surface at parameter pairs (u, v) (Goldman §27.9).
+
+    The tensor-product B-spline of the homogeneous net ``(w_ij P_ij, w_ij)`` divided by its last
+    coordinate.
+
+    ctrl: (m+1, n+1, d).  weights: (m+1, n+1) positive.  Other arguments as :func:`surface_de_boor`.
+    Returns broadcast(u, v).shape + (d,).
+
+    >>> ctrl, w, tu, tv, p, q = nurbs_sphere()
+    >>> round(float(np.linalg.norm(nurbs_surface(ctrl, w, tu, tv, p, q, 0.3, 0.6))), 12)
+    1.0
+    """
+    H, tu, tv, pu, pv = _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v)
+    h = surface_de_boor(H, tu, tv, pu, pv, u, v)
+    return h[..., :-1] / h[..., -1:]
+
+
+def nurbs_surface_grid(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> np.ndarray:
+    """Evaluate a NURBS surface on the grid u x v (Goldman §27.9); the fast path of :func:`nurbs_surface`.
+
+    Returns (a, b, d) for 1-D u (a,) and v (b,).
+
+    >>> ctrl, w, tu, tv, p, q = nurbs_sphere()
+    >>> g = nurbs_surface_grid(ctrl, w, tu, tv, p, q, np.linspace(0, 1, 5), np.linspace(0, 1, 3))
+    >>> bool(np.allclose(np.linalg.norm(g, axis=-1), 1.0))
+    True
+    """
+    H, tu, tv, pu, pv = _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v)
+    h = surface_grid(H, tu, tv, pu, pv, u, v)
+    return h[..., :-1] / h[..., -1:]
+
+
+_QUARTER = np.array([0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0])
+
+
+def nurbs_circle(radius: float = 1.0, center=(0.0, 0.0)):
+    """A whole circle as an exact quadratic NURBS curve: 9 control points on a square (Goldman §27.9).
+
+    Each quarter is a rational quadratic Bezier arc with weights ``1, sqrt(2)/2, 1`` (the middle
+    control point is the corner of the square); knots ``0,0,0, 1/4,1/4, 1/2,1/2, 3/4,3/4, 1,1,1``.
+
+    radius: positive.  center: (2,).  Returns ``(ctrl (9, 2), weights (9,), knots (12,), 2)``.
+    Raises ValueError for a non-positive radius or a bad center.
+
+    >>> ctrl, w, knots, p = nurbs_circle()
+    >>> pts = nurbs_curve(ctrl, w, knots, p, np.linspace(0, 1, 7))
+    >>> bool(np.abs(np.hypot(pts[:, 0], pts[:, 1]) - 1).max() < 1e-15)
+    True
+    """
+    r = as_float(radius, "radius", positive=True)
+    c = as_points(center, "center", ndim=1, dim=2)
+    sq = np.array([[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]], dtype=float)
+    w = np.where(np.arange(9) % 2 == 1, math.sqrt(0.5), 1.0)
+    return c + r * sq, w, _QUARTER.copy(), 2
+
+
+def nurbs_sphere(radius: float = 1.0, center=(0.0, 0.0, 0.0)):
+    """A whole sphere as an exact biquadratic NURBS surface: a half circle swept around the z axis (Goldman §27.9).
+
+    The net is the tensor product of the circle of :func:`nurbs_circle` (u, around the z axis)
+    and a half circle from the south pole to the north pole (v; 5 control points, knots
+    ``0,0,0, 1/2,1/2, 1,1,1``): ``P_ij = (x_j c_i, z_j)``, ``w_ij = w_i w_j``.
+
+    radius: positive.  center: (3,).
+    Returns ``(ctrl (9, 5, 3), weights (9, 5), knots_u (12,), knots_v (8,), 2, 2)``.
+
+    >>> ctrl, w, tu, tv, p, q = nurbs_sphere(2.0)
+    >>> ctrl.shape, w.shape
+    ((9, 5, 3), (9, 5))
+    """
+    r = as_float(radius, "radius", positive=True)
+    c = as_points(center, "center", ndim=1, dim=3)
+    circ, wc, tu, _ = nurbs_circle()
+    prof = np.array([[0, -1], [1, -1], [1, 0], [1, 1], [0, 1]], dtype=float)   # (x, z) of the half circle
+    wp = np.array([1.0, math.sqrt(0.5), 1.0, math.sqrt(0.5), 1.0])
+    tv = np.array([0.0, 0.0, 0.0, 0.5, 0.5, 1.0, 1.0, 1.0])
+    ctrl = np.empty((9, 5, 3))
+    ctrl[..., 0] = circ[:, None, 0] * prof[None, :, 0]
+    ctrl[..., 1] = circ[:, None, 1] * prof[None, :, 0]
+    ctrl[..., 2] = np.broadcast_to(prof[None, :, 1], (9, 5))
+    return c + r * ctrl, wc[:, None] * wp[None, :], tu, tv, 2, 2
+
+
+# --------------------------------------------------------------------------------------------
+# thin classes for the notebook
+# --------------------------------------------------------------------------------------------
+
+class BSplineCurve:
+    """A B-spline curve: control points, knots and degree, validated once (Goldman §27.2-27.7).
+
+    >>> c = BSplineCurve([[0, 0], [1, 2], [2, 2], [3, 0]], [0, 0, 0, 0.5, 1, 1, 1], 2)
+    >>> c.evaluate(0.5).tolist(), c.domain
+    ([1.5, 2.0], (0.0, 1.0))
+    """
+
+    def __init__(self, ctrl, knots, degree):
+        self.ctrl, self.knots, self.degree = _curve_args(ctrl, knots, degree)
+
+    @property
+    def domain(self) -> tuple[float, float]:
+        return float(self.knots[self.degree]), float(self.knots[self.ctrl.shape[0]])
+
+    def evaluate(self, u) -> np.ndarray:
+        """Points ``C(u)`` by :func:`de_boor`."""
+        return de_boor(self.ctrl, self.knots, self.degree, u)
+
+    def basis(self, u) -> np.ndarray:
+        """Basis values ``N_{k,p}(u)`` by :func:`basis`."""
+        return basis(self.knots, self.degree, u)
+
+    def derivative(self, u, order: int = 1, side: str = "right") -> np.ndarray:
+        """Derivatives by :func:`derivative`."""
+        return derivative(self.ctrl, self.knots, self.degree, u, order, side)
+
+    def sample(self, count: int = 200) -> np.ndarray:
+        """``count`` points at equally spaced parameters over the domain."""
+        count = as_int(count, "count", minimum=2)
+        return self.evaluate(np.linspace(*self.domain, count))
+
+    def __repr__(self) -> str:
+        return f"BSplineCurve(degree={self.degree}, {self.ctrl.shape[0]} control points, knots={self.knots.tolist()})"
+
+
+class NURBSCurve(BSplineCurve):
+    """A NURBS curve: a B-spline curve with a positive weight per control point (Goldman §27.9).
+
+    >>> c = NURBSCurve(*nurbs_circle())
+    >>> round(float(np.hypot(*c.evaluate(0.1))), 12)
+    1.0
+    """
+
+    def __init__(self, ctrl, weights, knots, degree):
+        super().__init__(ctrl, knots, degree)
+        self.weights = _weights(weights, (self.ctrl.shape[0],))
+
+    def evaluate(self, u) -> np.ndarray:
+        """Points by :func:`nurbs_curve`."""
+        return nurbs_curve(self.ctrl, self.weights, self.knots, self.degree, u)
+
+    def derivative(self, u, order: int = 1, side: str = "right") -> np.ndarray:
+        raise NotImplementedError("derivatives of rational curves are not part of chapter 27")
+
+    def __repr__(self) -> str:
+        return f"NURBSCurve(degree={self.degree}, {self.ctrl.shape[0]} control points, weights={self.weights.tolist()})"
