@@ -34,6 +34,8 @@ __all__ = [
     "from_parameters", "to_parameters", "affine_from_point_and_vectors", "affine_from_points",
     "apply", "apply_vectors", "compose", "inverse", "as_affine", "linear_part", "translation_part",
     "fixed_point", "is_conformal",
+    "mirror", "affine_coordinates", "vector_coordinates", "affine_combination", "barycentric_coordinates",
+    "commute", "is_rigid",
 ]
 
 
@@ -382,3 +384,120 @@ def is_conformal(M, tol: float = 1e-9) -> bool:
     L = as_affine(M)[:2, :2]
     G = L @ L.T
     return bool(abs(G[0, 1]) <= tol * max(1.0, abs(G[0, 0])) and abs(G[0, 0] - G[1, 1]) <= tol * max(1.0, abs(G[0, 0])))
+
+
+# ---------------------------------------------------------------------------------------------
+# Chapter 4 additions: mirrors, affine coordinates, affine combinations, the algebra of §4.3
+# ---------------------------------------------------------------------------------------------
+
+def mirror(point, direction) -> np.ndarray:
+    """Reflection in the line through ``point`` with direction ``direction`` (Goldman §4.7.2).
+
+    A mirror is the nonuniform scaling by ``-1`` along the unit normal ``n`` of the line, about a
+    point of the line: ``v -> v - 2 (v . n) n``.  point: (2,).  direction: (2,) nonzero.
+    Raises ValueError for a zero direction.
+
+    >>> apply([[3, 0]], mirror([0, 1], [1, 0]))
+    array([[3., 2.]])
+    >>> apply([[1, 0]], mirror([0, 0], [1, 1])).round(12)
+    array([[0., 1.]])
+    """
+    P = _point(point, "point")
+    w = _point(direction, "direction")
+    if math.hypot(*w) == 0:
+        raise ValueError("direction must be a nonzero vector; got (0, 0)")
+    return directional_scaling(-1.0, [-w[1], w[0]], center=P)
+
+
+def affine_coordinates(points) -> np.ndarray:
+    """Affine coordinates of points (Goldman §4.5): ``(x, y) -> (x, y, 1)``.
+
+    points: (..., 2).  Returns (..., 3).  A point times an affine matrix is translated;
+    compare :func:`vector_coordinates`, whose last coordinate 0 makes vectors ignore translation.
+
+    >>> affine_coordinates([[2, 3]]) @ translation([1, 1])
+    array([[3., 4., 1.]])
+    """
+    P = as_points(points, "points", ndim=None, dim=2)
+    return np.concatenate([P, np.ones(P.shape[:-1] + (1,))], axis=-1)
+
+
+def vector_coordinates(vectors) -> np.ndarray:
+    """Affine coordinates of vectors (Goldman §4.5): ``(a, b) -> (a, b, 0)``.
+
+    vectors: (..., 2).  Returns (..., 3).
+
+    >>> vector_coordinates([[2, 3]]) @ translation([1, 1])
+    array([[2., 3., 0.]])
+    """
+    V = as_points(vectors, "vectors", ndim=None, dim=2)
+    return np.concatenate([V, np.zeros(V.shape[:-1] + (1,))], axis=-1)
+
+
+def affine_combination(points, weights, *, tol: float = 1e-9) -> np.ndarray:
+    """The affine combination ``sum_k c_k P_k`` of points whose weights sum to 1 (Goldman §4.3).
+
+    An affine combination is a point wherever the origin is put, and affine maps preserve it:
+    ``A(sum c_k P_k) = sum c_k A(P_k)``.  points: (k, 2).  weights: (k,), summing to 1 within
+    ``tol``.  Raises ValueError if the weights do not sum to 1 (then the "combination" depends on
+    the choice of origin: ``P + Q`` is not a point).
+
+    >>> affine_combination([[0, 0], [2, 4]], [0.5, 0.5])
+    array([1., 2.])
+    """
+    P = as_points(points, "points", dim=2)
+    c = np.asarray(as_points(np.reshape(np.asarray(weights, dtype=float), (-1, 1)), "weights", dim=1))[:, 0]
+    if c.shape[0] != P.shape[0]:
+        raise ValueError(f"weights must hold one weight per point; got {c.shape[0]} weights for {P.shape[0]} points")
+    total = float(c.sum())
+    if abs(total - 1.0) > tol:
+        raise ValueError(f"weights must sum to 1 for an affine combination of points; they sum to {total:.6g}")
+    return c @ P
+
+
+def barycentric_coordinates(points, triangle) -> np.ndarray:
+    """Barycentric coordinates of points with respect to a triangle (Goldman §4.5, §4.7.3).
+
+    The weights ``(a, b, c)``, summing to 1, with ``P = a T0 + b T1 + c T2``.  An affine map
+    preserves them: that is why three points and their images fix the map.  points: (..., 2).
+    triangle: (3, 2), not collinear.  Returns (..., 3).  Raises ValueError for a collinear
+    triangle.
+
+    >>> barycentric_coordinates([[0.25, 0.5]], [[0, 0], [1, 0], [0, 1]])
+    array([[0.25, 0.25, 0.5 ]])
+    """
+    P = as_points(points, "points", ndim=None, dim=2)
+    T = as_points(triangle, "triangle", dim=2)
+    if T.shape != (3, 2):
+        raise ValueError(f"triangle must hold three 2D points, shape (3, 2); got {T.shape}")
+    u, v = T[1] - T[0], T[2] - T[0]
+    area2 = u[0] * v[1] - u[1] * v[0]
+    if abs(area2) <= 1e-12 * max(1.0, float(np.abs(T - T[0]).max()) ** 2):
+        raise ValueError(f"triangle must not be collinear; {T.tolist()} lie on one line")
+    d = P - T[0]
+    b = (d[..., 0] * v[1] - d[..., 1] * v[0]) / area2
+    c = (u[0] * d[..., 1] - u[1] * d[..., 0]) / area2
+    return np.stack([1.0 - b - c, b, c], axis=-1)
+
+
+def commute(M, N, tol: float = 1e-9) -> bool:
+    """Whether two affine maps commute, ``M N = N M`` (Goldman §4.3).
+
+    Translations commute with each other, and so do rotations (and uniform scalings) about the
+    same point; a translation and a rotation do not.
+
+    >>> commute(rotation(30, [1, 2]), rotation(50, [1, 2])), commute(rotation(30), translation([1, 0]))
+    (True, False)
+    """
+    A, B = as_affine(M, "M"), as_affine(N, "N")
+    return bool(np.allclose(A @ B, B @ A, atol=tol, rtol=0))
+
+
+def is_rigid(M, tol: float = 1e-9) -> bool:
+    """Whether a map is a rigid motion (Goldman §4.4): it preserves lengths, ``L L^T = I``.
+
+    >>> is_rigid(rotation(30, [1, 2]) @ translation([3, 0])), is_rigid(scaling(2))
+    (True, False)
+    """
+    L = as_affine(M)[:2, :2]
+    return bool(np.allclose(L @ L.T, np.eye(2), atol=tol, rtol=0))
