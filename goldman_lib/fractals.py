@@ -60,6 +60,10 @@ __all__ = [
     "tree_program", "bush_program", "PROGRAMS",
     "koch_curve", "koch_snowflake", "sierpinski_gasket", "sierpinski_carpet", "polygon_gasket",
     "c_curve", "dragon", "tree", "bush",
+    "state_change", "Loop", "loop_analysis", "loop_period", "repeat_closes",
+    "similarity_dimension", "recursion_scales", "program_dimension",
+    "ink_length", "chord_angles", "difference_quotients", "headings_at",
+    "BASE_CASES", "points_on", "base_case_distances",
 ]
 
 #: The name of the recursive call in a program's ``body``.
@@ -589,3 +593,470 @@ def bush(level: int, angle: float = 25.0, scale: float = 0.5) -> list[np.ndarray
     3
     """
     return bush_program(angle, scale).polylines(level)
+
+
+# ---------------------------------------------------------------------------------------------
+# The looping lemmas (§2.2)
+# ---------------------------------------------------------------------------------------------
+
+def _flat_program(program, name: str = "program") -> tuple[np.ndarray, np.ndarray]:
+    """Codes and values of a turtle program: text, a parsed Program, or (command, value) pairs."""
+    if isinstance(program, (str, turtle.Program)):
+        return turtle.expand(program)
+    commands = _as_commands(program, name, allow_recurse=False)
+    return _flat(commands, 1.0)
+
+
+def state_change(program) -> tuple[float, float, np.ndarray]:
+    """What one run of a (non-recursive) turtle program does to the turtle's state (Goldman §2.2).
+
+    program: turtle-language text, a parsed :class:`goldman_lib.turtle.Program`, or a sequence
+    of ``(command, value)`` pairs.  Returns ``(T, S, d)``: the total turning ``T`` (degrees), the
+    total RESIZE factor ``S`` and the displacement ``d`` ``(2,)`` of a turtle that starts at the
+    origin heading ``(1, 0)``.  From any state ``(P, w)`` the program ends in
+    ``(P + d_1 w + d_2 w_perp, S rot_T(w))``, ``w_perp`` being ``w`` turned 90 degrees.
+
+    >>> T, S, d = state_change("FORWARD 1 TURN 90 FORWARD 1 RESIZE 2")
+    >>> T, S, d
+    (90.0, 2.0, array([1., 1.]))
+    """
+    codes, values = _flat_program(program)
+    t = turtle._trace_arrays(codes, values, np.zeros(2), np.array([1.0, 0.0]))
+    scale = float(np.prod(values[codes == RESIZE])) if codes.size else 1.0
+    return t.total_turning, scale, t.point
+
+
+def loop_period(angle: float, *, max_period: int = 10_000) -> int | None:
+    """The least ``k >= 1`` with ``k * angle`` a multiple of 360 (Goldman §2.2), or None.
+
+    angle: degrees.  If ``angle = 360 p/q`` in lowest terms the answer is ``q``; an angle that
+    is not such a rational multiple of 360 with ``q <= max_period`` (up to rounding in the
+    ninth decimal) gives None: the turtle never returns to its heading.
+
+    >>> loop_period(144), loop_period(360 / 7), loop_period(720), loop_period(2 ** 0.5)
+    (5, 7, 1, None)
+    """
+    angle = as_float(angle, "angle")
+    max_period = as_int(max_period, "max_period", minimum=1)
+    frac = Fraction(angle / 360.0).limit_denominator(max_period)
+    if abs(float(frac) * 360.0 - angle) > 1e-9 * max(1.0, abs(angle)):
+        return None
+    return frac.denominator
+
+
+@dataclass(frozen=True)
+class Loop:
+    """What repeating a turtle program does (see :func:`loop_analysis`).
+
+    total_turning, scale, displacement: the state change of one pass (:func:`state_change`).
+    period: the least number of passes after which the turtle is back in its initial state, or
+    None if it never is.  winding: ``period * total_turning / 360``, how many times the closed
+    figure winds around its centre (None if it never closes).  center: ``(2,)`` the point the
+    figure turns about (the fixed point of one pass; None for a pure translation).  kind: one of
+    ``"polygon"``, ``"star"``, ``"retrace"`` (closes after one pass), ``"drift"`` (moves off in a
+    straight line), ``"spiral"`` (RESIZE != 1), ``"never closes"`` (turning not a rational
+    multiple of 360).
+    """
+
+    total_turning: float
+    scale: float
+    displacement: np.ndarray
+    period: int | None
+    winding: int | None
+    center: np.ndarray | None
+    kind: str
+
+
+def loop_analysis(program, *, tol: float = 1e-9) -> Loop:
+    """The looping lemmas (Goldman §2.2): whether and when ``REPEAT k [program]`` closes.
+
+    One pass of a program turns the turtle by ``T``, resizes it by ``S`` and moves it by ``d``
+    (:func:`state_change`).  With ``S = 1``:
+
+    * if ``T`` is not a multiple of 360, repeating the program ``k`` times returns the turtle to
+      its initial state **if and only if** ``k T`` is a multiple of 360; the least such ``k`` is
+      the period ``q`` of ``T = 360 p/q``.  Every pass is the previous one rotated by ``T`` about
+      one centre ``c = d / (1 - e^{iT})``, so the figure has ``q``-fold rotational symmetry: for
+      ``FORWARD s TURN a`` it is the regular polygon (``p = 1``) or star polygon ``{q/p}``;
+    * if ``T`` is a multiple of 360 each pass is the previous one translated by ``d``: the path
+      closes only if ``d = 0``, and otherwise drifts off in a straight line.
+
+    With ``S != 1`` every pass is the previous one turned by ``T`` and scaled by ``S`` about a
+    centre: a spiral that never closes (unless ``d = 0``).  program: text, a parsed Program or
+    ``(command, value)`` pairs.  tol: tolerance on ``|d|`` and ``|S - 1|``.  Returns a
+    :class:`Loop`.
+
+    >>> L = loop_analysis("FORWARD 1 TURN 144")
+    >>> L.period, L.winding, L.kind
+    (5, 2, 'star')
+    >>> loop_analysis("FORWARD 1 TURN 360").kind
+    'drift'
+    """
+    tol = as_float(tol, "tol")
+    T, S, d = state_change(program)
+    c_, s_ = turtle._cos_sin_deg(np.array([T]))
+    rot = complex(c_[0], s_[0]) * S
+    dz = complex(d[0], d[1])
+    center = None
+    if abs(1 - rot) > tol:
+        cz = dz / (1 - rot)
+        center = np.array([cz.real, cz.imag])
+    moved = abs(dz) > tol
+    if abs(S - 1) > tol:
+        return Loop(T, S, d, 1 if not moved else None, None, center, "spiral" if moved else "retrace")
+    if loop_period(T) == 1 or abs(1 - rot) <= tol:
+        if moved:
+            return Loop(T, S, d, None, None, None, "drift")
+        return Loop(T, S, d, 1, round(T / 360), None, "retrace")
+    q = loop_period(T)
+    if q is None:
+        return Loop(T, S, d, None, None, center, "never closes")
+    winding = int(round(q * T / 360))
+    if not moved:
+        return Loop(T, S, d, 1, None, center, "retrace")
+    kind = "polygon" if abs(winding) == 1 else "star"
+    return Loop(T, S, d, q, winding, center, kind)
+
+
+def repeat_closes(program, k: int, *, tol: float = 1e-9) -> bool:
+    """Run ``REPEAT k [program]`` with the turtle and say whether it ends in its initial state
+    (position and heading within ``tol``) -- the direct numerical check of the looping lemmas
+    (Goldman §2.2).
+
+    program: text, a parsed Program or ``(command, value)`` pairs.  k >= 1.
+
+    >>> repeat_closes("FORWARD 1 TURN 144", 5), repeat_closes("FORWARD 1 TURN 144", 4)
+    (True, False)
+    """
+    k = as_int(k, "k", minimum=1)
+    tol = as_float(tol, "tol")
+    codes, values = _flat_program(program)
+    if codes.size * k > MAX_COMMANDS:
+        raise ValueError(f"REPEAT {k} of {codes.size} commands is more than {MAX_COMMANDS:,} commands")
+    t = turtle._trace_arrays(np.tile(codes, k), np.tile(values, k), np.zeros(2), np.array([1.0, 0.0]))
+    return bool(np.hypot(*t.point) <= tol and np.hypot(*(t.direction - [1.0, 0.0])) <= tol)
+
+
+# ---------------------------------------------------------------------------------------------
+# Fractal dimension (§3.2)
+# ---------------------------------------------------------------------------------------------
+
+def similarity_dimension(scales) -> float:
+    """The similarity dimension ``D`` of a fractal made of copies of itself scaled by ``s_i``:
+    the root of ``sum_i s_i**D = 1`` (Goldman §3.2.1).
+
+    scales: ``(N,)`` the scale factors, each in (0, 1).  Equal scales give the closed form
+    ``D = log N / log(1/s)``; unequal ones are solved by Newton's method safeguarded by
+    bisection inside the bracket ``[log N / log(1/min s), log N / log(1/max s)]``.  Raises
+    ValueError if the list is empty or a scale is not in (0, 1): then no ``D >= 0`` solves the
+    equation (a scale >= 1 keeps the sum above 1; a scale 0 is a point, leave it out).
+
+    >>> round(similarity_dimension([1/3] * 4), 12)  # the Koch curve: log 4 / log 3
+    1.261859507143
+    >>> similarity_dimension([0.5, 0.25, 0.25])
+    1.0
+    >>> similarity_dimension([0.5, 1.0])
+    Traceback (most recent call last):
+    ...
+    ValueError: no dimension D solves sum(s_i**D) = 1: scales[1] = 1.0 is not < 1, so the sum is at least 1 + 0.5**D > 1 for every D >= 0 (every copy must be smaller than the whole)
+    """
+    s = np.asarray(scales, dtype=float) if not isinstance(scales, (str, bytes)) else None
+    if s is None:
+        raise TypeError("scales must be a sequence of numbers, not a string")
+    s = as_points(s.reshape(-1, 1), "scales", ndim=2, dim=1)[:, 0] if s.ndim <= 1 else None
+    if s is None:
+        raise ValueError("scales must be a flat list of scale factors")
+    if s.size == 0:
+        raise ValueError("scales must hold at least one scale factor")
+    bad = np.flatnonzero(s <= 0)
+    if bad.size:
+        i = int(bad[0])
+        raise ValueError(f"scales must be > 0; scales[{i}] = {s[i]} (a copy of scale 0 is a point: leave it out; "
+                         f"use the absolute value for a reflected copy)")
+    big = np.flatnonzero(s >= 1)
+    if big.size:
+        i = int(big[0])
+        others = " + ".join(f"{_fmt(x)}**D" for j, x in enumerate(s) if j != i) or "0"
+        raise ValueError(f"no dimension D solves sum(s_i**D) = 1: scales[{i}] = {s[i]} is not < 1, so the sum "
+                         f"is at least 1 + {others} > 1 for every D >= 0 (every copy must be smaller than "
+                         f"the whole)")
+    n = s.size
+    if n == 1:
+        return 0.0
+    if np.all(s == s[0]):
+        return math.log(n) / math.log(1 / s[0])
+    logs = np.log(s)
+    lo = math.log(n) / -float(logs.min())
+    hi = math.log(n) / -float(logs.max())
+    D = 0.5 * (lo + hi)
+    for _ in range(200):
+        terms = np.exp(D * logs)
+        f = float(terms.sum()) - 1.0
+        if f > 0:
+            lo = D
+        else:
+            hi = D
+        if f == 0 or hi - lo <= 4e-16 * hi:
+            break
+        fp = float((terms * logs).sum())
+        step = D - f / fp
+        D = step if lo < step < hi else 0.5 * (lo + hi)
+    return float(D)
+
+
+def _net_scales(program: RecursiveTurtleProgram, level: int) -> list[float]:
+    """The total RESIZE factor of one run of the program at levels 0..level."""
+    plain = [v for c, v in program.body if c == "RESIZE"]
+    calls = sum(1 for c, _ in program.body if c == RECURSE)
+    f = float(np.prod(plain)) if plain else 1.0
+    nets = [float(np.prod([v for c, v in program.base if c == "RESIZE"])) if program.base else 1.0]
+    for _ in range(level):
+        nets.append(f * nets[-1] ** calls)
+    return nets
+
+
+def _as_program(program) -> RecursiveTurtleProgram:
+    if not isinstance(program, RecursiveTurtleProgram):
+        raise TypeError(f"program must be a RecursiveTurtleProgram; got {type(program).__name__}")
+    return program
+
+
+def recursion_scales(program) -> np.ndarray:
+    """The scale factor of each recursive call of a recursive turtle program (Goldman §3.2.2).
+
+    Each RECURSE in the body draws a copy of the fractal scaled by the product of the RESIZE
+    factors in force at that moment (absolute value).  program: a :class:`RecursiveTurtleProgram`
+    whose body and base each leave the turtle's step size as they found it (total RESIZE 1),
+    as the book's programs do.  Returns ``(N,)``, one scale per RECURSE.  Raises TypeError for
+    another type and ValueError for a program that changes the step size.
+
+    >>> recursion_scales(sierpinski_gasket_program())
+    array([0.5, 0.5, 0.5])
+    """
+    program = _as_program(program)
+    for part, cmds in (("body", program.body), ("base", program.base)):
+        f = float(np.prod([v for c, v in cmds if c == "RESIZE"])) if cmds else 1.0
+        if abs(f - 1) > 1e-9:
+            raise ValueError(f"the {part} of the program must restore the turtle's step size (total RESIZE 1) "
+                             f"for the copies to be similar; its RESIZE factors multiply to {f:.6g}")
+    scale, out = 1.0, []
+    for c, v in program.body:
+        if c == "RESIZE":
+            scale *= v
+        elif c == RECURSE:
+            out.append(abs(scale))
+    return np.array(out)
+
+
+def program_dimension(program) -> float:
+    """The similarity dimension of the fractal a recursive turtle program draws (Goldman §3.2.2):
+    :func:`similarity_dimension` of its :func:`recursion_scales`.
+
+    This is the fractal's dimension when the copies do not overlap too much (the gaskets, the
+    Koch curve, the C-curve and the dragon; a tree's branches also add its trunk, dimension 1).
+    Raises as the two functions it calls.
+
+    >>> round(program_dimension(koch_curve_program()), 12), round(program_dimension(dragon_program()), 12)
+    (1.261859507143, 2.0)
+    """
+    return similarity_dimension(recursion_scales(program))
+
+
+# ---------------------------------------------------------------------------------------------
+# Length (§3.2) and non-differentiability (§3.3)
+# ---------------------------------------------------------------------------------------------
+
+def ink_length(program, level: int, *, step: float = 1.0) -> float:
+    """The length of the strokes level ``level`` of a recursive turtle program draws, from the
+    recursion ``L_n = (FORWARD length of the body) + sum_i s_i L_{n-1}`` without drawing anything
+    (Goldman §3.2: the Koch curve's length ``(4/3)**n`` grows without bound).
+
+    program: a :class:`RecursiveTurtleProgram`; level >= 0; step: ``|w|`` at the start, > 0.
+    Counts overlapping strokes as often as they are drawn.
+
+    >>> round(ink_length(koch_curve_program(), 3), 12), round((4 / 3) ** 3, 12)
+    (2.37037037037, 2.37037037037)
+    """
+    program = _as_program(program)
+    level = as_int(level, "level", minimum=0)
+    step = as_float(step, "step", positive=True)
+    nets = _net_scales(program, level)
+
+    def run(cmds, sub_len, sub_net):
+        scale, total = 1.0, 0.0
+        for c, v in cmds:
+            if c == "RESIZE":
+                scale *= v
+            elif c == "FORWARD":
+                total += abs(v * scale)
+            elif c == RECURSE:
+                total += abs(scale) * sub_len
+                scale *= sub_net
+        return total
+
+    L = run(program.base, 0.0, 1.0)
+    for n in range(1, level + 1):
+        L = run(program.body, L, nets[n - 1])
+    return step * run(program.start, L, nets[level])
+
+
+def chord_angles(polyline, anchor: int, offsets) -> np.ndarray:
+    """Directions (degrees, in (-180, 180]) of the chords from ``polyline[anchor]`` to
+    ``polyline[anchor + h]`` for each ``h`` in ``offsets`` (Goldman §3.3).
+
+    A curve with a tangent at the anchor has chord directions that converge as ``h -> 0``; the
+    Koch curve's do not.  polyline: ``(k, 2)``.  anchor: an index.  offsets: nonzero ints with
+    ``anchor + h`` inside the polyline.  Returns ``(len(offsets),)``.  Raises ValueError naming
+    an offset that leaves the polyline or is 0.
+
+    >>> chord_angles(koch_curve(2)[0], 0, [16, 8, 4, 2]).round(6) + 0.0
+    array([ 0., 30.,  0., 30.])
+    """
+    p, anchor, offs = _chord_args(polyline, anchor, offsets)
+    v = p[anchor + offs] - p[anchor]
+    ang = np.degrees(np.arctan2(v[:, 1], v[:, 0]))
+    ang[ang == -180.0] = 180.0
+    return ang
+
+
+def _chord_args(polyline, anchor, offsets):
+    p = as_points(polyline, "polyline", ndim=2, dim=2, min_count=2)
+    anchor = as_int(anchor, "anchor", minimum=0, maximum=len(p) - 1)
+    offs = np.asarray(offsets)
+    if offs.ndim != 1 or offs.size == 0 or not np.issubdtype(offs.dtype, np.integer):
+        raise TypeError("offsets must be a non-empty 1-D sequence of integers")
+    for i, h in enumerate(offs):
+        if h == 0 or not 0 <= anchor + h < len(p):
+            raise ValueError(f"offsets[{i}] = {int(h)}: anchor + offset must be another index of the polyline "
+                             f"(0..{len(p) - 1}); got {anchor + int(h)}")
+    return p, anchor, offs.astype(int)
+
+
+def difference_quotients(polyline, anchor: int, offsets) -> np.ndarray:
+    """``|P(t + h) - P(t)| / |h|`` along a polyline whose vertices sit at the parameters
+    ``t = index / (k - 1)`` (Goldman §3.3).
+
+    For the Koch curve at level n the vertices are equally spaced along the curve, so these are
+    the difference quotients of its arc-fraction parametrisation; at ``t = 0`` with
+    ``h = 4**-j`` they equal ``(4/3)**j``: no derivative.  Arguments as :func:`chord_angles`.
+
+    >>> difference_quotients(koch_curve(3)[0], 0, [64, 16, 4, 1]).round(6)
+    array([1.      , 1.333333, 1.777778, 2.37037 ])
+    """
+    p, anchor, offs = _chord_args(polyline, anchor, offsets)
+    h = offs / (len(p) - 1)
+    return np.hypot(*(p[anchor + offs] - p[anchor]).T) / np.abs(h)
+
+
+def headings_at(program, t: float, levels) -> np.ndarray:
+    """The turtle's heading (degrees, in (-180, 180]) when it has drawn the fraction ``t`` of
+    the level-n curve, for each n in ``levels`` (Goldman §3.3).
+
+    For a smooth limit curve these headings would converge (to the tangent's direction); for
+    the Koch curve they keep jumping by multiples of 60 degrees.  program: a
+    :class:`RecursiveTurtleProgram` that draws one stroke; t in [0, 1); levels: ints >= 0.
+
+    >>> headings_at(koch_curve_program(), 0.4, [0, 1, 2, 3, 4]).round(6) + 0.0
+    array([ 0., 60.,  0., 60.,  0.])
+    """
+    program = _as_program(program)
+    t = as_float(t, "t")
+    if not 0 <= t < 1:
+        raise ValueError(f"t must lie in [0, 1); got {t}")
+    out = []
+    for n in np.atleast_1d(levels):
+        polys = program.polylines(as_int(n, "levels entry", minimum=0))
+        if len(polys) != 1:
+            raise ValueError(f"headings_at needs a program that draws one stroke; level {int(n)} draws {len(polys)}")
+        seg = np.diff(polys[0], axis=0)
+        lens = np.hypot(seg[:, 0], seg[:, 1])
+        cum = np.cumsum(lens)
+        i = int(np.searchsorted(cum, t * cum[-1], side="right"))
+        i = min(i, len(seg) - 1)
+        ang = math.degrees(math.atan2(seg[i, 1], seg[i, 0]))
+        out.append(180.0 if ang == -180.0 else ang)
+    return np.array(out)
+
+
+# ---------------------------------------------------------------------------------------------
+# Attraction: the base case does not matter (§3.4)
+# ---------------------------------------------------------------------------------------------
+
+#: Alternative base cases (name -> commands) for two fractals; each changes the turtle's state
+#: exactly as the book's base case does, so all converge to the same fractal (Goldman §3.4).
+BASE_CASES = {
+    "Koch curve": {
+        "segment (the book's)": (("FORWARD", 1.0),),
+        "tent": (("TURN", 60.0), ("FORWARD", 1.0), ("TURN", -120.0), ("FORWARD", 1.0), ("TURN", 60.0)),
+        "square bump": (("FORWARD", 1 / 3), ("TURN", 90.0), ("FORWARD", 1 / 3), ("TURN", -90.0),
+                        ("FORWARD", 1 / 3), ("TURN", -90.0), ("FORWARD", 1 / 3), ("TURN", 90.0),
+                        ("FORWARD", 1 / 3)),
+        "dip below": (("TURN", -45.0), ("FORWARD", math.sqrt(0.5)), ("TURN", 90.0),
+                      ("FORWARD", math.sqrt(0.5)), ("TURN", -45.0)),
+        "zigzag": (("TURN", 30.0),) + (("FORWARD", 1 / (4 * math.cos(math.pi / 6))), ("TURN", -60.0),
+                                        ("FORWARD", 1 / (4 * math.cos(math.pi / 6))), ("TURN", 60.0)) * 2
+                   + (("TURN", -30.0),),
+    },
+    "Sierpinski gasket": {
+        "triangle (the book's)": (("FORWARD", 1.0), ("TURN", 120.0)) * 3,
+        "square": (("FORWARD", 1.0), ("TURN", 90.0)) * 4,
+        "five-pointed star": (("FORWARD", 1.0), ("TURN", 144.0)) * 5,
+        "stick": (("FORWARD", 1.0), ("MOVE", -1.0)),
+        "hexagon": (("FORWARD", 0.5), ("TURN", 60.0)) * 6,
+    },
+}
+
+
+def points_on(polylines, per_segment: int = 4) -> np.ndarray:
+    """Points along strokes: every vertex plus ``per_segment - 1`` equally spaced points inside
+    each segment, so the Hausdorff distance between two drawings is measured between the
+    curves, not only their corners (Goldman §3.4).
+
+    polylines: a ``(k, 2)`` array or a list of them.  per_segment >= 1.  Returns ``(m, 2)``.
+
+    >>> points_on([np.array([[0, 0], [1, 0]])], 4)[:, 0]
+    array([0.  , 0.25, 0.5 , 0.75, 1.  ])
+    """
+    per_segment = as_int(per_segment, "per_segment", minimum=1)
+    polys = turtle._as_polylines(polylines)
+    t = np.arange(per_segment) / per_segment
+    parts = []
+    for p in polys:
+        a, b = p[:-1], p[1:]
+        parts.append((a[:, None, :] + t[None, :, None] * (b - a)[:, None, :]).reshape(-1, 2))
+        parts.append(p[-1:])
+    return np.concatenate(parts)
+
+
+def base_case_distances(program, bases, levels, *, per_segment: int = 2) -> np.ndarray:
+    """Hausdorff distances between the drawings of one recursive program run with different
+    base cases (Goldman §3.4): at level n they shrink like ``s**n`` (the largest recursion
+    scale), because the fractal does not depend on the base case.
+
+    program: a :class:`RecursiveTurtleProgram`.  bases: a list of base cases (sequences of
+    ``(command, value)`` pairs); each is compared with the program's own base.  levels: ints
+    >= 0.  Returns ``(len(bases), len(levels))``.  Cost: quadratic in the points drawn, keep
+    levels small (Koch <= 5, gasket <= 5).  Raises ValueError if a base draws nothing.
+
+    >>> d = base_case_distances(koch_curve_program(), [BASE_CASES["Koch curve"]["tent"]], [0, 1, 2])
+    >>> (d[0, 1:] / d[0, :-1]).round(2)
+    array([0.33, 0.33])
+    """
+    from goldman_lib.fixed_point import hausdorff_distance
+
+    program = _as_program(program)
+    per_segment = as_int(per_segment, "per_segment", minimum=1)
+    levels = [as_int(n, "levels entry", minimum=0) for n in np.atleast_1d(levels)]
+    others = [program.with_base(b) for b in bases]
+    out = np.zeros((len(others), len(levels)))
+    for j, n in enumerate(levels):
+        ref_polys = program.polylines(n)
+        if not ref_polys:
+            raise ValueError("the program's own base draws nothing")
+        ref = points_on(ref_polys, per_segment)
+        for i, q in enumerate(others):
+            polys = q.polylines(n)
+            if not polys:
+                raise ValueError(f"bases[{i}] draws nothing (only MOVE and TURN): there is no drawing to compare")
+            out[i, j] = hausdorff_distance(ref, points_on(polys, per_segment))
+    return out
