@@ -836,3 +836,728 @@ class BezierPatch:
 
     def __repr__(self) -> str:
         return f"BezierPatch(degree={self.degree}, dimension={self.dimension})"
+
+
+# ============================================================================================
+# Chapter 25: Bezier subdivision (Goldman §25.2-25.5)
+#
+# Added for chapter 25; nothing above this line depends on it.  subdivide (§25.2); flatness,
+# is_flat and render_by_subdivision (§25.3); intersect_curves and intersection_boxes (§25.3.1);
+# subdivide_patch, patch_flatness, render_patch_by_subdivision and intersect_ray_patch (§25.3.2);
+# subdivide_uniform and subdivision_variation_counts (§25.4); smooth_continuation and
+# join_order (§25.5).
+# ============================================================================================
+
+__all__ += [
+    "subdivide", "subdivide_uniform", "flatness", "is_flat", "render_by_subdivision",
+    "intersect_curves", "intersection_boxes",
+    "subdivide_patch", "patch_flatness", "render_patch_by_subdivision", "intersect_ray_patch",
+    "subdivision_variation_counts", "smooth_continuation", "join_order",
+]
+
+
+def _split(P: np.ndarray, t, axis: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """de Casteljau subdivision of validated control points along ``axis`` (no validation).
+
+    The left piece keeps the first point of every level of the pyramid, the right piece the
+    last point of every level (in reverse order).  Works on stacks: any other axes ride along.
+    """
+    cur = np.moveaxis(P, axis, 0)
+    n1 = cur.shape[0]
+    left = np.empty_like(cur)
+    right = np.empty_like(cur)
+    s = 1.0 - t
+    for k in range(n1):
+        left[k] = cur[0]
+        right[n1 - 1 - k] = cur[-1]
+        if k < n1 - 1:
+            cur = s * cur[:-1] + t * cur[1:]
+    return np.moveaxis(left, 0, axis), np.moveaxis(right, 0, axis)
+
+
+def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
+    """Split a Bezier curve at ``t`` into two Bezier curves by the de Casteljau algorithm (Goldman §25.2).
+
+    The points down the left edge of the de Casteljau pyramid, ``P_0^0, P_0^1, ..., P_0^n``, are
+    the control points of the curve over ``[0, t]``; the points up the right edge,
+    ``P_0^n, P_1^{n-1}, ..., P_n^0``, those of the curve over ``[t, 1]``.  Each piece is
+    parametrised over [0, 1] again: ``left(s) = C(t s)`` and ``right(s) = C(t + (1 - t) s)``.
+    A ``t`` outside [0, 1] is allowed and gives the control points of the extrapolated curve
+    (for t > 1 the left piece is the curve over [0, t]).
+
+    ctrl: (n+1, d) control points.  t: a finite scalar.
+    Returns ``(left, right)``, each (n+1, d).
+    Raises ValueError for a bad ctrl or a non-finite or non-scalar t; TypeError if not numeric.
+
+    >>> left, right = subdivide([[0, 0], [1, 2], [2, 0]])
+    >>> left.tolist(), right.tolist()
+    ([[0.0, 0.0], [0.5, 1.0], [1.0, 1.0]], [[1.0, 1.0], [1.5, 1.0], [2.0, 0.0]])
+    """
+    P = _ctrl(ctrl)
+    t = as_parameter(t, "t")
+    if t.ndim != 0:
+        raise ValueError(f"t must be a scalar for subdivide; got shape {t.shape}")
+    return _split(P, float(t))
+
+
+def subdivide_uniform(ctrl, depth) -> np.ndarray:
+    """Subdivide a Bezier curve ``depth`` times at the midpoints: 2**depth control polygons (Goldman §25.2, §25.4).
+
+    Piece ``k`` is the curve over ``[k / 2**depth, (k+1) / 2**depth]``.  As the depth grows the
+    polygons converge to the curve (the distance shrinks by about 4 with each level), which is
+    the basis of rendering by subdivision and of the proof of variation diminishing.
+
+    ctrl: (n+1, d).  depth: int, 0 <= depth <= 20.
+    Returns (2**depth, n+1, d).
+    Raises TypeError if depth is not an integer, ValueError if it is out of range or ctrl is bad.
+
+    >>> subdivide_uniform([[0, 0], [1, 2], [2, 0]], 1)[1].tolist()
+    [[1.0, 1.0], [1.5, 1.0], [2.0, 0.0]]
+    """
+    P = _ctrl(ctrl)
+    depth = as_int(depth, "depth", minimum=0, maximum=20)
+    pieces = P[None]
+    for _ in range(depth):
+        left, right = _split(pieces, 0.5, axis=1)
+        pieces = np.stack([left, right], axis=1).reshape((-1,) + P.shape)
+    return pieces.copy() if depth == 0 else pieces
+
+
+def _flatness(P: np.ndarray, even: bool = True) -> np.ndarray:
+    """Flatness of a stack of polygons (..., n+1, d) (no validation); returns (...,)."""
+    n = P.shape[-2] - 1
+    if n <= 0:
+        return np.zeros(P.shape[:-2])
+    a = P[..., :1, :]
+    b = P[..., -1:, :]
+    if even:
+        w = (np.arange(n + 1) / n)[:, None]
+        return np.linalg.norm(P - ((1.0 - w) * a + w * b), axis=-1).max(axis=-1)
+    chord = b - a
+    length2 = (chord ** 2).sum(-1, keepdims=True)
+    safe = np.where(length2 > 0, length2, 1.0)
+    along = np.clip(((P - a) * chord).sum(-1, keepdims=True) / safe, 0.0, 1.0)
+    return np.linalg.norm(P - (a + along * chord), axis=-1).max(axis=-1)
+
+
+def flatness(ctrl, even=True) -> float:
+    """How far a Bezier curve can be from the segment between its end points (Goldman §25.3).
+
+    With ``even=True`` (the default) this is ``max_k |P_k - L_k|`` with ``L_k = (1 - k/n) P_0 +
+    (k/n) P_n`` the *evenly spaced* points on the chord.  Those ``L_k`` are the control points of
+    the chord written as a degree-n curve, so by the convex-hull property
+    ``|C(t) - ((1-t) P_0 + t P_n)| <= flatness`` for every t in [0, 1]: the curve is close to
+    the chord *and* its parametrisation is close to the chord's uniform one.  With
+    ``even=False`` it is only the largest distance of a control point from the chord segment: a
+    straight but unevenly parametrised polygon then counts as flat, which is enough for
+    drawing but not for locating parameters (see :func:`intersect_curves`).
+
+    ctrl: (n+1, d).  even: bool.  Returns a float >= 0 (0 for a degree-0 curve).
+    Raises ValueError/TypeError for a bad ctrl.
+
+    >>> flatness([[0, 0], [1, 2], [2, 0]])
+    2.0
+    >>> flatness([[0, 0], [1.8, 0], [2, 0]]), flatness([[0, 0], [1.8, 0], [2, 0]], even=False)
+    (0.8, 0.0)
+    """
+    P = _ctrl(ctrl)
+    return float(_flatness(P, bool(even)))
+
+
+def is_flat(ctrl, tol, even=True) -> bool:
+    """Whether a Bezier curve is within ``tol`` of its chord, ``flatness(ctrl, even) <= tol`` (Goldman §25.3).
+
+    ctrl: (n+1, d).  tol: float >= 0.  even: as :func:`flatness`.  Returns a bool.
+    Raises ValueError for a negative or non-finite tol, and as :func:`flatness`.
+
+    >>> is_flat([[0, 0], [1, 0.001], [2, 0]], 0.01)
+    True
+    """
+    tol = as_float(tol, "tol")
+    if tol < 0:
+        raise ValueError(f"tol must be >= 0; got {tol}")
+    return flatness(ctrl, even) <= tol
+
+
+def _tolerance(tol, name="tol") -> float:
+    tol = as_float(tol, name, positive=True)
+    return tol
+
+
+def render_by_subdivision(ctrl, tol=1e-3, max_depth=24) -> tuple[np.ndarray, np.ndarray]:
+    """A polyline within ``tol`` of a Bezier curve, by adaptive subdivision (Goldman §25.3).
+
+    Subdivide at the midpoint until every piece is flat (:func:`flatness` <= tol), then draw
+    each piece as the segment between its end points.  Flat parts of the curve get few points,
+    tight bends many.  Since every vertex lies on the curve and each piece is within ``tol`` of
+    its chord (evenly parametrised), the polyline is within ``tol`` of the curve.
+
+    ctrl: (n+1, d).  tol: positive float, an absolute distance.  max_depth: int in [0, 40], the
+    deepest subdivision (a safety stop; pieces at that depth are drawn flat or not).
+    Returns ``(t, points)``: the parameters (k,) increasing from 0 to 1 and the points (k, d)
+    on the curve at them.
+    Raises ValueError for a non-positive tol, a bad max_depth or a bad ctrl.
+
+    >>> t, pts = render_by_subdivision([[0, 0], [1, 2], [2, 0]], tol=0.2)
+    >>> t.tolist()
+    [0.0, 0.25, 0.5, 0.75, 1.0]
+    """
+    P = _ctrl(ctrl)
+    tol = _tolerance(tol)
+    max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=40)
+    pieces = P[None]
+    starts = np.zeros(1)
+    width = 1.0
+    done_t, done_p = [np.zeros(1)], [P[:1]]
+    for depth in range(max_depth + 1):
+        flat = _flatness(pieces) <= tol
+        if depth == max_depth:
+            flat[:] = True
+        done_t.append(starts[flat] + width)
+        done_p.append(pieces[flat, -1])
+        pieces, starts = pieces[~flat], starts[~flat]
+        if len(pieces) == 0:
+            break
+        left, right = _split(pieces, 0.5, axis=1)
+        width /= 2
+        pieces = np.concatenate([left, right])
+        starts = np.concatenate([starts, starts + width])
+    t = np.concatenate(done_t)
+    pts = np.concatenate(done_p)
+    order = np.argsort(t, kind="stable")
+    return t[order], pts[order]
+
+
+# -- §25.3.1 curve-curve intersection ----------------------------------------------------------
+
+def _boxes(P: np.ndarray) -> np.ndarray:
+    """Axis-aligned bounding boxes of a stack of polygons (N, n+1, d): (N, 2, d) [min; max]."""
+    return np.stack([P.min(axis=1), P.max(axis=1)], axis=1)
+
+
+def _overlap(ba: np.ndarray, bb: np.ndarray, pad: float) -> np.ndarray:
+    return np.all((ba[:, 0] <= bb[:, 1] + pad) & (bb[:, 0] <= ba[:, 1] + pad), axis=-1)
+
+
+def _pair_levels(A: np.ndarray, B: np.ndarray, pad: float, flat_tol: float, max_depth: int, max_pairs: int):
+    """Breadth-first subdivision of a pair of curves (Goldman §25.3.1), yielding one level at a time.
+
+    Yields ``(level, a_pieces, b_pieces, a_intervals, b_intervals, flat)`` for the pairs whose
+    bounding boxes overlap at that level; ``flat`` marks the pairs where both pieces are flat
+    (they are not subdivided further).  Stops when no pair is left, at ``max_depth``, or
+    when more than ``max_pairs`` pairs would be kept (then every kept pair is marked flat).
+    """
+    pa, pb = A[None], B[None]
+    ia = np.array([[0.0, 1.0]])
+    ib = np.array([[0.0, 1.0]])
+    for level in range(max_depth + 1):
+        keep = _overlap(_boxes(pa), _boxes(pb), pad)
+        pa, pb, ia, ib = pa[keep], pb[keep], ia[keep], ib[keep]
+        flat = (_flatness(pa) <= flat_tol) & (_flatness(pb) <= flat_tol)
+        if level == max_depth or 4 * np.count_nonzero(~flat) > max_pairs:
+            flat[:] = True
+        yield level, pa, pb, ia, ib, flat
+        pa, pb, ia, ib = pa[~flat], pb[~flat], ia[~flat], ib[~flat]
+        if len(pa) == 0:
+            return
+        # both pieces of every pair are halved: four child pairs
+        al, ar = _split(pa, 0.5, axis=1)
+        bl, br = _split(pb, 0.5, axis=1)
+        am = ia.mean(axis=1)
+        bm = ib.mean(axis=1)
+        ial = np.stack([ia[:, 0], am], 1)
+        iar = np.stack([am, ia[:, 1]], 1)
+        ibl = np.stack([ib[:, 0], bm], 1)
+        ibr = np.stack([bm, ib[:, 1]], 1)
+        pa = np.concatenate([al, al, ar, ar])
+        pb = np.concatenate([bl, br, bl, br])
+        ia = np.concatenate([ial, ial, iar, iar])
+        ib = np.concatenate([ibl, ibr, ibl, ibr])
+
+
+def _chord_guesses(pa, pb, ia, ib) -> np.ndarray:
+    """Parameter guesses (N, 2) from intersecting the chords of flat piece pairs.
+
+    The chord of a flat piece, parametrised uniformly, is within the flatness of the piece, so
+    the chords' intersection parameters approximate the curves'.  Parallel chords (no single
+    intersection) give the middle of both pieces; guesses are clipped to the pieces.
+    """
+    a0, a1 = pa[:, 0], pa[:, -1]
+    b0, b1 = pb[:, 0], pb[:, -1]
+    da, db, r = a1 - a0, b1 - b0, b0 - a0
+    det = da[:, 0] * (-db[:, 1]) - da[:, 1] * (-db[:, 0])
+    scale = np.linalg.norm(da, axis=1) * np.linalg.norm(db, axis=1)
+    ok = np.abs(det) > 1e-12 * np.maximum(scale, 1e-300)
+    safe = np.where(ok, det, 1.0)
+    sig = (r[:, 0] * (-db[:, 1]) - r[:, 1] * (-db[:, 0])) / safe
+    tau = (da[:, 0] * r[:, 1] - da[:, 1] * r[:, 0]) / safe
+    sig = np.clip(np.where(ok, sig, 0.5), 0.0, 1.0)
+    tau = np.clip(np.where(ok, tau, 0.5), 0.0, 1.0)
+    s = ia[:, 0] + sig * (ia[:, 1] - ia[:, 0])
+    t = ib[:, 0] + tau * (ib[:, 1] - ib[:, 0])
+    return np.stack([s, t], axis=1)
+
+
+def _newton_pairs(A: np.ndarray, B: np.ndarray, st: np.ndarray, iterations: int = 80) -> tuple[np.ndarray, np.ndarray]:
+    """Newton's method on a(s) - b(t) = 0 for many starting pairs at once, kept inside [0, 1]^2.
+
+    The Jacobian [a'(s), -b'(t)] is singular at a tangential intersection, so each step is the
+    least-squares (pseudo-inverse) step, and the iterate is clipped to the unit square: at a
+    tangency or at a smooth end-to-end join this converges linearly rather than quadratically,
+    which is still ample for the tolerances asked.  Returns (st, residual norms).
+    """
+    n, m = A.shape[0] - 1, B.shape[0] - 1
+    HA = n * np.diff(A, axis=0) if n else np.zeros_like(A)
+    HB = m * np.diff(B, axis=0) if m else np.zeros_like(B)
+    st = st.copy()
+    active = np.ones(len(st), dtype=bool)
+    for _ in range(iterations):
+        if not active.any():
+            break
+        s, t = st[active, 0], st[active, 1]
+        F = _curve_points(A, s) - _curve_points(B, t)
+        J = np.stack([_curve_points(HA, s), -_curve_points(HB, t)], axis=-1)   # (N, 2, 2)
+        step = -(np.linalg.pinv(J, rcond=1e-13) @ F[:, :, None])[:, :, 0]
+        new = np.clip(st[active] + step, 0.0, 1.0)
+        moved = np.abs(new - st[active]).max(axis=1)
+        st[active] = new
+        idx = np.flatnonzero(active)
+        active[idx[moved <= 1e-15]] = False
+    res = np.linalg.norm(_curve_points(A, st[:, 0]) - _curve_points(B, st[:, 1]), axis=1)
+    return st, res
+
+
+def _merge_solutions(st: np.ndarray, res: np.ndarray, meet, tol_abs: float, close: float = 1e-3) -> np.ndarray:
+    """Deduplicate converged parameter points: two solutions are one if they are within 1e-9,
+    or within ``close`` and the curves still meet half way between them (a tangential contact
+    approached from several candidates).  Each cluster is represented by its best residual."""
+    order = np.argsort(res, kind="stable")
+    kept: list[np.ndarray] = []
+    for i in order:
+        p = st[i]
+        same = False
+        for q in kept:
+            gap = np.abs(p - q).max()
+            if gap <= 1e-9 or (gap <= close and meet((p + q) / 2) <= tol_abs):
+                same = True
+                break
+        if not same:
+            kept.append(p)
+    if not kept:
+        return np.zeros((0, st.shape[1]))
+    out = np.array(kept)
+    return out[np.lexsort(out.T[::-1])]
+
+
+def _curves_pair(a, b):
+    A = as_points(a, "a", ndim=2, dim=2)
+    B = as_points(b, "b", ndim=2, dim=2)
+    return A, B
+
+
+def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
+    """The parameter pairs ``(s, t)`` with ``a(s) = b(t)`` of two planar Bezier curves, by subdivision (Goldman §25.3.1).
+
+    Subdivision finds where to look, Newton's method says exactly where:
+
+    1. Keep a list of pairs of pieces, starting with the two whole curves.  Discard every pair
+       whose control-point bounding boxes do not overlap: by the convex-hull property the
+       pieces cannot meet.
+    2. When both pieces of a pair are flat -- close to their chords *and* evenly parametrised,
+       :func:`flatness` with ``even=True``, relative tolerance 1e-4 -- intersect the chords;
+       the chord parameters approximate the curves'.  Otherwise halve both pieces and go on.
+    3. Polish every guess by Newton's method on ``a(s) - b(t) = 0`` over the whole curves
+       (least-squares steps kept inside [0, 1]^2, so tangential contacts converge too), keep
+       the guesses where the curves meet within ``tol`` (relative to the size of the control
+       points), and merge guesses that are the same intersection.
+
+    The flatness test must ask for evenly spaced control points: a nearly straight curve with
+    an uneven parametrisation has a straight polygon, but its chord's parameters are far from
+    the curve's.
+
+    a: (n+1, 2), b: (m+1, 2) control points.  tol: positive float, how close (relative to the
+    size of the control points, at least 1) the curves must come to count as meeting.
+    max_depth: int in [1, 60], the deepest subdivision.
+    Returns (k, 2) parameter pairs ``[s, t]`` sorted by s; k = 0 if the curves do not meet.
+    Transversal intersections are accurate to about 1e-15; tangential ones (double roots) to
+    about 1e-8 and triple roots to about 1e-5.  Curves that overlap along a piece (infinitely
+    many intersections) are not handled.
+    Raises ValueError if a or b is not (k, 2) finite points, for a non-positive tol or a bad
+    max_depth.
+
+    >>> intersect_curves([[0, 0], [1, 2], [2, 0]], [[0, 0.75], [2, 0.75]]).round(12).tolist()
+    [[0.25, 0.25], [0.75, 0.75]]
+    >>> intersect_curves([[0, 0], [1, 0]], [[0, 1], [1, 1]]).shape
+    (0, 2)
+    """
+    A, B = _curves_pair(a, b)
+    tol = _tolerance(tol)
+    max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=60)
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    guesses = [np.array([[0.0, 0.0], [0.0, 1.0], [1.0, 0.0], [1.0, 1.0]])]
+    for _, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-4 * scale,
+                                                  max_depth=max_depth, max_pairs=20000):
+        if flat.any():
+            guesses.append(_chord_guesses(pa[flat], pb[flat], ia[flat], ib[flat]))
+    st = np.concatenate(guesses)
+    st = np.unique(np.round(st, 12), axis=0)
+    st, res = _newton_pairs(A, B, st)
+    tol_abs = tol * scale
+    good = res <= tol_abs
+
+    def meet(p):
+        return float(np.linalg.norm(_curve_points(A, np.array(p[0])) - _curve_points(B, np.array(p[1]))))
+
+    return _merge_solutions(st[good], res[good], meet, tol_abs)
+
+
+def intersection_boxes(a, b, level) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The pieces of two curves still in play at one level of subdivision intersection (Goldman §25.3.1).
+
+    For the picture of :func:`intersect_curves`: at ``level`` (0 = the whole curves) both curves
+    have been halved ``level`` times and only the pairs of pieces whose bounding boxes overlap
+    are kept.  Pairs that became flat at an earlier level stop there and are not included.
+
+    a: (n+1, 2), b: (m+1, 2).  level: int in [0, 30].
+    Returns ``(boxes_a, boxes_b, intervals_a, intervals_b)``: the distinct bounding boxes of the
+    kept pieces of each curve, (k, 2, 2) as ``[[xmin, ymin], [xmax, ymax]]``, and their
+    parameter intervals (k, 2).  Empty (0, 2, 2) arrays once no pair is left.
+    Raises ValueError for bad curves or level.
+
+    >>> ba, bb, ia, ib = intersection_boxes([[0, 0], [1, 2], [2, 0]], [[0, 1], [2, 1]], 1)
+    >>> ia.tolist(), ib.tolist()
+    ([[0.0, 0.5], [0.5, 1.0]], [[0.0, 0.5], [0.5, 1.0]])
+    """
+    A, B = _curves_pair(a, b)
+    level = as_int(level, "level", minimum=0, maximum=30)
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    empty = (np.zeros((0, 2, 2)), np.zeros((0, 2, 2)), np.zeros((0, 2)), np.zeros((0, 2)))
+    for lv, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-4 * scale,
+                                                   max_depth=max(level, 1), max_pairs=20000):
+        if lv == level:
+            if len(pa) == 0:
+                return empty
+            ua, ka = np.unique(ia, axis=0, return_index=True)
+            ub, kb = np.unique(ib, axis=0, return_index=True)
+            return _boxes(pa[ka]), _boxes(pb[kb]), ua, ub
+    return empty
+
+
+# -- §25.3.2 surfaces ------------------------------------------------------------------------
+
+def subdivide_patch(ctrl, u=0.5, v=0.5) -> np.ndarray:
+    """Split a tensor-product Bezier patch at ``(u, v)`` into four patches (Goldman §25.3.2).
+
+    Subdivide every row of the net at v and every column at u (de Casteljau along each
+    direction, :func:`subdivide` applied to the rows and columns).
+
+    ctrl: (m+1, n+1, d).  u, v: finite scalars.
+    Returns (2, 2, m+1, n+1, d): ``[i, j]`` is the piece over ``[0, u]`` (i = 0) or ``[u, 1]``
+    (i = 1) in u and ``[0, v]`` (j = 0) or ``[v, 1]`` (j = 1) in v, each reparametrised to
+    [0, 1]^2.
+    Raises ValueError for a bad net or non-scalar, non-finite u or v.
+
+    >>> net = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]
+    >>> subdivide_patch(net)[1, 1, 0, 0].tolist()      # the patch's centre S(1/2, 1/2)
+    [0.5, 0.5, 0.25]
+    """
+    P = _net(ctrl)
+    u = as_parameter(u, "u")
+    v = as_parameter(v, "v")
+    for name, x in (("u", u), ("v", v)):
+        if x.ndim != 0:
+            raise ValueError(f"{name} must be a scalar for subdivide_patch; got shape {x.shape}")
+    return _split_patches(P[None], float(u), float(v))[0]
+
+
+def _split_patches(P: np.ndarray, u: float = 0.5, v: float = 0.5) -> np.ndarray:
+    """Four-way split of a stack of nets (N, m+1, n+1, d) -> (N, 2, 2, m+1, n+1, d)."""
+    lo, hi = _split(P, u, axis=1)
+    out = []
+    for half in (lo, hi):
+        a, b = _split(half, v, axis=2)
+        out.append(np.stack([a, b], axis=1))
+    return np.stack(out, axis=1)
+
+
+def _patch_flatness(P: np.ndarray) -> np.ndarray:
+    """Flatness of a stack of nets (N, m+1, n+1, d) (no validation): (N,)."""
+    m, n = P.shape[1] - 1, P.shape[2] - 1
+    u = (np.arange(m + 1) / max(m, 1))[:, None, None]
+    v = (np.arange(n + 1) / max(n, 1))[None, :, None]
+    c00, c01 = P[:, :1, :1], P[:, :1, -1:]
+    c10, c11 = P[:, -1:, :1], P[:, -1:, -1:]
+    bilinear = (1 - u) * (1 - v) * c00 + (1 - u) * v * c01 + u * (1 - v) * c10 + u * v * c11
+    off = np.linalg.norm(P - bilinear, axis=-1).max(axis=(1, 2))
+    twist = np.linalg.norm((c00 - c01 - c10 + c11)[:, 0, 0], axis=-1)
+    return off + twist / 4
+
+
+def patch_flatness(ctrl) -> float:
+    """How far a Bezier patch can be from the two triangles on its corners (Goldman §25.3.2).
+
+    ``max_ij |P_ij - L_ij| + |P_00 - P_0n - P_m0 + P_mn| / 4``, where ``L_ij`` is the bilinear
+    interpolant of the four corners at ``(i/m, j/n)``.  The first term bounds the distance from
+    the patch to the bilinear patch of its corners (its control net is the ``L_ij``, by
+    degree elevation), the second the distance from that bilinear patch to the two triangles
+    ``P_00 P_m0 P_mn`` and ``P_00 P_mn P_0n``.
+
+    ctrl: (m+1, n+1, d).  Returns a float >= 0.
+    Raises ValueError/TypeError for a bad net.
+
+    >>> patch_flatness([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]])
+    0.0
+    >>> patch_flatness([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+    0.25
+    """
+    return float(_patch_flatness(_net(ctrl)[None])[0])
+
+
+def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarray, np.ndarray]:
+    """Flat pieces covering a Bezier patch, by adaptive subdivision (Goldman §25.3.2).
+
+    Split the patch into four until each piece is within ``tol`` of the two triangles on its
+    corners (:func:`patch_flatness`); draw each piece as those two triangles.  (Neighbouring
+    pieces of different sizes can leave hairline cracks along their common edge, of width at
+    most ``tol``.)
+
+    ctrl: (m+1, n+1, d).  tol: positive float (absolute distance).  max_depth: int in [0, 12].
+    Returns ``(corners, domains)``: the corner points of the pieces (k, 4, d) in the order
+    ``S(u0, v0), S(u1, v0), S(u1, v1), S(u0, v1)``, and their parameter rectangles (k, 4) as
+    ``[u0, u1, v0, v1]``.
+    Raises ValueError for a non-positive tol, a bad max_depth or a bad net.
+
+    >>> corners, domains = render_patch_by_subdivision([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], 0.1)
+    >>> len(domains)
+    4
+    """
+    P = _net(ctrl)
+    tol = _tolerance(tol)
+    max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=12)
+    nets = P[None]
+    dom = np.array([[0.0, 1.0, 0.0, 1.0]])
+    out_c, out_d = [], []
+    for depth in range(max_depth + 1):
+        flat = _patch_flatness(nets) <= tol
+        if depth == max_depth:
+            flat[:] = True
+        f = nets[flat]
+        out_c.append(np.stack([f[:, 0, 0], f[:, -1, 0], f[:, -1, -1], f[:, 0, -1]], axis=1))
+        out_d.append(dom[flat])
+        nets, dom = nets[~flat], dom[~flat]
+        if len(nets) == 0:
+            break
+        nets, dom = _quarter(nets, dom)
+    return np.concatenate(out_c), np.concatenate(out_d)
+
+
+def _quarter(nets: np.ndarray, dom: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Split nets (N, ...) and their domains (N, 4) into four: (4N, ...) and (4N, 4)."""
+    split = _split_patches(nets)
+    nets = split.reshape((-1,) + nets.shape[1:])
+    um = (dom[:, 0] + dom[:, 1]) / 2
+    vm = (dom[:, 2] + dom[:, 3]) / 2
+    kids = []
+    for i in (0, 1):
+        for j in (0, 1):
+            kids.append(np.stack([np.where(i, um, dom[:, 0]), np.where(i, dom[:, 1], um),
+                                  np.where(j, vm, dom[:, 2]), np.where(j, dom[:, 3], vm)], axis=1))
+    return nets, np.stack(kids, axis=1).reshape(-1, 4)
+
+
+def _ray_hits_boxes(boxes: np.ndarray, o: np.ndarray, d: np.ndarray, pad: float) -> np.ndarray:
+    """Slab test of the ray o + s d, s >= 0, against boxes (N, 2, 3)."""
+    lo = boxes[:, 0] - pad
+    hi = boxes[:, 1] + pad
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = 1.0 / d
+        t1 = (lo - o) * inv
+        t2 = (hi - o) * inv
+    tmin = np.where(d == 0, np.where((o >= lo) & (o <= hi), -np.inf, np.inf), np.minimum(t1, t2))
+    tmax = np.where(d == 0, np.where((o >= lo) & (o <= hi), np.inf, -np.inf), np.maximum(t1, t2))
+    enter = tmin.max(axis=1)
+    leave = tmax.min(axis=1)
+    return (enter <= leave) & (leave >= 0)
+
+
+def intersect_ray_patch(ctrl, origin, direction, tol=1e-10, max_depth=16) -> np.ndarray:
+    """Where a ray meets a Bezier patch, by subdivision and Newton's method (Goldman §25.3.2).
+
+    Split the patch into four, keep the pieces whose control-point bounding boxes the ray
+    ``origin + s direction`` (s >= 0) passes through, until the pieces are flat; then polish
+    each flat piece's centre by Newton's method on ``S(u, v) - origin - s direction = 0``
+    (three equations, three unknowns, kept inside [0, 1]^2) and merge repeated solutions.
+
+    ctrl: (m+1, n+1, 3).  origin: (3,).  direction: (3,), nonzero.  tol: positive float, how
+    close (relative to the size of the net, at least 1) a solution must be.  max_depth: int in
+    [1, 24].
+    Returns (k, 3) rows ``[u, v, s]`` sorted by s (the nearest hit first); k = 0 if the ray
+    misses.  A ray lying in a flat patch (infinitely many hits) is not handled.
+    Raises ValueError for a net that is not 3D, a zero direction, a non-positive tol or a bad
+    max_depth.
+
+    >>> net = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]]   # the unit square in z = 0
+    >>> intersect_ray_patch(net, [0.25, 0.5, 1.0], [0, 0, -1]).tolist()
+    [[0.25, 0.5, 1.0]]
+    """
+    P = as_points(ctrl, "ctrl", ndim=3, dim=3)
+    o = as_points(origin, "origin", ndim=1, dim=3)
+    d = as_points(direction, "direction", ndim=1, dim=3)
+    if not np.any(d):
+        raise ValueError("direction must be a nonzero vector; got all zeros")
+    tol = _tolerance(tol)
+    max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=24)
+    scale = max(1.0, float(np.abs(P).max()), float(np.abs(o).max()))
+    flat_tol = 1e-3 * scale
+    nets = P[None]
+    dom = np.array([[0.0, 1.0, 0.0, 1.0]])
+    guesses = []
+    for depth in range(max_depth + 1):
+        boxes = np.stack([nets.min(axis=(1, 2)), nets.max(axis=(1, 2))], axis=1)
+        keep = _ray_hits_boxes(boxes, o, d, 1e-12 * scale)
+        nets, dom = nets[keep], dom[keep]
+        if len(nets) == 0:
+            break
+        flat = _patch_flatness(nets) <= flat_tol
+        if depth == max_depth or 4 * np.count_nonzero(~flat) > 20000:
+            flat[:] = True
+        guesses.append(np.stack([(dom[flat, 0] + dom[flat, 1]) / 2, (dom[flat, 2] + dom[flat, 3]) / 2], 1))
+        nets, dom = nets[~flat], dom[~flat]
+        if len(nets) == 0:
+            break
+        nets, dom = _quarter(nets, dom)
+    if not guesses:
+        return np.zeros((0, 3))
+    uv = np.concatenate(guesses)
+    if len(uv) == 0:
+        return np.zeros((0, 3))
+    uvs, res = _newton_ray(P, o, d, uv)
+    tol_abs = tol * scale
+    good = (res <= tol_abs) & (uvs[:, 2] >= -tol)
+
+    def meet(p):
+        return float(np.linalg.norm(_patch_points(P, np.array([p[0]]), np.array([p[1]]))[:, 0] - o - p[2] * d))
+
+    out = _merge_solutions(uvs[good], res[good], meet, tol_abs)
+    return out[np.argsort(out[:, 2], kind="stable")] if len(out) else out
+
+
+def _newton_ray(P, o, d, uv, iterations=60):
+    """Newton on S(u, v) - o - s d = 0 from many (u, v) starts (s starts at the projection)."""
+    m, n = P.shape[0] - 1, P.shape[1] - 1
+    Du = m * np.diff(P, axis=0) if m else np.zeros_like(P)
+    Dv = n * np.diff(P, axis=1) if n else np.zeros_like(P)
+    u, v = uv[:, 0].copy(), uv[:, 1].copy()
+    S = _patch_points(P, u, v).T
+    s = (S - o) @ d / (d @ d)
+    x = np.stack([u, v, s], 1)
+    for _ in range(iterations):
+        S = _patch_points(P, x[:, 0], x[:, 1]).T
+        F = S - o - x[:, 2:3] * d
+        J = np.stack([_patch_points(Du, x[:, 0], x[:, 1]).T, _patch_points(Dv, x[:, 0], x[:, 1]).T,
+                      np.broadcast_to(-d, F.shape)], axis=-1)
+        step = -(np.linalg.pinv(J, rcond=1e-13) @ F[:, :, None])[:, :, 0]
+        new = x + step
+        new[:, :2] = np.clip(new[:, :2], 0.0, 1.0)
+        moved = np.abs(new - x).max()
+        x = new
+        if moved <= 1e-15:
+            break
+    S = _patch_points(P, x[:, 0], x[:, 1]).T
+    res = np.linalg.norm(S - o - x[:, 2:3] * d, axis=1)
+    return x, res
+
+
+# -- §25.4 variation diminishing by subdivision ----------------------------------------------
+
+def subdivision_variation_counts(ctrl, line_point, line_normal, max_depth=8, tol=1e-12) -> list[int]:
+    """Line crossings of the subdivided control polygons, depth 0 to ``max_depth`` (Goldman §25.4).
+
+    At depth k the curve is split into 2**k pieces at the midpoints and their control polygons,
+    joined end to end, form one polygon (each shared end point counted once).  Each
+    subdivision step is a sequence of corner cuttings, which never increase the number of
+    crossings with a line, and the polygons converge to the curve: so the counts decrease to
+    the number of times the curve crosses the line -- the proof of the variation diminishing
+    property (:func:`variation_count` >= :func:`curve_crossings`).
+
+    ctrl: (n+1, d).  line_point, line_normal: (d,), the normal nonzero.  max_depth: int in
+    [0, 16].  tol: float >= 0, distances below which a point counts as on the line.
+    Returns a list of max_depth + 1 ints, non-increasing.
+    Raises ValueError for bad shapes, non-finite values, a zero normal or a bad max_depth.
+
+    >>> subdivision_variation_counts([[0, 1], [1, -2], [2, 0], [3, 1]], [0, -0.7], [0, 1], 4)
+    [2, 2, 0, 0, 0]
+    """
+    P = _ctrl(ctrl)
+    max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=16)
+    tol = as_float(tol, "tol")
+    counts = []
+    for depth in range(max_depth + 1):
+        pieces = subdivide_uniform(P, depth)
+        joined = np.concatenate([pieces[:, :-1].reshape(-1, P.shape[1]), pieces[-1, -1:]])
+        counts.append(_sign_changes(_signed_distances(joined, line_point, line_normal, P.shape[1]), tol))
+    return counts
+
+
+# -- §25.5 smooth joins ----------------------------------------------------------------------
+
+def smooth_continuation(ctrl, ratio=1.0) -> np.ndarray:
+    """The control points of a Bezier curve's own polynomial continued past its end (Goldman §25.5).
+
+    The curve P runs over [0, 1]; its polynomial over the next interval [1, 1 + ratio],
+    reparametrised to [0, 1], has control points ``Q`` with ``Q(s) = P(1 + ratio s)``.  They
+    come from one extrapolating subdivision (of the reversed polygon at ``t = -ratio``).  A
+    curve R of the same degree meets P with C^k continuity (parameter intervals in the ratio
+    ``ratio``) exactly when ``R_0, ..., R_k`` equal ``Q_0, ..., Q_k``: the first k+1 control
+    points of R are those of a subdivision of one polynomial curve.
+
+    ctrl: (n+1, d).  ratio: positive float, (next interval length) / (this one).
+    Returns (n+1, d).
+    Raises ValueError for ratio <= 0 and as :func:`subdivide`.
+
+    >>> smooth_continuation([[0, 0], [1, 2], [2, 0]]).tolist()
+    [[2.0, 0.0], [3.0, -2.0], [4.0, -8.0]]
+    """
+    P = _ctrl(ctrl)
+    ratio = as_float(ratio, "ratio", positive=True)
+    return _split(P[::-1], -ratio)[0]
+
+
+def join_order(a, b, ratio=1.0, tol=1e-9) -> int:
+    """The order of continuity where curve ``a`` ends and curve ``b`` begins: the largest k with C^k (Goldman §25.5).
+
+    Both curves are written with the larger of their degrees (:func:`elevate_degree`, which
+    does not change them) and b's control points are compared with
+    :func:`smooth_continuation` of a: the join is C^k exactly when the first k+1 agree.
+    Returns -1 if the curves do not even meet, and the common degree n if b continues a's
+    polynomial (C^n then means C^infinity: the two are one polynomial curve).  The two halves
+    of a subdivided curve meet with ``ratio = (1 - t) / t``, order n.
+
+    a: (n+1, d), b: (m+1, d), same d.  ratio: positive float, (b's parameter interval) / (a's).
+    tol: positive float, relative to the size of the control points (at least 1).
+    Returns an int in [-1, max(n, m)].
+    Raises ValueError for different dimensions, ratio <= 0 or tol <= 0.
+
+    >>> left, right = subdivide([[0, 0], [1, 2], [3, 2], [4, 0]], 0.25)
+    >>> join_order(left, right, ratio=3.0)
+    3
+    >>> join_order([[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0]])
+    1
+    """
+    A = _ctrl(a, "a")
+    B = _ctrl(b, "b")
+    if A.shape[1] != B.shape[1]:
+        raise ValueError(f"a and b must hold points of the same dimension; got shapes {A.shape} and {B.shape}")
+    ratio = as_float(ratio, "ratio", positive=True)
+    tol = as_float(tol, "tol", positive=True)
+    n = max(A.shape[0], B.shape[0]) - 1
+    A = elevate_degree(A, n - (A.shape[0] - 1))
+    B = elevate_degree(B, n - (B.shape[0] - 1))
+    Q = _split(A[::-1], -ratio)[0]
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()), float(np.abs(Q).max()))
+    order = -1
+    for k in range(n + 1):
+        if np.linalg.norm(Q[k] - B[k]) > tol * scale:
+            break
+        order = k
+    return order
