@@ -763,11 +763,11 @@ def similarity_dimension(scales) -> float:
     s = np.asarray(scales, dtype=float) if not isinstance(scales, (str, bytes)) else None
     if s is None:
         raise TypeError("scales must be a sequence of numbers, not a string")
-    s = as_points(s.reshape(-1, 1), "scales", ndim=2, dim=1)[:, 0] if s.ndim <= 1 else None
-    if s is None:
-        raise ValueError("scales must be a flat list of scale factors")
+    if s.ndim > 1:
+        raise ValueError(f"scales must be a flat list of scale factors; got shape {s.shape}")
     if s.size == 0:
         raise ValueError("scales must hold at least one scale factor")
+    s = as_points(s.reshape(-1, 1), "scales", ndim=2, dim=1)[:, 0]
     bad = np.flatnonzero(s <= 0)
     if bad.size:
         i = int(bad[0])
