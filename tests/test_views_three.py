@@ -55,3 +55,30 @@ def test_scene_rejects_bad_input_naming_the_parameter():
         view.set_points("p", [[0, 0, np.nan], [0, 0, 0]])
     with pytest.raises(ValueError, match="already used"):
         view.add_points("p", np.zeros((1, 3)))
+
+
+def test_replace_mesh_and_segments_change_the_vertex_count_in_place():
+    view = SceneView(width=120, height=90)
+    pos = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0]])
+    view.add_mesh("m", pos, [[0, 1, 2]])
+    view.add_segments("s", pos, [[0, 1]])
+    geom = view._items["m"]["geometry"]
+    attrs = {k: geom.attributes[k] for k in ("position", "normal", "index")}
+    grid = np.stack(np.meshgrid(np.linspace(0, 1, 4), np.linspace(0, 1, 4), indexing="ij"), -1).reshape(-1, 2)
+    bigger = np.concatenate([grid, np.zeros((16, 1))], 1)
+    tris = grid_triangles(4, 4)
+    view.replace_mesh("m", bigger, tris)
+    view.replace_segments("s", bigger, [[0, 1], [1, 2], [2, 3]])
+    assert view._items["m"]["geometry"] is geom
+    assert all(geom.attributes[k] is a for k, a in attrs.items())
+    assert geom.attributes["position"].array.shape == (16, 3)
+    np.testing.assert_array_equal(geom.attributes["index"].array, tris.ravel())
+    np.testing.assert_allclose(geom.attributes["normal"].array, vertex_normals(bigger, tris))
+    assert view._items["s"]["geometry"].attributes["position"].array.shape == (6, 3)
+    assert view.data("m")["triangles"].shape == (18, 3) and view._items["m"]["object"].frustumCulled is False
+    view.set_mesh("m", bigger + [0, 0, 1])  # same-size updates keep working after a replace
+    with pytest.raises(ValueError, match="triangles must have shape"):
+        view.replace_mesh("m", pos, [[0, 1, 3]])
+    with pytest.raises(ValueError, match="segments must have shape"):
+        view.replace_segments("s", pos, [[0, 5]])
+    assert view.to_png().startswith(b"\x89PNG")

@@ -161,6 +161,40 @@ class SceneView:
         item["positions"] = pos
         item["geometry"].attributes["position"].array = pos.astype(np.float32)
 
+    def replace_mesh(self, name: str, positions, triangles):
+        """New geometry of any size for mesh ``name``: positions ``(n, 3)`` and triangles ``(k, 3)``.
+
+        For views whose mesh changes its vertex count (a subdivision level slider).  The mesh keeps
+        its ``BufferGeometry`` and ``BufferAttribute`` widgets; their arrays are replaced.  three.js
+        r97 (pythreejs 2.4) re-uploads a non-dynamic attribute with ``bufferData`` and updates its
+        ``count`` in ``setArray``, so an array of a new length is drawn whole.  The positions go first
+        and the indices last, so no index ever points past the vertices it is drawn with.  Frustum
+        culling is switched off for the mesh, since its bounding sphere was computed for the first
+        geometry.
+        """
+        item = self._item(name, "mesh")
+        pos = as_points(positions, "positions", dim=3)
+        tri = np.asarray(triangles, dtype=np.uint32)
+        if tri.ndim != 2 or tri.shape[1] != 3 or (tri.size and tri.max() >= len(pos)):
+            raise ValueError(f"triangles must have shape (k, 3) with indices below {len(pos)}; got shape {tri.shape}")
+        item["positions"], item["triangles"] = pos, tri
+        item["object"].frustumCulled = False
+        attrs = item["geometry"].attributes
+        attrs["position"].array = pos.astype(np.float32)
+        attrs["normal"].array = vertex_normals(pos, tri).astype(np.float32)
+        attrs["index"].array = np.ascontiguousarray(tri.ravel())
+
+    def replace_segments(self, name: str, positions, segments):
+        """New endpoints and index pairs of any size for the segments ``name`` (see :meth:`replace_mesh`)."""
+        item = self._item(name, "segments")
+        pos = as_points(positions, "positions", dim=3)
+        seg = np.asarray(segments, dtype=np.int64)
+        if seg.ndim != 2 or seg.shape[1] != 2 or (seg.size and seg.max() >= len(pos)):
+            raise ValueError(f"segments must have shape (k, 2) with indices below {len(pos)}; got shape {seg.shape}")
+        item["positions"], item["segments"] = pos, seg
+        item["object"].frustumCulled = False
+        item["geometry"].attributes["position"].array = pos[seg].reshape(-1, 3).astype(np.float32)
+
     def data(self, name: str) -> dict:
         """The numpy data behind primitive ``name`` (``positions`` and, for meshes, ``triangles``)."""
         return {k: v for k, v in self._items[name].items() if k not in ("object", "geometry")}
