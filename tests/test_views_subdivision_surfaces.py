@@ -1,0 +1,74 @@
+"""Chapter 30 widgets: what they draw is the library's subdivision at the slider values, the
+three.js geometry is replaced in place (same buffer attributes), and no slider position raises."""
+
+import numpy as np
+import pytest
+
+from goldman_lib import subdivision_surfaces as ss
+from goldman_lib.views import subdivision_surfaces as views
+
+
+def finite(result):
+    return all(np.all(np.isfinite(np.asarray(v, dtype=float))) for k, v in result.items() if k != "status")
+
+
+@pytest.mark.parametrize("factory", [views.split_and_average_view, views.subdivision_viewer], ids=lambda f: f.__name__)
+def test_sweep_every_control(factory):
+    view = factory()
+    for values in view.sweep_values():
+        result = view.update(**values)
+        assert finite(result) and result["status"]
+    view.set_values(**view.sweep_values()[-1])
+    assert view.last_error is None and view.static_png().startswith(b"\x89PNG")
+
+
+def test_viewer_draws_the_library_mesh_and_replaces_geometry_in_place():
+    view = views.subdivision_viewer()
+    geom = view.scene._items["surface"]["geometry"]
+    position = geom.attributes["position"]
+    for name in views.MESHES:
+        for scheme in ("quad", "triangle"):
+            for level in (0, 1, 3):
+                result = view.set_values(mesh=name, scheme=scheme, level=level)
+                base = views.MESHES[name]()
+                control = ss.triangulate(base) if scheme == "triangle" else base
+                expected = ss.centroid_averaging(control, level, scheme=scheme)
+                np.testing.assert_allclose(result["vertices"], expected.vertices)
+                np.testing.assert_array_equal(result["triangles"], expected.triangles())
+                np.testing.assert_allclose(result["control"], control.vertices[control.edges])
+                assert result["euler"] == base.euler_characteristic()
+                # what three.js holds is what was returned
+                np.testing.assert_allclose(position.array, expected.vertices.astype(np.float32))
+                assert geom.attributes["index"].array.size == 3 * len(expected.triangles())
+    assert view.scene._items["surface"]["geometry"] is geom and geom.attributes["position"] is position
+
+
+def test_viewer_status_reports_counts_and_extraordinary_valences():
+    view = views.subdivision_viewer()
+    status = view.update(mesh="cube", scheme="quad", level=1)["status"]
+    assert "V=26, E=48, F=24, V-E+F=2" in status and "extraordinary valences 3" in status
+    assert "extraordinary valences 5" in view.update(mesh="star (valence 5)", scheme="quad", level=2)["status"]
+
+
+def test_split_and_average_view_draws_the_library_polygon():
+    view = views.split_and_average_view()
+    result = view.set_values(degree=2, levels=2)
+    np.testing.assert_allclose(result["polygon"], ss.split_and_average(views.DEFAULT_POLYGON, 2, 2))
+    assert len(result["polygon"]) == 2 * (2 * 6 - 2) - 2
+
+
+def test_static_pictures():
+    ax = views.plot_mesh(ss.centroid_averaging(ss.cube(), 2), control=ss.cube())
+    assert len(ax.collections) == 2
+    assert views.plot_quad_stencils(5).texts[0].get_text() == "9/16"
+    assert views.plot_triangle_stencils(6).texts[1].get_text() == "1/16"
+    assert len(views.plot_polygon_levels(views.DEFAULT_POLYGON, 3, 2)) == 3
+
+
+def test_factories_reject_bad_arguments():
+    with pytest.raises(ValueError, match="mesh must be one of"):
+        views.subdivision_viewer(mesh="torus")
+    with pytest.raises(ValueError, match="scheme must be"):
+        views.subdivision_viewer(scheme="loop")
+    with pytest.raises(ValueError, match="level must be <= 4"):
+        views.subdivision_viewer(level=7)
