@@ -1,0 +1,872 @@
+"""Knot insertion for B-spline curves (Goldman, chapter 28).
+
+Inserting a knot into the knot vector of a B-spline curve gives a longer control polygon for the
+*same* curve.  The new control points are blossom values: with the new knots ``tau``, the new
+control point ``Q_j`` is the blossom ``b(tau_{j+1}, ..., tau_{j+p})`` of the curve (§27.2), and
+each algorithm of the chapter is a way of computing these blossom values cheaply.
+
+Two layers, as everywhere in ``goldman_lib``:
+
+- pure functions on arrays: Boehm's algorithm (§28.3.1: :func:`boehm_insert`,
+  :func:`boehm_steps`), the Oslo algorithm (§28.3.2: :func:`oslo`, :func:`oslo_steps`),
+  conversion to piecewise Bezier form (§28.3.3: :func:`to_piecewise_bezier`), the
+  variation-diminishing property (§28.3.4: :func:`variation_diminishing`), rendering and
+  intersecting by knot insertion (§28.3.5 and §28.4.4: :func:`split`, :func:`render`,
+  :func:`intersect`), the uniform subdivision algorithms of §28.4 (:func:`lane_riesenfeld`,
+  :func:`lane_riesenfeld_steps`, :func:`lane_riesenfeld_knots`, :func:`schaefer`,
+  :func:`schaefer_steps`, :func:`midpoint_knots`) and the convergence of the refined control
+  polygons to the curve (§28.4.3: :func:`greville`, :func:`control_polygon_distance`,
+  :func:`convergence_study`);
+- the curve is always given as three arrays ``(ctrl, knots, degree)``: ``ctrl`` ``(n+1, d)``,
+  ``knots`` ``(n+p+2,)`` non-decreasing (validated by :func:`goldman_lib.bspline.check_knots`) and
+  the degree ``p``; the curve lives on the domain ``[t_p, t_{n+1}]``.
+
+Knot insertion never changes the curve, only its representation; the tests check this against
+``scipy.interpolate.BSpline`` built from the original control points and knots.
+
+>>> ctrl, knots = boehm_insert([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, 0.5)
+>>> ctrl.tolist()
+[[0.0, 0.0], [0.5, 1.0], [1.5, 1.0], [2.0, 0.0]]
+>>> knots.tolist()
+[0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from goldman_lib import bezier, bspline
+from goldman_lib.validation import as_float, as_int, as_parameter, as_points
+
+__all__ = [
+    "boehm_insert", "boehm_steps", "oslo", "oslo_steps", "to_piecewise_bezier",
+    "variation_diminishing", "split", "render", "intersect",
+    "lane_riesenfeld", "lane_riesenfeld_steps", "lane_riesenfeld_knots",
+    "midpoint_knots", "schaefer", "schaefer_steps", "schaefer_labels",
+    "greville", "control_polygon_distance", "convergence_study",
+]
+
+
+# --------------------------------------------------------------------------------------------
+# internal helpers (no validation)
+# --------------------------------------------------------------------------------------------
+
+def _curve(ctrl, knots, degree, cname="ctrl", kname="knots"):
+    """Validate a B-spline curve: (P (n+1, d), t (n+p+2,), p)."""
+    p = as_int(degree, "degree", minimum=0)
+    P = as_points(ctrl, cname, ndim=2)
+    t = bspline.check_knots(knots, p, P.shape[0], name=kname)
+    return P, t, p
+
+
+def _fmt(x: float) -> str:
+    return f"{float(x):.6g}"
+
+
+def _domain_spans(t: np.ndarray, p: int, x: np.ndarray) -> np.ndarray:
+    """Span index k with t[k] <= x < t[k+1], clipped to the non-empty spans of the domain."""
+    n = t.size - p - 2
+    lo_k = int(np.searchsorted(t, t[p], side="right")) - 1
+    hi_k = int(np.searchsorted(t, t[n + 1], side="left")) - 1
+    return np.clip(np.searchsorted(t, x, side="right") - 1, lo_k, hi_k)
+
+
+def _blossom_many(P: np.ndarray, t: np.ndarray, p: int, spans: np.ndarray, args: np.ndarray) -> np.ndarray:
+    """Blossoms b_k(args[m, 0], ..., args[m, p-1]) of the pieces k = spans[m]: (N, d).
+
+    de Boor's pyramid with a different argument on each level, for all N label sets at once:
+    level r replaces the label t_i of P_i (or t_{i+p+1-r}) by args[:, r-1].
+    """
+    rows = [P[spans - p + j] for j in range(p + 1)]            # each (N, d)
+    for r in range(1, p + 1):
+        x = args[:, r - 1][:, None]
+        for j in range(p, r - 1, -1):
+            i = spans - p + j
+            lo, hi = t[i][:, None], t[i + p + 1 - r][:, None]
+            alpha = (x - lo) / (hi - lo)
+            rows[j] = rows[j - 1] + alpha * (rows[j] - rows[j - 1])
+    return rows[p]
+
+
+def _refinement_spans(t: np.ndarray, tau: np.ndarray, p: int) -> np.ndarray:
+    """For every new control point j, a span k of the old knots inside the support of the new
+    B-spline N_j and inside the domain (so that Q_j = b_k(tau_{j+1..j+p}))."""
+    n_new = tau.size - p - 2
+    j = np.arange(n_new + 1)
+    m = np.full(j.shape, -1)
+    lo, hi = t[p], t[t.size - p - 1]
+    for off in range(p + 1):                         # first non-empty new span tau_m < tau_{m+1} with j <= m <= j+p
+        cand = j + off
+        ok = (m < 0) & (cand >= p) & (cand <= n_new)
+        ok[ok] &= (tau[cand[ok]] < tau[cand[ok] + 1]) & (tau[cand[ok]] >= lo) & (tau[cand[ok] + 1] <= hi)
+        m[ok] = cand[ok]
+    m[m < 0] = np.clip(j[m < 0], p, n_new)          # cannot happen for a valid refinement; keep a span
+    return _domain_spans(t, p, tau[m])
+
+
+def _check_refinement(t: np.ndarray, tau: np.ndarray, p: int) -> None:
+    """tau must contain every knot of t (with multiplicity) and insert only inside the domain."""
+    i = j = 0
+    extra = []
+    while i < t.size and j < tau.size:
+        if t[i] == tau[j]:
+            i += 1
+            j += 1
+        elif tau[j] < t[i]:
+            extra.append(tau[j])
+            j += 1
+        else:
+            raise ValueError(f"new_knots must contain every old knot; knots[{i}]={_fmt(t[i])} is missing "
+                             f"(or appears fewer times) in new_knots")
+    if i < t.size:
+        raise ValueError(f"new_knots must contain every old knot; knots[{i}]={_fmt(t[i])} is missing in new_knots")
+    extra.extend(tau[j:])
+    lo, hi = t[p], t[t.size - p - 1]
+    for x in extra:
+        if not lo <= x <= hi:
+            raise ValueError(f"new_knots may only add knots inside the domain [{_fmt(lo)}, {_fmt(hi)}]; "
+                             f"{_fmt(x)} is outside")
+
+
+# --------------------------------------------------------------------------------------------
+# §28.3.1 Boehm's algorithm
+# --------------------------------------------------------------------------------------------
+
+def _boehm_once(P: np.ndarray, t: np.ndarray, p: int, u: float):
+    """Insert u once; returns (Q, tau, k, replaced) where Q[k-p+1..k] are the new points."""
+    k = int(_domain_spans(t, p, np.asarray(u)))
+    n = P.shape[0] - 1
+    Q = np.empty((n + 2, P.shape[1]))
+    Q[:k - p + 1] = P[:k - p + 1]
+    Q[k + 1:] = P[k:]
+    i = np.arange(k - p + 1, k + 1)
+    if i.size:
+        a = ((u - t[i]) / (t[i + p] - t[i]))[:, None]
+        Q[i] = (1.0 - a) * P[i - 1] + a * P[i]
+    tau = np.insert(t, k + 1, u)
+    return Q, tau, k, i
+
+
+def _check_insert(t: np.ndarray, p: int, u: float, times: int) -> None:
+    lo, hi = t[p], t[t.size - p - 1]
+    if not lo <= u <= hi:
+        raise ValueError(f"u must lie in the domain [knots[{p}], knots[{t.size - p - 1}]] = [{_fmt(lo)}, {_fmt(hi)}]; "
+                         f"u is {_fmt(u)}")
+    s = int(np.count_nonzero(t == u))
+    if s + times > p + 1:
+        raise ValueError(f"times must keep the multiplicity of u at most degree+1 = {p + 1}; u={_fmt(u)} already "
+                         f"appears {s} times, so at most {p + 1 - s} more insertions are possible, not {times}")
+
+
+def boehm_insert(ctrl, knots, degree, u, times=1):
+    """Insert the knot ``u`` into a B-spline curve ``times`` times by Boehm's algorithm (Goldman §28.3.1).
+
+    With ``t_k <= u < t_{k+1}``, one insertion keeps ``P_0 .. P_{k-p}`` and ``P_k .. P_n`` (shifted
+    one place) and replaces the ``p-1`` points between by ``p`` new ones on the legs of the old
+    polygon:
+
+    ``Q_i = (1 - a_i) P_{i-1} + a_i P_i``,  ``a_i = (u - t_i) / (t_{i+p} - t_i)``,  ``k-p+1 <= i <= k``.
+
+    In blossom terms ``Q_i`` is the blossom at the old label of ``P_i`` with one knot replaced
+    by ``u``.  The curve does not change.
+
+    ctrl: (n+1, d) control points.  knots: (n+p+2,) non-decreasing.  degree: p >= 0.
+    u: a number in the domain ``[t_p, t_{n+1}]``.  times: int >= 0.
+    Returns ``(new_ctrl (n+1+times, d), new_knots (n+p+2+times,))``.
+    Raises ValueError for a bad curve (see :func:`goldman_lib.bspline.check_knots`), u outside the
+    domain, or a multiplicity of u above degree+1 after insertion; TypeError for non-integer times.
+
+    >>> ctrl, knots = boehm_insert([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, 0.5, times=2)
+    >>> ctrl.tolist()
+    [[0.0, 0.0], [0.5, 1.0], [1.0, 1.0], [1.5, 1.0], [2.0, 0.0]]
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    u = as_float(u, "u")
+    times = as_int(times, "times", minimum=0)
+    _check_insert(t, p, u, times)
+    for _ in range(times):
+        P, t, _, _ = _boehm_once(P, t, p, u)
+    return P.copy(), t.copy()
+
+
+def boehm_steps(ctrl, knots, degree, u, times=1) -> list[dict]:
+    """Every intermediate polygon of Boehm's algorithm, for drawing (Goldman §28.3.1).
+
+    Returns ``times + 1`` dicts: step 0 is the original curve; step s holds ``ctrl`` and
+    ``knots`` after s insertions, ``replaced`` (the indices of the old points that were dropped),
+    ``new`` (the indices of the new points in ``ctrl``), ``span`` k and ``alphas`` (the weights a_i).
+    Raises ValueError as :func:`boehm_insert`.
+
+    >>> [len(s["ctrl"]) for s in boehm_steps([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, 0.5, 2)]
+    [3, 4, 5]
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    u = as_float(u, "u")
+    times = as_int(times, "times", minimum=0)
+    _check_insert(t, p, u, times)
+    steps = [{"ctrl": P.copy(), "knots": t.copy(), "replaced": np.array([], dtype=int),
+              "new": np.array([], dtype=int), "span": None, "alphas": np.array([])}]
+    for _ in range(times):
+        Q, tau, k, i = _boehm_once(P, t, p, u)
+        alphas = (u - t[i]) / (t[i + p] - t[i]) if i.size else np.array([])
+        steps.append({"ctrl": Q, "knots": tau, "replaced": np.arange(k - p + 1, k), "new": i,
+                      "span": k, "alphas": alphas})
+        P, t = Q, tau
+    return steps
+
+
+# --------------------------------------------------------------------------------------------
+# §28.3.2 the Oslo algorithm
+# --------------------------------------------------------------------------------------------
+
+def oslo(ctrl, knots, degree, new_knots) -> np.ndarray:
+    """Control points of the same curve over a refined knot vector, by the Oslo algorithm (Goldman §28.3.2).
+
+    Every new control point is a blossom value, ``Q_j = b(tau_{j+1}, ..., tau_{j+p})``, computed by
+    de Boor's pyramid with the p new knots as arguments, one per level (all points at once).  Many
+    knots are inserted in one pass, rather than one at a time as in Boehm's algorithm.
+
+    ctrl: (n+1, d).  knots: (n+p+2,).  degree: p.  new_knots: (m+p+2,), non-decreasing, containing
+    every old knot (with its multiplicity) and adding knots only inside the domain.
+    Returns (m+1, d), the control points over ``new_knots``.
+    Raises ValueError for a bad curve, bad new knots, or new knots that are not a refinement.
+
+    >>> oslo([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, [0, 0, 0, 0.5, 0.5, 1, 1, 1]).tolist()
+    [[0.0, 0.0], [0.5, 1.0], [1.0, 1.0], [1.5, 1.0], [2.0, 0.0]]
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    tau = bspline.check_knots(new_knots, p, name="new_knots")
+    _check_refinement(t, tau, p)
+    return _oslo(P, t, p, tau)
+
+
+def _oslo(P, t, p, tau):
+    n_new = tau.size - p - 2
+    spans = _refinement_spans(t, tau, p)
+    idx = np.arange(n_new + 1)[:, None] + np.arange(1, p + 1)[None, :]
+    return _blossom_many(P, t, p, spans, tau[idx])
+
+
+def oslo_steps(ctrl, knots, degree, new_knots) -> list[dict]:
+    """The Oslo algorithm one new control point at a time, for drawing (Goldman §28.3.2).
+
+    Returns one dict per new control point j: ``point`` (d,), ``label`` (the p new knots
+    ``tau_{j+1..j+p}``), ``span`` k of the old knots used, and ``levels``: de Boor's pyramid with
+    the label as arguments, level 0 being the old points ``P_{k-p} .. P_k``.
+    Raises ValueError as :func:`oslo`.
+
+    >>> s = oslo_steps([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, [0, 0, 0, 0.5, 1, 1, 1])
+    >>> [step["point"].tolist() for step in s]
+    [[0.0, 0.0], [0.5, 1.0], [1.5, 1.0], [2.0, 0.0]]
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    tau = bspline.check_knots(new_knots, p, name="new_knots")
+    _check_refinement(t, tau, p)
+    spans = _refinement_spans(t, tau, p)
+    out = []
+    for j, k in enumerate(spans):
+        k = int(k)
+        label = tau[j + 1:j + p + 1].copy()
+        pts = P[k - p:k + 1].copy()
+        levels = [pts.copy()]
+        for r in range(1, p + 1):
+            x = label[r - 1]
+            for jj in range(p, r - 1, -1):
+                i = k - p + jj
+                a = (x - t[i]) / (t[i + p + 1 - r] - t[i])
+                pts[jj] = (1.0 - a) * pts[jj - 1] + a * pts[jj]
+            levels.append(pts[r:].copy())
+        out.append({"point": pts[p].copy(), "label": label, "span": k, "levels": levels})
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# §28.3.3 conversion to piecewise Bezier form
+# --------------------------------------------------------------------------------------------
+
+def to_piecewise_bezier(ctrl, knots, degree):
+    """The Bezier control polygons of the polynomial pieces of a B-spline curve (Goldman §28.3.3).
+
+    Inserting every interior knot until it has multiplicity p splits the control polygon into
+    Bezier polygons; equivalently, the Bezier points of the piece over ``[a, b]`` are the
+    blossom values ``b(a^{p-i}, b^i)``, i = 0..p, computed here directly by the Oslo pyramid.
+    Piece j is the Bezier curve ``C(a + (b-a) s)``, s in [0, 1].
+
+    ctrl: (n+1, d).  knots: (n+p+2,).  degree: p.
+    Returns ``(pieces (m, p+1, d), breaks (m+1,))``: one Bezier polygon per non-empty knot span
+    of the domain and the parameter values where the pieces meet.
+    Raises ValueError for a bad curve.
+
+    >>> pieces, breaks = to_piecewise_bezier([[0, 0], [1, 2], [2, 2], [3, 0]], [0, 0, 0, 0.5, 1, 1, 1], 2)
+    >>> pieces.tolist()
+    [[[0.0, 0.0], [1.0, 2.0], [1.5, 2.0]], [[1.5, 2.0], [2.0, 2.0], [3.0, 0.0]]]
+    >>> breaks.tolist()
+    [0.0, 0.5, 1.0]
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    lo, hi = t[p], t[t.size - p - 1]
+    breaks = np.unique(t[(t >= lo) & (t <= hi)])
+    a, b = breaks[:-1], breaks[1:]
+    m = a.size
+    spans = _domain_spans(t, p, a)
+    i = np.arange(p + 1)
+    # args[piece, i, level]: p - i copies of a, then i copies of b
+    lev = np.arange(p)[None, None, :]
+    args = np.where(lev < (p - i)[None, :, None], a[:, None, None], b[:, None, None])
+    flat = _blossom_many(P, t, p, np.repeat(spans, p + 1), args.reshape(m * (p + 1), p))
+    return flat.reshape(m, p + 1, P.shape[1]), breaks
+
+
+# --------------------------------------------------------------------------------------------
+# §28.3.4 the variation-diminishing property
+# --------------------------------------------------------------------------------------------
+
+def variation_diminishing(ctrl, knots, degree, line_point, line_normal, samples=2001) -> tuple[int, int]:
+    """How often a line crosses the control polygon and the B-spline curve (Goldman §28.3.4).
+
+    Knot insertion replaces legs of the control polygon by cutting corners, so it never adds a
+    crossing; inserting knots until the polygon converges to the curve proves that the curve
+    crosses any line at most as often as its control polygon.
+
+    ctrl: (n+1, 2) (or any dimension: a hyperplane then).  knots, degree: the curve.
+    line_point, line_normal: (d,), the normal nonzero.  samples: curve samples used to count its
+    crossings (a lower bound that is exact once the samples resolve the curve).
+    Returns ``(polygon_crossings, curve_crossings)``.
+    Raises ValueError for a bad curve, bad line, or samples < 2.
+
+    >>> variation_diminishing([[0, 1], [1, -1], [2, 1], [3, -1]], [0, 0, 0, 1, 2, 2, 2], 2, [0, 0], [0, 1])
+    (3, 3)
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    samples = as_int(samples, "samples", minimum=2)
+    lo, hi = t[p], t[t.size - p - 1]
+    pts = bspline.de_boor(P, t, p, np.linspace(lo, hi, samples))
+    poly = bezier.variation_count(P, line_point, line_normal)
+    # crossings of the sampled curve: sign changes of the signed distances
+    nrm = np.asarray(line_normal, dtype=float)
+    s = (pts - np.asarray(line_point, dtype=float)) @ nrm
+    s = s[np.abs(s) > 1e-12 * max(1.0, float(np.abs(pts).max()))]
+    curve = int(np.count_nonzero(np.sign(s[1:]) != np.sign(s[:-1])))
+    return poly, curve
+
+
+# --------------------------------------------------------------------------------------------
+# §28.4.1 the Lane-Riesenfeld algorithm
+# --------------------------------------------------------------------------------------------
+
+def _lr_level(P: np.ndarray, p: int, closed: bool) -> list[np.ndarray]:
+    """One Lane-Riesenfeld level: the doubled polygon, then each of the p averaging rounds."""
+    Q = np.repeat(P, 2, axis=0)
+    rounds = [Q]
+    for _ in range(p):
+        if closed:
+            Q = 0.5 * (Q + np.roll(Q, -1, axis=0))
+        else:
+            Q = 0.5 * (Q[:-1] + Q[1:])
+        rounds.append(Q)
+    return rounds
+
+
+def _lr_args(ctrl, degree, levels, closed):
+    p = as_int(degree, "degree", minimum=0)
+    P = as_points(ctrl, "ctrl", ndim=2)
+    levels = as_int(levels, "levels", minimum=0, maximum=20)
+    if not isinstance(closed, (bool, np.bool_)):
+        raise TypeError(f"closed must be True or False; got {closed!r}")
+    if not closed and P.shape[0] < p + 1:
+        raise ValueError(f"ctrl must hold at least degree+1 = {p + 1} points for an open curve of degree {p}; "
+                         f"got {P.shape[0]}")
+    if P.shape[0] * 2 ** levels > 5_000_000:
+        raise ValueError(f"levels={levels} would make {P.shape[0] * 2 ** levels} control points; use fewer levels")
+    return P, p, levels, bool(closed)
+
+
+def lane_riesenfeld(ctrl, degree, levels=1, closed=False) -> np.ndarray:
+    """Refine a uniform B-spline control polygon by the Lane-Riesenfeld algorithm (Goldman §28.4.1).
+
+    One level doubles every control point and then averages neighbours ``degree`` times; this
+    inserts the midpoint of every knot interval of a uniform knot vector.  Degree 2 gives Chaikin's
+    corner cutting (3/4, 1/4), degree 3 the cubic rule (1/8, 6/8, 1/8) and (1/2, 1/2).
+
+    ctrl: (n+1, d).  degree: p >= 0.  levels: int in [0, 20].  closed: a closed (periodic)
+    curve, the polygon wrapping around, or an open one with uniform knots (the default).
+    Returns the refined polygon: open, ``2 m - p`` points from m per level (the knots of
+    :func:`lane_riesenfeld_knots`); closed, ``2^levels (n+1)`` points, new point i belonging to
+    the uniform B-spline that starts at parameter ``(i + p) / 2`` when the old point i starts at i.
+    Raises ValueError for too few points for an open curve or an output that would be huge.
+
+    >>> lane_riesenfeld([[0, 0], [4, 0], [4, 4]], 2, 1).tolist()
+    [[1.0, 0.0], [3.0, 0.0], [4.0, 1.0], [4.0, 3.0]]
+    >>> lane_riesenfeld([[0, 0], [4, 0], [4, 4], [0, 4]], 2, 1, closed=True)[:2].tolist()
+    [[1.0, 0.0], [3.0, 0.0]]
+    """
+    P, p, levels, closed = _lr_args(ctrl, degree, levels, closed)
+    for _ in range(levels):
+        P = _lr_level(P, p, closed)[-1]
+    return P.copy() if levels == 0 else P
+
+
+def lane_riesenfeld_steps(ctrl, degree, levels=1, closed=False) -> list[list[np.ndarray]]:
+    """Every intermediate polygon of the Lane-Riesenfeld algorithm, for drawing (Goldman §28.4.1).
+
+    Returns one list per level: ``[doubled, after round 1, ..., after round p]``.
+    Raises ValueError as :func:`lane_riesenfeld`.
+
+    >>> [len(r) for r in lane_riesenfeld_steps([[0, 0], [4, 0], [4, 4]], 2, 1)[0]]
+    [6, 5, 4]
+    """
+    P, p, levels, closed = _lr_args(ctrl, degree, levels, closed)
+    out = []
+    for _ in range(levels):
+        rounds = _lr_level(P, p, closed)
+        out.append(rounds)
+        P = rounds[-1]
+    return out
+
+
+def lane_riesenfeld_knots(n_ctrl, degree, levels=1) -> np.ndarray:
+    """The knots of the open Lane-Riesenfeld polygon after ``levels`` levels (Goldman §28.4.1).
+
+    The original open curve has the uniform knots ``0, 1, ..., n+p+1`` (domain ``[p, n+1]``);
+    each level halves the spacing and drops ``p`` points, so the refined knots start at
+    ``p (1 - 2^-levels)`` with spacing ``2^-levels``, over the same domain.
+
+    n_ctrl: n+1 >= degree+1.  degree: p.  levels: int >= 0.  Returns the knot vector.
+    Raises ValueError for n_ctrl < degree + 1.
+
+    >>> lane_riesenfeld_knots(3, 2, 1).tolist()
+    [1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0]
+    """
+    p = as_int(degree, "degree", minimum=0)
+    n_ctrl = as_int(n_ctrl, "n_ctrl", minimum=p + 1)
+    levels = as_int(levels, "levels", minimum=0, maximum=20)
+    m = n_ctrl
+    for _ in range(levels):
+        m = 2 * m - p
+    h = 2.0 ** -levels
+    return p * (1.0 - h) + h * np.arange(m + p + 1)
+
+
+# --------------------------------------------------------------------------------------------
+# §28.4.2 Schaefer's algorithm
+# --------------------------------------------------------------------------------------------
+
+def midpoint_knots(knots) -> np.ndarray:
+    """The knot vector with the midpoint of every knot interval inserted, ``t_0, s_0, t_1, s_1, ...``
+    (``s_j = (t_j + t_{j+1}) / 2``), the knots behind one level of subdivision (Goldman §28.4).
+
+    knots: (N,) non-decreasing.  Returns (2N - 1,).
+
+    >>> midpoint_knots([0, 1, 3]).tolist()
+    [0.0, 0.5, 1.0, 2.0, 3.0]
+    """
+    t = as_parameter(knots, "knots").reshape(-1)
+    u = np.empty(2 * t.size - 1)
+    u[0::2] = t
+    u[1::2] = 0.5 * (t[:-1] + t[1:])
+    return u
+
+
+def _schaefer_check(t: np.ndarray, p: int) -> None:
+    """Interior knots must be simple and repeated knots only the clamped ends: the midpoints of
+    zero-length intervals would repeat a knot beyond degree+1 times."""
+    lo, hi = t[p], t[t.size - p - 1]
+    inner = t[(t > lo) & (t < hi)]
+    dup = inner[1:][inner[1:] == inner[:-1]]
+    if dup.size:
+        raise ValueError(f"knots must have simple interior knots for schaefer (every interval is halved); "
+                         f"{_fmt(dup[0])} is repeated")
+    for end in (lo, hi):
+        s = int(np.count_nonzero(t == end))
+        if 1 < s < p + 1 or (s == p + 1 and not (t[0] == end or t[-1] == end)):
+            raise ValueError(f"knots may repeat an end of the domain only as a clamped end (degree+1 = {p + 1} "
+                             f"times at the start or the end) for schaefer; {_fmt(end)} appears {s} times")
+    outer = t[(t < lo) | (t > hi)]
+    dup = outer[1:][outer[1:] == outer[:-1]]
+    if dup.size:
+        raise ValueError(f"knots outside the domain must be simple for schaefer; {_fmt(dup[0])} is repeated")
+
+
+def _schaefer_level(P: np.ndarray, t: np.ndarray, p: int) -> tuple[list[np.ndarray], np.ndarray]:
+    """One level of Schaefer's algorithm: doubling, then p rounds of blossom averaging.
+
+    With u the midpoint knot vector (u_{2m} = t_m, u_{2m+1} = s_m), round r gives the point i the
+    blossom label {u_{i+r+1}, ..., u_{i+2r}} followed by the next p-r old knots after u_{i+2r}.
+    Point i of round r comes from points i and i+1 of round r-1: for even i it is point i+1
+    (same label), for odd i the affine combination that replaces the label value a = u_{i+r} by
+    c = u_{i+2r} along b = u_{i+2p+1}:  ((b - c) R_i + (c - a) R_{i+1}) / (b - a).
+    Returns (rounds, new knots).
+    """
+    n1 = P.shape[0]
+    u = midpoint_knots(t)
+    R = np.repeat(P, 2, axis=0)
+    rounds = [R]
+    for r in range(1, p + 1):
+        m = R.shape[0] - 1
+        new = np.empty((m, P.shape[1]))
+        new[0::2] = R[1::2][: (m + 1) // 2]
+        i = np.arange(1, m, 2)
+        a, c, b = u[i + r], u[i + 2 * r], u[i + 2 * p + 1]
+        den = b - a
+        safe = np.where(den > 0, den, 1.0)
+        wa = np.where(den > 0, (b - c) / safe, 1.0)[:, None]
+        wb = np.where(den > 0, (c - a) / safe, 0.0)[:, None]
+        new[1::2] = wa * R[i] + wb * R[i + 1]
+        R = new
+        rounds.append(R)
+    return rounds, u[p:2 * n1 + p + 1].copy()
+
+
+def schaefer_labels(knots, degree, rnd: int) -> list[tuple[float, ...]]:
+    """The blossom labels of the points after round ``rnd`` of one level of Schaefer's algorithm
+    (Goldman §28.4.2): point i has ``{u_{i+r+1}..u_{i+2r}}`` plus the next ``p-r`` old knots.
+
+    >>> schaefer_labels([0, 0, 0, 1, 1, 1], 2, 2)
+    [(0.0, 0.0), (0.0, 0.5), (0.5, 1.0), (1.0, 1.0)]
+    """
+    p = as_int(degree, "degree", minimum=0)
+    t = bspline.check_knots(knots, p)
+    r = as_int(rnd, "rnd", minimum=0, maximum=p)
+    u = midpoint_knots(t)
+    count = 2 * (t.size - p - 1) - r
+    labels = []
+    for i in range(count):
+        lab = list(u[i + r + 1:i + 2 * r + 1])
+        pos = i + 2 * r + 1
+        while len(lab) < p:
+            if pos % 2 == 0:
+                lab.append(u[pos])
+            pos += 1
+        labels.append(tuple(float(x) for x in lab))
+    return labels
+
+
+def schaefer(ctrl, knots, degree, levels=1):
+    """Halve every knot interval of a B-spline by Schaefer's algorithm (Goldman §28.4.2).
+
+    Like Lane-Riesenfeld, each level doubles the control points and then runs ``degree`` rounds
+    of averaging of neighbours; unlike it, the weights come from blossoming, so it works for
+    non-uniform knots too (Schaefer and Goldman, 2009).  Every intermediate point is a blossom
+    value whose label mixes old knots ``t_m`` and midpoints ``s_m``; round r moves one label
+    value from an old knot to a midpoint (see :func:`schaefer_labels`).  The result is the curve
+    over the knot vector with every interval halved; on uniform knots it equals
+    :func:`lane_riesenfeld`.
+
+    ctrl: (n+1, d).  knots: (n+p+2,) with simple interior knots (clamped ends allowed).
+    degree: p.  levels: int in [0, 20].
+    Returns ``(new_ctrl, new_knots)``: ``2 m - p`` points from m per level.
+    Raises ValueError for a bad curve or repeated interior knots.
+
+    >>> ctrl, knots = schaefer([[0, 0], [4, 0], [4, 4]], [0, 0, 0, 1, 1, 1], 2)
+    >>> ctrl.tolist()
+    [[0.0, 0.0], [2.0, 0.0], [4.0, 2.0], [4.0, 4.0]]
+    >>> knots.tolist()
+    [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    levels = as_int(levels, "levels", minimum=0, maximum=20)
+    _schaefer_check(t, p)
+    if P.shape[0] * 2 ** levels > 5_000_000:
+        raise ValueError(f"levels={levels} would make about {P.shape[0] * 2 ** levels} control points; use fewer levels")
+    for _ in range(levels):
+        rounds, t = _schaefer_level(P, t, p)
+        P = rounds[-1]
+    return P.copy(), t.copy()
+
+
+def schaefer_steps(ctrl, knots, degree) -> dict:
+    """One level of Schaefer's algorithm, round by round, for drawing (Goldman §28.4.2).
+
+    Returns ``{"rounds": [doubled, round 1, ..., round p], "labels": [labels of each round],
+    "knots": the new knot vector}``.  Raises ValueError as :func:`schaefer`.
+
+    >>> s = schaefer_steps([[0, 0], [4, 0], [4, 4]], [0, 0, 0, 1, 1, 1], 2)
+    >>> [len(r) for r in s["rounds"]], s["labels"][2][1]
+    ([6, 5, 4], (0.0, 0.5))
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    _schaefer_check(t, p)
+    rounds, u = _schaefer_level(P, t, p)
+    labels = [schaefer_labels(t, p, r) for r in range(p + 1)]
+    return {"rounds": rounds, "labels": labels, "knots": u}
+
+
+# --------------------------------------------------------------------------------------------
+# §28.4.3 convergence
+# --------------------------------------------------------------------------------------------
+
+def greville(knots, degree) -> np.ndarray:
+    """The Greville abscissae ``(t_{i+1} + ... + t_{i+p}) / p``, where control point i "sits" (Goldman §28.4.3).
+
+    knots: (n+p+2,).  degree: p >= 1.  Returns (n+1,).
+    Raises ValueError for a bad knot vector or degree 0.
+
+    >>> greville([0, 0, 0, 0.5, 1, 1, 1], 2).tolist()
+    [0.0, 0.25, 0.75, 1.0]
+    """
+    p = as_int(degree, "degree", minimum=1)
+    t = bspline.check_knots(knots, p)
+    c = np.concatenate([[0.0], np.cumsum(t)])
+    n1 = t.size - p - 1
+    i = np.arange(n1)
+    return (c[i + p + 1] - c[i + 1]) / p
+
+
+def control_polygon_distance(ctrl, knots, degree) -> float:
+    """The largest distance from a control point to the curve point at its Greville abscissa,
+    ``max_i |P_i - C(xi_i)|``: how far the control polygon is from the curve (Goldman §28.4.3).
+
+    ctrl, knots, degree (>= 1): the curve.  Returns a float.  Raises ValueError for a bad curve.
+
+    >>> control_polygon_distance([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2)
+    1.0
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    if p < 1:
+        raise ValueError("degree must be >= 1 for control_polygon_distance (Greville abscissae need a knot)")
+    xi = np.clip(greville(t, p), t[p], t[t.size - p - 1])
+    C = bspline.de_boor(P, t, p, xi)
+    return float(np.linalg.norm(P - C, axis=1).max())
+
+
+def convergence_study(ctrl, knots, degree, levels=6) -> dict:
+    """How fast the subdivided control polygons approach the curve (Goldman §28.4.3).
+
+    Applies :func:`schaefer` level after level and records :func:`control_polygon_distance`;
+    halving the knot spacing divides the distance by about 4 (it is O(h^2), h the largest knot
+    interval), so the distances fall like ``4^-level``.
+
+    ctrl, knots, degree (>= 1): the curve (as :func:`schaefer`).  levels: int in [1, 12].
+    Returns ``{"levels": (L+1,), "distance": (L+1,), "ratio": (L,) distance[l-1] / distance[l],
+    "points": [number of control points per level]}``.
+    Raises ValueError as :func:`schaefer`.
+
+    >>> study = convergence_study([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, 3)
+    >>> study["ratio"].tolist()
+    [4.0, 4.0, 4.0]
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    if p < 1:
+        raise ValueError("degree must be >= 1 for a convergence study")
+    levels = as_int(levels, "levels", minimum=1, maximum=12)
+    _schaefer_check(t, p)
+    dist = [control_polygon_distance(P, t, p)]
+    counts = [P.shape[0]]
+    for _ in range(levels):
+        rounds, t = _schaefer_level(P, t, p)
+        P = rounds[-1]
+        dist.append(control_polygon_distance(P, t, p))
+        counts.append(P.shape[0])
+    d = np.array(dist)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = np.where(d[1:] > 0, d[:-1] / np.where(d[1:] > 0, d[1:], 1.0), np.inf)
+    return {"levels": np.arange(levels + 1), "distance": d, "ratio": ratio, "points": counts}
+
+
+# --------------------------------------------------------------------------------------------
+# §28.3.5 and §28.4.4 rendering and intersecting by knot insertion
+# --------------------------------------------------------------------------------------------
+
+def split(ctrl, knots, degree, u):
+    """Cut a B-spline curve in two at ``u`` by inserting u until it has multiplicity p (Goldman §28.3.5).
+
+    At multiplicity p the control point with label ``(u, ..., u)`` is the curve point C(u): the
+    control points up to it form the left curve and those from it the right curve.
+
+    ctrl, knots, degree (>= 1): the curve.  u: a number strictly inside the domain.
+    Returns ``((left_ctrl, left_knots), (right_ctrl, right_knots))``, both of degree p, the left
+    over ``[t_p, u]`` and the right over ``[u, t_{n+1}]``.
+    Raises ValueError for a bad curve or u not strictly inside the domain.
+
+    >>> (l, lk), (r, rk) = split([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, 0.5)
+    >>> l.tolist(), lk.tolist()
+    ([[0.0, 0.0], [0.5, 1.0], [1.0, 1.0]], [0.0, 0.0, 0.0, 0.5, 0.5, 0.5])
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    if p < 1:
+        raise ValueError("degree must be >= 1 to split a curve by knot insertion")
+    u = as_float(u, "u")
+    lo, hi = t[p], t[t.size - p - 1]
+    if not lo < u < hi:
+        raise ValueError(f"u must lie strictly inside the domain ({_fmt(lo)}, {_fmt(hi)}); u is {_fmt(u)}")
+    s = int(np.count_nonzero(t == u))
+    times = max(p - s, 0)
+    Q, tau = P, t
+    for _ in range(times):
+        Q, tau, _, _ = _boehm_once(Q, tau, p, u)
+    # the point with label (u, ..., u): the last index whose knots t_{i+1..i+p} are all u
+    first = int(np.searchsorted(tau, u, side="left"))       # first knot equal to u
+    c = first - 1                                            # label tau[c+1 .. c+p] = u ... u
+    left_knots = np.concatenate([tau[:first + p], [u]])
+    right_knots = np.concatenate([[u], tau[first:]])
+    return (Q[:c + 1].copy(), left_knots), (Q[c:].copy(), right_knots)
+
+
+def _flatness(P: np.ndarray) -> float:
+    """Largest distance of the control points from the chord through the end points."""
+    a, b = P[0], P[-1]
+    ab = b - a
+    L = float(np.linalg.norm(ab))
+    if L == 0.0:
+        return float(np.linalg.norm(P - a, axis=1).max())
+    w = P - a
+    proj = np.clip(w @ ab / (L * L), 0.0, 1.0)
+    return float(np.linalg.norm(w - proj[:, None] * ab, axis=1).max())
+
+
+def _corner_flatness(P: np.ndarray) -> float:
+    """Largest distance of a control point from the segment joining its two neighbours (O(h^2))."""
+    if P.shape[0] < 3:
+        return 0.0
+    a, b, c = P[:-2], P[1:-1], P[2:]
+    ac = c - a
+    L2 = (ac * ac).sum(1)
+    w = b - a
+    s = np.clip(np.where(L2 > 0, (w * ac).sum(1) / np.where(L2 > 0, L2, 1.0), 0.0), 0.0, 1.0)
+    return float(np.linalg.norm(w - s[:, None] * ac, axis=1).max())
+
+
+def _bezier_halves(P: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The two halves of a Bezier polygon at t = 1/2 (the outer edges of the de Casteljau pyramid)."""
+    steps = bezier.de_casteljau_steps(P, 0.5)
+    return np.array([lv[0] for lv in steps]), np.array([lv[-1] for lv in steps[::-1]])
+
+
+def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
+    """A polyline within about ``tol`` of a B-spline curve, by knot insertion (Goldman §28.3.5, §28.4.4).
+
+    ``method="bezier"`` (§28.3.5): convert to piecewise Bezier form (§28.3.3), then split each
+    piece in half (de Casteljau subdivision) until its control polygon is within ``tol`` of its
+    chord; the convex hull property puts the curve within tol of the chords, which are returned.
+    ``method="subdivision"`` (§28.4.4): halve all knot intervals (:func:`schaefer`) until every
+    control point is within ``tol`` of the chord of its two neighbours, and return the control
+    polygon itself, which converges to the curve like ``4^-level`` (§28.4.3).
+
+    ctrl, knots, degree (>= 1): the curve.  tol: float > 0.  method: "bezier" or "subdivision".
+    max_levels: int in [0, 20], the most halvings.
+    Returns ``(points (N, d), levels)``, levels the number of halvings used (the deepest, for "bezier").
+    Raises ValueError for a bad curve, degree 0, tol <= 0 or an unknown method.
+
+    >>> pts, used = render([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, tol=0.1)
+    >>> len(pts), used
+    (7, 3)
+    """
+    P, t, p = _curve(ctrl, knots, degree)
+    if p < 1:
+        raise ValueError("degree must be >= 1 to render by subdivision")
+    tol = as_float(tol, "tol", positive=True)
+    max_levels = as_int(max_levels, "max_levels", minimum=0, maximum=20)
+    if method not in ("bezier", "subdivision"):
+        raise ValueError(f"method must be 'bezier' or 'subdivision'; got {method!r}")
+    if method == "subdivision":
+        _schaefer_check(t, p)
+        level = 0
+        while level < max_levels and _corner_flatness(P) > tol:
+            rounds, t = _schaefer_level(P, t, p)
+            P = rounds[-1]
+            level += 1
+        return P.copy(), level
+    pieces, _ = to_piecewise_bezier(P, t, p)
+    out: list[np.ndarray] = []
+    deepest = 0
+    stack = [(pc, 0) for pc in pieces[::-1]]
+    while stack:
+        pc, lvl = stack.pop()
+        if _flatness(pc) <= tol or lvl >= max_levels:
+            out.append(pc[0])
+            deepest = max(deepest, lvl)
+            continue
+        left, right = _bezier_halves(pc)
+        stack.append((right, lvl + 1))
+        stack.append((left, lvl + 1))
+    out.append(pieces[-1][-1])
+    return np.array(out), deepest
+
+
+def _boxes_overlap(A: np.ndarray, B: np.ndarray, pad: float) -> bool:
+    return bool(np.all(A.min(0) - pad <= B.max(0)) and np.all(B.min(0) - pad <= A.max(0)))
+
+
+def _segment_hit(a0, a1, b0, b1):
+    """Parameters (s, r) in [0, 1]^2 where segments a0a1 and b0b1 meet, or None (2D)."""
+    da, db, w = a1 - a0, b1 - b0, b0 - a0
+    den = da[0] * db[1] - da[1] * db[0]
+    if den == 0.0:
+        return None
+    s = (w[0] * db[1] - w[1] * db[0]) / den
+    r = (w[0] * da[1] - w[1] * da[0]) / den
+    eps = 1e-9
+    if -eps <= s <= 1 + eps and -eps <= r <= 1 + eps:
+        return min(max(s, 0.0), 1.0), min(max(r, 0.0), 1.0)
+    return None
+
+
+def intersect(a, b, tol=1e-9, max_depth=60):
+    """Intersection points of two planar B-spline curves by subdivision (Goldman §28.3.5, §28.4.4).
+
+    Both curves are converted to piecewise Bezier form (§28.3.3).  For each pair of pieces whose
+    control-point boxes overlap, both are split in half (subdivision = knot insertion at the
+    midpoint) until each is flat to ``tol``; flat pieces are intersected as line segments.  The
+    convex hull property makes the box test safe: pieces whose boxes miss cannot meet.
+
+    a, b: curves as ``(ctrl (n+1, 2), knots, degree)`` tuples, degree >= 1.  tol: float > 0.
+    max_depth: recursion limit (an int >= 1), guarding tangential or overlapping curves.
+    Returns ``(params (k, 2), points (k, 2))``: the parameter on a, on b, and the point, sorted by
+    the parameter on a, near-duplicates (within ~tol) merged.
+    Raises ValueError for bad curves (a 3D curve, degree 0) or tol <= 0.
+
+    >>> line = ([[0, 0.5], [2, 0.5]], [0, 0, 1, 1], 1)
+    >>> arch = ([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2)
+    >>> params, points = intersect(line, arch)
+    >>> points.round(6).tolist()
+    [[0.292893, 0.5], [1.707107, 0.5]]
+    """
+    curves = []
+    for name, c in (("a", a), ("b", b)):
+        if not isinstance(c, (tuple, list)) or len(c) != 3:
+            raise TypeError(f"{name} must be a (ctrl, knots, degree) tuple")
+        P, t, p = _curve(c[0], c[1], c[2], cname=f"{name}[0] (ctrl)", kname=f"{name}[1] (knots)")
+        if P.shape[1] != 2:
+            raise ValueError(f"{name} must be a planar curve: ctrl of shape (n+1, 2); got {P.shape}")
+        if p < 1:
+            raise ValueError(f"{name} must have degree >= 1 to intersect by subdivision")
+        curves.append(to_piecewise_bezier(P, t, p))
+    tol = as_float(tol, "tol", positive=True)
+    max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=200)
+    (pa, ba), (pb, bb) = curves
+    hits: list[tuple[float, float]] = []
+
+    def rec(A, a0, a1, B, b0, b1, depth):
+        if not _boxes_overlap(A, B, tol):
+            return
+        fa, fb = _flatness(A), _flatness(B)
+        if (fa <= tol and fb <= tol) or depth >= max_depth:
+            hit = _segment_hit(A[0], A[-1], B[0], B[-1])
+            if hit is not None:
+                hits.append((a0 + (a1 - a0) * hit[0], b0 + (b1 - b0) * hit[1]))
+            return
+        if fa >= fb:
+            L, R = _bezier_halves(A)
+            m = 0.5 * (a0 + a1)
+            rec(L, a0, m, B, b0, b1, depth + 1)
+            rec(R, m, a1, B, b0, b1, depth + 1)
+        else:
+            L, R = _bezier_halves(B)
+            m = 0.5 * (b0 + b1)
+            rec(A, a0, a1, L, b0, m, depth + 1)
+            rec(A, a0, a1, R, m, b1, depth + 1)
+
+    for i, A in enumerate(pa):
+        for j, B in enumerate(pb):
+            rec(A, ba[i], ba[i + 1], B, bb[j], bb[j + 1], 0)
+    if not hits:
+        return np.zeros((0, 2)), np.zeros((0, 2))
+    hp = np.array(sorted(hits))
+    Pa = a[0] if isinstance(a[0], np.ndarray) else np.asarray(a[0], dtype=float)
+    pts = bspline.de_boor(Pa, a[1], a[2], hp[:, 0])
+    keep = [0]
+    scale = max(1.0, float(np.abs(pts).max()))
+    for k in range(1, len(hp)):
+        if np.linalg.norm(pts[k] - pts[keep[-1]]) > max(1e3 * tol, 1e-7) * scale:
+            keep.append(k)
+    return hp[keep], pts[keep]
