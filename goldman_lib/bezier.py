@@ -1098,30 +1098,67 @@ def _chord_guesses(pa, pb, ia, ib) -> np.ndarray:
     return np.stack([s, t], axis=1)
 
 
-def _newton_pairs(A: np.ndarray, B: np.ndarray, st: np.ndarray, iterations: int = 80) -> tuple[np.ndarray, np.ndarray]:
+def _solve2(J: np.ndarray, F: np.ndarray) -> np.ndarray:
+    """Newton steps ``-J^+ F`` for a stack of 2x2 systems, (N, 2, 2) and (N, 2) -> (N, 2).
+
+    Cramer's rule where J is comfortably invertible; elsewhere (a tangential intersection makes
+    J singular) the least-squares step of the regularised normal equations, which tends to the
+    minimum-norm (pseudo-inverse) step.
+    """
+    a, b, c, d = J[:, 0, 0], J[:, 0, 1], J[:, 1, 0], J[:, 1, 1]
+    det = a * d - b * c
+    size = a * a + b * b + c * c + d * d
+    good = np.abs(det) > 1e-12 * size
+    safe = np.where(good, det, 1.0)
+    x = (d * F[:, 0] - b * F[:, 1]) / safe
+    y = (a * F[:, 1] - c * F[:, 0]) / safe
+    if not good.all():
+        # (J^T J + lam I) step = J^T F
+        g0 = a * F[:, 0] + c * F[:, 1]
+        g1 = b * F[:, 0] + d * F[:, 1]
+        lam = 1e-14 * size + 1e-300
+        m00 = a * a + c * c + lam
+        m01 = a * b + c * d
+        m11 = b * b + d * d + lam
+        mdet = m00 * m11 - m01 * m01
+        x = np.where(good, x, (m11 * g0 - m01 * g1) / mdet)
+        y = np.where(good, y, (m00 * g1 - m01 * g0) / mdet)
+    return -np.stack([x, y], axis=1)
+
+
+def _newton_pairs(A: np.ndarray, B: np.ndarray, st: np.ndarray, iterations: int = 100) -> tuple[np.ndarray, np.ndarray]:
     """Newton's method on a(s) - b(t) = 0 for many starting pairs at once, kept inside [0, 1]^2.
 
-    The Jacobian [a'(s), -b'(t)] is singular at a tangential intersection, so each step is the
-    least-squares (pseudo-inverse) step, and the iterate is clipped to the unit square: at a
+    The Jacobian [a'(s), -b'(t)] is singular at a tangential intersection, so there each step is
+    the least-squares (minimum-norm) step, and the iterate is clipped to the unit square: at a
     tangency or at a smooth end-to-end join this converges linearly rather than quadratically,
-    which is still ample for the tolerances asked.  Returns (st, residual norms).
+    which is still ample for the tolerances asked.  A start still far from any solution after
+    a dozen steps is dropped.  Returns (st, residual norms).
     """
     n, m = A.shape[0] - 1, B.shape[0] - 1
     HA = n * np.diff(A, axis=0) if n else np.zeros_like(A)
     HB = m * np.diff(B, axis=0) if m else np.zeros_like(B)
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
     st = st.copy()
     active = np.ones(len(st), dtype=bool)
-    for _ in range(iterations):
-        if not active.any():
-            break
-        s, t = st[active, 0], st[active, 1]
-        F = _curve_points(A, s) - _curve_points(B, t)
-        J = np.stack([_curve_points(HA, s), -_curve_points(HB, t)], axis=-1)   # (N, 2, 2)
-        step = -(np.linalg.pinv(J, rcond=1e-13) @ F[:, :, None])[:, :, 0]
-        new = np.clip(st[active] + step, 0.0, 1.0)
-        moved = np.abs(new - st[active]).max(axis=1)
-        st[active] = new
+    for it in range(iterations):
         idx = np.flatnonzero(active)
+        if idx.size == 0:
+            break
+        s, t = st[idx, 0], st[idx, 1]
+        F = _curve_points(A, s) - _curve_points(B, t)
+        if it == 12:
+            hopeless = np.linalg.norm(F, axis=1) > 1e-3 * scale
+            active[idx[hopeless]] = False
+            keep = ~hopeless
+            idx, s, t, F = idx[keep], s[keep], t[keep], F[keep]
+        exact = np.linalg.norm(F, axis=1) <= 4e-16 * scale      # nothing left to improve
+        active[idx[exact]] = False
+        idx, s, t, F = idx[~exact], s[~exact], t[~exact], F[~exact]
+        J = np.stack([_curve_points(HA, s), -_curve_points(HB, t)], axis=-1)   # (N, 2, 2)
+        new = np.clip(st[idx] + _solve2(J, F), 0.0, 1.0)
+        moved = np.abs(new - st[idx]).max(axis=1)
+        st[idx] = new
         active[idx[moved <= 1e-15]] = False
     res = np.linalg.norm(_curve_points(A, st[:, 0]) - _curve_points(B, st[:, 1]), axis=1)
     return st, res
@@ -1216,12 +1253,13 @@ def intersection_boxes(a, b, level) -> tuple[np.ndarray, np.ndarray, np.ndarray,
 
     For the picture of :func:`intersect_curves`: at ``level`` (0 = the whole curves) both curves
     have been halved ``level`` times and only the pairs of pieces whose bounding boxes overlap
-    are kept.  Pairs that became flat at an earlier level stop there and are not included.
+    are kept.  Pairs that became flat at an earlier level stopped being split there; they are
+    included as they were (their chords gave the first guesses of the intersections).
 
     a: (n+1, 2), b: (m+1, 2).  level: int in [0, 30].
     Returns ``(boxes_a, boxes_b, intervals_a, intervals_b)``: the distinct bounding boxes of the
     kept pieces of each curve, (k, 2, 2) as ``[[xmin, ymin], [xmax, ymax]]``, and their
-    parameter intervals (k, 2).  Empty (0, 2, 2) arrays once no pair is left.
+    parameter intervals (k, 2).  Empty (0, 2, 2) arrays when no pair is left.
     Raises ValueError for bad curves or level.
 
     >>> ba, bb, ia, ib = intersection_boxes([[0, 0], [1, 2], [2, 0]], [[0, 1], [2, 1]], 1)
@@ -1231,16 +1269,21 @@ def intersection_boxes(a, b, level) -> tuple[np.ndarray, np.ndarray, np.ndarray,
     A, B = _curves_pair(a, b)
     level = as_int(level, "level", minimum=0, maximum=30)
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
-    empty = (np.zeros((0, 2, 2)), np.zeros((0, 2, 2)), np.zeros((0, 2)), np.zeros((0, 2)))
+    kept_a, kept_b, kept_ia, kept_ib = [], [], [], []
     for lv, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-4 * scale,
-                                                   max_depth=max(level, 1), max_pairs=20000):
-        if lv == level:
-            if len(pa) == 0:
-                return empty
-            ua, ka = np.unique(ia, axis=0, return_index=True)
-            ub, kb = np.unique(ib, axis=0, return_index=True)
-            return _boxes(pa[ka]), _boxes(pb[kb]), ua, ub
-    return empty
+                                                   max_depth=level, max_pairs=20000):
+        take = slice(None) if lv == level else flat
+        kept_a.append(pa[take])
+        kept_b.append(pb[take])
+        kept_ia.append(ia[take])
+        kept_ib.append(ib[take])
+    pa, pb = np.concatenate(kept_a), np.concatenate(kept_b)
+    ia, ib = np.concatenate(kept_ia), np.concatenate(kept_ib)
+    if len(pa) == 0:
+        return np.zeros((0, 2, 2)), np.zeros((0, 2, 2)), np.zeros((0, 2)), np.zeros((0, 2))
+    ua, ka = np.unique(ia, axis=0, return_index=True)
+    ub, kb = np.unique(ib, axis=0, return_index=True)
+    return _boxes(pa[ka]), _boxes(pb[kb]), ua, ub
 
 
 # -- §25.3.2 surfaces ------------------------------------------------------------------------

@@ -1,0 +1,308 @@
+"""Chapter 25 views: subdivision of Bezier curves, rendering and intersection by subdivision, and
+the adaptive subdivision of a patch (Goldman §25.2-25.3).
+
+The curves and control polygons are drawn with the chapter-24 plot functions
+(:func:`goldman_lib.views.bezier.plot_curve`, :func:`~goldman_lib.views.bezier.plot_control_polygon`);
+the factories return an :class:`~goldman_lib.views.interactive.InteractiveView` whose ``update``
+is a plain function returning what it drew.
+
+>>> view = subdivision_view()
+>>> sorted(view.update(**view.values()))
+['gap', 'polygons', 'status']
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from goldman_lib import bezier
+from goldman_lib.validation import as_int, as_points
+from goldman_lib.views import style
+from goldman_lib.views.bezier import DEFAULT_CUBIC, plot_control_polygon, plot_curve
+from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+
+__all__ = ["plot_pieces", "plot_boxes", "plot_patch_domains", "subdivision_view", "adaptive_rendering_view",
+           "intersection_view", "patch_rendering_view", "INTERSECTION_EXAMPLES", "WAVY", "DEFAULT_PATCH_25"]
+
+#: A quartic with two bends: flat parts and tight parts for adaptive rendering.
+WAVY = np.array([[0.0, 0.0], [0.5, 3.0], [2.0, -1.0], [3.5, 2.5], [4.0, 0.5]])
+
+#: Pairs of curves for the intersection demo (in the spirit of the ``bezier`` package's cases).
+INTERSECTION_EXAMPLES = {
+    "two cubics, three crossings": (np.array([[0.0, 0.0], [1.0, 3.0], [2.0, -2.0], [3.0, 1.0]]),
+                                    np.array([[0.0, 1.0], [1.0, -1.5], [2.0, 2.5], [3.0, 0.0]])),
+    "parabola and line": (np.array([[0.0, 0.0], [1.5, 3.0], [3.0, 0.0]]),
+                          np.array([[0.0, 0.8], [3.0, 1.2]])),
+    "parabolas touching (tangent)": (np.array([[0.0, 0.0], [1.5, 1.5], [3.0, 0.0]]),
+                                     np.array([[0.0, 1.5], [1.5, 0.0], [3.0, 1.5]])),
+    "cubic with a loop and a line": (np.array([[0.0, 0.0], [3.5, 2.5], [-0.5, 2.5], [3.0, 0.0]]),
+                                     np.array([[0.0, 0.9], [3.0, 0.6]])),
+}
+
+
+def _default_patch_25() -> np.ndarray:
+    """A bicubic graph z = f(x, y) over [0, 3]^2 with one bump: flat corners, a curved middle."""
+    i, j = np.meshgrid(np.arange(4.0), np.arange(4.0), indexing="ij")
+    z = np.zeros((4, 4))
+    z[1, 1], z[1, 2], z[2, 1], z[2, 2] = 2.0, 1.0, 1.0, 0.0
+    return np.stack([i, j, z], axis=-1)
+
+
+#: The bicubic patch of the chapter-25 surface figures: control net ``(4, 4, 3)``.
+DEFAULT_PATCH_25 = _default_patch_25()
+
+
+# -- static plots -------------------------------------------------------------------------------
+def plot_pieces(pieces, ax=None, colors=None, linewidth: float = 1.2):
+    """Draw the control polygons of subdivided pieces (k, n+1, 2), alternating colours, with their
+    end points marked; returns the LineCollection."""
+    from matplotlib.collections import LineCollection
+
+    pieces = as_points(pieces, "pieces", ndim=3, dim=2)
+    ax = style.get_axes(ax)
+    colors = colors or [style.LEVELS[0], style.LEVELS[3]]
+    coll = LineCollection(list(pieces), colors=[colors[k % len(colors)] for k in range(len(pieces))],
+                          linewidths=linewidth, zorder=2)
+    ax.add_collection(coll)
+    return coll
+
+
+def plot_boxes(boxes, ax=None, color=None, alpha: float = 0.18):
+    """Draw axis-aligned boxes (k, 2, 2) given as ``[[xmin, ymin], [xmax, ymax]]``; returns the PolyCollection."""
+    from matplotlib.collections import PolyCollection
+
+    ax = style.get_axes(ax)
+    coll = PolyCollection(_box_vertices(np.asarray(boxes, dtype=float).reshape(-1, 2, 2)),
+                          facecolors=color or style.PALETTE["accent"], edgecolors=color or style.PALETTE["accent"],
+                          alpha=alpha, linewidths=1.0, zorder=1)
+    ax.add_collection(coll)
+    return coll
+
+
+def _box_vertices(boxes: np.ndarray) -> list[np.ndarray]:
+    lo, hi = boxes[:, 0], boxes[:, 1]
+    return list(np.stack([lo, np.stack([hi[:, 0], lo[:, 1]], 1), hi, np.stack([lo[:, 0], hi[:, 1]], 1)], axis=1))
+
+
+def plot_patch_domains(domains, ax=None):
+    """Draw parameter rectangles (k, 4) ``[u0, u1, v0, v1]`` of a patch subdivision; returns the PolyCollection."""
+    from matplotlib.collections import PolyCollection
+
+    ax = style.get_axes(ax)
+    coll = PolyCollection(_domain_vertices(np.asarray(domains, dtype=float)), facecolors=style.PALETTE["surface"],
+                          edgecolors="#333333", linewidths=0.6, alpha=0.55)
+    ax.add_collection(coll)
+    ax.set_xlim(0, 1)
+    ax.set_ylim(0, 1)
+    ax.set_xlabel("u")
+    ax.set_ylabel("v")
+    return coll
+
+
+def _domain_vertices(domains: np.ndarray) -> list[np.ndarray]:
+    u0, u1, v0, v1 = domains.T
+    return list(np.stack([np.stack([u0, v0], 1), np.stack([u1, v0], 1), np.stack([u1, v1], 1),
+                          np.stack([u0, v1], 1)], axis=1))
+
+
+def _limits(ax, *point_sets, pad: float = 0.4):
+    pts = np.concatenate([np.asarray(p, dtype=float).reshape(-1, 2) for p in point_sets])
+    ax.set_xlim(pts[:, 0].min() - pad, pts[:, 0].max() + pad)
+    ax.set_ylim(pts[:, 1].min() - pad, pts[:, 1].max() + pad)
+
+
+def _split_recursively(ctrl: np.ndarray, depth: int, t: float) -> np.ndarray:
+    pieces = [ctrl]
+    for _ in range(depth):
+        pieces = [half for piece in pieces for half in bezier.subdivide(piece, t)]
+    return np.array(pieces)
+
+
+# -- widgets ------------------------------------------------------------------------------------
+def subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_depth: int = 6) -> InteractiveView:
+    """A subdivision-level slider (Goldman §25.2): the curve split ``depth`` times, each piece at its
+    own parameter ``t``, and the 2**depth control polygons closing in on the curve.
+
+    ``update(depth, t)`` returns the control polygons (2**depth, n+1, 2) and the largest distance
+    from their points to the curve.
+    """
+    ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
+    max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=8)
+    fig, ax = style.new_axes()
+    plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
+    curve_line = plot_curve(ctrl, ax, samples=400)
+    crv = np.column_stack(curve_line.get_data())
+    pieces = plot_pieces(_split_recursively(ctrl, depth, t), ax)
+    (joints,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=4, zorder=4)
+    _limits(ax, ctrl, pad=0.3)
+    ax.set_title("de Casteljau subdivision", fontsize=10)
+
+    def update(depth, t):
+        polys = _split_recursively(ctrl, depth, t)
+        pieces.set_segments(list(polys))
+        pieces.set_color([(style.LEVELS[0], style.LEVELS[3])[k % 2] for k in range(len(polys))])
+        ends = np.concatenate([polys[:, 0], polys[-1:, -1]])
+        joints.set_data(ends[:, 0], ends[:, 1])
+        pts = polys.reshape(-1, 2)
+        gap = float(np.sqrt(((pts[:, None, :] - crv[None]) ** 2).sum(-1)).min(1).max())
+        return {"polygons": polys, "gap": gap,
+                "status": f"depth {depth}: {len(polys)} pieces split at t = {t:.2f}; farthest control point "
+                          f"{gap:.3f} from the curve"}
+
+    depth = as_int(depth, "depth", minimum=0, maximum=max_depth)
+    controls = {"depth": int_slider("depth", depth, 0, max_depth),
+                "t": float_slider("split t", t, 0.1, 0.9, 0.05)}
+    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="subdivision level")
+
+
+def adaptive_rendering_view(ctrl=WAVY, digits: int = 2) -> InteractiveView:
+    """Rendering by adaptive subdivision (Goldman §25.3): the tolerance slider sets ``tol = 10**-digits``
+    and the polyline of :func:`goldman_lib.bezier.render_by_subdivision` is drawn with its vertices.
+
+    ``update(digits)`` returns the polyline, its parameters and the number of segments; the status
+    compares it with the number of evenly spaced segments that reach the same accuracy.
+    """
+    ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
+    fig, ax = style.new_axes()
+    plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
+    plot_curve(ctrl, ax, samples=400, alpha=0.35)
+    (poly,) = ax.plot([], [], ".-", color=style.PALETTE["point"], markersize=6, linewidth=1.2)
+    _limits(ax, ctrl, pad=0.3)
+    dense = np.linspace(0.0, 1.0, 2001)
+    dense_pts = bezier.de_casteljau(ctrl, dense)
+
+    def uniform_segments(tol):
+        # the fewest evenly spaced segments (powers of two) whose chords are within tol
+        for k in range(0, 15):
+            m = 2 ** k
+            step = len(dense) // m if m < len(dense) else 1
+            idx = np.arange(0, len(dense), max(step, 1))
+            if idx[-1] != len(dense) - 1:
+                idx = np.append(idx, len(dense) - 1)
+            worst = 0.0
+            for a, b in zip(idx[:-1], idx[1:]):
+                seg = dense_pts[a:b + 1]
+                w = np.linspace(0, 1, len(seg))[:, None]
+                chord = (1 - w) * seg[0] + w * seg[-1]
+                worst = max(worst, float(np.linalg.norm(seg - chord, axis=1).max()))
+            if worst <= tol:
+                return len(idx) - 1
+        return len(dense) - 1
+
+    cache: dict[int, int] = {}
+
+    def update(digits):
+        tol = 10.0 ** (-digits)
+        t, pts = bezier.render_by_subdivision(ctrl, tol)
+        poly.set_data(pts[:, 0], pts[:, 1])
+        if digits not in cache:
+            cache[digits] = uniform_segments(tol)
+        ax.set_title(f"tolerance {tol:g}: {len(t) - 1} segments", fontsize=10)
+        return {"polyline": pts, "t": t, "segments": len(t) - 1,
+                "status": f"tol = {tol:g}: {len(t) - 1} segments by adaptive subdivision; evenly spaced "
+                          f"parameters need about {cache[digits]}"}
+
+    digits = as_int(digits, "digits", minimum=1, maximum=4)
+    controls = {"digits": int_slider("tol 1e-", digits, 1, 4)}
+    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="rendering by subdivision")
+
+
+def intersection_view(case: str = "two cubics, three crossings", level: int = 3, shift: float = 0.0,
+                      max_level: int = 10) -> InteractiveView:
+    """Curve-curve intersection by subdivision (Goldman §25.3.1): a picker of curve pairs, a slider
+    that moves the second curve up or down, and a level slider showing the bounding boxes of
+    the pieces still in play at that level of subdivision, with the intersections found.
+
+    ``update(case, level, shift)`` returns the boxes of both curves (k, 2, 2), the parameter pairs
+    and the points of :func:`goldman_lib.bezier.intersect_curves`.
+    """
+    if case not in INTERSECTION_EXAMPLES:
+        raise ValueError(f"case must be one of {', '.join(INTERSECTION_EXAMPLES)}; got {case!r}")
+    import ipywidgets as widgets
+
+    fig, ax = style.new_axes()
+    a0, b0 = INTERSECTION_EXAMPLES[case]
+    pa = plot_control_polygon(a0, ax, labels=False, alpha=0.45)
+    pb = plot_control_polygon(b0, ax, labels=False, alpha=0.45, color=style.PALETTE["good"])
+    ca = plot_curve(a0, ax)
+    cb = plot_curve(b0, ax, color=style.PALETTE["good"])
+    boxes_a = plot_boxes(np.zeros((0, 2, 2)), ax, color=style.PALETTE["curve"])
+    boxes_b = plot_boxes(np.zeros((0, 2, 2)), ax, color=style.PALETTE["good"])
+    (hits,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=8, zorder=5)
+    samples = np.linspace(0.0, 1.0, 200)
+    lim = np.concatenate([np.concatenate(pair) for pair in INTERSECTION_EXAMPLES.values()])
+    ax.set_xlim(lim[:, 0].min() - 0.3, lim[:, 0].max() + 0.3)
+    ax.set_ylim(lim[:, 1].min() - 1.3, lim[:, 1].max() + 1.3)
+
+    def update(case, level, shift):
+        a, b = INTERSECTION_EXAMPLES[case]
+        b = b + np.array([0.0, shift])
+        for line, P in ((pa, a), (pb, b)):
+            line.set_data(P[:, 0], P[:, 1])
+        for line, P in ((ca, a), (cb, b)):
+            pts = bezier.de_casteljau(P, samples)
+            line.set_data(pts[:, 0], pts[:, 1])
+        ba, bb, ia, ib = bezier.intersection_boxes(a, b, level)
+        boxes_a.set_verts(_box_vertices(ba))
+        boxes_b.set_verts(_box_vertices(bb))
+        st = bezier.intersect_curves(a, b)
+        points = bezier.de_casteljau(a, st[:, 0]) if len(st) else np.zeros((0, 2))
+        hits.set_data(points[:, 0], points[:, 1])
+        ax.set_title(f"level {level}: {len(ba)} + {len(bb)} pieces kept", fontsize=10)
+        found = "; ".join(f"(s, t) = ({s:.4f}, {t:.4f})" for s, t in st) or "none"
+        return {"boxes_a": ba, "boxes_b": bb, "params": st, "points": points,
+                "status": f"{len(st)} intersection(s): {found}"}
+
+    level = as_int(level, "level", minimum=0, maximum=max_level)
+    controls = {"case": widgets.Dropdown(options=list(INTERSECTION_EXAMPLES), value=case, description="curves",
+                                         style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+                "level": int_slider("level", level, 0, max_level),
+                "shift": float_slider("shift", shift, -1.0, 1.0, 0.05)}
+    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="intersection by subdivision", side=True)
+
+
+def patch_rendering_view(ctrl=DEFAULT_PATCH_25, digits: int = 1) -> InteractiveView:
+    """Adaptive subdivision of a Bezier patch (Goldman §25.3.2): the tolerance slider sets
+    ``tol = 10**-digits``; the left panel shows the parameter rectangles of the flat pieces, the
+    right panel the pieces' corner quadrilaterals seen from above, shaded by height.
+
+    ``update(digits)`` returns the rectangles (k, 4) and the number of pieces.
+    """
+    from matplotlib.collections import PolyCollection
+
+    net = as_points(ctrl, "ctrl", ndim=3, dim=3, min_count=2)
+    fig = style.new_figure(style.WIDE_FIGSIZE)
+    ax_dom = style.style_axes(fig.add_subplot(1, 2, 1))
+    ax_top = style.style_axes(fig.add_subplot(1, 2, 2))
+    domains = plot_patch_domains(np.array([[0.0, 1.0, 0.0, 1.0]]), ax_dom)
+    ax_dom.set_title("pieces in the (u, v) domain", fontsize=10)
+    quads = PolyCollection([], cmap="viridis", edgecolors="#333333", linewidths=0.5)
+    ax_top.add_collection(quads)
+    xy = net.reshape(-1, 3)
+    ax_top.set_xlim(xy[:, 0].min() - 0.1, xy[:, 0].max() + 0.1)
+    ax_top.set_ylim(xy[:, 1].min() - 0.1, xy[:, 1].max() + 0.1)
+    zmin, zmax = float(xy[:, 2].min()), float(xy[:, 2].max())
+    quads.set_clim(zmin, zmax if zmax > zmin else zmin + 1)
+    ax_top.set_title("the flat pieces from above (colour: height)", fontsize=10)
+    ax_top.set_xticks([])
+    ax_top.set_yticks([])
+    ax_top.grid(False)
+    ax_dom.set_xticks([0, 0.5, 1])
+    ax_dom.set_yticks([0, 0.5, 1])
+
+    def update(digits):
+        tol = 10.0 ** (-digits)
+        corners, dom = bezier.render_patch_by_subdivision(net, tol)
+        domains.set_verts(_domain_vertices(dom))
+        quads.set_verts(list(corners[:, :, :2]))
+        quads.set_array(corners[:, :, 2].mean(axis=1))
+        return {"domains": dom, "corners": corners, "pieces": len(dom),
+                "status": f"tol = {tol:g}: {len(dom)} flat pieces ({2 * len(dom)} triangles)"}
+
+    digits = as_int(digits, "digits", minimum=0, maximum=2)
+    controls = {"digits": int_slider("tol 1e-", digits, 0, 2)}
+    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="patch rendering by subdivision")
