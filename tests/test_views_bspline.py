@@ -1,0 +1,51 @@
+"""Chapter 27 views: the de Boor explorer and the local-control view draw what scipy computes."""
+
+import matplotlib
+import numpy as np
+from scipy.interpolate import BSpline
+
+from goldman_lib import bspline
+from goldman_lib.views import bspline as views
+
+matplotlib.use("Agg")
+
+
+def test_de_boor_explorer_draws_the_scipy_curve_and_point():
+    view = views.de_boor_explorer()
+    ctrl = views.DEFAULT_POLYGON
+    for vals in view.sweep_values(n=5):
+        r = view.update(**vals)
+        p = vals["degree"]
+        knots = np.r_[np.zeros(p), np.linspace(0, 1, len(ctrl) - p + 1), np.ones(p)]   # clamped, even
+        np.testing.assert_allclose(r["knots"], knots, atol=1e-15)
+        s = BSpline(knots, ctrl, p)
+        np.testing.assert_allclose(r["curve"], s(np.linspace(0, 1, len(r["curve"]))), atol=1e-12)
+        np.testing.assert_allclose(r["point"], s(vals["u"]), atol=1e-12)
+        k = r["span"]
+        assert knots[k] <= vals["u"] <= knots[k + 1] and len(r["levels"]) == p + 1
+        np.testing.assert_allclose(r["levels"][0], ctrl[k - p:k + 1])
+
+
+def test_local_control_changes_only_the_support():
+    view = views.local_control_view()
+    for vals in view.sweep_values(n=4):
+        r = view.update(**vals)
+        assert r["change_outside"] < 1e-12
+        p, i = vals["degree"], vals["index"]
+        knots = bspline.clamped_knots(len(views.LONG_POLYGON), p)
+        # the support from the definition, not from the code under test
+        lo, hi = max(knots[i], knots[p]), min(knots[i + p + 1], knots[-p - 1])
+        np.testing.assert_allclose(r["interval"], [lo, hi])
+
+
+def test_static_plots():
+    ctrl = views.DEFAULT_POLYGON
+    knots = bspline.clamped_knots(7, 3)
+    line = views.plot_bspline_curve(ctrl, knots, 3)
+    xy = np.c_[line.get_xdata(), line.get_ydata()]
+    np.testing.assert_allclose(xy, BSpline(knots, ctrl, 3)(np.linspace(0, 1, len(xy))), atol=1e-12)
+    lines, pt = views.plot_de_boor(ctrl, knots, 3, 0.3)
+    assert len(lines) == 3
+    np.testing.assert_allclose(pt.get_xydata()[0], BSpline(knots, ctrl, 3)(0.3), atol=1e-12)
+    import matplotlib.pyplot as plt
+    plt.close("all")
