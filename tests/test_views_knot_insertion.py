@@ -1,0 +1,131 @@
+"""Chapter 28 widgets: every callback swept over its slider ranges (corners included) draws finite
+geometry, and what is drawn is the same curve as scipy's BSpline of the original control points."""
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from scipy.interpolate import BSpline
+
+from goldman_lib import knot_insertion as ki
+from goldman_lib.views import knot_insertion as views
+
+FACTORIES = [views.boehm_view, views.oslo_view, views.subdivision_view, views.insertion_editor]
+P, T, D = views.DEFAULT_POLYGON, views.DEFAULT_KNOTS, views.DEFAULT_DEGREE
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    yield
+    plt.close("all")
+
+
+def finite(obj):
+    if isinstance(obj, dict):
+        return all(finite(v) for k, v in obj.items() if k != "status")
+    if isinstance(obj, (list, tuple)):
+        return all(finite(v) for v in obj)
+    return bool(np.all(np.isfinite(np.asarray(obj, dtype=float))))
+
+
+def same_curve(ctrl, knots, p, new_ctrl, new_knots):
+    u = np.linspace(knots[p], knots[len(knots) - p - 1], 60)[:-1]
+    np.testing.assert_allclose(BSpline(new_knots, new_ctrl, p)(u), BSpline(knots, ctrl, p)(u), atol=1e-9)
+
+
+@pytest.mark.parametrize("factory", FACTORIES, ids=lambda f: f.__name__)
+def test_sweep_every_slider_range(factory):
+    view = factory()
+    combos = view.sweep_values()
+    assert len(combos) >= 3
+    for values in combos[:120]:
+        result = view.update(**values)
+        assert finite(result), f"non-finite drawing at {values}"
+        assert isinstance(result["status"], str) and result["status"]
+
+
+@pytest.mark.parametrize("factory", FACTORIES, ids=lambda f: f.__name__)
+def test_view_shows_no_traceback_and_has_a_fallback_image(factory):
+    view = factory()
+    for values in view.sweep_values()[:12]:
+        view.set_values(**values)
+        assert view.last_error is None, view.last_error
+    assert view.static_png().startswith(b"\x89PNG")
+
+
+@pytest.mark.parametrize("u,times", [(0.4, 1), (0.5, 2), (0.1, 3), (0.25, 3), (0.5, 4)])
+def test_boehm_view_draws_the_inserted_polygon_of_the_same_curve(u, times):
+    view = views.boehm_view()
+    result = view.update(u=u, times=times)
+    same_curve(P, T, D, result["polygon"], result["knots"])
+    s = int(np.count_nonzero(T == u))
+    assert len(result["polygon"]) == len(P) + min(times, D + 1 - s)
+    # the crossed-out points are points of the polygon before the last step; the new points lie in the new polygon
+    k = min(times, D + 1 - s)
+    before = ki.boehm_insert(P, T, D, u, k - 1)[0] if k else P
+    if len(result["replaced"]):
+        assert len(result["replaced"]) == D - 1 and len(result["new"]) == D
+        assert all(any(np.allclose(g, q) for q in before) for g in result["replaced"])
+        assert all(any(np.allclose(g, q) for q in result["polygon"]) for g in result["new"])
+
+
+def test_boehm_view_with_multiplicity_limit_says_so():
+    result = views.boehm_view().update(u=0.5, times=4)   # 0.5 is already a knot: 3 more at most
+    assert "at most 3 more" in result["status"]
+
+
+@pytest.mark.parametrize("count,step", [(1, 0), (4, 3), (8, 14), (3, 100)])
+def test_oslo_view_draws_the_refined_polygon_and_a_pyramid(count, step):
+    result = views.oslo_view().update(count=count, step=step)
+    tau = result["knots"]
+    assert len(tau) == len(T) + count
+    same_curve(P, T, D, result["polygon"], tau)
+    np.testing.assert_allclose(result["done"][-1], result["point"])
+    assert [len(lv) for lv in result["levels"]] == [D + 1, D, D - 1, 1][:D + 1]
+
+
+@pytest.mark.parametrize("p", [1, 2, 3, 5])
+@pytest.mark.parametrize("level", [0, 1, 3])
+def test_subdivision_view_level_polygons_are_the_same_curve(p, level):
+    view = views.subdivision_view()
+    # open uniform Lane-Riesenfeld: knots spacing 2^-L from p (1 - 2^-L)
+    result = view.update(algorithm="Lane-Riesenfeld (uniform)", degree=p, level=level, round=p)
+    h = 2.0 ** -level
+    knots = p * (1 - h) + h * np.arange(len(result["polygon"]) + p + 1)
+    same_curve(P, np.arange(len(P) + p + 1.0), p, result["polygon"], knots)
+    # Schaefer on the clamped curve
+    result = view.update(algorithm="Schaefer (clamped)", degree=p, level=level, round=p)
+    clamped = np.r_[np.zeros(p), np.linspace(0, 1, len(P) - p + 1), np.ones(p)]
+    Q, tau = ki.schaefer(P, clamped, p, level)
+    np.testing.assert_allclose(result["polygon"], Q)
+    same_curve(P, clamped, p, Q, tau)
+
+
+def test_subdivision_view_closed_and_rounds():
+    view = views.subdivision_view()
+    result = view.update(algorithm="Lane-Riesenfeld (closed)", degree=3, level=2, round=3)
+    assert len(result["polygon"]) == 4 * len(P)
+    doubled = view.update(algorithm="Lane-Riesenfeld (closed)", degree=3, level=1, round=0)["polygon"]
+    np.testing.assert_allclose(doubled, np.repeat(P, 2, axis=0))
+
+
+def test_subdivision_distance_falls_by_about_four_per_level():
+    view = views.subdivision_view()
+    d = [view.update(algorithm="Schaefer (clamped)", degree=3, level=L, round=3)["distance"] for L in range(5)]
+    ratios = np.array(d[1:-1]) / np.array(d[2:])
+    assert np.all(ratios > 2.5), ratios
+
+
+def test_insertion_editor_inserts_into_the_editor_knot_vector():
+    view = views.insertion_editor()
+    knots, p, _ = _editor_knots(view)
+    result = view.update(**{**view.values(), "u": 0.3, "times": 2})
+    same_curve(P, knots, p, result["polygon"], result["knots"])
+    assert len(result["polygon"]) == len(P) + 2
+
+
+def _editor_knots(view):
+    vals = view.values()
+    from goldman_lib.views.knot_editor import knots_from_values
+    names = sorted((k for k in vals if k.startswith("k") and k[1:].isdigit()), key=lambda k: int(k[1:]))
+    knots = knots_from_values([vals[k] for k in names], vals["degree"], len(P), vals["preset"])
+    return knots, vals["degree"], None
