@@ -998,7 +998,16 @@ class NURBSCurve(BSplineCurve):
         return nurbs_curve(self.ctrl, self.weights, self.knots, self.degree, u)
 
     def derivative(self, u, order: int = 1, side: str = "right") -> np.ndarray:
-        raise NotImplementedError("derivatives of rational curves are not part of chapter 27")
+        """``C(u)`` (order 0) or ``C'(u) = (A'(u) - w'(u) C(u)) / w(u)`` (order 1) from the
+        homogeneous B-spline ``(A, w) = sum N_k (w_k P_k, w_k)`` (quotient rule)."""
+        order = as_int(order, "order", minimum=0, maximum=1)
+        H = np.concatenate([self.ctrl * self.weights[:, None], self.weights[:, None]], axis=1)
+        h = derivative(H, self.knots, self.degree, u, 0, side)
+        if order == 0:
+            return h[..., :-1] / h[..., -1:]
+        dh = derivative(H, self.knots, self.degree, u, 1, side)
+        c = h[..., :-1] / h[..., -1:]
+        return (dh[..., :-1] - dh[..., -1:] * c) / h[..., -1:]
 
     def __repr__(self) -> str:
         return f"NURBSCurve(degree={self.degree}, {self.ctrl.shape[0]} control points, weights={self.weights.tolist()})"

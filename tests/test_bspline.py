@@ -535,3 +535,10 @@ def test_classes():
     np.testing.assert_allclose(c.basis(0.25).sum(), 1.0)
     n = bs.NURBSCurve(*bs.nurbs_circle())
     assert "NURBSCurve" in repr(n) and n.sample(9).shape == (9, 2)
+    # the circle's tangent is perpendicular to the radius; compare with a central difference
+    u = np.array([0.1, 0.3, 0.6, 0.9])
+    d = n.derivative(u)
+    np.testing.assert_allclose(np.sum(d * n.evaluate(u), -1), 0, atol=1e-12)
+    h = 1e-6
+    np.testing.assert_allclose(d, (n.evaluate(u + h) - n.evaluate(u - h)) / (2 * h), rtol=1e-6)
+    np.testing.assert_allclose(n.derivative(u, 0), n.evaluate(u), atol=1e-15)
