@@ -727,9 +727,8 @@ def _corner_flatness(P: np.ndarray) -> float:
 
 
 def _bezier_halves(P: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The two halves of a Bezier polygon at t = 1/2 (the outer edges of the de Casteljau pyramid)."""
-    steps = bezier.de_casteljau_steps(P, 0.5)
-    return np.array([lv[0] for lv in steps]), np.array([lv[-1] for lv in steps[::-1]])
+    """The two halves of a Bezier polygon at t = 1/2 (:func:`goldman_lib.bezier.subdivide`)."""
+    return bezier.subdivide(P, 0.5)
 
 
 def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
@@ -783,37 +782,21 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     return np.array(out), deepest
 
 
-def _boxes_overlap(A: np.ndarray, B: np.ndarray, pad: float) -> bool:
-    return bool(np.all(A.min(0) - pad <= B.max(0)) and np.all(B.min(0) - pad <= A.max(0)))
+def intersect(a, b, tol=1e-10):
+    """Intersection points of two planar B-spline curves (Goldman §28.3.5, §28.4.4).
 
+    Both curves are converted to piecewise Bezier form by knot insertion (§28.3.3); every pair of
+    Bezier pieces is then intersected by Bezier subdivision with a Newton polish
+    (:func:`goldman_lib.bezier.intersect_curves`: pieces whose control-point boxes miss cannot
+    meet, by the convex hull property), and the piece parameters are mapped back to the knot
+    intervals.  A crossing at a knot, found by the two pieces that meet there, is kept once.
 
-def _segment_hit(a0, a1, b0, b1):
-    """Parameters (s, r) in [0, 1]^2 where segments a0a1 and b0b1 meet, or None (2D)."""
-    da, db, w = a1 - a0, b1 - b0, b0 - a0
-    den = da[0] * db[1] - da[1] * db[0]
-    if den == 0.0:
-        return None
-    s = (w[0] * db[1] - w[1] * db[0]) / den
-    r = (w[0] * da[1] - w[1] * da[0]) / den
-    eps = 1e-9
-    if -eps <= s <= 1 + eps and -eps <= r <= 1 + eps:
-        return min(max(s, 0.0), 1.0), min(max(r, 0.0), 1.0)
-    return None
-
-
-def intersect(a, b, tol=1e-9, max_depth=60):
-    """Intersection points of two planar B-spline curves by subdivision (Goldman §28.3.5, §28.4.4).
-
-    Both curves are converted to piecewise Bezier form (§28.3.3).  For each pair of pieces whose
-    control-point boxes overlap, both are split in half (subdivision = knot insertion at the
-    midpoint) until each is flat to ``tol``; flat pieces are intersected as line segments.  The
-    convex hull property makes the box test safe: pieces whose boxes miss cannot meet.
-
-    a, b: curves as ``(ctrl (n+1, 2), knots, degree)`` tuples, degree >= 1.  tol: float > 0.
-    max_depth: recursion limit (an int >= 1), guarding tangential or overlapping curves.
+    a, b: curves as ``(ctrl (n+1, 2), knots, degree)`` tuples, degree >= 1.  tol: float > 0, how
+    close the curves must come to count as meeting (relative to the size of the control points).
     Returns ``(params (k, 2), points (k, 2))``: the parameter on a, on b, and the point, sorted by
-    the parameter on a, near-duplicates (within ~tol) merged.
-    Raises ValueError for bad curves (a 3D curve, degree 0) or tol <= 0.
+    the parameter on a; k = 0 if the curves do not meet.
+    Raises TypeError if a or b is not a 3-tuple; ValueError for bad curves (a 3D curve, degree 0)
+    or tol <= 0.
 
     >>> line = ([[0, 0.5], [2, 0.5]], [0, 0, 1, 1], 1)
     >>> arch = ([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2)
@@ -830,43 +813,22 @@ def intersect(a, b, tol=1e-9, max_depth=60):
             raise ValueError(f"{name} must be a planar curve: ctrl of shape (n+1, 2); got {P.shape}")
         if p < 1:
             raise ValueError(f"{name} must have degree >= 1 to intersect by subdivision")
-        curves.append(to_piecewise_bezier(P, t, p))
+        curves.append((P, t, p, *to_piecewise_bezier(P, t, p)))
     tol = as_float(tol, "tol", positive=True)
-    max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=200)
-    (pa, ba), (pb, bb) = curves
-    hits: list[tuple[float, float]] = []
-
-    def rec(A, a0, a1, B, b0, b1, depth):
-        if not _boxes_overlap(A, B, tol):
-            return
-        fa, fb = _flatness(A), _flatness(B)
-        if (fa <= tol and fb <= tol) or depth >= max_depth:
-            hit = _segment_hit(A[0], A[-1], B[0], B[-1])
-            if hit is not None:
-                hits.append((a0 + (a1 - a0) * hit[0], b0 + (b1 - b0) * hit[1]))
-            return
-        if fa >= fb:
-            L, R = _bezier_halves(A)
-            m = 0.5 * (a0 + a1)
-            rec(L, a0, m, B, b0, b1, depth + 1)
-            rec(R, m, a1, B, b0, b1, depth + 1)
-        else:
-            L, R = _bezier_halves(B)
-            m = 0.5 * (b0 + b1)
-            rec(A, a0, a1, L, b0, m, depth + 1)
-            rec(A, a0, a1, R, m, b1, depth + 1)
-
+    (Pa, ta, pa_deg, pa, ba), (Pb, tb, pb_deg, pb, bb) = curves
+    hits = []
     for i, A in enumerate(pa):
         for j, B in enumerate(pb):
-            rec(A, ba[i], ba[i + 1], B, bb[j], bb[j + 1], 0)
+            st = bezier.intersect_curves(A, B, tol=tol)
+            for s_, t_ in st:
+                hits.append((ba[i] + (ba[i + 1] - ba[i]) * s_, bb[j] + (bb[j + 1] - bb[j]) * t_))
     if not hits:
         return np.zeros((0, 2)), np.zeros((0, 2))
     hp = np.array(sorted(hits))
-    Pa = a[0] if isinstance(a[0], np.ndarray) else np.asarray(a[0], dtype=float)
-    pts = bspline.de_boor(Pa, a[1], a[2], hp[:, 0])
+    pts = bspline.de_boor(Pa, ta, pa_deg, hp[:, 0])
+    scale = max(1.0, float(np.abs(Pa).max()), float(np.abs(Pb).max()))
     keep = [0]
-    scale = max(1.0, float(np.abs(pts).max()))
     for k in range(1, len(hp)):
-        if np.linalg.norm(pts[k] - pts[keep[-1]]) > max(1e3 * tol, 1e-7) * scale:
+        if np.linalg.norm(pts[k] - pts[keep[-1]]) > 1e-7 * scale:
             keep.append(k)
     return hp[keep], pts[keep]

@@ -601,3 +601,13 @@ def test_degree_zero_is_handled():
     assert len(Q) == 6
     with pytest.raises(ValueError, match="degree must be >= 1"):
         ki.convergence_study(ctrl, knots, 0)
+
+
+def test_intersect_at_a_knot_is_reported_once():
+    # the quadratic meets x = 1 at its knot u = 1/2, where C(1/2) = (P1 + P2) / 2 = (1, 2)
+    a = ([[0, 0], [0.5, 2], [1.5, 2], [2, 0]], [0, 0, 0, 0.5, 1, 1, 1], 2)
+    b = ([[1, -1], [1, 3]], [0, 0, 1, 1], 1)
+    params, points = ki.intersect(a, b)
+    assert len(points) == 1
+    np.testing.assert_allclose(points[0], [1, 2], atol=1e-9)
+    np.testing.assert_allclose(params[0], [0.5, 0.75], atol=1e-9)
