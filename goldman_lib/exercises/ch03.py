@@ -189,8 +189,8 @@ def check_koch_base_case(answer) -> Result:
         return wrong(f"your base case changes the turtle's step by a factor {fmt(S)}; it must leave the step as it "
                      f"found it, or the later copies are drawn at the wrong size.")
     if not np.allclose(d, [1, 0], atol=1e-9):
-        return wrong(f"your base case ends at {fmt(d)} instead of (1, 0): the copies would not join end to end, and "
-                     f"the limit would be another shape.")
+        return wrong(f"your base case ends at {fmt(d)} instead of (1, 0), so the limit is a different set (FORWARD 2, "
+                     f"for example, gives a Koch curve twice as large; a sideways end breaks the copies apart).")
     dist = fractals.base_case_distances(koch, [prog.base], [5])[0, 0]
     return correct(f"it changes the turtle's state exactly as FORWARD 1 does, so level n differs from the Koch curve "
                    f"by at most 1/3^n of the level-0 difference (level 5: {fmt(dist, 3)}).")
