@@ -1,0 +1,338 @@
+"""Subdivision matrices and iterated function systems: curves as attractors, normal curves, and
+fractals with control points (Goldman, chapter 29).
+
+Subdivision splits a curve with control points ``P`` (rows, ``(n+1, d)``) into two halves whose
+control points are ``L @ P`` and ``R @ P``, with *subdivision matrices* ``L`` and ``R`` that depend
+only on the degree (§29.2: :func:`bezier_subdivision_matrices`, :func:`bspline_subdivision_matrices`).
+Every row of ``L`` and ``R`` sums to one (the new control points are affine combinations).
+
+If ``P`` is square and invertible — a control point per row, in homogeneous coordinates
+``[x y ... 1]``, *lifted* to extra coordinates when the points live in too few dimensions
+(:func:`lift_control_points`) — then the maps ``P^-1 L P`` and ``P^-1 R P`` act on points as row
+vectors (``Q = X @ M``, translation in the last row, the book's convention) and send the control
+polygon to the control polygons of the two halves.  So the curve is the attractor of the IFS
+``{P^-1 L P, P^-1 R P}`` (§29.3: :func:`curve_ifs`, :func:`attractor`).  For ``P`` the vertices of
+the standard simplex the curve is the *normal curve* (:func:`normal_curve`), whose IFS is ``{L, R}``
+itself; every Bezier curve of degree n is an affine image of it.
+
+Replacing ``L`` and ``R`` by any other matrices with rows summing to one gives fractals that move
+with their control points (§29.4: :func:`fractal_matrices`, :func:`sierpinski_matrices`,
+:func:`control_point_ifs`).  For three control points in the plane the maps are 3x3 and
+:func:`control_point_ifs` returns a :class:`goldman_lib.ifs.IFS`, drawn by ``ifs.deterministic``
+or ``ifs.chaos_game``; in higher dimensions :func:`attractor` runs the deterministic algorithm.
+
+>>> L, R = bezier_subdivision_matrices(2)
+>>> (L * 4).tolist()
+[[4.0, 0.0, 0.0], [2.0, 2.0, 0.0], [1.0, 2.0, 1.0]]
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from goldman_lib import ifs
+from goldman_lib.validation import as_float, as_int, as_points, check_finite
+
+__all__ = ["bezier_subdivision_matrices", "bspline_subdivision_matrices", "check_rows_sum_to_one",
+           "lift_control_points", "curve_ifs", "attractor", "curve_as_attractor", "normal_curve",
+           "normal_curve_control_points", "fractal_matrices", "sierpinski_matrices", "control_point_ifs",
+           "MAX_POINTS"]
+
+#: The most points :func:`attractor` will produce.
+MAX_POINTS = 2_000_000
+
+
+# --------------------------------------------------------------------------------------------
+# §29.2 subdivision matrices
+# --------------------------------------------------------------------------------------------
+
+def bezier_subdivision_matrices(n: int, t: float = 0.5) -> tuple[np.ndarray, np.ndarray]:
+    """The subdivision matrices ``(L, R)`` of a degree-n Bezier curve at parameter t (Goldman §29.2).
+
+    ``L @ P`` are the control points of the curve on [0, t] and ``R @ P`` those on [t, 1]:
+    ``L[i, j] = B_j^i(t)`` (the left edge of the de Casteljau triangle) and
+    ``R[i, j] = B_{j-i}^{n-i}(t)`` (its right edge).  Both are ``(n+1, n+1)``, lower and upper
+    triangular, with rows summing to one.
+
+    n: degree >= 0.  t: the split parameter (default 1/2), any finite number.
+    Raises TypeError/ValueError for a non-integer or negative n, or a non-finite t.
+
+    >>> L, R = bezier_subdivision_matrices(1)
+    >>> L.tolist(), R.tolist()
+    ([[1.0, 0.0], [0.5, 0.5]], [[0.5, 0.5], [0.0, 1.0]])
+    """
+    n = as_int(n, "n", minimum=0)
+    t = as_float(t, "t")
+    L = np.zeros((n + 1, n + 1))
+    R = np.zeros((n + 1, n + 1))
+    for i in range(n + 1):
+        for j in range(i + 1):
+            L[i, j] = math.comb(i, j) * t ** j * (1 - t) ** (i - j)
+        for j in range(i, n + 1):
+            k, m = j - i, n - i
+            R[i, j] = math.comb(m, k) * t ** k * (1 - t) ** (m - k)
+    return L, R
+
+
+def bspline_subdivision_matrices(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The subdivision matrices ``(L, R)`` of one segment of a uniform B-spline of degree n (Goldman §29.2).
+
+    A segment is controlled by n+1 consecutive control points; halving the knot spacing, its
+    left and right halves are controlled by ``L @ P`` and ``R @ P``.  The entries are those of
+    the Lane-Riesenfeld mask ``m_k = C(n+1, k) / 2^n`` (k = 0..n+1):
+    ``L[j, i] = m[2i - j + 1]`` and ``R[j, i] = m[2i - j]``.  For the cubic,
+    ``8 L = [[4,4,0,0], [1,6,1,0], [0,4,4,0], [0,1,6,1]]``.
+
+    >>> L, R = bspline_subdivision_matrices(2)
+    >>> (L * 4).tolist()
+    [[3.0, 1.0, 0.0], [1.0, 3.0, 0.0], [0.0, 3.0, 1.0]]
+    """
+    n = as_int(n, "n", minimum=0)
+    mask = np.array([math.comb(n + 1, k) for k in range(n + 2)], dtype=float) / 2 ** n
+
+    def m(k):
+        return mask[k] if 0 <= k <= n + 1 else 0.0
+
+    L = np.array([[m(2 * i - j + 1) for i in range(n + 1)] for j in range(n + 1)])
+    R = np.array([[m(2 * i - j) for i in range(n + 1)] for j in range(n + 1)])
+    return L, R
+
+
+def check_rows_sum_to_one(M, name: str = "M", tol: float = 1e-9) -> np.ndarray:
+    """Return ``M`` as a finite square float matrix whose rows sum to one, or raise ValueError
+    naming the first row that does not (Goldman §29.4: such matrices make affine combinations,
+    so their IFS moves with the control points).
+
+    >>> check_rows_sum_to_one([[1, 0], [0.5, 0.4]], "L")
+    Traceback (most recent call last):
+    ...
+    ValueError: the rows of L must sum to 1 (affine combinations); row 1 sums to 0.9
+    """
+    A = check_finite(np.asarray(M, dtype=float), name)
+    if A.ndim != 2 or A.shape[0] != A.shape[1]:
+        raise ValueError(f"{name} must be a square matrix; got shape {A.shape}")
+    sums = A.sum(axis=1)
+    bad = np.flatnonzero(np.abs(sums - 1) > tol)
+    if bad.size:
+        raise ValueError(f"the rows of {name} must sum to 1 (affine combinations); row {int(bad[0])} sums to {sums[bad[0]]:.6g}")
+    return A
+
+
+# --------------------------------------------------------------------------------------------
+# §29.3 curves as attractors, lifting, normal curves
+# --------------------------------------------------------------------------------------------
+
+def lift_control_points(ctrl) -> np.ndarray:
+    """Lift n+1 control points to a square invertible matrix ``[P | Z | 1]`` (Goldman §29.3).
+
+    ``ctrl`` is ``(n+1, d)`` with ``d <= n``; the points are given ``n - d`` extra coordinates
+    ``Z`` (columns of the identity, chosen greedily so that the result is invertible) and the
+    homogeneous coordinate 1.  The first d coordinates of the lifted curve are the original curve.
+    Raises ValueError if ``d > n`` or if the points are affinely dependent in their own coordinates
+    beyond repair (e.g. the three control points of a quadratic on one line: ``[P | 1]`` is then
+    singular, and no extra coordinate can be added without a fourth point).
+
+    >>> lift_control_points([[0, 0], [1, 2], [2, 0], [3, 1]])
+    array([[0., 0., 1., 1.],
+           [1., 2., 0., 1.],
+           [2., 0., 0., 1.],
+           [3., 1., 0., 1.]])
+    """
+    P = as_points(ctrl, "ctrl", ndim=2)
+    n1, d = P.shape
+    n = n1 - 1
+    if d > n:
+        raise ValueError(f"ctrl must have at most n = {n} coordinates to lift {n1} points to a square matrix; got {d} "
+                         f"(project the points or use more of them)")
+    base = np.column_stack([P, np.ones(n1)])
+    if np.linalg.matrix_rank(base) < d + 1:
+        raise ValueError("ctrl must be affinely independent in its own coordinates ([P | 1] has full column rank); "
+                         "these control points are affinely dependent (e.g. collinear), so P^-1 does not exist")
+    cols = []
+    for k in range(n1):
+        if len(cols) == n - d:
+            break
+        trial = np.column_stack([P] + cols + [np.eye(n1)[:, k], np.ones(n1)])
+        if np.linalg.matrix_rank(trial) == trial.shape[1]:
+            cols.append(np.eye(n1)[:, k])
+    return np.column_stack([P] + cols + [np.ones(n1)])
+
+
+def _square(ctrl) -> np.ndarray:
+    P = np.asarray(ctrl, dtype=float)
+    if P.ndim == 2 and P.shape[0] == P.shape[1] and np.allclose(P[:, -1], 1.0):
+        if abs(np.linalg.det(P)) < 1e-12:
+            raise ValueError("the lifted control points must form an invertible matrix")
+        return P
+    return lift_control_points(ctrl)
+
+
+def curve_ifs(ctrl, kind: str = "bezier") -> tuple[np.ndarray, np.ndarray]:
+    """The IFS ``{P^-1 L P, P^-1 R P}`` whose attractor is the curve with control points ``ctrl``
+    (Goldman §29.3).
+
+    ctrl: ``(n+1, d)`` control points with ``d <= n`` (lifted by :func:`lift_control_points`), or an
+    already lifted square matrix with last column 1.  kind: ``"bezier"`` or ``"bspline"`` (one
+    uniform B-spline segment).  Returns ``(maps, lifted)``: ``maps`` is ``(2, n+1, n+1)``, each
+    acting on lifted homogeneous points as row vectors (``X @ M``), and ``lifted`` the square matrix
+    ``P``.  The maps send the lifted control polygon to those of the two halves:
+    ``P @ maps[0] == L @ P``.
+
+    >>> maps, P = curve_ifs([[0, 0], [1, 2], [2, 0]])
+    >>> np.allclose(P @ maps[0], bezier_subdivision_matrices(2)[0] @ P)
+    True
+    """
+    if kind not in ("bezier", "bspline"):
+        raise ValueError(f"kind must be 'bezier' or 'bspline'; got {kind!r}")
+    P = _square(ctrl)
+    n = len(P) - 1
+    L, R = bezier_subdivision_matrices(n) if kind == "bezier" else bspline_subdivision_matrices(n)
+    Pinv = np.linalg.inv(P)
+    return np.stack([Pinv @ L @ P, Pinv @ R @ P]), P
+
+
+def attractor(maps, levels: int, start) -> np.ndarray:
+    """The deterministic algorithm in any dimension: every map applied to the set, ``levels`` times
+    (Goldman §29.3; §6.1 in the plane).
+
+    maps: ``(k, D+1, D+1)`` affine maps on homogeneous row vectors.  start: ``(m, D+1)``
+    homogeneous points (last coordinate 1) or ``(m, D)`` points.  Returns ``(m k^levels, D)``
+    points in blocks of m, the copies of a polyline in order (block ``i_L ... i_1`` in base k is
+    ``start @ M_{i_1} @ ... @ M_{i_L}``).  Raises ValueError beyond :data:`MAX_POINTS` points.
+
+    >>> maps, P = curve_ifs([[0, 0], [1, 2], [2, 0]])
+    >>> attractor(maps, 1, P[[0, -1]])[:, :2].tolist()
+    [[0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]]
+    """
+    M = check_finite(np.asarray(maps, dtype=float), "maps")
+    if M.ndim != 3 or M.shape[1] != M.shape[2]:
+        raise ValueError(f"maps must be a stack of square matrices (k, D+1, D+1); got shape {M.shape}")
+    levels = as_int(levels, "levels", minimum=0)
+    X = as_points(start, "start", ndim=2)
+    D1 = M.shape[1]
+    if X.shape[1] == D1 - 1:
+        X = np.column_stack([X, np.ones(len(X))])
+    if X.shape[1] != D1:
+        raise ValueError(f"start must hold points with {D1 - 1} coordinates (or {D1} homogeneous); got shape {X.shape}")
+    total = len(X) * len(M) ** levels
+    if total > MAX_POINTS:
+        raise ValueError(f"levels={levels} would make {total:,} points; at most {MAX_POINTS:,}")
+    for _ in range(levels):
+        X = np.matmul(X[None], M).reshape(-1, D1)
+    return X[:, :-1] / X[:, -1:]
+
+
+def curve_as_attractor(ctrl, levels: int = 8, kind: str = "bezier") -> np.ndarray:
+    """Points of the curve with control points ``ctrl`` drawn as the attractor of its IFS (Goldman §29.3).
+
+    Runs :func:`attractor` from the lifted control polygon and projects back to the original d
+    coordinates: after ``levels`` levels the points are the ``2^levels`` control polygons of the
+    pieces of the curve, in order, which converge to the curve.  Returns ``((n+1) 2^levels, d)``.
+
+    >>> pts = curve_as_attractor([[0, 0], [1, 2], [2, 0]], levels=6)
+    >>> pts.shape, bool(abs(pts[:, 1].max() - 1.0) < 1e-3)
+    ((192, 2), True)
+    """
+    P0 = as_points(ctrl, "ctrl", ndim=2)
+    maps, P = curve_ifs(P0, kind)
+    return attractor(maps, levels, P)[:, :P0.shape[1]]
+
+
+def normal_curve_control_points(n: int) -> np.ndarray:
+    """The control points of the normal curve of degree n: the origin and the unit points
+    ``e_1, ..., e_n`` of R^n, ``(n+1, n)`` (Goldman §29.3).
+
+    >>> normal_curve_control_points(2).tolist()
+    [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
+    """
+    n = as_int(n, "n", minimum=1)
+    return np.vstack([np.zeros(n), np.eye(n)])
+
+
+def normal_curve(n: int, t) -> np.ndarray:
+    """Points of the normal curve of degree n, ``N(t) = (B_1^n(t), ..., B_n^n(t))`` (Goldman §29.3).
+
+    The Bezier curve whose control points are the vertices of the standard simplex; its IFS is
+    ``{L, R}`` itself (in the homogeneous coordinates of the simplex), and every degree-n Bezier
+    curve with control points P is its affine image ``C(t) = P_0 + sum_k N_k(t) (P_k - P_0)``.
+    Returns ``t.shape + (n,)``.
+
+    >>> normal_curve(2, 0.5).tolist()
+    [0.5, 0.25]
+    """
+    n = as_int(n, "n", minimum=1)
+    t = check_finite(np.asarray(t, dtype=float), "t")
+    k = np.arange(1, n + 1)
+    binom = np.array([math.comb(n, int(j)) for j in k], dtype=float)
+    tt = t[..., None]
+    return binom * tt ** k * (1 - tt) ** (n - k)
+
+
+# --------------------------------------------------------------------------------------------
+# §29.4 fractals with control points
+# --------------------------------------------------------------------------------------------
+
+def fractal_matrices(middle: float = 0.5, a: float = 0.5, b: float = 0.5) -> tuple[np.ndarray, np.ndarray]:
+    """A family of 3x3 subdivision-like matrices with rows summing to one (Goldman §29.4).
+
+    ``L = [[1, 0, 0], [1-a, a, 0], [u, v, w]]`` and ``R = [[u, v, w], [0, b, 1-b], [0, 0, 1]]`` with
+    ``v = middle`` and ``u = w = (1 - v)/2``.  Row 0 of L and row 2 of R fix the end control points,
+    and L's last row equals R's first, so the two pieces of the attractor meet: the attractor is a
+    curve from ``P0`` to ``P2``.  ``middle = a = b = 1/2`` gives the quadratic Bezier matrices;
+    other values give fractal curves (de Rham curves) that move with the control points.
+
+    >>> L, R = fractal_matrices()
+    >>> np.allclose(L, bezier_subdivision_matrices(2)[0]) and np.allclose(R, bezier_subdivision_matrices(2)[1])
+    True
+    """
+    v = as_float(middle, "middle")
+    a = as_float(a, "a")
+    b = as_float(b, "b")
+    u = (1 - v) / 2
+    L = np.array([[1.0, 0, 0], [1 - a, a, 0], [u, v, u]])
+    R = np.array([[u, v, u], [0, b, 1 - b], [0, 0, 1.0]])
+    return L, R
+
+
+def sierpinski_matrices() -> np.ndarray:
+    """The three matrices ``S_k = (I + 1 e_k^T) / 2`` whose attractor, with the control points of a
+    triangle, is the Sierpinski gasket of that triangle (Goldman §29.4): row i of ``S_k`` is the
+    midpoint of vertex i and vertex k.  Returns ``(3, 3, 3)``.
+
+    >>> (sierpinski_matrices()[0] * 2).tolist()
+    [[2.0, 0.0, 0.0], [1.0, 1.0, 0.0], [1.0, 0.0, 1.0]]
+    """
+    eye = np.eye(3)
+    return np.stack([(eye + np.outer(np.ones(3), eye[k])) / 2 for k in range(3)])
+
+
+def control_point_ifs(ctrl, matrices, name: str = "") -> ifs.IFS:
+    """The IFS ``{P^-1 M_k P}`` of matrices with rows summing to one and three control points in the
+    plane, as a :class:`goldman_lib.ifs.IFS` (Goldman §29.4).
+
+    ctrl: ``(3, 2)`` control points, not collinear (``P = [ctrl | 1]`` must be invertible).
+    matrices: ``(k, 3, 3)`` (or a pair ``(L, R)``), each with rows summing to one.  Moving the control
+    points moves the attractor by the affine map between the old and new control triangles.
+    Raises ValueError for collinear control points or a row that does not sum to one.
+
+    >>> from goldman_lib import ifs
+    >>> system = control_point_ifs([[0, 0], [1, 2], [2, 0]], fractal_matrices())
+    >>> ifs.deterministic(system, 1, start=[[0, 0], [2, 0]]).tolist()
+    [[0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]]
+    """
+    P0 = as_points(ctrl, "ctrl", ndim=2, dim=2)
+    if len(P0) != 3:
+        raise ValueError(f"ctrl must hold 3 control points for 3x3 maps of the plane; got {len(P0)}")
+    mats = [check_rows_sum_to_one(M, f"matrices[{k}]") for k, M in enumerate(np.asarray(matrices, dtype=float))]
+    for k, M in enumerate(mats):
+        if M.shape != (3, 3):
+            raise ValueError(f"matrices[{k}] must be 3x3; got shape {M.shape}")
+    P = np.column_stack([P0, np.ones(3)])
+    if abs(np.linalg.det(P)) < 1e-12 * max(1.0, np.abs(P0).max() ** 2):
+        raise ValueError("ctrl must not be collinear: the matrix [P | 1] of the control points must be invertible")
+    Pinv = np.linalg.inv(P)
+    maps = np.stack([Pinv @ M @ P for M in mats])
+    maps[:, :, 2] = [0.0, 0.0, 1.0]  # exact affine form (rows of M sum to one)
+    return ifs.IFS(maps, name=name)
