@@ -12,6 +12,12 @@ condensation set ``C`` it is ``A = C ∪ w_1(A) ∪ ... ∪ w_k(A)`` (§6.4).  T
   again.  Many independent points move at once (numpy), each starting at the fixed point of the
   first map, which lies on the attractor, so every point returned lies on the attractor.
 
+§6.2 in code: the *set map* ``W(A) = w_1(A) ∪ ... ∪ w_k(A)`` is :func:`set_map`; the attractor is
+its fixed point, and each map's own fixed point (:meth:`IFS.fixed_points`) lies on it.
+:func:`iterate_map` iterates one transformation on a start shape (§6.1), :meth:`IFS.contraction_factors`
+says whether the theorem of chapter 7 applies, and :func:`chaos_game_with_maps` also tells which
+map moved each point last (which piece ``w_i(A)`` of the attractor it lies in).
+
 Ready-made systems: :func:`sierpinski`, :func:`koch`, :func:`barnsley_fern`, :func:`dragon`,
 :func:`c_curve`, :func:`tree` (with a trunk as condensation set), :func:`sierpinski_carpet`,
 :func:`cantor`; :data:`STANDARD` maps their names to the constructors.
@@ -32,7 +38,7 @@ import numpy as np
 from . import affine
 from .validation import as_int, as_points, check_finite
 
-__all__ = ["IFS", "deterministic", "chaos_game", "map_images", "UNIT_SQUARE", "MAX_POINTS", "STANDARD",
+__all__ = ["IFS", "deterministic", "chaos_game", "chaos_game_with_maps", "map_images", "set_map", "iterate_map", "UNIT_SQUARE", "MAX_POINTS", "STANDARD",
            "sierpinski", "koch", "barnsley_fern", "dragon", "c_curve", "tree", "sierpinski_carpet", "cantor"]
 
 #: The most points :func:`deterministic` or :func:`chaos_game` will produce (memory guard).
@@ -114,6 +120,23 @@ class IFS:
         maps are contractions.  Raises ValueError if a map has no unique fixed point."""
         return np.array([affine.fixed_point(M) for M in self.maps])
 
+    def contraction_factors(self) -> np.ndarray:
+        """``(k,)`` contraction factor of each map: the spectral norm of its linear part, the most
+        it stretches any distance (Goldman §7.3.3).  A map is a contraction iff its factor is < 1.
+
+        >>> sierpinski().contraction_factors().tolist()
+        [0.5, 0.5, 0.5]
+        """
+        return np.linalg.svd(self.linear_parts, compute_uv=False)[:, 0]
+
+    def is_contractive(self) -> bool:
+        """True if every map is a contraction (factor < 1), so the IFS has a unique attractor.
+
+        >>> sierpinski().is_contractive(), IFS([affine.rotation(30)]).is_contractive()
+        (True, False)
+        """
+        return bool(np.all(self.contraction_factors() < 1.0))
+
     def __repr__(self) -> str:
         extra = ", with condensation" if self.condensation is not None else ""
         return f"IFS({self.name or 'unnamed'!r}, {len(self)} maps{extra})"
@@ -179,14 +202,17 @@ def deterministic(system, levels, start=None) -> np.ndarray:
     return pts
 
 
-def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096) -> np.ndarray:
+def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096,
+               with_condensation: bool = False) -> np.ndarray:
     """The random algorithm (chaos game) for the attractor of an IFS (Goldman §6.3).
 
     ``chains`` points move at once; at each step each is replaced by its image under a map
     chosen at random with the IFS's probabilities.  Every chain starts at the fixed point of the
     first map, which lies on the attractor, and the first ``burn_in`` steps are discarded as well,
     so every point returned lies on the attractor (up to rounding).  The condensation set, if
-    any, is not used (it belongs to the deterministic algorithm, §6.4).
+    any, is not used unless ``with_condensation`` (§6.4): then at each step a point jumps, with
+    probability ``1/(k+1)``, to a random point of the condensation polyline ``C`` instead; since
+    ``C`` lies in the attractor ``A = C ∪ W(A)``, every point still lies on it.
 
     system: an :class:`IFS`.  n: number of points (1 <= n <= MAX_POINTS).  rng: a
     ``numpy.random.Generator``, an int seed or None.  Returns ``(n, 2)``.
@@ -194,6 +220,24 @@ def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096) ->
 
     >>> chaos_game(sierpinski(), 4, rng=0).shape
     (4, 2)
+    """
+    pts, _ = chaos_game_with_maps(system, n, rng, burn_in=burn_in, chains=chains,
+                                  with_condensation=with_condensation)
+    return pts
+
+
+def chaos_game_with_maps(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096,
+                         with_condensation: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """The chaos game (Goldman §6.3), also returning which map moved each point last.
+
+    Same arguments and points as :func:`chaos_game`.  Returns ``(points (n, 2), maps (n,))``:
+    ``maps[j] = i`` means point ``j`` is ``w_i`` of a point of the attractor, so it lies in the
+    piece ``w_i(A)`` (``i = k`` marks a point of the condensation set).  Colouring by ``maps``
+    shows the attractor as the union of its images, ``A = w_1(A) ∪ ... ∪ w_k(A)``.
+
+    >>> pts, maps = chaos_game_with_maps(sierpinski(), 1000, rng=1)
+    >>> bool(np.all(pts[maps == 0] <= 0.5 + 1e-12))   # w_0(A) is the lower-left half-size copy
+    True
     """
     s = _as_ifs(system)
     n = as_int(n, "n", minimum=1, maximum=MAX_POINTS)
@@ -206,10 +250,18 @@ def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096) ->
         start = affine.fixed_point(s.maps[0])
     except ValueError:
         start = np.zeros(2)
-    idx = gen.choice(k, size=(burn_in + steps, chains), p=s.probabilities)
     L, t = s.linear_parts, s.translations
     a, b, c, d = L[:, 0, 0], L[:, 0, 1], L[:, 1, 0], L[:, 1, 1]
     e, f = t[:, 0], t[:, 1]
+    C = s.condensation if with_condensation else None
+    if C is None:
+        idx = gen.choice(k, size=(burn_in + steps, chains), p=s.probabilities)
+    else:
+        p = np.append(s.probabilities * k / (k + 1), 1.0 / (k + 1))
+        idx = gen.choice(k + 1, size=(burn_in + steps, chains), p=p)
+        # the "condensation map" sends a point to a uniformly random point of the polyline C
+        cpts = _sample_polyline(C, (burn_in + steps, chains), gen)
+        a, b, c, d, e, f = (np.append(v, 0.0) for v in (a, b, c, d, e, f))
     x = np.full(chains, start[0])
     y = np.full(chains, start[1])
     out = np.empty((steps, 2, chains))
@@ -217,6 +269,10 @@ def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096) ->
         for step in range(burn_in + steps):
             i = idx[step]
             x, y = x * a[i] + y * c[i] + e[i], x * b[i] + y * d[i] + f[i]
+            if C is not None:
+                jump = i == k
+                x[jump] = cpts[step, jump, 0]
+                y[jump] = cpts[step, jump, 1]
             if step >= burn_in:
                 out[step - burn_in, 0] = x
                 out[step - burn_in, 1] = y
@@ -224,7 +280,59 @@ def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096) ->
     if not np.all(np.isfinite(pts)):
         raise ValueError("the chaos game's points escaped to infinity: the maps must be contractions "
                          "(every map shrinks distances)")
-    return pts
+    return pts, idx[burn_in:].reshape(-1)[:n].astype(np.intp)
+
+
+def _sample_polyline(C: np.ndarray, shape, gen: np.random.Generator) -> np.ndarray:
+    """Uniform random points on the polyline ``C`` (by arc length; a single point if C is one)."""
+    if len(C) == 1:
+        return np.broadcast_to(C[0], tuple(shape) + (2,))
+    seg = np.linalg.norm(np.diff(C, axis=0), axis=1)
+    total = seg.sum()
+    if total == 0:
+        return np.broadcast_to(C[0], tuple(shape) + (2,))
+    cum = np.concatenate([[0.0], np.cumsum(seg)])
+    u = gen.random(shape) * total
+    j = np.clip(np.searchsorted(cum, u, side="right") - 1, 0, len(seg) - 1)
+    frac = np.where(seg[j] > 0, (u - cum[j]) / np.where(seg[j] > 0, seg[j], 1.0), 0.0)
+    return C[j] + frac[..., None] * (C[j + 1] - C[j])
+
+
+def set_map(system, points) -> np.ndarray:
+    """One application of the set map ``W(A) = w_1(A) ∪ ... ∪ w_k(A)`` (Goldman §6.2), or
+    ``C ∪ W(A)`` with a condensation set ``C`` (§6.4).
+
+    The attractor is the fixed point of ``W``: ``W(A) = A``.  points: ``(m, 2)``, a finite sample
+    of a set.  Returns ``(k*m, 2)`` (after ``len(C)`` condensation points if any), the copies in
+    blocks of ``m``, map by map.  Equivalent to ``deterministic(system, 1, start=points)``.
+
+    >>> set_map(cantor(), [[0, 0], [1, 0]]).tolist()
+    [[0.0, 0.0], [0.3333333333333333, 0.0], [0.6666666666666667, 0.0], [1.0, 0.0]]
+    """
+    return deterministic(system, 1, start=points)
+
+
+def iterate_map(M, shape, n) -> np.ndarray:
+    """Iterate one affine transformation on a start shape (Goldman §6.1): ``shape, M(shape),
+    M(M(shape)), ...``, ``n + 1`` shapes in all.
+
+    M: 3x3 affine matrix.  shape: ``(m, 2)`` points.  n: int >= 0.  Returns ``(n + 1, m, 2)``.
+    For a contraction the shapes shrink towards the map's fixed point.
+
+    >>> iterate_map(affine.scaling(0.5, center=[2, 0]), [[0, 0]], 3)[:, 0].tolist()
+    [[0.0, 0.0], [1.0, 0.0], [1.5, 0.0], [1.75, 0.0]]
+    """
+    M = affine.as_affine(M)
+    if M.ndim != 2:
+        raise ValueError(f"M must be one 3x3 matrix; got shape {M.shape}")
+    P = as_points(shape, "shape", dim=2)
+    n = as_int(n, "n", minimum=0, maximum=100_000)
+    out = np.empty((n + 1,) + P.shape)
+    out[0] = P
+    L, t = M[:2, :2], M[2, :2]
+    for j in range(n):
+        out[j + 1] = out[j] @ L + t
+    return out
 
 
 def map_images(system, shape=None) -> np.ndarray:
