@@ -72,7 +72,9 @@ def plot_bspline(ctrl, knots, degree, ax=None, samples: int = _SAMPLES, color=No
     ctrl = as_points(ctrl, "ctrl", dim=2)
     ax = style.get_axes(ax)
     pts = _curve_points(ctrl, knots, int(degree), samples)
-    (line,) = ax.plot(pts[:, 0], pts[:, 1], color=color or style.PALETTE["curve"], linewidth=2.2, **kwargs)
+    kw = dict(linewidth=2.2)
+    kw.update(kwargs)
+    (line,) = ax.plot(pts[:, 0], pts[:, 1], color=color or style.PALETTE["curve"], **kw)
     return line
 
 
