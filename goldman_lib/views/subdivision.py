@@ -124,14 +124,14 @@ def subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_dep
     own parameter ``t``, and the 2**depth control polygons closing in on the curve.
 
     ``update(depth, t)`` returns the control polygons (2**depth, n+1, 2) and the largest distance
-    from their points to the curve.
+    ``|P_k - piece(k/n)|`` from a control point of a piece to the piece's point at k/n.
     """
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
     max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=8)
     fig, ax = style.new_axes()
     plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
-    curve_line = plot_curve(ctrl, ax, samples=400)
-    crv = np.column_stack(curve_line.get_data())
+    plot_curve(ctrl, ax, samples=400)
+    greville = np.arange(len(ctrl)) / (len(ctrl) - 1)
     pieces = plot_pieces(_split_recursively(ctrl, depth, t), ax)
     (joints,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=4, zorder=4)
     _limits(ax, ctrl, pad=0.3)
@@ -143,11 +143,10 @@ def subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_dep
         pieces.set_color([(style.LEVELS[0], style.LEVELS[3])[k % 2] for k in range(len(polys))])
         ends = np.concatenate([polys[:, 0], polys[-1:, -1]])
         joints.set_data(ends[:, 0], ends[:, 1])
-        pts = polys.reshape(-1, 2)
-        gap = float(np.sqrt(((pts[:, None, :] - crv[None]) ** 2).sum(-1)).min(1).max())
+        gap = float(np.linalg.norm(polys - np.stack([bezier.de_casteljau(p, greville) for p in polys]), axis=-1).max())
         return {"polygons": polys, "gap": gap,
-                "status": f"depth {depth}: {len(polys)} pieces split at t = {t:.2f}; farthest control point "
-                          f"{gap:.3f} from the curve"}
+                "status": f"depth {depth}: {len(polys)} pieces split at t = {t:.2f}; control points within "
+                          f"{gap:.4f} of the curve (P_k vs the piece at k/n)"}
 
     depth = as_int(depth, "depth", minimum=0, maximum=max_depth)
     controls = {"depth": int_slider("depth", depth, 0, max_depth),
@@ -232,12 +231,23 @@ def intersection_view(case: str = "two cubics, three crossings", level: int = 3,
     boxes_b = plot_boxes(np.zeros((0, 2, 2)), ax, color=style.PALETTE["good"])
     (hits,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=8, zorder=5)
     samples = np.linspace(0.0, 1.0, 200)
-    lim = np.concatenate([np.concatenate(pair) for pair in INTERSECTION_EXAMPLES.values()])
-    ax.set_xlim(lim[:, 0].min() - 0.3, lim[:, 0].max() + 0.3)
-    ax.set_ylim(lim[:, 1].min() - 1.3, lim[:, 1].max() + 1.3)
+    shown = [case]
+    ax.set_aspect("equal", adjustable="datalim")
+
+    def frame(a, b):
+        # the view fits both curves over the whole shift range, so it does not jump while shifting
+        pts = [bezier.de_casteljau(a, samples)] + [bezier.de_casteljau(b, samples) + [0.0, dy] for dy in (-1.0, 1.0)]
+        pts = np.concatenate(pts)
+        ax.set_xlim(pts[:, 0].min() - 0.3, pts[:, 0].max() + 0.3)
+        ax.set_ylim(pts[:, 1].min() - 0.3, pts[:, 1].max() + 0.3)
+
+    frame(a0, b0)
 
     def update(case, level, shift):
         a, b = INTERSECTION_EXAMPLES[case]
+        if case != shown[0]:
+            frame(a, b)
+            shown[0] = case
         b = b + np.array([0.0, shift])
         for line, P in ((pa, a), (pb, b)):
             line.set_data(P[:, 0], P[:, 1])
@@ -284,7 +294,8 @@ def patch_rendering_view(ctrl=DEFAULT_PATCH_25, digits: int = 1) -> InteractiveV
     xy = net.reshape(-1, 3)
     ax_top.set_xlim(xy[:, 0].min() - 0.1, xy[:, 0].max() + 0.1)
     ax_top.set_ylim(xy[:, 1].min() - 0.1, xy[:, 1].max() + 0.1)
-    zmin, zmax = float(xy[:, 2].min()), float(xy[:, 2].max())
+    heights = bezier.patch_grid(net, 9, 9)[..., 2]
+    zmin, zmax = float(heights.min()), float(heights.max())
     quads.set_clim(zmin, zmax if zmax > zmin else zmin + 1)
     ax_top.set_title("the flat pieces from above (colour: height)", fontsize=10)
     ax_top.set_xticks([])
