@@ -134,16 +134,18 @@ def _check_refinement(t: np.ndarray, tau: np.ndarray, p: int) -> None:
 
 def _boehm_once(P: np.ndarray, t: np.ndarray, p: int, u: float):
     """Insert u once; returns (Q, tau, k, replaced) where Q[k-p+1..k] are the new points."""
-    k = int(_domain_spans(t, p, np.asarray(u)))
     n = P.shape[0] - 1
+    lo_k = int(t.searchsorted(t[p], "right")) - 1             # first non-empty span of the domain
+    hi_k = int(t.searchsorted(t[n + 1], "left")) - 1          # last one
+    k = min(max(int(t.searchsorted(u, "right")) - 1, lo_k), hi_k)
     Q = np.empty((n + 2, P.shape[1]))
     Q[:k - p + 1] = P[:k - p + 1]
     Q[k + 1:] = P[k:]
     i = np.arange(k - p + 1, k + 1)
-    if i.size:
-        a = ((u - t[i]) / (t[i + p] - t[i]))[:, None]
-        Q[i] = (1.0 - a) * P[i - 1] + a * P[i]
-    tau = np.insert(t, k + 1, u)
+    if p:
+        a = ((u - t[k - p + 1:k + 1]) / (t[k + 1:k + p + 1] - t[k - p + 1:k + 1]))[:, None]
+        Q[k - p + 1:k + 1] = P[k - p:k] + a * (P[k - p + 1:k + 1] - P[k - p:k])
+    tau = np.concatenate((t[:k + 1], (u,), t[k + 1:]))
     return Q, tau, k, i
 
 
