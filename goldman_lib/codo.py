@@ -748,8 +748,8 @@ class _Interpreter:
                       CodoTypeError)
         x = self.settle(self.eval(args[0]), args[0])
         if isinstance(x, _Mass):
-            L, t = M[:2, :2], M[2, :2]
-            return _Mass(x.x * L[0, 0] + x.y * L[1, 0] + x.w * t[0], x.x * L[0, 1] + x.y * L[1, 1] + x.w * t[1], x.w)
+            (a, b, _), (c, d, _), (e, f, _) = M.tolist()
+            return _Mass(x.x * a + x.y * c + x.w * e, x.x * b + x.y * d + x.w * f, x.w)
         if isinstance(x, Figure):
             return Figure(tuple(p @ M[:2, :2] + M[2, :2] for p in x.polylines))
         self.fail(f"a map applies to a point, a vector or a figure; {self.snippet(args[0])} is {_describe(x)}",
