@@ -51,15 +51,18 @@ def plot_blossom_diagram(ctrl, args, ax=None, labels: bool = True):
     if labels:
         for r, level in enumerate(steps):
             for k, p in enumerate(level):
-                texts.append(ax.annotate(blossom_label(n, r, k), p, textcoords="offset points", xytext=(4, 4),
-                                         fontsize=8, color=style.level_colour(r) if r else "#444444"))
+                # the control polygon labelled above its points, the levels below theirs
+                texts.append(ax.annotate(blossom_label(n, r, k), p, textcoords="offset points",
+                                         xytext=(5, 5) if r == 0 else (5, -12), fontsize=8,
+                                         color=("#444444" if r == 0 else style.PALETTE["point"] if r == n
+                                                else style.level_colour(r))))
     (pt,) = ax.plot(*steps[-1][0], "o", color=style.PALETTE["point"], markersize=9, zorder=5)
     return lines, texts, pt
 
 
-def blossom_view(ctrl=DEFAULT_CUBIC, args=(0.2, 0.5, 0.8), low: float = -0.25, high: float = 1.25) -> InteractiveView:
+def blossom_view(ctrl=DEFAULT_CUBIC, args=(0.2, 0.5, 0.8), low: float = 0.0, high: float = 1.0) -> InteractiveView:
     """Sliders for the blossom's arguments ``u_1, ..., u_n`` over its de Casteljau-like diagram
-    (Goldman §26.2-26.3): level r of the pyramid uses ``u_r``, every point is a blossom value
+    (Goldman §26.2-26.3), each slider over ``[low, high]``: level r of the pyramid uses ``u_r``, every point is a blossom value
     labelled by its arguments, and the apex is ``p(u_1, ..., u_n)``.  Equal arguments give a point
     of the curve (the diagonal); swapping two sliders leaves the apex where it is (symmetry).
 
@@ -73,12 +76,13 @@ def blossom_view(ctrl=DEFAULT_CUBIC, args=(0.2, 0.5, 0.8), low: float = -0.25, h
     fig, ax = style.new_axes()
     plot_control_polygon(P, ax, labels=False)
     plot_curve(P, ax, alpha=0.5)
-    ext = bezier.de_casteljau(P, np.linspace(low, high, 200))
-    ax.plot(ext[:, 0], ext[:, 1], ":", color=style.PALETTE["curve"], linewidth=1)
     lines, texts, apex = plot_blossom_diagram(P, args, ax)
-    ax.set_xlim(ext[:, 0].min() - 0.5, ext[:, 0].max() + 0.8)
-    ax.set_ylim(min(ext[:, 1].min(), P[:, 1].min()) - 0.4, max(ext[:, 1].max(), P[:, 1].max()) + 0.5)
-    ax.set_title("the blossom p(u₁, ..., uₙ) by de Casteljau", fontsize=10)
+    # every blossom value with arguments in [low, high] lies in the hull of the curve's control
+    # points over [low, high]: frame that
+    hull = bl.control_points_on_interval(P, low, high)
+    ax.set_xlim(hull[:, 0].min() - 0.4, hull[:, 0].max() + 0.8)
+    ax.set_ylim(hull[:, 1].min() - 0.5, hull[:, 1].max() + 0.5)
+    ax.set_title("the blossom p(u₁, ..., uₙ): de Casteljau, one u per level", fontsize=10)
     names = [f"u{j + 1}" for j in range(n)]
 
     def update(**values):
