@@ -146,10 +146,11 @@ def test_boehm_steps_replace_p_minus_1_points_by_p():
     steps = ki.boehm_steps(ctrl, knots, 3, 0.25, 2)
     assert len(steps) == 3
     first = steps[1]
-    assert first["replaced"].tolist() == [2, 3][:2] or len(first["replaced"]) == 2  # p - 1 = 2 old points go
-    assert len(first["new"]) == 3                                                      # p = 3 new points come
-    # the kept points are old points: before the span unchanged, after it shifted by one
     k = first["span"]
+    assert k == 3                                    # t_3 = 0 <= 0.25 < t_4 = 0.5
+    assert first["replaced"].tolist() == [1, 2]      # p - 1 = 2 old points go
+    assert first["new"].tolist() == [1, 2, 3]        # p = 3 new points come
+    # the kept points are old points: before the span unchanged, after it shifted by one
     np.testing.assert_array_equal(first["ctrl"][:k - 3 + 1], ctrl[:k - 3 + 1])
     np.testing.assert_array_equal(first["ctrl"][k + 1:], ctrl[k:])
     np.testing.assert_allclose(steps[-1]["ctrl"], ki.boehm_insert(ctrl, knots, 3, 0.25, 2)[0])
@@ -276,6 +277,20 @@ def test_variation_diminishing(curve, offset, angle, seed):
     if tau is not None:
         refined = ki.oslo(ctrl, knots, p, tau)
         assert crossings((refined - point) @ normal) <= ref_poly_count
+
+
+@FAST
+@given(curves(dims=(2,), simple=True), st.floats(-3, 3), st.floats(0, 180))
+def test_subdivision_levels_never_add_crossings(curve, offset, angle):
+    ctrl, knots, p = curve
+    normal = np.array([np.cos(np.radians(angle)), np.sin(np.radians(angle))])
+    point = offset * normal
+    counts = [crossings((ctrl - point) @ normal)]
+    Q, t = ctrl, knots
+    for _ in range(3):
+        Q, t = ki.schaefer(Q, t, p, 1)
+        counts.append(crossings((Q - point) @ normal))
+    assert all(b <= a for a, b in zip(counts, counts[1:])), counts
 
 
 def test_variation_diminishing_example():
