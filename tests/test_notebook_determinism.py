@@ -22,20 +22,21 @@ spec.loader.exec_module(execute_notebooks)
 
 
 def text_outputs(nb):
-    """[(cell index, output kind, text)] for every text output of every code cell."""
+    """[(cell index, output kind, text)] for every text output of every code cell (consecutive
+    stream chunks merged: how a kernel splits printing into messages depends on timing)."""
     found = []
     for i, cell in enumerate(nb.cells):
         if cell.cell_type != "code":
             continue
-        for out in cell.get("outputs", []):
-            if out.output_type == "stream":
-                found.append((i, out.name, out.text))
-            elif out.output_type == "error":
-                found.append((i, "error", f"{out.ename}: {out.evalue}"))
+        for out in execute_notebooks.coalesce_streams([dict(o) for o in cell.get("outputs", [])]):
+            if out["output_type"] == "stream":
+                found.append((i, out["name"], out["text"]))
+            elif out["output_type"] == "error":
+                found.append((i, "error", f"{out['ename']}: {out['evalue']}"))
             else:
                 for kind in TEXT_TYPES:
                     if kind in out.get("data", {}):
-                        text = out.data[kind]
+                        text = out["data"][kind]
                         found.append((i, kind, "".join(text) if isinstance(text, list) else text))
     return found
 
