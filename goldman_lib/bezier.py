@@ -1201,7 +1201,7 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
        whose control-point bounding boxes do not overlap: by the convex-hull property the
        pieces cannot meet.
     2. When both pieces of a pair are flat -- close to their chords *and* evenly parametrised,
-       :func:`flatness` with ``even=True``, relative tolerance 1e-4 -- intersect the chords;
+       :func:`flatness` with ``even=True``, relative tolerance 1e-3 -- intersect the chords;
        the chord parameters approximate the curves'.  Otherwise halve both pieces and go on.
     3. Polish every guess by Newton's method on ``a(s) - b(t) = 0`` over the whole curves
        (least-squares steps kept inside [0, 1]^2, so tangential contacts converge too), keep
@@ -1232,7 +1232,7 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=60)
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
     guesses = [np.array([[0.0, 0.0], [0.0, 1.0], [1.0, 0.0], [1.0, 1.0]])]
-    for _, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-4 * scale,
+    for _, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-3 * scale,
                                                   max_depth=max_depth, max_pairs=20000):
         if flat.any():
             guesses.append(_chord_guesses(pa[flat], pb[flat], ia[flat], ib[flat]))
@@ -1270,7 +1270,7 @@ def intersection_boxes(a, b, level) -> tuple[np.ndarray, np.ndarray, np.ndarray,
     level = as_int(level, "level", minimum=0, maximum=30)
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
     kept_a, kept_b, kept_ia, kept_ib = [], [], [], []
-    for lv, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-4 * scale,
+    for lv, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-3 * scale,
                                                    max_depth=level, max_pairs=20000):
         take = slice(None) if lv == level else flat
         kept_a.append(pa[take])
