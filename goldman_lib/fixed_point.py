@@ -138,8 +138,8 @@ def newton(f, df, x0, *, tol: float = 1e-12, max_iter: int = 50, full_output: bo
     horizontal), a **cycle** (the iterates repeat, e.g. ``x^3 - 2x + 2`` from 0: 0, 1, 0, 1, ...),
     and **divergence** (the iterates run off, e.g. ``arctan`` started beyond 1.39).
 
-    f, df: functions of a float.  x0: the start.  Converged when ``|f(x)| <= tol`` or the step
-    is below ``tol * max(1, |x|)``.  Returns the root, or ``(x, Convergence)`` with
+    f, df: functions of a float.  x0: the start.  Converged when ``f(x) = 0`` or a step is below
+    ``tol * max(1, |x|)`` (quadratic convergence then leaves the root correct to rounding).  Returns the root, or ``(x, Convergence)`` with
     ``full_output`` (no exception then).  Raises ConvergenceError naming the failure otherwise.
 
     >>> newton(lambda x: x**3 - 2*x + 2, lambda x: 3*x**2 - 2, 0.0)
@@ -175,7 +175,7 @@ def newton_steps(f, df, x0, *, tol: float = 1e-12, max_iter: int = 50) -> Conver
         if not (math.isfinite(fx) and math.isfinite(dfx)):
             reason, message = "diverged", f"f(x) is not finite at x = {x:.6g}"
             break
-        if abs(fx) <= tol:
+        if fx == 0.0:
             reason, message = "converged", ""
             break
         if len(history) > max_iter:
@@ -202,7 +202,7 @@ def newton_steps(f, df, x0, *, tol: float = 1e-12, max_iter: int = 50) -> Conver
             cyc = ", ".join(f"{v:.6g}" for v in history[-period - 1:-1])
             reason, message = "cycle", f"the iterates cycle with period {period}: {cyc}, ..."
             break
-        if len(history) > 8 and abs(x) > 1e8 * max(1.0, abs(history[0])) and abs(x) > abs(history[-2]):
+        if abs(x) > 1e6 * max(1.0, abs(history[0])) and abs(x) > 10 * abs(history[-2]):
             reason, message = "diverged", f"the iterates run off to infinity (x = {x:.3g})"
             break
     return Convergence(x, reason == "converged", reason, len(history) - 1, np.array(history, dtype=float),
@@ -368,13 +368,26 @@ _CHUNK = 2048
 
 def _nearest_sq(A: np.ndarray, B: np.ndarray) -> np.ndarray:
     """For each row of A, the squared distance to the nearest row of B (chunked, so memory
-    stays at ``_CHUNK * len(B)`` floats)."""
+    stays at ``_CHUNK * len(B)`` floats).
+
+    The expansion ``|a|^2 - 2 a.b + |b|^2`` is fast but loses digits when ``a`` is close to ``b``;
+    so it only picks the candidates (within its rounding error of the minimum), whose distances
+    are then recomputed exactly from ``a - b``.
+    """
     out = np.empty(len(A))
     b2 = np.einsum("ij,ij->i", B, B)
+    eps = 8 * np.finfo(float).eps
     for start in range(0, len(A), _CHUNK):
         a = A[start:start + _CHUNK]
-        d2 = np.einsum("ij,ij->i", a, a)[:, None] - 2.0 * (a @ B.T) + b2[None, :]
-        out[start:start + _CHUNK] = np.maximum(d2.min(axis=1), 0.0)
+        a2 = np.einsum("ij,ij->i", a, a)
+        d2 = a2[:, None] - 2.0 * (a @ B.T) + b2[None, :]
+        band = d2.min(axis=1) + eps * (a2 + b2.max()) + 1e-300
+        rows, cols = np.nonzero(d2 <= band[:, None])
+        diff = a[rows] - B[cols]
+        exact = np.einsum("ij,ij->i", diff, diff)
+        best = np.full(len(a), np.inf)
+        np.minimum.at(best, rows, exact)
+        out[start:start + _CHUNK] = best
     return out
 
 

@@ -369,7 +369,7 @@ def _condensation_copies(s: ifs.IFS, levels: int) -> np.ndarray:
     k = len(s)
     while levels > 0 and _count(k, 1, C, levels) > _MAX_DETERMINISTIC:
         levels -= 1
-    copies = [C]
+    copies = [C[None]]
     cur = C[None]
     for _ in range(levels):
         cur = np.matmul(cur[None], s.linear_parts[:, None]) + s.translations[:, None, None, :]

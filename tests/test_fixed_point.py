@@ -1,0 +1,156 @@
+"""goldman_lib.fixed_point (Goldman §7.2-7.3) against independent references: scipy's directed
+Hausdorff distance, numpy.linalg.solve, scipy.optimize.brentq, known roots written out, the
+spectral norm by numpy.linalg.norm(L, 2), and the fractal theorem's bound measured per level."""
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from hypothesis.extra.numpy import arrays
+from scipy.optimize import brentq
+from scipy.spatial.distance import directed_hausdorff as scipy_directed
+
+from goldman_lib import affine, ifs
+from goldman_lib import fixed_point as fp
+
+points = st.integers(1, 40).flatmap(lambda n: arrays(float, (n, 2), elements=st.floats(-100, 100)))
+
+
+@settings(max_examples=60, deadline=None)
+@given(A=points, B=points)
+def test_hausdorff_matches_scipy(A, B):
+    expected = max(scipy_directed(A, B)[0], scipy_directed(B, A)[0])
+    assert fp.hausdorff_distance(A, B) == pytest.approx(expected, rel=1e-9, abs=1e-9)
+    assert fp.directed_hausdorff(A, B) == pytest.approx(scipy_directed(A, B)[0], rel=1e-9, abs=1e-9)
+
+
+def test_newton_finds_known_roots():
+    assert fp.newton(lambda x: x * x - 2, lambda x: 2 * x, 1.0) == pytest.approx(1.4142135623730951, abs=1e-15)
+    assert fp.newton(lambda x: x ** 3 - 2, lambda x: 3 * x * x, 1.0) == pytest.approx(1.2599210498948732, abs=1e-15)
+    assert fp.newton(lambda x: x ** 3 + 8, lambda x: 3 * x * x, -1.0) == pytest.approx(-2.0, abs=1e-15)
+    assert fp.newton(math.cos, lambda x: -math.sin(x), 1.0) == pytest.approx(math.pi / 2, abs=1e-15)
+
+
+def test_newton_converges_quadratically_near_a_simple_root():
+    x, rep = fp.newton(lambda x: x * x - 2, lambda x: 2 * x, 1.0, full_output=True)
+    err = np.abs(rep.history - math.sqrt(2))
+    ratios = err[1:4] / err[:3] ** 2       # e_{n+1} / e_n^2 -> f''/(2 f') = 1/(2 sqrt 2)
+    assert rep.converged and rep.reason == "converged" and rep.iterations <= 6
+    assert ratios[-1] == pytest.approx(1 / (2 * math.sqrt(2)), rel=0.05)
+
+
+def test_newton_names_its_failures():
+    r = fp.newton_steps(lambda x: x * x - 2, lambda x: 2 * x, 0.0)
+    assert r.reason == "zero derivative" and not r.converged
+    r = fp.newton_steps(lambda x: x ** 3 - 2 * x + 2, lambda x: 3 * x * x - 2, 0.0)
+    assert r.reason == "cycle" and r.history.tolist() == [0.0, 1.0, 0.0]
+    r = fp.newton_steps(math.atan, lambda x: 1 / (1 + x * x), 1.5)
+    assert r.reason == "diverged" and abs(r.history[-1]) > 1e6
+    assert fp.newton(math.atan, lambda x: 1 / (1 + x * x), 1.3) == pytest.approx(0.0, abs=1e-15)
+    with pytest.raises(fp.ConvergenceError, match="cycle") as info:
+        fp.newton(lambda x: x ** 3 - 2 * x + 2, lambda x: 3 * x * x - 2, 0.0)
+    assert info.value.report.reason == "cycle"
+    x, rep = fp.newton(lambda x: x * x + 1, lambda x: 2 * x, 0.5, full_output=True, max_iter=30)
+    assert not rep.converged and rep.reason in {"max iterations", "cycle", "zero derivative", "diverged"}
+
+
+def test_fixed_point_iteration_against_brentq():
+    L = fp.fixed_point_iteration(math.cos, 1.0)
+    assert L == pytest.approx(brentq(lambda x: math.cos(x) - x, 0, 1, xtol=1e-15), abs=1e-11)
+    assert math.cos(L) == pytest.approx(L, abs=1e-11)          # the limit is a fixed point (§7.2)
+    v = fp.fixed_point_iteration(lambda p: affine.apply(p[None], affine.scaling(0.5, center=[2, 1]))[0], [0.0, 0.0])
+    np.testing.assert_allclose(v, [2, 1], atol=1e-11)
+    with pytest.raises(fp.ConvergenceError, match="diverge|grew"):
+        fp.fixed_point_iteration(lambda x: 2 * x + 1, 1.0, max_iter=2000)
+
+
+def dominant_system(n, seed):
+    rng = np.random.default_rng(seed)
+    A = rng.uniform(-1, 1, (n, n))
+    A += np.diag(np.abs(A).sum(axis=1) + rng.uniform(0.1, 2, n)) * np.sign(rng.uniform(-1, 1, n))
+    return A, rng.uniform(-5, 5, n)
+
+
+@pytest.mark.parametrize("solver", [fp.jacobi, fp.gauss_seidel], ids=["jacobi", "gauss_seidel"])
+@pytest.mark.parametrize("n,seed", [(1, 0), (2, 1), (5, 2), (20, 3), (60, 4)])
+def test_relaxation_matches_numpy_solve_to_machine_precision(solver, n, seed):
+    A, b = dominant_system(n, seed)
+    x, rep = solver(A, b, full_output=True)
+    expected = np.linalg.solve(A, b)
+    np.testing.assert_allclose(x, expected, rtol=1e-13, atol=1e-13 * np.abs(expected).max())
+    assert rep.converged and rep.residuals[-1] <= 1e-13 * np.abs(b).max() + 1e-300
+    assert len(rep.residuals) == rep.iterations + 1 and rep.history.shape == (rep.iterations + 1, n)
+
+
+def test_gauss_seidel_needs_fewer_iterations_than_jacobi():
+    A, b = dominant_system(30, 7)
+    _, rj = fp.jacobi(A, b, full_output=True)
+    _, rg = fp.gauss_seidel(A, b, full_output=True)
+    assert rg.iterations < rj.iterations
+
+
+def test_jacobi_first_step_is_b_over_the_diagonal():
+    A = np.array([[4.0, 1.0], [2.0, 5.0]])
+    _, rep = fp.jacobi(A, [1.0, 2.0], full_output=True)
+    np.testing.assert_allclose(rep.history[1], [1 / 4, 2 / 5])
+    _, rep = fp.gauss_seidel(A, [1.0, 2.0], full_output=True)
+    np.testing.assert_allclose(rep.history[1], [1 / 4, (2 - 2 * 0.25) / 5])
+
+
+def test_relaxation_reports_unsuitable_matrices():
+    with pytest.raises(ValueError, match=r"A\[1, 1\] = 0"):
+        fp.jacobi([[1.0, 2.0], [3.0, 0.0]], [1.0, 1.0])
+    with pytest.raises(ValueError, match="square"):
+        fp.gauss_seidel(np.ones((2, 3)), [1.0, 1.0])
+    with pytest.raises(ValueError, match="b must have one entry per row"):
+        fp.jacobi(np.eye(2), [1.0, 1.0, 1.0])
+    bad = [[1.0, 3.0], [2.0, 1.0]]      # not diagonally dominant: spectral radius of D^-1 R is sqrt(6)
+    with pytest.warns(RuntimeWarning, match="not diagonally dominant"):
+        with pytest.raises(fp.ConvergenceError, match="diverged|grew"):
+            fp.jacobi(bad, [1.0, 1.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        x, rep = fp.gauss_seidel(bad, [1.0, 1.0], full_output=True)
+    assert rep.reason == "diverged" and np.all(np.isfinite(x)) and "not diagonally dominant" in rep.message
+    assert fp.is_diagonally_dominant([[3, 1], [1, 3]]) and not fp.is_diagonally_dominant(bad)
+
+
+@settings(max_examples=50, deadline=None)
+@given(L=arrays(float, (2, 2), elements=st.floats(-3, 3)), t=arrays(float, (2,), elements=st.floats(-3, 3)))
+def test_contraction_factor_is_the_spectral_norm(L, t):
+    M = np.eye(3)
+    M[:2, :2], M[2, :2] = L, t
+    assert fp.contraction_factor(M) == pytest.approx(np.linalg.norm(L, 2), rel=1e-12, abs=1e-12)
+    assert fp.contraction_factor(L) == pytest.approx(np.linalg.norm(L, 2), rel=1e-12, abs=1e-12)
+
+
+def test_contraction_factor_closed_forms():
+    assert fp.contraction_factor(affine.similarity(0.3, 77, [4, 5])) == pytest.approx(0.3)
+    assert fp.contraction_factor(affine.scaling([0.2, -0.7])) == pytest.approx(0.7)
+    assert fp.contraction_factor(affine.shear(1.0)) == pytest.approx((1 + math.sqrt(5)) / 2)
+    np.testing.assert_allclose(fp.contraction_factor(ifs.sierpinski().maps), [0.5] * 3)
+    with pytest.raises(ValueError, match="3x3 affine matrix or a 2x2"):
+        fp.contraction_factor(np.eye(4))
+
+
+@pytest.mark.parametrize("name", ["Sierpinski gasket", "Koch curve", "dragon", "C-curve", "Cantor set"])
+@pytest.mark.parametrize("start", [[[5.0, -3.0]], [[0, 0], [1, 0], [1, 1], [0, 1]], [[-2, 2], [3, 1], [0.5, -1]]])
+def test_fractal_theorem_bound_holds_level_by_level(name, start):
+    s = ifs.STANDARD[name]()
+    levels = 6 if len(s) <= 3 else 4
+    r = fp.fractal_theorem(s, start, levels)
+    assert r.factor == pytest.approx(max(np.linalg.norm(L, 2) for L in s.linear_parts))
+    # the measured distance, recomputed by scipy, stays under s^n h(A0, A) (up to the sample's error)
+    for n in range(levels + 1):
+        d = max(scipy_directed(r.sets[n], r.attractor)[0], scipy_directed(r.attractor, r.sets[n])[0])
+        assert d == pytest.approx(r.distances[n], abs=1e-9)
+        assert d <= r.factor ** n * r.distances[0] + 2 * r.attractor_error + 1e-12
+    assert r.holds() and r.distances[-1] < r.distances[0]
+
+
+def test_fractal_theorem_rejects_expanding_maps():
+    with pytest.raises(ValueError, match="contraction"):
+        fp.fractal_theorem(ifs.IFS([affine.scaling(1.5)]), [[0, 0]], 2)

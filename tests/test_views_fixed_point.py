@@ -1,0 +1,40 @@
+"""Chapter 7 views: what they draw is the library's iteration, checked against closed forms."""
+
+import math
+
+import matplotlib.pyplot as plt
+import numpy as np
+
+from goldman_lib.views import fixed_point as views
+
+
+def test_newton_view_iterates_and_names_failures():
+    v = views.newton_view()
+    r = v.update(function="x^2 - 2", x0=1.0, steps=2)
+    np.testing.assert_allclose(r["xs"], [1.0, 1.5, 17 / 12])
+    r = v.update(function="x^2 - 2", x0=1.0, steps=8)
+    assert abs(r["xs"][-1] - math.sqrt(2)) < 1e-15 and "converged" in r["status"]
+    assert "cycle" in v.update(function="x^3 - 2x + 2 (cycles from 0)", x0=0.0, steps=6)["status"]
+    assert "diverged" in v.update(function="arctan x (diverges from |x0| > 1.39)", x0=1.5, steps=10)["status"]
+    assert "zero derivative" in v.update(function="x^2 - 2", x0=0.0, steps=3)["status"]
+    plt.close(v.figure)
+
+
+def test_relaxation_view_converges_to_the_solution_and_diverges_when_not_dominant():
+    v = views.relaxation_view()
+    r = v.update(method="Gauss-Seidel", steps=30, diagonal=3.0)
+    np.testing.assert_allclose(r["iterates"][-1], np.linalg.solve([[3, 1], [2, 3]], [1, 2]), atol=1e-12)
+    # Jacobi's first step is b / diag
+    np.testing.assert_allclose(v.update(method="Jacobi", steps=1, diagonal=4.0)["iterates"][1], [1 / 4, 2 / 4])
+    r = v.update(method="Jacobi", steps=30, diagonal=1.0)
+    assert r["residuals"][-1] > r["residuals"][1]
+    plt.close(v.figure)
+
+
+def test_fractal_theorem_view_reports_the_bound():
+    v = views.fractal_theorem_view()
+    r = v.update(system="Sierpinski gasket", start="a far-away point", level=4)
+    assert np.all(r["distances"] <= r["bounds"] + 0.05)
+    assert r["distances"][-1] < r["distances"][0] / 10
+    assert len(r["iterate"]) == 3 ** 4
+    plt.close(v.figure)

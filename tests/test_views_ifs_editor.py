@@ -1,0 +1,96 @@
+"""The IFS map editor draws what the library computes for the slider values: presets load every
+slider, the drawn attractor is the chaos game (or deterministic algorithm) of system_from_values,
+hidden rows follow the maps count, and non-contractive settings give a status, not a traceback."""
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from scipy.spatial.distance import directed_hausdorff
+
+from goldman_lib import affine, ifs
+from goldman_lib.views import ifs_editor as ed
+
+
+@pytest.fixture
+def view():
+    v = ed.ifs_editor(points=5000)
+    yield v
+    plt.close(v.figure)
+
+
+@pytest.mark.parametrize("name", sorted(ifs.STANDARD))
+def test_presets_round_trip_through_the_sliders(name):
+    s = ifs.STANDARD[name]()
+    back = ed.system_from_values(ed.values_from_system(name))
+    np.testing.assert_allclose(back.maps, s.maps, atol=1e-9)
+    np.testing.assert_allclose(back.probabilities, s.probabilities, atol=1e-9)
+    assert (back.condensation is None) == (s.condensation is None)
+
+
+def test_drawn_points_are_the_chaos_game_of_the_sliders(view):
+    result = view.load("Barnsley fern")
+    s = ed.system_from_values(view.values())
+    expected, labels = ifs.chaos_game_with_maps(s, view.values()["points"], rng=0)
+    np.testing.assert_array_equal(result["points"], expected)
+    np.testing.assert_array_equal(result["labels"], labels)
+    np.testing.assert_allclose(result["images"], ifs.map_images(s))
+    np.testing.assert_allclose(result["factors"], [np.linalg.norm(L, 2) for L in s.linear_parts])
+    drawn = np.concatenate([np.c_[line.get_xdata(), line.get_ydata()] for line in view.axes.lines[1:10]
+                            if len(line.get_xdata()) and line.get_linestyle() == "None"])
+    assert len(drawn) == len(expected)
+
+
+def test_a_slider_moves_one_map(view):
+    before = view.update(**view.values())
+    values = {**view.values(), "tx1": 0.9, "angle1": 30.0}
+    after = view.update(**values)
+    M = affine.from_parameters(angle=30, scale=(0.5, 0.5), translate=(0.9, 0.0))
+    np.testing.assert_allclose(after["images"][1], affine.apply(ifs.UNIT_SQUARE, M), atol=1e-12)
+    np.testing.assert_allclose(after["images"][0], before["images"][0])
+
+
+def test_deterministic_mode_and_level_cap(view):
+    values = {**view.values(), "algorithm": "deterministic", "levels": 5}
+    result = view.update(**values)
+    assert len(result["points"]) == 3 ** 5
+    gasket = ifs.deterministic(ifs.sierpinski(), 5)
+    assert directed_hausdorff(result["points"], gasket)[0] < 1e-9
+    capped = view.update(**{**values, "levels": 12})
+    assert len(capped["points"]) <= 100_000 and "capped" in capped["status"]
+
+
+def test_maps_count_and_hidden_rows(view):
+    view.set_values(maps=2, edit=2)
+    result = view.last_result
+    assert len(result["images"]) == 2
+    view.controls["maps"].value = 1          # like the "- map" button
+    assert view.controls["edit"].value == 1
+    assert len(view.last_result["images"]) == 1
+
+
+def test_non_contractive_maps_give_a_status_and_a_finite_drawing(view):
+    values = {**view.values(), "sx0": 1.0, "sy0": 1.0, "shear0": 1.0}
+    result = view.update(**values)
+    assert "not a contraction" in result["status"]
+    assert np.all(np.isfinite(result["points"])) and len(result["points"]) > 0
+    view.set_values(sx0=1.0, sy0=-1.0, shear0=-1.0, maps=8)
+    assert view.last_error is None
+
+
+def test_condensation_trunk_in_both_algorithms(view):
+    view.load("fractal tree")
+    assert view.values()["condensation"] == "trunk (0,0)-(0,1)"
+    chaos = view.last_result
+    assert np.any(chaos["labels"] == 2)           # points on the trunk
+    det = view.update(**{**view.values(), "algorithm": "deterministic", "levels": 4})
+    assert len(det["points"]) == 2 * (2 ** 5 - 1)
+
+
+def test_sweep_grid_is_safe_for_many_controls(view):
+    combos = view.sweep_values()
+    assert 400 < len(combos) < 2000 and all(set(c) == set(view.controls) for c in combos[:5])
+
+
+def test_too_many_maps_is_rejected():
+    with pytest.raises(ValueError, match="at most 2 maps"):
+        ed.values_from_system("Sierpinski gasket", max_maps=2)
