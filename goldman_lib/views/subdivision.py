@@ -232,7 +232,6 @@ def intersection_view(case: str = "two cubics, three crossings", level: int = 3,
     (hits,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=8, zorder=5)
     samples = np.linspace(0.0, 1.0, 200)
     shown = [case]
-    ax.set_aspect("equal", adjustable="datalim")
 
     def frame(a, b):
         # the view fits both curves over the whole shift range, so it does not jump while shifting
