@@ -704,18 +704,6 @@ def split(ctrl, knots, degree, u):
     return (Q[:c + 1].copy(), left_knots), (Q[c:].copy(), right_knots)
 
 
-def _flatness(P: np.ndarray) -> float:
-    """Largest distance of the control points from the chord through the end points."""
-    a, b = P[0], P[-1]
-    ab = b - a
-    L = float(np.linalg.norm(ab))
-    if L == 0.0:
-        return float(np.linalg.norm(P - a, axis=1).max())
-    w = P - a
-    proj = np.clip(w @ ab / (L * L), 0.0, 1.0)
-    return float(np.linalg.norm(w - proj[:, None] * ab, axis=1).max())
-
-
 def _corner_flatness(P: np.ndarray) -> float:
     """Largest distance of a control point from the segment joining its two neighbours (O(h^2))."""
     if P.shape[0] < 3:
@@ -726,11 +714,6 @@ def _corner_flatness(P: np.ndarray) -> float:
     w = b - a
     s = np.clip(np.where(L2 > 0, (w * ac).sum(1) / np.where(L2 > 0, L2, 1.0), 0.0), 0.0, 1.0)
     return float(np.linalg.norm(w - s[:, None] * ac, axis=1).max())
-
-
-def _bezier_halves(P: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The two halves of a Bezier polygon at t = 1/2 (:func:`goldman_lib.bezier.subdivide`)."""
-    return bezier.subdivide(P, 0.5)
 
 
 def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
@@ -768,20 +751,44 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
             level += 1
         return P.copy(), level
     pieces, _ = to_piecewise_bezier(P, t, p)
-    out: list[np.ndarray] = []
-    deepest = 0
-    stack = [(pc, 0) for pc in pieces[::-1]]
-    while stack:
-        pc, lvl = stack.pop()
-        if _flatness(pc) <= tol or lvl >= max_levels:
-            out.append(pc[0])
-            deepest = max(deepest, lvl)
-            continue
-        left, right = _bezier_halves(pc)
-        stack.append((right, lvl + 1))
-        stack.append((left, lvl + 1))
-    out.append(pieces[-1][-1])
-    return np.array(out), deepest
+    level = 0
+    while True:
+        flat = _flatness_many(pieces) <= tol
+        if flat.all() or level >= max_levels:
+            break
+        left, right = _halves_many(pieces[~flat])
+        counts = np.where(flat, 1, 2)
+        start = np.cumsum(counts) - counts
+        new = np.empty((int(counts.sum()),) + pieces.shape[1:])
+        new[start[flat]] = pieces[flat]
+        new[start[~flat]] = left
+        new[start[~flat] + 1] = right
+        pieces = new
+        level += 1
+    return np.vstack([pieces[:, 0], pieces[-1:, -1]]), level
+
+
+def _flatness_many(pieces: np.ndarray) -> np.ndarray:
+    """Largest distance of the points of each polygon from its chord, for a stack (m, k, d): (m,)."""
+    a = pieces[:, :1]
+    ab = pieces[:, -1:] - a
+    L2 = (ab * ab).sum(-1)                                   # (m, 1)
+    w = pieces - a
+    s = np.clip(np.where(L2 > 0, (w * ab).sum(-1) / np.where(L2 > 0, L2, 1.0), 0.0), 0.0, 1.0)
+    return np.linalg.norm(w - s[..., None] * ab, axis=-1).max(-1)
+
+
+def _halves_many(pieces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Both halves at t = 1/2 of a stack of Bezier polygons (m, k, d), by de Casteljau."""
+    k = pieces.shape[1]
+    left = np.empty_like(pieces)
+    right = np.empty_like(pieces)
+    cur = pieces
+    for j in range(k):
+        left[:, j] = cur[:, 0]
+        right[:, k - 1 - j] = cur[:, -1]
+        cur = 0.5 * (cur[:, :-1] + cur[:, 1:])
+    return left, right
 
 
 def intersect(a, b, tol=1e-10):
@@ -817,10 +824,15 @@ def intersect(a, b, tol=1e-10):
             raise ValueError(f"{name} must have degree >= 1 to intersect by subdivision")
         curves.append((P, t, p, *to_piecewise_bezier(P, t, p)))
     tol = as_float(tol, "tol", positive=True)
-    (Pa, ta, pa_deg, pa, ba), (Pb, tb, pb_deg, pb, bb) = curves
+    (Pa, ta, pa_deg, pa, ba), (Pb, _, _, pb, bb) = curves
     hits = []
+    lo_a, hi_a = pa.min(1), pa.max(1)                         # control-point boxes of the pieces
+    lo_b, hi_b = pb.min(1), pb.max(1)
+    pad = 1e-9 * max(1.0, float(np.abs(Pa).max()), float(np.abs(Pb).max()))
     for i, A in enumerate(pa):
         for j, B in enumerate(pb):
+            if np.any(lo_a[i] > hi_b[j] + pad) or np.any(lo_b[j] > hi_a[i] + pad):
+                continue                                        # convex hulls apart: no intersection
             st = bezier.intersect_curves(A, B, tol=tol)
             for s_, t_ in st:
                 hits.append((ba[i] + (ba[i + 1] - ba[i]) * s_, bb[j] + (bb[j + 1] - bb[j]) * t_))

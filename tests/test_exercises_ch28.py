@@ -4,8 +4,7 @@ constants (so a bug in goldman_lib.knot_insertion cannot make a checker accept a
 import numpy as np
 import pytest
 
-from goldman_lib.exercises import Result
-from goldman_lib.exercises import ch28
+from goldman_lib.exercises import Result, ch28
 
 # Quadratic, P = (0,0),(2,4),(4,4),(6,0), knots 0,0,0,1,2,2,2; labels P0=b(0,0), P1=b(0,1), P2=b(1,2), P3=b(2,2).
 # Boehm, u = 0.5 in [t2, t3) = [0, 1): a1 = (0.5-0)/(1-0) = 1/2, a2 = (0.5-0)/(2-0) = 1/4

@@ -173,7 +173,7 @@ def _refine(knots, p, rng, count):
     extra = np.round(rng.uniform(lo, hi, count), 3)
     tau = np.sort(np.r_[t, extra])
     # keep multiplicities <= p + 1
-    vals, counts = np.unique(tau, return_counts=True)
+    _, counts = np.unique(tau, return_counts=True)
     if counts.max() > p + 1:
         return None
     return tau
@@ -610,9 +610,9 @@ def test_intersect_rules():
 def test_degree_zero_is_handled():
     ctrl = [[0, 0], [1, 1], [2, 0]]
     knots = [0, 1, 2, 3]
-    new_ctrl, new_knots = ki.boehm_insert(ctrl, knots, 0, 1.5)
+    new_ctrl, _ = ki.boehm_insert(ctrl, knots, 0, 1.5)
     assert new_ctrl.tolist() == [[0, 0], [1, 1], [1, 1], [2, 0]]
-    Q, tau = ki.schaefer(ctrl, knots, 0, 1)
+    Q, _ = ki.schaefer(ctrl, knots, 0, 1)
     assert len(Q) == 6
     with pytest.raises(ValueError, match="degree must be >= 1"):
         ki.convergence_study(ctrl, knots, 0)

@@ -9,7 +9,7 @@ from scipy.interpolate import BSpline
 from goldman_lib import knot_insertion as ki
 from goldman_lib.views import knot_insertion as views
 
-FACTORIES = [views.boehm_view, views.oslo_view, views.subdivision_view, views.insertion_editor]
+FACTORIES = [views.boehm_view, views.oslo_view, views.subdivision_view, views.insertion_editor, views.render_view]
 P, T, D = views.DEFAULT_POLYGON, views.DEFAULT_KNOTS, views.DEFAULT_DEGREE
 
 
@@ -129,3 +129,24 @@ def _editor_knots(view):
     names = sorted((k for k in vals if k.startswith("k") and k[1:].isdigit()), key=lambda k: int(k[1:]))
     knots = knots_from_values([vals[k] for k in names], vals["degree"], len(P), vals["preset"])
     return knots, vals["degree"], None
+
+
+@pytest.mark.parametrize("method", ["Bezier pieces (28.3.5)", "subdivision (28.4.4)"])
+@pytest.mark.parametrize("shift", [-1.2, 0.0, 0.7])
+def test_render_view_draws_near_the_curve_and_marks_true_intersections(method, shift):
+    result = views.render_view().update(method=method, digits=3, shift=shift)
+    dense = BSpline(T, P, D)(np.linspace(0, 1, 3001))
+    gap = np.sqrt(((result["polyline"][:, None] - dense[None]) ** 2).sum(-1)).min(1).max()
+    assert gap < 5e-3
+    q_ctrl, q_knots, q_deg = views.DEFAULT_SECOND
+    other = BSpline(q_knots, q_ctrl + [0, shift], q_deg)
+    params = result["params"]
+    np.testing.assert_allclose(BSpline(T, P, D)(params[:, 0]), other(params[:, 1]), atol=1e-8)
+    np.testing.assert_allclose(result["points"], other(params[:, 1]), atol=1e-8)
+    # count sign changes of the vertical gap between the curves where both are graphs over x (here: all of them)
+    x = np.linspace(1e-6, 6.8 - 1e-6, 6000)      # the x range of the first curve, inside the second one
+    ua = np.interp(x, dense[:, 0], np.linspace(0, 1, 3001))
+    ob = other(np.linspace(0, 1, 3001))
+    yb = np.interp(x, ob[:, 0], ob[:, 1])
+    diff = BSpline(T, P, D)(ua)[:, 1] - yb
+    assert len(result["points"]) == int(np.count_nonzero(np.sign(diff[1:]) != np.sign(diff[:-1])))

@@ -15,7 +15,15 @@ import numpy as np
 
 from goldman_lib import bezier
 from goldman_lib import knot_insertion as ki
-from goldman_lib.exercises import Result, check_points, correct, fmt, read_number, read_points, wrong
+from goldman_lib.exercises import (
+    Result,
+    check_points,
+    correct,
+    fmt,
+    read_number,
+    read_points,
+    wrong,
+)
 
 __all__ = ["PROBLEMS", "QUAD_CTRL", "QUAD_KNOTS", "QUAD_DEGREE", "BOEHM_U", "OSLO_NEW_KNOTS", "CHAIKIN_CTRL",
            "CROSSING_CTRL", "CROSSING_KNOTS", "CROSSING_LINE_Y",
@@ -55,8 +63,8 @@ PROBLEMS = {
         f"{_knots(OSLO_NEW_KNOTS)} (the knots 0.5 and 1.5 inserted at once): each new control point is the blossom "
         f"at two consecutive new knots (Goldman §28.3.2)."),
     "check_bezier_pieces": (
-        f"Convert the same quadratic B-spline to piecewise Bezier form: give the two Bezier control polygons, "
-        f"[[piece 1: 3 points], [piece 2: 3 points]] (Goldman §28.3.3)."),
+        "Convert the same quadratic B-spline to piecewise Bezier form: give the two Bezier control polygons, "
+        "[[piece 1: 3 points], [piece 2: 3 points]] (Goldman §28.3.3)."),
     "check_chaikin": (
         f"Apply one level of the Lane-Riesenfeld algorithm of degree 2 (double every point, then average "
         f"neighbours twice) to the open polygon {_pts(CHAIKIN_CTRL)}: give the refined polygon (Goldman §28.4.1)."),

@@ -18,16 +18,25 @@ from goldman_lib import bspline
 from goldman_lib import knot_insertion as ki
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import (
+    InteractiveView,
+    figure_widget,
+    float_slider,
+    int_slider,
+)
 
 __all__ = ["DEFAULT_POLYGON", "DEFAULT_KNOTS", "DEFAULT_DEGREE", "plot_bspline", "plot_polygon",
            "plot_knot_points", "plot_pieces", "boehm_view", "oslo_view", "subdivision_view",
-           "insertion_editor"]
+           "insertion_editor", "render_view", "DEFAULT_SECOND"]
 
 #: The cubic B-spline of the chapter: seven control points, clamped, three interior knots.
 DEFAULT_POLYGON = np.array([[0.0, 0.0], [0.6, 2.4], [2.2, 3.0], [3.2, 0.6], [4.6, 0.2], [5.4, 2.6], [6.8, 2.0]])
 DEFAULT_DEGREE = 3
 DEFAULT_KNOTS = np.array([0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1], dtype=float)
+
+#: The quadratic B-spline the chapter's curve is intersected with: ``(ctrl, knots, degree)``.
+DEFAULT_SECOND = (np.array([[-0.5, 1.8], [1.5, 0.2], [3.0, 2.6], [4.5, 0.8], [7.2, 1.4]]),
+                  np.array([0, 0, 0, 1 / 3, 2 / 3, 1, 1, 1], dtype=float), 2)
 
 _SAMPLES = 200
 
@@ -131,7 +140,7 @@ def boehm_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT_
     fig, ax = style.new_axes()
     crv = _curve_points(ctrl, knots, p)
     plot_polygon(ctrl, ax, alpha=0.55, label="old polygon")
-    (curve,) = ax.plot(crv[:, 0], crv[:, 1], color=style.PALETTE["curve"], linewidth=2.2, label="curve (unchanged)")
+    ax.plot(crv[:, 0], crv[:, 1], color=style.PALETTE["curve"], linewidth=2.2, label="curve (unchanged)")
     (new_poly,) = ax.plot([], [], "o-", color=style.PALETTE["accent"], markersize=5, linewidth=1.5,
                           label="new polygon")
     (replaced,) = ax.plot([], [], "x", color=style.PALETTE["point"], markersize=11, markeredgewidth=2.2,
@@ -281,7 +290,7 @@ def subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: 
         p = int(min(max(degree, 1), max_degree))
         L = int(min(max(level, 0), max_level))
         r = p if round is None else int(min(max(round, 0), p))
-        crv, base, t = curve_of(alg, p)
+        crv, _, t = curve_of(alg, p)
         closed = alg.endswith("(closed)")
         if alg.startswith("Lane"):
             before = ki.lane_riesenfeld(ctrl, p, max(L - 1, 0), closed=closed)
@@ -379,3 +388,60 @@ def insertion_editor(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, u: floa
                            title="knot insertion with the knot-vector editor", arrange=arrange, side=True)
     editor.attach(view)
     return view
+
+
+_RENDER_METHODS = {"Bezier pieces (28.3.5)": "bezier", "subdivision (28.4.4)": "subdivision"}
+
+
+def render_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT_DEGREE, second=DEFAULT_SECOND,
+                digits: int = 2, shift: float = 0.0) -> InteractiveView:
+    """Rendering and intersecting a B-spline by knot insertion (Goldman §28.3.5, §28.4.4).
+
+    The curve is drawn as the polyline :func:`goldman_lib.knot_insertion.render` returns for the
+    tolerance ``10^-digits``: the chords of flat Bezier pieces, or the subdivided control polygon.
+    A second B-spline, moved up or down by ``shift``, is intersected with it
+    (:func:`goldman_lib.knot_insertion.intersect`) and the crossings are marked.
+
+    ``update(method, digits, shift)`` returns the polyline, the intersection points and parameters.
+    """
+    import ipywidgets as widgets
+
+    ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
+    p = as_int(degree, "degree", minimum=1)
+    knots = bspline.check_knots(knots, p, len(ctrl))
+    q_ctrl = as_points(second[0], "second[0]", dim=2, min_count=2)
+    q_deg = as_int(second[2], "second[2]", minimum=1)
+    q_knots = bspline.check_knots(second[1], q_deg, len(q_ctrl), name="second[1]")
+    fig, ax = style.new_axes()
+    crv = _curve_points(ctrl, knots, p)
+    ax.plot(crv[:, 0], crv[:, 1], color=style.PALETTE["curve"], linewidth=6, alpha=0.18, label="the curve")
+    (drawn,) = ax.plot([], [], "o-", color=style.PALETTE["curve"], markersize=2.5, linewidth=1.1,
+                       label="rendered polyline")
+    (other,) = ax.plot([], [], color=style.PALETTE["good"], linewidth=1.8, label="second B-spline")
+    (hits,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=9, zorder=5, label="intersections")
+    ax.legend(loc="lower right", fontsize=7, frameon=False)
+    other_base = _curve_points(q_ctrl, q_knots, q_deg)
+    _limits(ax, np.vstack([ctrl, crv, other_base + [0, 1.2], other_base - [0, 1.2]]))
+    ax.set_title("render and intersect by knot insertion", fontsize=10)
+
+    def update(method, digits, shift):
+        how = _RENDER_METHODS.get(method, "bezier")
+        tol = 10.0 ** -int(min(max(digits, 1), 4))
+        pts, levels = ki.render(ctrl, knots, p, tol=tol, method=how)
+        drawn.set_data(pts[:, 0], pts[:, 1])
+        moved = q_ctrl + np.array([0.0, float(shift)])
+        oc = other_base + np.array([0.0, float(shift)])
+        other.set_data(oc[:, 0], oc[:, 1])
+        params, xs = ki.intersect((ctrl, knots, p), (moved, q_knots, q_deg))
+        hits.set_data(xs[:, 0], xs[:, 1])
+        status = (f"tolerance {tol:.0e}: {len(pts)} points after {levels} halving level{'s' if levels != 1 else ''}; "
+                  f"{len(xs)} intersection{'s' if len(xs) != 1 else ''}")
+        return {"polyline": pts, "points": xs, "params": params, "status": status}
+
+    controls = {"method": widgets.Dropdown(options=list(_RENDER_METHODS), value=list(_RENDER_METHODS)[0],
+                                           description="method", style={"description_width": "60px"},
+                                           layout=widgets.Layout(width="290px")),
+                "digits": int_slider("tol 1e-", digits, 1, 4),
+                "shift": float_slider("shift", shift, -1.2, 1.2, 0.05)}
+    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="rendering and intersecting by knot insertion")
