@@ -141,3 +141,17 @@ def test_plot_map_and_format_matrix():
 def drawn_ax(ax, k):
     xy = np.asarray(ax.lines[k].get_xydata(), dtype=float)
     return xy[~np.isnan(xy).any(axis=1)]
+
+
+@pytest.mark.parametrize("kind", list(av.KINDS))
+def test_the_first_slider_on_the_page_moves_the_default_map(kind):
+    import ipywidgets as widgets
+
+    view = av.transform_explorer(kind=kind)
+    box = view.children[1].children[1]      # title, then HBox(display, controls)
+    first = next(w for w in box.children if isinstance(w, widgets.FloatSlider))
+    name = next(k for k, w in view.controls.items() if w is first)
+    assert name in av.KINDS[kind] and first.layout.display != "none"
+    before = view.last_result["image"][0].copy()
+    first.value = first.max if first.value != first.max else first.min
+    assert not np.allclose(view.last_result["image"][0], before)

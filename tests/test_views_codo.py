@@ -98,3 +98,11 @@ def test_plot_functions_and_static_images():
     with pytest.raises(ValueError, match="program must be one of"):
         cv.turtle_shortcoming_view(program="circle")
     assert affine.is_conformal(affine.scaling(2))
+
+
+def test_placeholder_program_draws_a_triangle():
+    view = cv.program_editor()
+    assert view.controls["program"].placeholder == cv.PLACEHOLDER
+    lines = view.update(program=cv.PLACEHOLDER)["polylines"]
+    assert len(lines) == 3
+    np.testing.assert_allclose(lines[2][1], [1, 0], atol=1e-12)   # back at the start: a closed triangle

@@ -228,7 +228,9 @@ def transform_explorer(kind: str = "rotation", figure: str = "letter F") -> Inte
         status = f"{what}:  M = {format_matrix(M)},  det = {det:.3g}"
         return {"original": polys, "image": img, "matrix": M, "center": c, "status": status}
 
-    names = ["kind", "figure", "tx", "ty", "angle", "cx", "cy", "factor", "direction", "shear"]
+    # The default map's sliders first: the first slider on the page is one that moves the picture.
+    names = ["kind", "figure"] + list(KINDS[kind]) + [n for n in ("tx", "ty", "angle", "cx", "cy", "factor",
+                                                                   "direction", "shear") if n not in KINDS[kind]]
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="Affine maps: a figure and its image", side=True,
                            arrange=[controls[n] for n in names], extra=[legend])

@@ -19,11 +19,13 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
 from goldman_lib.views.turtle import stroke_data
 
-__all__ = ["DEFAULT_PROGRAM", "plot_drawing", "plot_program", "program_editor", "TURTLE_PROGRAMS",
+__all__ = ["DEFAULT_PROGRAM", "PLACEHOLDER", "plot_drawing", "plot_program", "program_editor", "TURTLE_PROGRAMS",
            "turtle_shortcoming_view"]
 
 #: The program the editor opens with: the regular pentagon of §5.2.2.
 DEFAULT_PROGRAM = codo.SAMPLES["regular pentagon"]
+#: A one-line program shown in the empty editor (and typed by the browser test, if it reads it).
+PLACEHOLDER = "C = point(0, 0); P = point(1, 0); R = rotate(C, 120); REPEAT 3 [ CONNECT P, R(P); P = R(P) ]"
 
 
 def _fit(ax, pts, pad=0.08):
@@ -113,7 +115,7 @@ def program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> 
 
     if not isinstance(program, str):
         raise TypeError(f"program must be a string; got {type(program).__name__}")
-    box = widgets.Textarea(value=program, continuous_update=False, rows=10,
+    box = widgets.Textarea(value=program, continuous_update=False, rows=10, placeholder=PLACEHOLDER,
                            layout=widgets.Layout(width="330px", height="200px"))
     picker = widgets.Dropdown(options=["(samples)"] + list(codo.SAMPLES), value="(samples)",
                               layout=widgets.Layout(width="330px"))
