@@ -544,6 +544,8 @@ class _Interpreter:
                 self.fail(f"{self.snippet(node)} overflows (its coordinates are not finite)", node.tok)
         elif isinstance(v, np.ndarray) and not np.all(np.isfinite(v)):
             self.fail(f"{self.snippet(node)} overflows (the map has non-finite entries)", node.tok)
+        elif isinstance(v, Figure) and not all(np.isfinite(p).all() for p in v.polylines):
+            self.fail(f"{self.snippet(node)} overflows (the figure has non-finite points)", node.tok)
         return v
 
     def want(self, node: Node, kinds: tuple, what: str):
@@ -620,7 +622,8 @@ class _Interpreter:
                 self.fail(f"division by zero in {self.snippet(node)}", node.tok)
             return _Mass(a.x / b, a.y / b, a.w / b)
         if op == "*" and isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
-            return a @ b
+            with np.errstate(over="ignore", invalid="ignore"):   # overflow is reported by settle
+                return a @ b
         if op == "+" and isinstance(a, Figure) and isinstance(b, Figure):
             if sum(len(p) for p in a.polylines + b.polylines) > MAX_POINTS:
                 self.fail(f"the figure {self.snippet(node)} would hold more than {MAX_POINTS:,} points", node.tok)
@@ -751,7 +754,8 @@ class _Interpreter:
             (a, b, _), (c, d, _), (e, f, _) = M.tolist()
             return _Mass(x.x * a + x.y * c + x.w * e, x.x * b + x.y * d + x.w * f, x.w)
         if isinstance(x, Figure):
-            return Figure(tuple(p @ M[:2, :2] + M[2, :2] for p in x.polylines))
+            with np.errstate(over="ignore", invalid="ignore"):   # overflow is reported by settle
+                return Figure(tuple(p @ M[:2, :2] + M[2, :2] for p in x.polylines))
         self.fail(f"a map applies to a point, a vector or a figure; {self.snippet(args[0])} is {_describe(x)}",
                   args[0].tok, CodoTypeError)
 

@@ -220,6 +220,8 @@ ERRORS = [
     ("F = polygon(point(0, 0), point(1, 0))\nREPEAT 30 [ F = F + F ]", codo.CodoRuntimeError, 2, 19, "+",
      "more than 200,000 points"),
     ("x = 1e300 * 1e300", codo.CodoRuntimeError, 1, 11, "*", "overflows"),
+    ("C = point(0, 0)\nF = polygon(C, point(1, 0), point(0, 1))\nM = scale(C, 1e200)\nDRAW M(M(F))",
+     codo.CodoRuntimeError, 4, 7, "(", "the figure has non-finite points"),
 ]
 
 
