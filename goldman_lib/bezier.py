@@ -1571,7 +1571,9 @@ def join_order(a, b, ratio=1.0, tol=1e-9) -> int:
 
     Both curves are written with the larger of their degrees (:func:`elevate_degree`, which
     does not change them) and b's control points are compared with
-    :func:`smooth_continuation` of a: the join is C^k exactly when the first k+1 agree.
+    :func:`smooth_continuation` of a: the join is C^k exactly when the first k+1 agree.  (When
+    b's interval is the longer one, a's reversed polygon is compared with b's polynomial
+    continued backwards instead: the same test, with less amplification of rounding errors.)
     Returns -1 if the curves do not even meet, and the common degree n if b continues a's
     polynomial (C^n then means C^infinity: the two are one polynomial curve).  The two halves
     of a subdivided curve meet with ``ratio = (1 - t) / t``, order n.
@@ -1596,11 +1598,16 @@ def join_order(a, b, ratio=1.0, tol=1e-9) -> int:
     n = max(A.shape[0], B.shape[0]) - 1
     A = elevate_degree(A, n - (A.shape[0] - 1))
     B = elevate_degree(B, n - (B.shape[0] - 1))
-    Q = _split(A[::-1], -ratio)[0]
+    # Extrapolate over the shorter interval (ratio <= 1): extrapolation multiplies rounding errors
+    # by up to (1 + 2 ratio)^n.  Continuing b backwards over a's interval gives a reversed.
+    if ratio <= 1.0:
+        Q, target = _split(A[::-1], -ratio)[0], B
+    else:
+        Q, target = _split(B, -1.0 / ratio)[0], A[::-1]
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()), float(np.abs(Q).max()))
     order = -1
     for k in range(n + 1):
-        if np.linalg.norm(Q[k] - B[k]) > tol * scale:
+        if np.linalg.norm(Q[k] - target[k]) > tol * scale:
             break
         order = k
     return order
