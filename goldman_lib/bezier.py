@@ -1217,8 +1217,9 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     max_depth: int in [1, 60], the deepest subdivision.
     Returns (k, 2) parameter pairs ``[s, t]`` sorted by s; k = 0 if the curves do not meet.
     Transversal intersections are accurate to about 1e-15; tangential ones (double roots) to
-    about 1e-8 and triple roots to about 1e-5.  Curves that overlap along a piece (infinitely
-    many intersections) are not handled.
+    about 1e-8 and triple roots to about 1e-5.  A degree-0 curve (one point) gets parameter 0.
+    Curves that overlap along a piece (infinitely many intersections) are not handled: a sample
+    of points along the overlap is returned.
     Raises ValueError if a or b is not (k, 2) finite points, for a non-positive tol or a bad
     max_depth.
 
@@ -1239,6 +1240,9 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     st = np.concatenate(guesses)
     st = np.unique(np.round(st, 12), axis=0)
     st, res = _newton_pairs(A, B, st)
+    for axis, P in ((0, A), (1, B)):
+        if len(P) == 1:          # a degree-0 "curve" is one point: its parameter is immaterial, call it 0
+            st[:, axis] = 0.0
     tol_abs = tol * scale
     good = res <= tol_abs
 

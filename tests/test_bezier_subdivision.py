@@ -206,6 +206,12 @@ def test_intersect_curves_line_and_parabola_closed_form():
     np.testing.assert_allclose(got, [[0.25, 0.25], [0.75, 0.75]], atol=1e-14)
 
 
+def test_intersect_curves_with_a_point():
+    # a degree-0 curve is a point: on the line y = x at the line's parameter 1/2, and off it
+    np.testing.assert_allclose(bezier.intersect_curves([[1, 1]], [[0, 0], [2, 2]]), [[0.0, 0.5]], atol=1e-14)
+    assert bezier.intersect_curves([[1, 1.5]], [[0, 0], [2, 2]]).shape == (0, 2)
+
+
 def test_intersect_curves_uneven_parametrisation():
     # a straight quadratic x(s) = 3.6 s - 1.6 s^2 crossing x = 1: s = (3.6 - sqrt(6.56)) / 3.2
     got = bezier.intersect_curves([[0, 0], [1.8, 0], [2, 0]], [[1, -1], [1, 1]])
