@@ -100,9 +100,9 @@ def test_plot_functions_and_static_images():
     assert affine.is_conformal(affine.scaling(2))
 
 
-def test_placeholder_program_draws_a_triangle():
+def test_suggested_program_draws_a_triangle():
     view = cv.program_editor()
-    assert view.controls["program"].placeholder == cv.PLACEHOLDER
-    lines = view.update(program=cv.PLACEHOLDER)["polylines"]
+    assert f'<code class="goldman-example">{cv.TRY_PROGRAM}</code>' in view.children[-2].children[-1].children[-1].value
+    lines = view.update(program=cv.TRY_PROGRAM)["polylines"]
     assert len(lines) == 3
     np.testing.assert_allclose(lines[2][1], [1, 0], atol=1e-12)   # back at the start: a closed triangle

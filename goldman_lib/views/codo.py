@@ -19,13 +19,14 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
 from goldman_lib.views.turtle import stroke_data
 
-__all__ = ["DEFAULT_PROGRAM", "PLACEHOLDER", "plot_drawing", "plot_program", "program_editor", "TURTLE_PROGRAMS",
+__all__ = ["DEFAULT_PROGRAM", "TRY_PROGRAM", "plot_drawing", "plot_program", "program_editor", "TURTLE_PROGRAMS",
            "turtle_shortcoming_view"]
 
 #: The program the editor opens with: the regular pentagon of §5.2.2.
 DEFAULT_PROGRAM = codo.SAMPLES["regular pentagon"]
-#: A one-line program shown in the empty editor (and typed by the browser test, if it reads it).
-PLACEHOLDER = "C = point(0, 0); P = point(1, 0); R = rotate(C, 120); REPEAT 3 [ CONNECT P, R(P); P = R(P) ]"
+#: A one-line program the help text suggests (in a ``<code class="goldman-example">`` element, so a
+#: browser test can read and type it).
+TRY_PROGRAM = "C = point(0, 0); P = point(1, 0); R = rotate(C, 120); REPEAT 3 [ CONNECT P, R(P); P = R(P) ]"
 
 
 def _fit(ax, pts, pad=0.08):
@@ -96,7 +97,8 @@ _HELP = ("<small><code>P = point(x, y)</code>, <code>v = vector(x, y)</code>, <c
          "<code>affine(P1, P2, P3, Q1, Q2, Q3)</code>, applied as <code>M(P)</code>, composed as "
          "<code>M * N</code>; <code>CONNECT P, Q, ...</code>, <code>DRAW F</code>, "
          "<code>REPEAT n [ ... ]</code>; one statement a line or <code>;</code>. "
-         "Press Tab or click outside the box to draw.</small>")
+         "Press Tab or click outside the box to draw. Try: "
+         f'<code class="goldman-example">{TRY_PROGRAM}</code></small>')
 
 
 def program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> InteractiveView:
@@ -115,7 +117,7 @@ def program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> 
 
     if not isinstance(program, str):
         raise TypeError(f"program must be a string; got {type(program).__name__}")
-    box = widgets.Textarea(value=program, continuous_update=False, rows=10, placeholder=PLACEHOLDER,
+    box = widgets.Textarea(value=program, continuous_update=False, rows=10,
                            layout=widgets.Layout(width="330px", height="200px"))
     picker = widgets.Dropdown(options=["(samples)"] + list(codo.SAMPLES), value="(samples)",
                               layout=widgets.Layout(width="330px"))
