@@ -39,6 +39,7 @@ DEFAULT_SECOND = (np.array([[-0.5, 1.8], [1.5, 0.2], [3.0, 2.6], [4.5, 0.8], [7.
                   np.array([0, 0, 0, 1 / 3, 2 / 3, 1, 1, 1], dtype=float), 2)
 
 _SAMPLES = 200
+_MARKER_LIMIT = 150     # polygons with more points are drawn without markers (keeps a redraw under 50 ms)
 
 
 def _curve_points(ctrl, knots, degree, samples=_SAMPLES):
@@ -307,6 +308,7 @@ def subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: 
         finished = rounds[-1]
         shown = np.vstack([P, P[:1]]) if closed else P
         poly.set_data(shown[:, 0], shown[:, 1])
+        poly.set_marker("o" if len(P) <= _MARKER_LIMIT else "None")   # hundreds of markers cost Agg time
         curve.set_data(crv[:, 0], crv[:, 1])
         # distance of the finished level's control points from the curve at their Greville abscissae
         d = _polygon_gap(finished, p, closed=closed, knots=knots_now)
@@ -429,6 +431,7 @@ def render_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT
         tol = 10.0 ** -int(min(max(digits, 1), 4))
         pts, levels = ki.render(ctrl, knots, p, tol=tol, method=how)
         drawn.set_data(pts[:, 0], pts[:, 1])
+        drawn.set_marker("o" if len(pts) <= _MARKER_LIMIT else "None")
         moved = q_ctrl + np.array([0.0, float(shift)])
         oc = other_base + np.array([0.0, float(shift)])
         other.set_data(oc[:, 0], oc[:, 1])
