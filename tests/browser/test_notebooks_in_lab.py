@@ -51,13 +51,18 @@ def test_notebook_runs_and_views_respond(lab, notebook):
         display = view.locator(".goldman-display").first
         handles = view.locator(".goldman-controls .noUi-handle")
         if handles.count() == 0:
-            # A program editor: type a new program, leave the box (continuous_update=False), and
-            # the drawing must change.
+            # A program editor: type a new program (the editor's own example if it shows one, a
+            # turtle program otherwise), leave the box (continuous_update=False), and the drawing
+            # must change.
             box = view.locator(".goldman-controls textarea").first
             assert box.count(), f"{rel}: interactive view {i} has neither a slider nor a text box"
             before, st = wait_nonblank(display)
             box.scroll_into_view_if_needed()
-            box.fill("REPEAT 3 [FORWARD 2 TURN 120]\nMOVE 3\nREPEAT 4 [FORWARD 1 TURN 90]")
+            # An editor for another language shows an example program in code.goldman-example.
+            example = view.locator("code.goldman-example")
+            program = (example.first.inner_text() if example.count()
+                       else "REPEAT 3 [FORWARD 2 TURN 120]\nMOVE 3\nREPEAT 4 [FORWARD 1 TURN 90]")
+            box.fill(program)
             box.press("Tab")
             after, frac = wait_changed(display, before, CHANGE_TOLERANCE, timeout=15)
             (SCREENSHOTS / f"{stem}-view{i}-before.png").write_bytes(before)
