@@ -193,8 +193,11 @@ def newton_steps(f, df, x0, *, tol: float = 1e-12, max_iter: int = 50) -> Conver
         history.append(nxt)
         x = nxt
         if step <= tol * max(1.0, abs(x)):
-            fx = float(f(x))
-            residuals.append(abs(fx))
+            fnew = float(f(x))
+            if abs(fnew) > abs(fx):   # a last step at rounding level may make it worse: keep the better
+                history[-1] = x = history[-2]
+                fnew = fx
+            residuals.append(abs(fnew))
             reason, message = "converged", ""
             break
         period = _cycle(history, tol)
