@@ -480,8 +480,9 @@ def rons_algorithm(program, point=(0, 0), direction=(1, 0)) -> TurtleIFS:
                              f"differently; Ron's algorithm needs every level to change it the same way")
         M = _find_mirror(program.body, pos, neg, base_pos, base_neg)
         if M is None:
-            raise ValueError(f"{label} calls its mirror program, which is not a similar copy of the program "
-                             f"itself: the two form a pair of mutually recursive programs (a graph-directed "
+            raise ValueError(f"{label} calls its mirror program, and no similarity taking the program's chord "
+                             f"onto the mirror's makes the mirror a copy of the program (both bodies giving the "
+                             f"same maps): the two form a pair of mutually recursive programs (a graph-directed "
                              f"system), not a single IFS")
     maps = np.array([F if k > 0 else M @ F for F, k in pos.calls])
     driver = _walk(program.start, 1.0, D, Dm)
