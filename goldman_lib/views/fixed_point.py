@@ -29,7 +29,7 @@ NEWTON_FUNCTIONS = {
 }
 
 
-def newton_view(function: str = "x^2 - 2", x0: float = 2.5, steps: int = 3) -> InteractiveView:
+def newton_view(function: str = "x^2 - 2", x0: float = 2.5, steps: int = 1) -> InteractiveView:
     """Newton's method drawn step by step (Goldman §7.3.1): each tangent line at ``x_n`` meets the
     axis at ``x_{n+1}``.  ``update(function, x0, steps)`` returns the iterates ``xs`` and the
     tangent segments; the status names the outcome (converged, zero derivative, cycle, diverged).
