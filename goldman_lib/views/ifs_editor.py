@@ -32,16 +32,15 @@ non-contractive maps give a status message and a best-effort drawing, never a tr
 
 from __future__ import annotations
 
-import math
 
 import numpy as np
 
 from goldman_lib import affine, ifs
 from goldman_lib.validation import as_int
 from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, control_grid, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
-__all__ = ["ifs_editor", "IFSEditorView", "system_from_values", "values_from_system", "MAX_MAPS", "PARAMETERS",
+__all__ = ["ifs_editor", "system_from_values", "values_from_system", "MAX_MAPS", "PARAMETERS",
            "CONDENSATIONS", "MAP_COLOURS", "attractor_points"]
 
 #: The most maps the editor holds (the Sierpinski carpet needs eight).
@@ -197,29 +196,6 @@ def _deterministic_labels(n: int, k: int, c: int, levels: int) -> np.ndarray:
     return np.concatenate([np.full(c, k, dtype=np.intp), labels]).astype(np.intp)
 
 
-class IFSEditorView(InteractiveView):
-    """The editor's :class:`InteractiveView`, with ``load(system)`` and a sweep grid that is safe
-    for its ~60 controls (``control_grid`` multiplies the axis lengths in int64, which wraps round
-    for so many controls; here the grid is the same without the full product)."""
-
-    def sweep_values(self, n: int = 3, max_full: int = 400) -> list[dict]:
-        names = list(self.controls)
-        if math.prod(len(control_grid({k: self.controls[k]}, n=n)) for k in names) <= max_full:
-            return control_grid(self.controls, n=n, max_full=max_full)
-        axes = [[c[k] for c in control_grid({k: self.controls[k]}, n=n)] for k in names]
-        default = {k: self.controls[k].value for k in names}
-        lows = {k: a[0] for k, a in zip(names, axes)}
-        highs = {k: a[-1] for k, a in zip(names, axes)}
-        combos = [lows, highs]
-        for base in (default, lows, highs):
-            for k, a in zip(names, axes):
-                combos.extend({**base, k: v} for v in a)
-        rng = np.random.default_rng(0)
-        combos.extend({k: (a[0] if rng.random() < 0.5 else a[-1]) for k, a in zip(names, axes)}
-                      for _ in range(max_full))
-        return combos
-
-
 def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", points: int = 100_000,
                levels: int = 6, max_maps: int = MAX_MAPS, rng=0) -> InteractiveView:
     """The IFS map editor (Goldman §6.1-6.4): sliders for each map's rotation, scales, shear,
@@ -322,7 +298,7 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
     arrange = [preset, widgets.HBox([controls["maps"], add, remove]), controls["edit"], *rows,
                controls["algorithm"], controls["points"], controls["levels"], controls["condensation"]]
 
-    view = IFSEditorView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="IFS map editor", side=True, arrange=arrange)
 
     def show_rows(_=None):

@@ -24,6 +24,7 @@ import base64
 import html
 import io
 import itertools
+import math
 from typing import Callable, Mapping
 
 import ipywidgets as widgets
@@ -95,7 +96,7 @@ def control_grid(controls: Mapping[str, widgets.Widget], n: int = 3, max_full: i
     """
     names = list(controls)
     axes = [_control_values(controls[k], n) for k in names]
-    total = int(np.prod([len(a) for a in axes]))
+    total = math.prod(len(a) for a in axes)  # exact: np.prod would wrap round in int64 for ~40+ controls
     if total <= max_full:
         return [dict(zip(names, combo)) for combo in itertools.product(*axes)]
     default = {k: controls[k].value for k in names}
