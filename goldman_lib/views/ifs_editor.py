@@ -32,7 +32,6 @@ non-contractive maps give a status message and a best-effort drawing, never a tr
 
 from __future__ import annotations
 
-
 import numpy as np
 
 from goldman_lib import affine, ifs
