@@ -37,18 +37,7 @@ def _fit(ax, pts, pad=0.08):
     span = float(max(hi[0] - lo[0], hi[1] - lo[1]))
     m = pad * span if span > 0 else 1.0
     x0, x1, y0, y1 = lo[0] - m, hi[0] + m, lo[1] - m, hi[1] + m
-    fw, fh = ax.figure.get_size_inches()
-    pos = ax.get_position(original=True)
-    box = (fh * pos.height) / (fw * pos.width)
-    xs, ys = x1 - x0, y1 - y0
-    if ys < box * xs:
-        yc, ys = 0.5 * (y0 + y1), box * xs
-        y0, y1 = yc - ys / 2, yc + ys / 2
-    else:
-        xc, xs = 0.5 * (x0 + x1), ys / box
-        x0, x1 = xc - xs / 2, xc + xs / 2
-    ax.set_xlim(x0, x1)
-    ax.set_ylim(y0, y1)
+    style.set_equal_limits(ax, x0, x1, y0, y1)
 
 
 class _DrawingArtists:

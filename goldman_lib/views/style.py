@@ -82,3 +82,22 @@ def get_axes(ax=None, equal: bool = True):
 
 __all__ = ["FIGSIZE", "WIDE_FIGSIZE", "DPI", "PALETTE", "LEVELS", "level_colour", "new_figure",
            "new_axes", "style_axes", "get_axes", "matplotlib"]
+
+
+def set_equal_limits(ax, x0: float, x1: float, y0: float, y1: float) -> None:
+    """Set limits covering ``[x0, x1] x [y0, y1]``, widened on one side to the axes box's own
+    aspect, so x and y have equal scales without matplotlib overriding (and warning about) the
+    limits.  The views that follow a drawing as it grows (turtle, CODO) call this on every update.
+    """
+    fw, fh = ax.figure.get_size_inches()
+    pos = ax.get_position(original=True)
+    box = (fh * pos.height) / (fw * pos.width)
+    xs, ys = x1 - x0, y1 - y0
+    if ys < box * xs:
+        yc, ys = 0.5 * (y0 + y1), box * xs
+        y0, y1 = yc - ys / 2, yc + ys / 2
+    else:
+        xc, xs = 0.5 * (x0 + x1), ys / box
+        x0, x1 = xc - xs / 2, xc + xs / 2
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)

@@ -112,20 +112,7 @@ class _PathArtists:
         self.turtle.set_data([point[0]], [point[1]])
         self.turtle.set_marker(heading_marker(direction))
         (x0, x1), (y0, y1) = _limits(list(polylines) + [np.asarray(start, float)[None]], point)
-        # Widen one side so the limits have the axes box's own aspect: equal scales without
-        # matplotlib having to override (and warn about) the limits we set.
-        fw, fh = self.ax.figure.get_size_inches()
-        pos = self.ax.get_position(original=True)
-        box = (fh * pos.height) / (fw * pos.width)
-        xs, ys = x1 - x0, y1 - y0
-        if ys < box * xs:
-            yc, ys = 0.5 * (y0 + y1), box * xs
-            y0, y1 = yc - ys / 2, yc + ys / 2
-        else:
-            xc, xs = 0.5 * (x0 + x1), ys / box
-            x0, x1 = xc - xs / 2, xc + xs / 2
-        self.ax.set_xlim(x0, x1)
-        self.ax.set_ylim(y0, y1)
+        style.set_equal_limits(self.ax, x0, x1, y0, y1)
 
 
 def plot_polylines(polylines, ax=None, *, point=None, direction=None, start=None, color=None,
