@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = ["Result", "correct", "wrong", "unanswered", "is_unanswered", "read_number", "read_points", "check_number",
-           "check_points", "fmt"]
+           "check_points", "fmt", "fmt_points"]
 
 
 def fmt(x, digits: int = 4) -> str:
@@ -41,6 +41,15 @@ def fmt(x, digits: int = 4) -> str:
             v = 0.0
         return f"{v:.{digits}g}"
     return "(" + ", ".join(fmt(v, digits) for v in arr.ravel()) + ")"
+
+
+def fmt_points(points, digits: int = 4) -> str:
+    """Format a list of points (a control polygon) for feedback messages.
+
+    >>> fmt_points([[0, 0], [1, 0.5]])
+    '(0, 0), (1, 0.5)'
+    """
+    return ", ".join(fmt(p, digits) for p in np.asarray(points, dtype=float))
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from goldman_lib import bezier
-from goldman_lib.exercises import (Result, check_number, check_points, correct, fmt, is_unanswered,
+from goldman_lib.exercises import (fmt_points, Result, check_number, check_points, correct, fmt, is_unanswered,
                                    read_points, wrong)
 
 __all__ = ["PROBLEMS", "DE_CASTELJAU_CTRL", "DE_CASTELJAU_T", "HODOGRAPH_CTRL", "ELEVATION_CTRL",
@@ -38,22 +38,18 @@ JOIN_CTRL = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 2.0]])
 BERNSTEIN_N, BERNSTEIN_K, BERNSTEIN_T = 4, 2, 0.5
 
 
-def _pts(ctrl) -> str:
-    return ", ".join(fmt(p) for p in np.asarray(ctrl))
-
-
 PROBLEMS = {
     "check_de_casteljau_point": (
-        f"Run de Casteljau's algorithm by hand on the cubic with control points {_pts(DE_CASTELJAU_CTRL)} "
+        f"Run de Casteljau's algorithm by hand on the cubic with control points {fmt_points(DE_CASTELJAU_CTRL)} "
         f"at t = {fmt(DE_CASTELJAU_T)}: give the point on the curve as (x, y) (Goldman §24.2)."),
     "check_hodograph": (
         f"Give the control points of the hodograph (the derivative curve) of the cubic with control points "
-        f"{_pts(HODOGRAPH_CTRL)} (Goldman §24.5)."),
+        f"{fmt_points(HODOGRAPH_CTRL)} (Goldman §24.5)."),
     "check_degree_elevation": (
-        f"Elevate the quadratic with control points {_pts(ELEVATION_CTRL)} to degree 3: give the four new "
+        f"Elevate the quadratic with control points {fmt_points(ELEVATION_CTRL)} to degree 3: give the four new "
         f"control points (Goldman §24.5)."),
     "check_c1_join": (
-        f"A second cubic Q continues the cubic with control points {_pts(JOIN_CTRL)}, over a parameter interval "
+        f"A second cubic Q continues the cubic with control points {fmt_points(JOIN_CTRL)}, over a parameter interval "
         f"of the same length. Give Q0 and Q1 so that the join is C1 (Goldman §24.5.1)."),
     "check_bernstein_value": (
         f"Compute the Bernstein basis value B_{BERNSTEIN_K}^{BERNSTEIN_N}({fmt(BERNSTEIN_T)}) (Goldman §24.3)."),

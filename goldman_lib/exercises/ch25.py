@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bezier
-from goldman_lib.exercises import (Result, check_number, check_points, correct, fmt, read_number, read_points,
+from goldman_lib.exercises import (fmt_points, Result, check_number, check_points, correct, fmt, read_number, read_points,
                                    wrong)
 
 __all__ = ["PROBLEMS", "SUBDIVIDE_CTRL", "REPARAM_T", "REPARAM_S", "FLATNESS_CTRL", "CROSSING_CTRL",
@@ -34,26 +34,22 @@ CROSSING_LINE_Y = 0.5
 C2_CTRL = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 2.0]])
 
 
-def _pts(ctrl) -> str:
-    return ", ".join(fmt(p) for p in np.asarray(ctrl))
-
-
 PROBLEMS = {
     "check_subdivision_left": (
-        f"Subdivide the cubic with control points {_pts(SUBDIVIDE_CTRL)} at t = 1/2 by the de Casteljau algorithm: "
+        f"Subdivide the cubic with control points {fmt_points(SUBDIVIDE_CTRL)} at t = 1/2 by the de Casteljau algorithm: "
         f"give the four control points of the left piece (the curve over [0, 1/2]) (Goldman §25.2)."),
     "check_reparametrised_parameter": (
         f"The cubic is subdivided at t = {fmt(REPARAM_T)} and the right piece is parametrised over [0, 1] again. "
         f"Which parameter t of the original curve does the parameter s = {fmt(REPARAM_S)} of the right piece "
         f"correspond to (Goldman §25.2)?"),
     "check_flatness": (
-        f"The quadratic with control points {_pts(FLATNESS_CTRL)} is a straight segment. What is its flatness "
+        f"The quadratic with control points {fmt_points(FLATNESS_CTRL)} is a straight segment. What is its flatness "
         f"max_k |P_k - ((1 - k/n) P_0 + (k/n) P_n)|, the bound used to stop subdividing (Goldman §25.3)?"),
     "check_crossing_bound": (
         f"At most how many times can the line y = {fmt(CROSSING_LINE_Y)} cross the Bezier curve with control "
-        f"points {_pts(CROSSING_CTRL)}? Give the bound the control polygon guarantees (Goldman §25.4)."),
+        f"points {fmt_points(CROSSING_CTRL)}? Give the bound the control polygon guarantees (Goldman §25.4)."),
     "check_c2_continuation": (
-        f"A second cubic Q continues the cubic with control points {_pts(C2_CTRL)} over a parameter interval of "
+        f"A second cubic Q continues the cubic with control points {fmt_points(C2_CTRL)} over a parameter interval of "
         f"the same length. Give Q0, Q1, Q2 so that the join is C2 (Goldman §25.5)."),
 }
 
@@ -78,7 +74,7 @@ def check_subdivision_left(answer) -> Result:
         return wrong(f"{what} should be four points, shape {left.shape} (a piece of a cubic is a cubic); "
                      f"yours has shape {got.shape}.")
     if np.allclose(got, left, atol=1e-6):
-        return correct(f"the left piece is the left edge of the de Casteljau pyramid: {_pts(left)}.")
+        return correct(f"the left piece is the left edge of the de Casteljau pyramid: {fmt_points(left)}.")
     if np.allclose(got, right, atol=1e-6):
         return wrong("that is the right piece (the curve over [1/2, 1]), read up the right edge of the pyramid; "
                      "the left piece starts at P0.")

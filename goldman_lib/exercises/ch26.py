@@ -17,7 +17,7 @@ import numpy as np
 
 from goldman_lib import bezier
 from goldman_lib import blossom as bl
-from goldman_lib.exercises import Result, check_points, correct, fmt, read_points, wrong
+from goldman_lib.exercises import fmt_points, Result, check_points, correct, fmt, read_points, wrong
 
 __all__ = ["PROBLEMS", "BLOSSOM_CTRL", "BLOSSOM_ARGS", "MONOMIAL_COEFFS", "INTERVAL_CTRL", "INTERVAL",
            "DERIVATIVE_CTRL", "DERIVATIVE_T", "BEZIER_COEFFS", "check_blossom_value", "check_monomial_to_bezier",
@@ -38,25 +38,21 @@ DERIVATIVE_T = 0.5
 BEZIER_COEFFS = np.array([0.0, 1.0, 3.0])
 
 
-def _pts(ctrl) -> str:
-    return ", ".join(fmt(p) for p in np.asarray(ctrl))
-
-
 PROBLEMS = {
     "check_blossom_value": (
-        f"Compute the blossom value p{fmt(BLOSSOM_ARGS)} of the quadratic with control points {_pts(BLOSSOM_CTRL)} "
+        f"Compute the blossom value p{fmt(BLOSSOM_ARGS)} of the quadratic with control points {fmt_points(BLOSSOM_CTRL)} "
         f"by the de Casteljau algorithm with u1 at the first level and u2 at the second (Goldman §26.2)."),
     "check_monomial_to_bezier": (
         "Give the Bezier coefficients (control values) P0, P1, P2, P3 of the cubic polynomial "
         "1 + 3t - 3t^2 + 2t^3 (Goldman §26.4)."),
     "check_interval_points": (
-        f"Give the control points of the quadratic with control points {_pts(INTERVAL_CTRL)} over the interval "
+        f"Give the control points of the quadratic with control points {fmt_points(INTERVAL_CTRL)} over the interval "
         f"[{fmt(INTERVAL[0])}, {fmt(INTERVAL[1])}], i.e. p(a, a), p(a, b), p(b, b) (Goldman §26.3)."),
     "check_derivative": (
         f"Use the homogeneous blossom to compute the derivative P'({fmt(DERIVATIVE_T)}) of the cubic with control "
-        f"points {_pts(DERIVATIVE_CTRL)}: P'(t) = n p(t, t, delta) with delta = (1, 0) (Goldman §26.4)."),
+        f"points {fmt_points(DERIVATIVE_CTRL)}: P'(t) = n p(t, t, delta) with delta = (1, 0) (Goldman §26.4)."),
     "check_bezier_to_monomial": (
-        f"The quadratic polynomial with Bezier coefficients {_pts(BEZIER_COEFFS)} is a0 + a1 t + a2 t^2. "
+        f"The quadratic polynomial with Bezier coefficients {fmt_points(BEZIER_COEFFS)} is a0 + a1 t + a2 t^2. "
         f"Give a0, a1, a2 (Goldman §26.4)."),
 }
 
@@ -142,7 +138,7 @@ def check_interval_points(answer) -> Result:
     if got.shape != expected.shape:
         return wrong(f"{what} should be {len(expected)} points, shape {expected.shape}; yours has shape {got.shape}.")
     if np.allclose(got, expected, atol=1e-6):
-        return correct(f"p({fmt(a)}, {fmt(a)}), p({fmt(a)}, {fmt(b)}), p({fmt(b)}, {fmt(b)}) = {_pts(expected)}: "
+        return correct(f"p({fmt(a)}, {fmt(a)}), p({fmt(a)}, {fmt(b)}), p({fmt(b)}, {fmt(b)}) = {fmt_points(expected)}: "
                        f"the right half of the subdivision at {fmt(a)}.")
     if np.allclose(got, expected[::-1], atol=1e-6):
         return wrong("the points are right but reversed: Q_0 = p(a, a) is the curve at a, where the piece starts.")

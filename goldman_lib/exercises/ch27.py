@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from goldman_lib import bspline
-from goldman_lib.exercises import (Result, correct, fmt, read_number, read_points, wrong)
+from goldman_lib.exercises import (fmt_points, Result, correct, fmt, read_number, read_points, wrong)
 
 __all__ = ["PROBLEMS", "SPAN_KNOTS", "SPAN_DEGREE", "SPAN_U", "DE_BOOR_CTRL", "DE_BOOR_KNOTS", "DE_BOOR_U",
            "BASIS_K", "BASIS_U", "CONT_DEGREE", "CONT_MULT",
@@ -35,10 +35,6 @@ BASIS_K, BASIS_U = 1, 0.5
 CONT_DEGREE, CONT_MULT = 3, 2
 
 
-def _pts(ctrl) -> str:
-    return ", ".join(fmt(p) for p in np.asarray(ctrl))
-
-
 def _knots(t) -> str:
     return "[" + ", ".join(fmt(x) for x in t) + "]"
 
@@ -48,7 +44,7 @@ PROBLEMS = {
         f"A quadratic B-spline has the knots {_knots(SPAN_KNOTS)}. Which control points (give their indices "
         f"as a list) take part in computing C({fmt(SPAN_U)})? (Goldman §27.2)"),
     "check_de_boor_point": (
-        f"Run de Boor's algorithm by hand on the quadratic B-spline with control points {_pts(DE_BOOR_CTRL)} "
+        f"Run de Boor's algorithm by hand on the quadratic B-spline with control points {fmt_points(DE_BOOR_CTRL)} "
         f"and knots {_knots(DE_BOOR_KNOTS)} at u = {fmt(DE_BOOR_U)}: give C(u) as (x, y) (Goldman §27.3)."),
     "check_basis_value": (
         f"Compute the quadratic basis function N_{BASIS_K},2({fmt(BASIS_U)}) on the knots "

@@ -15,7 +15,7 @@ import numpy as np
 
 from goldman_lib import bezier
 from goldman_lib import knot_insertion as ki
-from goldman_lib.exercises import (
+from goldman_lib.exercises import (fmt_points, 
     Result,
     check_points,
     correct,
@@ -46,17 +46,13 @@ CROSSING_KNOTS = np.array([0.0, 0.0, 0.0, 0.0, 1 / 3, 2 / 3, 1.0, 1.0, 1.0, 1.0]
 CROSSING_LINE_Y = 1.0
 
 
-def _pts(ctrl) -> str:
-    return ", ".join(fmt(p) for p in np.asarray(ctrl))
-
-
 def _knots(t) -> str:
     return ", ".join(fmt(x) for x in np.asarray(t))
 
 
 PROBLEMS = {
     "check_boehm_insert": (
-        f"The quadratic B-spline with control points {_pts(QUAD_CTRL)} and knots {_knots(QUAD_KNOTS)}: insert the "
+        f"The quadratic B-spline with control points {fmt_points(QUAD_CTRL)} and knots {_knots(QUAD_KNOTS)}: insert the "
         f"knot u = {fmt(BOEHM_U)} once by Boehm's algorithm and give the five new control points (Goldman §28.3.1)."),
     "check_oslo": (
         f"For the same quadratic B-spline, give the control points over the refined knot vector "
@@ -67,12 +63,12 @@ PROBLEMS = {
         "[[piece 1: 3 points], [piece 2: 3 points]] (Goldman §28.3.3)."),
     "check_chaikin": (
         f"Apply one level of the Lane-Riesenfeld algorithm of degree 2 (double every point, then average "
-        f"neighbours twice) to the open polygon {_pts(CHAIKIN_CTRL)}: give the refined polygon (Goldman §28.4.1)."),
+        f"neighbours twice) to the open polygon {fmt_points(CHAIKIN_CTRL)}: give the refined polygon (Goldman §28.4.1)."),
     "check_convergence_factor": (
         "Each level of subdivision halves the knot spacing h. By what factor does the distance from the control "
         "polygon to the curve shrink per level, for a smooth curve of degree >= 2 (Goldman §28.4.3)?"),
     "check_crossing_bound": (
-        f"The cubic B-spline with control points {_pts(CROSSING_CTRL)} (clamped, uniform interior knots): without "
+        f"The cubic B-spline with control points {fmt_points(CROSSING_CTRL)} (clamped, uniform interior knots): without "
         f"drawing the curve, what is the largest number of times it can cross the line y = {fmt(CROSSING_LINE_Y)}? "
         f"(Goldman §28.3.4)"),
 }

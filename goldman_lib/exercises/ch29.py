@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import subdivision_matrices as sm
-from goldman_lib.exercises import Result, check_points, correct, fmt, read_points, wrong
+from goldman_lib.exercises import fmt_points, Result, check_points, correct, fmt, read_points, wrong
 
 __all__ = ["PROBLEMS", "FIXED_CTRL", "FRACTAL_CTRL", "FRACTAL_MIDDLE",
            "check_quadratic_left_matrix", "check_chaikin_right_matrix", "check_normal_curve_point",
@@ -24,10 +24,6 @@ FIXED_CTRL = np.array([[0.0, 0.0], [2.0, 4.0], [6.0, 2.0]])
 #: Exercise 5: the control points and middle weight of the fractal curve.
 FRACTAL_CTRL = np.array([[0.0, 0.0], [2.0, 4.0], [4.0, 0.0]])
 FRACTAL_MIDDLE = -0.5
-
-
-def _pts(ctrl) -> str:
-    return ", ".join(fmt(p) for p in np.asarray(ctrl))
 
 
 PROBLEMS = {
@@ -41,12 +37,12 @@ PROBLEMS = {
         "Give the point N(1/2) of the normal curve of degree 3, whose control points are the origin and "
         "the unit points e1, e2, e3 of 3-space (Goldman §29.3)."),
     "check_right_map_fixed_point": (
-        f"For the quadratic Bezier curve with control points {_pts(FIXED_CTRL)}, which point does the map "
+        f"For the quadratic Bezier curve with control points {fmt_points(FIXED_CTRL)}, which point does the map "
         f"P^-1 R P of its IFS leave fixed? Give [x, y] (Goldman §29.3)."),
     "check_fractal_joint": (
         f"With L = [[1, 0, 0], [1/2, 1/2, 0], [u, v, u]] and R = [[u, v, u], [0, 1/2, 1/2], [0, 0, 1]], "
         f"v = {fmt(FRACTAL_MIDDLE)} and rows summing to one, the two halves of the fractal with control points "
-        f"{_pts(FRACTAL_CTRL)} meet at one point. Give it as [x, y] (Goldman §29.4)."),
+        f"{fmt_points(FRACTAL_CTRL)} meet at one point. Give it as [x, y] (Goldman §29.4)."),
 }
 
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import subdivision_surfaces as ss
-from goldman_lib.exercises import Result, check_points, correct, fmt, read_points, wrong
+from goldman_lib.exercises import fmt_points, Result, check_points, correct, fmt, read_points, wrong
 
 __all__ = ["PROBLEMS", "CHAIKIN_CTRL", "STENCIL_VALENCE", "EDGE_POINTS",
            "check_cube_counts", "check_quad_vertex_stencil", "check_cube_vertex_point",
@@ -24,10 +24,6 @@ STENCIL_VALENCE = 5
 EDGE_POINTS = np.array([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [2.0, 3.0, 1.0], [2.0, -3.0, 3.0]])
 #: Exercise 5: the open control polygon refined by one level of split and average with degree 2.
 CHAIKIN_CTRL = np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 4.0]])
-
-
-def _pts(ctrl) -> str:
-    return ", ".join(fmt(p) for p in np.asarray(ctrl))
 
 
 PROBLEMS = {
@@ -46,7 +42,7 @@ PROBLEMS = {
         f"triangles have opposite vertices x = {fmt(EDGE_POINTS[2])} and y = {fmt(EDGE_POINTS[3])}. Where is the new "
         f"edge point after one level of the triangle scheme (weights 1/4, 3/8, 3/8)? (Goldman §30.4.2)"),
     "check_chaikin": (
-        f"Apply one level of split and average with degree 2 to the open polygon {_pts(CHAIKIN_CTRL)}: split "
+        f"Apply one level of split and average with degree 2 to the open polygon {fmt_points(CHAIKIN_CTRL)}: split "
         f"(double every point), then average twice. Give the new control points (Goldman §30.2)."),
 }
 
