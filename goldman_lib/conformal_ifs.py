@@ -607,6 +607,9 @@ def _append(cmds: list, cmd: str, value: float, eps: float = 1e-13) -> None:
             value = _wrap(value)
     if (cmd in ("TURN", "MOVE") and abs(value) <= eps) or (cmd == "RESIZE" and abs(value - 1) <= eps):
         return
+    snapped = round(value, 9)
+    if abs(value - snapped) <= 1e-12 * max(1.0, abs(value)):
+        value = snapped      # 120.00000000000001 -> 120 (a change far below the drawing's precision)
     cmds.append((cmd, float(value)))
 
 
