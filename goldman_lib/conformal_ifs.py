@@ -302,9 +302,9 @@ def _nearest_by_cells(A: np.ndarray, B: np.ndarray, cell: float) -> np.ndarray |
 
 
 def _matched_distance(A: np.ndarray, B: np.ndarray, cell: float = 1e-6) -> float | None:
-    """An upper bound on the Hausdorff distance that keeps full precision when the two sets
-    coincide (up to ~cell/4): every point is paired with a point of the other set in a shared
-    grid cell.  None if some point has no partner (then the sets differ by more than rounding)."""
+    """An upper bound on the Hausdorff distance, in linear time, when the two sets coincide (up to
+    ~cell/4): every point is paired with a point of the other set in a shared grid cell.  None if
+    some point has no partner (then the sets differ by more than rounding)."""
     if max(float(np.abs(A).max()), float(np.abs(B).max())) / cell > 2.0 ** 30:
         return None
     da = _nearest_by_cells(A, B, cell)
@@ -320,11 +320,11 @@ def drawing_distance(first, second) -> float:
     """The Hausdorff distance between the vertex sets of two drawings (Goldman §7.3.3, §8.3).
 
     first, second: lists of ``(k, 2)`` strokes, each drawing nonempty.  When every vertex of
-    each drawing has a vertex of the other within about 1e-7, the distance is computed point by
-    point from those partners (full precision, so two drawings of the same fractal give ~1e-16;
-    it is then an upper bound, exact for coinciding sets); otherwise by
-    :func:`goldman_lib.fixed_point.hausdorff_distance` (whose ``|a|^2 - 2ab + |b|^2`` form is
-    accurate to about 1e-8).  Raises ValueError if a drawing is empty.
+    each drawing has a vertex of the other within about 1e-7 (the same fractal drawn two ways),
+    the distance is computed from those partners, found by hashing grid cells in linear time (an
+    upper bound, exact for coinciding sets); otherwise by
+    :func:`goldman_lib.fixed_point.hausdorff_distance`, whose cost grows with the product of the
+    two sizes -- too slow for a slider at level 6 and above.  Raises ValueError if a drawing is empty.
 
     >>> drawing_distance([[[0, 0], [1, 0]]], [[[0, 0], [1, 0.5]]])
     0.5
