@@ -27,6 +27,7 @@ import math
 
 import numpy as np
 
+from .angles import cos_sin_degrees
 from .validation import as_float, as_points, check_finite
 
 __all__ = [
@@ -37,16 +38,6 @@ __all__ = [
     "mirror", "affine_coordinates", "vector_coordinates", "affine_combination", "barycentric_coordinates",
     "commute", "is_rigid",
 ]
-
-
-def _cos_sin(angle: float) -> tuple[float, float]:
-    """cos and sin of an angle in degrees, exact at multiples of 90 degrees."""
-    a = float(angle) % 360.0
-    exact = {0.0: (1.0, 0.0), 90.0: (0.0, 1.0), 180.0: (-1.0, 0.0), 270.0: (0.0, -1.0)}
-    if a in exact:
-        return exact[a]
-    r = math.radians(a)
-    return math.cos(r), math.sin(r)
 
 
 def _point(p, name: str) -> np.ndarray:
@@ -128,7 +119,7 @@ def rotation(angle, center=None) -> np.ndarray:
     >>> apply([[2, 1]], rotation(90, center=[1, 1])).round(12)
     array([[1., 2.]])
     """
-    c, s = _cos_sin(as_float(angle, "angle"))
+    c, s = cos_sin_degrees(as_float(angle, "angle"))
     return _about(_matrix([[c, s], [-s, c]]), center)
 
 

@@ -1615,3 +1615,230 @@ def join_order(a, b, ratio=1.0, tol=1e-9) -> int:
             break
         order = k
     return order
+
+
+# -- §25.3.2 surface-surface intersection ------------------------------------------------------
+
+__all__ += ["intersect_patches"]
+
+
+def _triangle_pair_segments(T, S, TP, SP, eps=1e-9):
+    """Intersection segments of triangle pairs (no validation).
+
+    T, S: (N, 3, 3) vertices; TP, SP: (N, 3, 2) the (u, v) parameters at those vertices.
+    Every edge of S is cut with the plane of T (and every edge of T with the plane of S); the
+    cut points inside the other triangle are where the triangles meet, and the two farthest
+    apart are the ends of the segment.  Returns ``(ends (N, 2, 3), params (N, 2, 4), hit (N,))``
+    with params ``[u_T, v_T, u_S, v_S]``.  Coplanar triangles give no segment.
+    """
+    def cuts(X, Y, XP, YP):
+        # points where the edges of Y cross the plane of X and lie inside X
+        n = np.cross(X[:, 1] - X[:, 0], X[:, 2] - X[:, 0])
+        d = ((Y - X[:, None, 0]) * n[:, None]).sum(-1)                      # (N, 3)
+        d0, d1 = d, np.roll(d, -1, axis=1)
+        y0, y1 = Y, np.roll(Y, -1, axis=1)
+        p0, p1 = YP, np.roll(YP, -1, axis=1)
+        cross = ((d0 <= 0) & (d1 >= 0) | (d0 >= 0) & (d1 <= 0)) & (d0 != d1)
+        lam = np.clip(d0 / np.where(d0 != d1, d0 - d1, 1.0), 0.0, 1.0)[..., None]
+        pts = y0 + lam * (y1 - y0)
+        par_y = p0 + lam * (p1 - p0)
+        # barycentric coordinates of the cut points in X
+        e1, e2 = X[:, 1] - X[:, 0], X[:, 2] - X[:, 0]
+        w = pts - X[:, None, 0]
+        d11, d12, d22 = (e1 * e1).sum(-1), (e1 * e2).sum(-1), (e2 * e2).sum(-1)
+        den = d11 * d22 - d12 * d12
+        ok = den > 1e-30 * np.maximum(d11 * d22, 1e-300)
+        den = np.where(ok, den, 1.0)[:, None]
+        w1, w2 = (w * e1[:, None]).sum(-1), (w * e2[:, None]).sum(-1)
+        b1 = (d22[:, None] * w1 - d12[:, None] * w2) / den
+        b2 = (d11[:, None] * w2 - d12[:, None] * w1) / den
+        b0 = 1.0 - b1 - b2
+        inside = cross & ok[:, None] & (b0 >= -eps) & (b1 >= -eps) & (b2 >= -eps)
+        bary = np.clip(np.stack([b0, b1, b2], -1), 0.0, 1.0)
+        bary /= bary.sum(-1, keepdims=True)
+        par_x = (bary[..., :, None] * XP[:, None]).sum(-2)
+        return pts, par_x, par_y, inside
+
+    pa, ta, sa, ina = cuts(T, S, TP, SP)          # edges of S: params on T, on S
+    pb, sb, tb, inb = cuts(S, T, SP, TP)          # edges of T: params on S, on T
+    pts = np.concatenate([pa, pb], axis=1)                                            # (N, 6, 3)
+    par = np.concatenate([np.concatenate([ta, sa], -1), np.concatenate([tb, sb], -1)], axis=1)
+    ok = np.concatenate([ina, inb], axis=1)
+    dist = np.linalg.norm(pts[:, :, None] - pts[:, None, :], axis=-1)
+    dist = np.where(ok[:, :, None] & ok[:, None, :], dist, -1.0)
+    flat_idx = dist.reshape(len(T), -1).argmax(axis=1)
+    i, j = np.divmod(flat_idx, 6)
+    rows = np.arange(len(T))
+    ends = np.stack([pts[rows, i], pts[rows, j]], axis=1)
+    params = np.stack([par[rows, i], par[rows, j]], axis=1)
+    return ends, params, ok.any(axis=1)
+
+
+def _corner_triangles(nets: np.ndarray, dom: np.ndarray):
+    """The two corner triangles of each net, P00 Pm0 Pmn and P00 Pmn P0n, with their parameters:
+    (2N, 3, 3) and (2N, 3, 2), first triangles then second."""
+    c = np.stack([nets[:, 0, 0], nets[:, -1, 0], nets[:, -1, -1], nets[:, 0, -1]], axis=1)
+    u0, u1, v0, v1 = dom.T
+    p = np.stack([np.stack([u0, v0], 1), np.stack([u1, v0], 1), np.stack([u1, v1], 1), np.stack([u0, v1], 1)], 1)
+    tri = np.concatenate([c[:, [0, 1, 2]], c[:, [0, 2, 3]]])
+    par = np.concatenate([p[:, [0, 1, 2]], p[:, [0, 2, 3]]])
+    return tri, par
+
+
+def _patch_pair_segments(A: np.ndarray, B: np.ndarray, tol: float, max_depth: int, max_pairs: int = 40000):
+    """Subdivide two nets in pairs until both pieces are flat to ``tol`` (or boxes miss); intersect the
+    corner triangles of the flat pairs.  Returns segment ends (k, 2, 3) and their params (k, 2, 4)."""
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    pad = 1e-12 * scale
+    na, nb = A[None], B[None]
+    da = db = np.array([[0.0, 1.0, 0.0, 1.0]])
+    flat_a, flat_b = [], []
+    for depth in range(max_depth + 1):
+        ba = np.stack([na.min(axis=(1, 2)), na.max(axis=(1, 2))], axis=1)
+        bb = np.stack([nb.min(axis=(1, 2)), nb.max(axis=(1, 2))], axis=1)
+        keep = _overlap(ba, bb, pad)
+        na, da, nb, db = na[keep], da[keep], nb[keep], db[keep]
+        if len(na) == 0:
+            break
+        fa = _patch_flatness(na) <= tol
+        fb = _patch_flatness(nb) <= tol
+        done = fa & fb
+        growth = np.where(fa | fb, 4, 16)[~done].sum()
+        if depth == max_depth or growth > max_pairs:
+            done[:] = True
+        flat_a.append((na[done], da[done]))
+        flat_b.append((nb[done], db[done]))
+        rest = ~done
+        na, da, nb, db, fa, fb = na[rest], da[rest], nb[rest], db[rest], fa[rest], fb[rest]
+        if len(na) == 0:
+            break
+        parts = []
+        for split_a, split_b in ((True, True), (True, False), (False, True)):
+            g = (~fa == split_a) & (~fb == split_b)
+            if not g.any():
+                continue
+            ga, gda, gb, gdb = na[g], da[g], nb[g], db[g]
+            ka = kb = 1
+            if split_a:
+                ga, gda = _quarter(ga, gda)
+                ka = 4
+            if split_b:
+                gb, gdb = _quarter(gb, gdb)
+                kb = 4
+            k = len(na[g])
+            # every child of the piece of a meets every child of the piece of b
+            ia = np.repeat(np.arange(k * ka).reshape(k, ka), kb, axis=1).ravel()
+            ib = np.tile(np.arange(k * kb).reshape(k, kb), (1, ka)).ravel()
+            parts.append((ga[ia], gda[ia], gb[ib], gdb[ib]))
+        na = np.concatenate([p[0] for p in parts])
+        da = np.concatenate([p[1] for p in parts])
+        nb = np.concatenate([p[2] for p in parts])
+        db = np.concatenate([p[3] for p in parts])
+    if not flat_a or sum(len(x[0]) for x in flat_a) == 0:
+        return np.zeros((0, 2, 3)), np.zeros((0, 2, 4))
+    na = np.concatenate([x[0] for x in flat_a])
+    da = np.concatenate([x[1] for x in flat_a])
+    nb = np.concatenate([x[0] for x in flat_b])
+    db = np.concatenate([x[1] for x in flat_b])
+    ta, pa = _corner_triangles(na, da)          # (2N, ...): triangle 1 of every piece, then triangle 2
+    tb, pb = _corner_triangles(nb, db)
+    N = len(na)
+    ia = np.concatenate([np.arange(N), np.arange(N), np.arange(N) + N, np.arange(N) + N])
+    ib = np.concatenate([np.arange(N), np.arange(N) + N, np.arange(N), np.arange(N) + N])
+    ends, params, hit = _triangle_pair_segments(ta[ia], tb[ib], pa[ia], pb[ib])
+    return ends[hit], params[hit]
+
+
+def _newton_patches(A: np.ndarray, B: np.ndarray, x: np.ndarray, iterations: int = 30):
+    """Gauss-Newton on A(u, v) - B(s, t) = 0 (3 equations, 4 unknowns) from many starts (N, 4).
+
+    Each step is the least-norm solution of the linearised system, ``-J^+ F`` with J the 3x4
+    Jacobian ``[A_u, A_v, -B_s, -B_t]``: it moves the parameters as little as possible, so each
+    start lands on the intersection curve near where it began.  Parameters are kept in [0, 1].
+    Returns (x, residual norms).
+    """
+    def derivs(P):
+        m, n = P.shape[0] - 1, P.shape[1] - 1
+        return (m * np.diff(P, axis=0) if m else np.zeros_like(P)), (n * np.diff(P, axis=1) if n else np.zeros_like(P))
+
+    Au, Av = derivs(A)
+    Bs, Bt = derivs(B)
+    x = x.copy()
+    for _ in range(iterations):
+        F = _patch_points(A, x[:, 0], x[:, 1]).T - _patch_points(B, x[:, 2], x[:, 3]).T
+        J = np.stack([_patch_points(Au, x[:, 0], x[:, 1]).T, _patch_points(Av, x[:, 0], x[:, 1]).T,
+                      -_patch_points(Bs, x[:, 2], x[:, 3]).T, -_patch_points(Bt, x[:, 2], x[:, 3]).T], axis=-1)
+        step = -(np.linalg.pinv(J, rcond=1e-12) @ F[:, :, None])[:, :, 0]
+        new = np.clip(x + step, 0.0, 1.0)
+        moved = float(np.abs(new - x).max()) if len(x) else 0.0
+        x = new
+        if moved <= 1e-15:
+            break
+    res = np.linalg.norm(_patch_points(A, x[:, 0], x[:, 1]).T - _patch_points(B, x[:, 2], x[:, 3]).T, axis=1)
+    return x, res
+
+
+def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True) -> tuple[np.ndarray, np.ndarray]:
+    """Sample points of the curve where two Bezier patches meet, by subdivision (Goldman §25.3.2).
+
+    The surface version of curve-curve intersection (:func:`intersect_curves`):
+
+    1. Keep a list of pairs of pieces, starting with the two whole patches; discard every pair
+       whose control-point bounding boxes do not overlap (by the convex-hull property the pieces
+       cannot meet).
+    2. Split into four (:func:`subdivide_patch`) every piece of a pair that is not yet flat to
+       ``tol`` (:func:`patch_flatness`: within ``tol`` of the two triangles on its corners), and
+       pair the children.
+    3. When both pieces of a pair are flat, intersect their corner triangles (four triangle
+       pairs); each crossing gives a short segment whose ends, with their parameters, sample
+       the intersection curve to within about ``tol``.
+    4. With ``polish=True`` move every sample onto both surfaces by Newton's method on
+       ``a(u, v) - b(s, t) = 0`` -- three equations in four unknowns, so each step is the
+       least-norm (Gauss-Newton, pseudo-inverse) step, which slides the sample as little as
+       possible -- and merge samples that coincide.
+
+    Consecutive samples along the curve are at most one flat piece apart, so a smaller ``tol``
+    gives a denser sampling.  Patches that overlap in a region (coplanar pieces) are not handled.
+
+    a: (m+1, n+1, 3), b: (p+1, q+1, 3) control nets.  tol: positive float, the flatness
+    tolerance (an absolute distance).  max_depth: int in [0, 12], the deepest subdivision.
+    polish: bool.
+    Returns ``(points, params)``: (k, 3) points and (k, 4) parameters ``[u, v, s, t]`` with
+    ``points ~ a(u, v) ~ b(s, t)``, sorted by the parameters on a; k = 0 if the patches do not
+    meet.  A sample whose Newton iteration fails keeps its unpolished value.
+    Raises ValueError if a or b is not a finite (m+1, n+1, 3) net, for a non-positive tol or a
+    bad max_depth; TypeError if max_depth is not an integer.
+
+    >>> floor = [[[0, 0, 0], [0, 2, 0]], [[2, 0, 0], [2, 2, 0]]]          # z = 0 over [0, 2]^2
+    >>> ramp = [[[0, 0.5, -1], [0, 1.5, -1]], [[2, 0.5, 1], [2, 1.5, 1]]]  # z = x - 1
+    >>> points, params = intersect_patches(floor, ramp)
+    >>> points.round(12).tolist()
+    [[1.0, 0.5, 0.0], [1.0, 1.0, 0.0], [1.0, 1.5, 0.0]]
+    >>> params[0].round(12).tolist()
+    [0.5, 0.25, 0.5, 0.0]
+    """
+    A = as_points(a, "a", ndim=3, dim=3)
+    B = as_points(b, "b", ndim=3, dim=3)
+    tol = _tolerance(tol)
+    max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=12)
+    ends, params = _patch_pair_segments(A, B, tol, max_depth)
+    if len(ends) == 0:
+        return np.zeros((0, 3)), np.zeros((0, 4))
+    pts = ends.reshape(-1, 3)
+    x = params.reshape(-1, 4)
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    if polish:
+        x0 = x
+        x, res = _newton_patches(A, B, x0)
+        res0 = np.linalg.norm(_patch_points(A, x0[:, 0], x0[:, 1]).T - _patch_points(B, x0[:, 2], x0[:, 3]).T, axis=1)
+        better = res <= res0
+        x = np.where(better[:, None], x, x0)
+        pa = _patch_points(A, x[:, 0], x[:, 1]).T
+        pb = _patch_points(B, x[:, 2], x[:, 3]).T
+        pts = np.where(better[:, None], (pa + pb) / 2, pts)
+    # merge repeated samples (segment ends shared by neighbouring triangles and pieces)
+    key = np.round(np.concatenate([pts / scale, x], axis=1), 9)
+    _, first = np.unique(key, axis=0, return_index=True)
+    pts, x = pts[first], x[first]
+    order = np.lexsort(x[:, ::-1].T)
+    return pts[order], x[order]

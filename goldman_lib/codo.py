@@ -62,6 +62,7 @@ from typing import NamedTuple
 import numpy as np
 
 from goldman_lib import affine, turtle
+from goldman_lib.angles import cos_sin_degrees
 from goldman_lib.validation import as_points
 
 __all__ = ["CodoError", "CodoSyntaxError", "CodoTypeError", "CodoRuntimeError", "Point", "Vector", "Figure",
@@ -661,7 +662,7 @@ class _Interpreter:
                 if x < 0:
                     self.fail(f"sqrt of a negative number ({x:g})", args[0].tok)
                 return math.sqrt(x)
-            c, s = affine._cos_sin(x)
+            c, s = cos_sin_degrees(x)
             return c if name == "cos" else s
         if name == "length":
             arity(1, signature="one vector: length(v)")

@@ -279,9 +279,11 @@ def _vertices(polylines) -> np.ndarray:
 
 
 def _nearest_by_cells(A: np.ndarray, B: np.ndarray, cell: float) -> np.ndarray | None:
-    """For each point of A, the distance to a point of B in the same grid cell, the grid shifted
-    by 0 or half a cell along each axis (four grids, so any two points closer than cell/4 along
-    both axes share a cell of one of them); None if some point of A has no such partner."""
+    """For each point of A, the distance to the nearest point of B in the same grid cell, the
+    grid shifted by 0 or half a cell along each axis (four grids, so any two points closer than
+    cell/4 along both axes share a cell of one of them); None if some point of A has no such
+    partner."""
+    B = np.unique(B, axis=0)  # exact repeats (strokes meeting at a vertex) add no candidates
     best = np.full(len(A), np.inf)
     for ox in (0.0, 0.5):
         for oy in (0.0, 0.5):
@@ -292,12 +294,13 @@ def _nearest_by_cells(A: np.ndarray, B: np.ndarray, cell: float) -> np.ndarray |
             keys_b = kb[:, 0] * (1 << 32) + kb[:, 1]
             order = np.argsort(keys_b, kind="stable")
             sorted_b = keys_b[order]
-            pos = np.minimum(np.searchsorted(sorted_b, keys_a), len(B) - 1)
-            hit = sorted_b[pos] == keys_a
-            if hit.any():
-                partner = B[order[pos[hit]]]
-                d = np.hypot(*(A[hit] - partner).T)
-                best[hit] = np.minimum(best[hit], d)
+            lo = np.searchsorted(sorted_b, keys_a, side="left")
+            hi = np.searchsorted(sorted_b, keys_a, side="right")
+            for k in range(int((hi - lo).max(initial=0))):  # every candidate of the cell, nearest kept
+                take = lo + k < hi
+                partner = B[order[lo[take] + k]]
+                d = np.hypot(*(A[take] - partner).T)
+                best[take] = np.minimum(best[take], d)
     return None if np.isinf(best).any() else best
 
 

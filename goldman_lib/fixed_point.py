@@ -471,7 +471,7 @@ def fractal_theorem(system, start, levels: int, *, attractor_points: int = 6000)
     """
     from . import ifs as _ifs
 
-    s = _ifs._as_ifs(system)
+    s = _ifs.as_ifs(system)
     A0 = as_points(start, "start", dim=2)
     levels = as_int(levels, "levels", minimum=0, maximum=40)
     factors = s.contraction_factors()

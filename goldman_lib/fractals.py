@@ -51,6 +51,7 @@ import numpy as np
 
 from goldman_lib import turtle
 from goldman_lib.turtle import FORWARD, MOVE, RESIZE, TURN, MAX_COMMANDS
+from goldman_lib.angles import cos_sin_degrees
 from goldman_lib.validation import as_float, as_int, as_points
 
 __all__ = [
@@ -265,9 +266,9 @@ class RecursiveTurtleProgram:
         >>> t.point.round(12) + 0.0, t.direction
         (array([1., 0.]), array([1., 0.]))
         """
-        p0, w0 = turtle._as_state(point, direction)
+        p0, w0 = turtle.as_state(point, direction)
         codes, values = self.expand(level, max_commands=max_commands)
-        return turtle._trace_arrays(codes, values, p0, w0)
+        return turtle.trace_arrays(codes, values, p0, w0)
 
     def polylines(self, level: int, point=(0, 0), direction=(1, 0)) -> list[np.ndarray]:
         """The strokes level ``level`` draws: a list of ``(k, 2)`` arrays (Goldman §2.3).
@@ -621,7 +622,7 @@ def state_change(program) -> tuple[float, float, np.ndarray]:
     (90.0, 2.0, array([1., 1.]))
     """
     codes, values = _flat_program(program)
-    t = turtle._trace_arrays(codes, values, np.zeros(2), np.array([1.0, 0.0]))
+    t = turtle.trace_arrays(codes, values, np.zeros(2), np.array([1.0, 0.0]))
     scale = float(np.prod(values[codes == RESIZE])) if codes.size else 1.0
     return t.total_turning, scale, t.point
 
@@ -694,7 +695,7 @@ def loop_analysis(program, *, tol: float = 1e-9) -> Loop:
     """
     tol = as_float(tol, "tol")
     T, S, d = state_change(program)
-    c_, s_ = turtle._cos_sin_deg(np.array([T]))
+    c_, s_ = cos_sin_degrees(np.array([T]))
     rot = complex(c_[0], s_[0]) * S
     dz = complex(d[0], d[1])
     center = None
@@ -733,7 +734,7 @@ def repeat_closes(program, k: int, *, tol: float = 1e-9) -> bool:
     codes, values = _flat_program(program)
     if codes.size * k > MAX_COMMANDS:
         raise ValueError(f"REPEAT {k} of {codes.size} commands is more than {MAX_COMMANDS:,} commands")
-    t = turtle._trace_arrays(np.tile(codes, k), np.tile(values, k), np.zeros(2), np.array([1.0, 0.0]))
+    t = turtle.trace_arrays(np.tile(codes, k), np.tile(values, k), np.zeros(2), np.array([1.0, 0.0]))
     return bool(np.hypot(*t.point) <= tol and np.hypot(*(t.direction - [1.0, 0.0])) <= tol)
 
 
@@ -1018,7 +1019,7 @@ def points_on(polylines, per_segment: int = 4) -> np.ndarray:
     array([0.  , 0.25, 0.5 , 0.75, 1.  ])
     """
     per_segment = as_int(per_segment, "per_segment", minimum=1)
-    polys = turtle._as_polylines(polylines)
+    polys = turtle.as_polylines(polylines)
     t = np.arange(per_segment) / per_segment
     parts = []
     for p in polys:

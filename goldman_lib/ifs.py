@@ -142,7 +142,7 @@ class IFS:
         return f"IFS({self.name or 'unnamed'!r}, {len(self)} maps{extra})"
 
 
-def _as_ifs(system) -> IFS:
+def as_ifs(system) -> IFS:
     if isinstance(system, IFS):
         return system
     try:
@@ -179,7 +179,7 @@ def deterministic(system, levels, start=None) -> np.ndarray:
            [0.75, 0.  ],
            [1.  , 0.  ]])
     """
-    s = _as_ifs(system)
+    s = as_ifs(system)
     levels = as_int(levels, "levels", minimum=0)
     C = s.condensation
     if start is None:
@@ -239,7 +239,7 @@ def chaos_game_with_maps(system, n, rng=None, *, burn_in: int = 20, chains: int 
     >>> bool(np.all(pts[maps == 0] <= 0.5 + 1e-12))   # w_0(A) is the lower-left half-size copy
     True
     """
-    s = _as_ifs(system)
+    s = as_ifs(system)
     n = as_int(n, "n", minimum=1, maximum=MAX_POINTS)
     burn_in = as_int(burn_in, "burn_in", minimum=0)
     chains = min(as_int(chains, "chains", minimum=1), n)
@@ -344,7 +344,7 @@ def map_images(system, shape=None) -> np.ndarray:
     >>> map_images(IFS([affine.scaling(0.5)]))[0, 2]
     array([0.5, 0.5])
     """
-    s = _as_ifs(system)
+    s = as_ifs(system)
     P = UNIT_SQUARE if shape is None else as_points(shape, "shape", dim=2)
     return np.matmul(P[None], s.linear_parts) + s.translations[:, None, :]
 

@@ -44,6 +44,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from goldman_lib.angles import cos_sin_degrees
 from goldman_lib.validation import as_float, as_int, as_points
 
 __all__ = ["FORWARD", "MOVE", "TURN", "RESIZE", "COMMANDS", "MAX_COMMANDS", "MAX_DEPTH",
@@ -378,27 +379,13 @@ class Trace:
     last_draws: bool | None = None
 
 
-def _cos_sin_deg(theta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """cos and sin of angles in degrees, exact at multiples of 90 (so squares close exactly)."""
-    theta = np.mod(theta, 360.0)
-    rad = np.radians(theta)
-    c, s = np.cos(rad), np.sin(rad)
-    q = theta / 90.0
-    exact = q == np.round(q)
-    if exact.any():
-        k = np.round(q[exact]).astype(int) % 4
-        c[exact] = np.array([1.0, 0.0, -1.0, 0.0])[k]
-        s[exact] = np.array([0.0, 1.0, 0.0, -1.0])[k]
-    return c, s
-
-
-def _as_state(point, direction):
+def as_state(point, direction):
     p = as_points(point, "point", ndim=1, dim=2)
     w = as_points(direction, "direction", ndim=1, dim=2)
     return p, w
 
 
-def _trace_arrays(codes: np.ndarray, values: np.ndarray, p0: np.ndarray, w0: np.ndarray) -> Trace:
+def trace_arrays(codes: np.ndarray, values: np.ndarray, p0: np.ndarray, w0: np.ndarray) -> Trace:
     turns = np.where(codes == TURN, values, 0.0)
     factors = np.where(codes == RESIZE, values, 1.0)
     total_turn = float(turns.sum())
@@ -410,7 +397,7 @@ def _trace_arrays(codes: np.ndarray, values: np.ndarray, p0: np.ndarray, w0: np.
     total_scale = float(cum_scale[-1]) if cum_scale.size else 1.0
     scale_before = np.concatenate(([1.0], cum_scale[:-1]))
     th = cum_turn[moving]
-    c, s = _cos_sin_deg(th)
+    c, s = cos_sin_degrees(th)
     with np.errstate(over="ignore", invalid="ignore"):
         d = values[moving] * scale_before[moving]
         steps = np.empty((th.size, 2))
@@ -420,7 +407,7 @@ def _trace_arrays(codes: np.ndarray, values: np.ndarray, p0: np.ndarray, w0: np.
         pts[0] = p0
         np.cumsum(steps, axis=0, out=pts[1:])
         pts[1:] += p0
-        cf, sf = _cos_sin_deg(np.array([total_turn]))
+        cf, sf = cos_sin_degrees(np.array([total_turn]))
         w_end = total_scale * np.array([cf[0] * w0[0] - sf[0] * w0[1], sf[0] * w0[0] + cf[0] * w0[1]])
     if not (np.isfinite(pts).all() and np.isfinite(w_end).all()):
         raise ValueError("the turtle's path overflowed (a coordinate became infinite or undefined): "
@@ -447,9 +434,9 @@ def trace(program, *, point=(0, 0), direction=(1, 0), max_commands: int = MAX_CO
     >>> t.point, t.direction, t.total_turning
     (array([2., 1.]), array([0. , 0.5]), 90.0)
     """
-    p0, w0 = _as_state(point, direction)
+    p0, w0 = as_state(point, direction)
     codes, values = expand(program, max_commands=max_commands)
-    return _trace_arrays(codes, values, p0, w0)
+    return trace_arrays(codes, values, p0, w0)
 
 
 def run(program, *, point=(0, 0), direction=(1, 0)) -> list[np.ndarray]:
@@ -508,7 +495,7 @@ def _as_polyline(polyline, name: str = "polyline") -> np.ndarray:
     return as_points(polyline, name, ndim=2, dim=2)
 
 
-def _as_polylines(polylines, name: str = "polylines") -> list[np.ndarray]:
+def as_polylines(polylines, name: str = "polylines") -> list[np.ndarray]:
     if isinstance(polylines, np.ndarray) and polylines.ndim == 2:
         return [_as_polyline(polylines, name)]
     if isinstance(polylines, (list, tuple)) and polylines and np.ndim(polylines[0]) == 1:
@@ -555,7 +542,7 @@ def length(polylines) -> float:
     >>> length(run("FORWARD 3 TURN 90 FORWARD 4 MOVE 1 FORWARD 2"))
     9.0
     """
-    return float(sum(np.hypot(*np.diff(p, axis=0).T).sum() for p in _as_polylines(polylines)))
+    return float(sum(np.hypot(*np.diff(p, axis=0).T).sum() for p in as_polylines(polylines)))
 
 
 def perimeter(polyline, tol: float = 1e-9) -> float:
@@ -721,7 +708,7 @@ class Turtle:
     """
 
     def __init__(self, point=(0, 0), direction=(1, 0)):
-        p, w = _as_state(point, direction)
+        p, w = as_state(point, direction)
         self._p0, self._w0 = p.copy(), w.copy()
         self.point, self.direction = p.copy(), w.copy()
         self._codes: list[np.ndarray] = []
@@ -730,7 +717,7 @@ class Turtle:
 
     def _do(self, code: int, value, name: str):
         value = as_float(value, name)
-        t = _trace_arrays(np.array([code], dtype=np.int8), np.array([value]), self.point, self.direction)
+        t = trace_arrays(np.array([code], dtype=np.int8), np.array([value]), self.point, self.direction)
         self.point, self.direction = t.point, t.direction
         self._turning += t.total_turning
         self._codes.append(np.array([code], dtype=np.int8))
@@ -756,7 +743,7 @@ class Turtle:
     def run(self, program) -> "Turtle":
         """Execute a turtle program (string or :class:`Program`) from the current state."""
         codes, values = expand(program)
-        t = _trace_arrays(codes, values, self.point, self.direction)
+        t = trace_arrays(codes, values, self.point, self.direction)
         self.point, self.direction = t.point, t.direction
         self._turning += t.total_turning
         self._codes.append(codes)
@@ -784,7 +771,7 @@ class Turtle:
         if not self._codes:
             return []
         codes, values = np.concatenate(self._codes), np.concatenate(self._values)
-        return _trace_arrays(codes, values, self._p0, self._w0).polylines
+        return trace_arrays(codes, values, self._p0, self._w0).polylines
 
     def __repr__(self) -> str:
         p, w = self.point, self.direction

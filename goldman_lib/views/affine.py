@@ -21,6 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import affine
+from goldman_lib.angles import cos_sin_degrees
 from goldman_lib.validation import as_points
 from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
@@ -142,7 +143,7 @@ def plot_map(M, figure="letter F", ax=None, *, title: str | None = None):
 
 def _map_of(kind, tx, ty, angle, cx, cy, factor, direction, shear):
     c = (cx, cy)
-    d = affine._cos_sin(direction)
+    d = cos_sin_degrees(direction)
     if kind == "translation":
         return affine.translation([tx, ty]), f"T(v), v = ({tx:.2f}, {ty:.2f})"
     if kind == "rotation":
@@ -217,7 +218,7 @@ def transform_explorer(kind: str = "rotation", figure: str = "letter F") -> Inte
         c = np.array([0.0, 0.0]) if kind == "translation" else np.array([cx, cy])
         center.set_data([c[0]], [c[1]])
         if kind in ("nonuniform scaling", "mirror"):
-            d = np.array(affine._cos_sin(direction))
+            d = np.array(cos_sin_degrees(direction))
             seg = np.array([c - 10 * d, c + 10 * d])
             guide.set_data(seg[:, 0], seg[:, 1])
         elif kind == "translation":

@@ -179,7 +179,7 @@ def looping_lemma_explorer(angle: float = 150.0, repetitions: int = 12, bend: fl
         body = [("FORWARD", 1.0)] + ([("TURN", b), ("FORWARD", 1.0)] if b else []) + [("TURN", a - b)]
         loop = fractals.loop_analysis(body)
         codes, values = fractals._flat(fractals._as_commands(body, "body", allow_recurse=False), 1.0)
-        t = turtle._trace_arrays(np.tile(codes, k), np.tile(values, k), np.zeros(2), np.array([1.0, 0.0]))
+        t = turtle.trace_arrays(np.tile(codes, k), np.tile(values, k), np.zeros(2), np.array([1.0, 0.0]))
         per = len(t.polylines[0]) // k if t.polylines else 1
         starts = t.polylines[0][::per] if t.polylines else np.zeros((1, 2))
         artists.set(t.polylines, (0.0, 0.0), t.point, t.direction)

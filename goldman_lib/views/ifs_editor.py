@@ -88,7 +88,7 @@ def values_from_system(system, max_maps: int = MAX_MAPS) -> dict:
     >>> v["maps"], round(v["sx1"], 4), v["angle1"]
     (4, 0.3333, 60.0)
     """
-    s = ifs.STANDARD[system]() if isinstance(system, str) else ifs._as_ifs(system)
+    s = ifs.STANDARD[system]() if isinstance(system, str) else ifs.as_ifs(system)
     k = len(s)
     if k > max_maps:
         raise ValueError(f"system must have at most {max_maps} maps for the editor; it has {k}")
@@ -148,7 +148,7 @@ def attractor_points(system, algorithm: str = "chaos game", points: int = 100_00
     non-contractive system: it then draws a few deterministic levels from the unit square, drops
     what ran off, and says so in ``note``.
     """
-    s = ifs._as_ifs(system)
+    s = ifs.as_ifs(system)
     k = len(s)
     contractive = s.is_contractive()
     note = ""
