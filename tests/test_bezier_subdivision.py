@@ -445,3 +445,108 @@ def test_join_order_elevates_the_lower_degree_and_agrees_with_join_continuity():
 def test_join_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+# -- §25.3.2 surface-surface intersection --------------------------------------------------------
+# Closed forms: a bilinear patch with evenly spaced control points is the affine map of [0, 1]^2,
+# and z = x^2 + y^2 over [-1, 1]^2 is exactly a biquadratic patch: x = 2u - 1 has Bezier
+# coefficients (-1, 0, 1) and x^2 = (2u - 1)^2 has (1, -1, 1) (degree 3: (1, -1/3, -1/3, 1)).
+
+def _paraboloid(degree):
+    xs = {2: [-1.0, 0.0, 1.0], 3: [-1.0, -1 / 3, 1 / 3, 1.0]}[degree]
+    sq = {2: [1.0, -1.0, 1.0], 3: [1.0, -1 / 3, -1 / 3, 1.0]}[degree]
+    X, Y = np.meshgrid(xs, xs, indexing="ij")
+    Z = np.add.outer(sq, sq)
+    return np.stack([X, Y, Z], axis=-1)
+
+
+def _plane(c, half=1.5):
+    return np.array([[[-half, -half, c], [-half, half, c]], [[half, -half, c], [half, half, c]]])
+
+
+def test_paraboloid_net_is_the_closed_form():
+    # the reference surface itself, at random parameters, before using it as one
+    rng = np.random.default_rng(3)
+    u, v = rng.uniform(0, 1, (2, 50))
+    x, y = 2 * u - 1, 2 * v - 1
+    for degree in (2, 3):
+        np.testing.assert_allclose(bezier.patch_de_casteljau(_paraboloid(degree), u, v),
+                                   np.stack([x, y, x * x + y * y], -1), atol=1e-12)
+
+
+def test_intersect_patches_planes_meet_in_a_known_segment():
+    floor = np.array([[[0.0, 0, 0], [0, 2, 0]], [[2, 0, 0], [2, 2, 0]]])            # z = 0, (x, y) = 2 (u, v)
+    s = np.linspace(0, 1, 4)
+    S, T = np.meshgrid(s, s, indexing="ij")
+    ramp = np.stack([2 * S, 0.5 + T, 2 * S - 1], axis=-1)                              # z = x - 1, bicubic net
+    points, params = bezier.intersect_patches(floor, ramp, tol=1e-3)
+    y = points[:, 1]
+    np.testing.assert_allclose(points[:, [0, 2]], np.tile([1.0, 0.0], (len(points), 1)), atol=1e-12)
+    assert y.min() == pytest.approx(0.5, abs=1e-12) and y.max() == pytest.approx(1.5, abs=1e-12)
+    assert np.diff(np.sort(y)).max() <= 0.5 + 1e-12
+    np.testing.assert_allclose(params, np.stack([np.full_like(y, 0.5), y / 2, np.full_like(y, 0.5), y - 0.5], -1),
+                               atol=1e-12)
+
+
+@pytest.mark.parametrize("degree", [2, 3])
+@pytest.mark.parametrize("c", [0.25, 0.5, 0.81])
+def test_intersect_patches_paraboloid_and_plane_give_the_circle(degree, c):
+    tol = 0.02
+    points, params = bezier.intersect_patches(_paraboloid(degree), _plane(c), tol=tol)
+    r = np.sqrt(c)
+    assert len(points) >= 12
+    # on the circle x^2 + y^2 = c, z = c
+    np.testing.assert_allclose(np.hypot(points[:, 0], points[:, 1]), r, atol=1e-9)
+    np.testing.assert_allclose(points[:, 2], c, atol=1e-9)
+    # on both surfaces at the returned parameters (closed forms of both patches)
+    u, v, s, t = params.T
+    on_a = np.stack([2 * u - 1, 2 * v - 1, (2 * u - 1) ** 2 + (2 * v - 1) ** 2], -1)
+    on_b = np.stack([3 * s - 1.5, 3 * t - 1.5, np.full_like(s, c)], -1)
+    np.testing.assert_allclose(on_a, points, atol=1e-9)
+    np.testing.assert_allclose(on_b, points, atol=1e-9)
+    # the whole circle is covered: no gap between consecutive samples larger than a few pieces
+    angle = np.sort(np.arctan2(points[:, 1], points[:, 0]))
+    gaps = np.diff(np.concatenate([angle, angle[:1] + 2 * np.pi])) * r
+    assert gaps.max() < 0.25
+    assert len(np.unique(np.round(points, 9), axis=0)) == len(points)       # no repeated samples
+
+
+def test_intersect_patches_unpolished_samples_are_within_tol():
+    c, tol = 0.5, 0.02
+    points, params = bezier.intersect_patches(_paraboloid(2), _plane(c), tol=tol, polish=False)
+    assert len(points) >= 12
+    assert np.abs(np.hypot(points[:, 0], points[:, 1]) - np.sqrt(c)).max() <= tol
+    np.testing.assert_allclose(points[:, 2], c, atol=1e-12)
+    # a smaller tolerance samples more densely
+    finer, _ = bezier.intersect_patches(_paraboloid(2), _plane(c), tol=tol / 4)
+    assert len(finer) > len(points)
+
+
+def test_intersect_patches_swapped_patches_give_the_same_curve():
+    p1, x1 = bezier.intersect_patches(_paraboloid(2), _plane(0.5))
+    p2, x2 = bezier.intersect_patches(_plane(0.5), _paraboloid(2))
+    assert len(p1) == len(p2)
+    k1 = np.lexsort(np.round(p1, 9).T)
+    k2 = np.lexsort(np.round(p2, 9).T)
+    np.testing.assert_allclose(p1[k1], p2[k2], atol=1e-9)
+    np.testing.assert_allclose(x1[k1], x2[k2][:, [2, 3, 0, 1]], atol=1e-9)
+
+
+@pytest.mark.parametrize("b", [_plane(2.5), _plane(-0.01), _plane(0.5) + [5.0, 0.0, 0.0]])
+def test_intersect_patches_disjoint_patches_meet_nowhere(b):
+    points, params = bezier.intersect_patches(_paraboloid(2), b)
+    assert points.shape == (0, 3) and params.shape == (0, 4)
+
+
+@pytest.mark.parametrize("kwargs,error,match", [
+    ({"a": [[0, 0, 0]]}, ValueError, "^a must have shape"),
+    ({"b": [[[0, 0]]]}, ValueError, "^b must hold 3-dimensional"),
+    ({"a": [[[0, 0, np.nan]]]}, ValueError, "^a must be finite"),
+    ({"tol": 0}, ValueError, "^tol must be positive"),
+    ({"max_depth": 13}, ValueError, "^max_depth must be <= 12"),
+    ({"max_depth": 1.5}, TypeError, "^max_depth must be an integer"),
+])
+def test_intersect_patches_bad_input(kwargs, error, match):
+    args = {"a": _paraboloid(2), "b": _plane(0.5), **kwargs}
+    with pytest.raises(error, match=match):
+        bezier.intersect_patches(**args)
