@@ -1778,7 +1778,7 @@ def _newton_patches(A: np.ndarray, B: np.ndarray, x: np.ndarray, iterations: int
     return x, res
 
 
-def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True) -> tuple[np.ndarray, np.ndarray]:
+def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True, segments=False) -> tuple[np.ndarray, ...]:
     """Sample points of the curve where two Bezier patches meet, by subdivision (Goldman §25.3.2).
 
     The surface version of curve-curve intersection (:func:`intersect_curves`):
@@ -1802,10 +1802,12 @@ def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True) -> tuple[np.nda
 
     a: (m+1, n+1, 3), b: (p+1, q+1, 3) control nets.  tol: positive float, the flatness
     tolerance (an absolute distance).  max_depth: int in [0, 12], the deepest subdivision.
-    polish: bool.
+    polish: bool.  segments: bool, also return how the samples join up.
     Returns ``(points, params)``: (k, 3) points and (k, 4) parameters ``[u, v, s, t]`` with
     ``points ~ a(u, v) ~ b(s, t)``, sorted by the parameters on a; k = 0 if the patches do not
-    meet.  A sample whose Newton iteration fails keeps its unpolished value.
+    meet.  A sample whose Newton iteration fails keeps its unpolished value.  With
+    ``segments=True``, ``(points, params, pairs)``: pairs (j, 2) are the indices of the samples
+    joined by a triangle-triangle segment -- the intersection curve as a polyline.
     Raises ValueError if a or b is not a finite (m+1, n+1, 3) net, for a non-positive tol or a
     bad max_depth; TypeError if max_depth is not an integer.
 
@@ -1823,7 +1825,7 @@ def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True) -> tuple[np.nda
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=12)
     ends, params = _patch_pair_segments(A, B, tol, max_depth)
     if len(ends) == 0:
-        return np.zeros((0, 3)), np.zeros((0, 4))
+        return (np.zeros((0, 3)), np.zeros((0, 4))) + ((np.zeros((0, 2), dtype=int),) if segments else ())
     pts = ends.reshape(-1, 3)
     x = params.reshape(-1, 4)
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
@@ -1838,7 +1840,35 @@ def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True) -> tuple[np.nda
         pts = np.where(better[:, None], (pa + pb) / 2, pts)
     # merge repeated samples (segment ends shared by neighbouring triangles and pieces)
     key = np.round(np.concatenate([pts / scale, x], axis=1), 9)
-    _, first = np.unique(key, axis=0, return_index=True)
+    _, first, which = np.unique(key, axis=0, return_index=True, return_inverse=True)
     pts, x = pts[first], x[first]
     order = np.lexsort(x[:, ::-1].T)
-    return pts[order], x[order]
+    if not segments:
+        return pts[order], x[order]
+    rank = np.empty_like(order)
+    rank[order] = np.arange(len(order))
+    pairs = np.sort(rank[np.asarray(which).reshape(-1, 2)], axis=1)
+    pairs = np.unique(pairs[pairs[:, 0] != pairs[:, 1]], axis=0)
+    return pts[order], x[order], _bridge_cracks(pts[order], x[order], pairs)
+
+
+def _bridge_cracks(pts: np.ndarray, x: np.ndarray, pairs: np.ndarray) -> np.ndarray:
+    """Join the loose ends of a sampled intersection polyline across the cracks between flat pieces
+    of different sizes: an end inside both parameter squares (the curve cannot end there) is
+    joined to the nearest other such end, if it is no farther than the longest segment."""
+    if len(pairs) == 0:
+        return pairs
+    degree = np.bincount(pairs.ravel(), minlength=len(pts))
+    inside = np.all((x > 1e-9) & (x < 1 - 1e-9), axis=1)
+    loose = list(np.flatnonzero((degree == 1) & inside))
+    reach = float(np.linalg.norm(pts[pairs[:, 0]] - pts[pairs[:, 1]], axis=1).max())
+    extra = []
+    while len(loose) >= 2:
+        i = loose.pop(0)
+        d = np.linalg.norm(pts[loose] - pts[i], axis=1)
+        k = int(np.argmin(d))
+        if d[k] <= reach:
+            extra.append(sorted((i, loose.pop(k))))
+    if not extra:
+        return pairs
+    return np.unique(np.concatenate([pairs, np.array(extra)]), axis=0)

@@ -550,3 +550,42 @@ def test_intersect_patches_bad_input(kwargs, error, match):
     args = {"a": _paraboloid(2), "b": _plane(0.5), **kwargs}
     with pytest.raises(error, match=match):
         bezier.intersect_patches(**args)
+
+
+def _cycles(n, pairs):
+    """Connected components of the graph (n vertices, edges pairs) and the vertex degrees."""
+    parent = list(range(n))
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for i, j in pairs:
+        parent[find(i)] = find(j)
+    return len({find(i) for i in range(n)}), np.bincount(np.ravel(pairs), minlength=n)
+
+
+@pytest.mark.parametrize("c", [0.25, 0.5, 0.81])
+def test_intersect_patches_segments_close_the_circle(c):
+    points, params, pairs = bezier.intersect_patches(_paraboloid(3), _plane(c), tol=0.02, segments=True)
+    components, degree = _cycles(len(points), pairs)
+    assert components == 1 and np.all(degree == 2)          # one closed loop through every sample
+    # each drawn chord of the circle is short, so the polyline stays near the circle
+    chord = np.linalg.norm(points[pairs[:, 0]] - points[pairs[:, 1]], axis=1)
+    assert chord.max() < 0.25
+    p2, x2 = bezier.intersect_patches(_paraboloid(3), _plane(c), tol=0.02)
+    np.testing.assert_array_equal(p2, points)
+
+
+def test_intersect_patches_segments_of_the_planes_are_one_path():
+    floor = np.array([[[0.0, 0, 0], [0, 2, 0]], [[2, 0, 0], [2, 2, 0]]])
+    ramp = np.array([[[0.0, 0.5, -1], [0, 1.5, -1]], [[2, 0.5, 1], [2, 1.5, 1]]])
+    points, params, pairs = bezier.intersect_patches(floor, ramp, segments=True)
+    components, degree = _cycles(len(points), pairs)
+    assert components == 1 and sorted(degree) == [1, 1] + [2] * (len(points) - 2)
+    ends = points[degree == 1]
+    np.testing.assert_allclose(ends[np.argsort(ends[:, 1])], [[1, 0.5, 0], [1, 1.5, 0]], atol=1e-12)
+    empty = bezier.intersect_patches(floor, ramp + [0, 0, 5], segments=True)
+    assert [e.shape for e in empty] == [(0, 3), (0, 4), (0, 2)]

@@ -12,7 +12,7 @@ from goldman_lib.views import subdivision as views
 matplotlib.use("Agg")
 
 FACTORIES = [views.subdivision_view, views.adaptive_rendering_view, views.intersection_view,
-             views.patch_rendering_view]
+             views.patch_rendering_view, views.patch_subdivision_3d_view]
 
 
 @pytest.fixture(autouse=True)
@@ -107,3 +107,60 @@ def test_patch_rendering_view_covers_the_domain():
                                    atol=1e-12)
         counts.append(r["pieces"])
     assert counts[0] < counts[1] < counts[2]
+
+
+def _bump(u, v):
+    """DEFAULT_PATCH_25 in closed form: x = 3u, y = 3v, z = sum z_ij B_i(u) B_j(v) with the
+    cubic Bernstein polynomials written out (z_11 = 2, z_12 = z_21 = 1, the rest 0)."""
+    b1 = lambda t: 3 * t * (1 - t) ** 2          # noqa: E731
+    b2 = lambda t: 3 * t ** 2 * (1 - t)          # noqa: E731
+    return np.stack([3 * u, 3 * v, 2 * b1(u) * b1(v) + b1(u) * b2(v) + b2(u) * b1(v)], -1)
+
+
+def test_patch_subdivision_3d_view_sub_nets_converge_to_the_surface():
+    view = views.patch_subdivision_3d_view()
+    gaps = []
+    for level in range(5):
+        r = view.set_values(mode="sub-nets", level=level, height=0.3)
+        nets, doms = r["sub-nets"], r["domains"]
+        assert nets.shape == (4 ** level, 4, 4, 3)
+        # the rectangles tile the unit square, and the corner points of every sub-net are on the surface
+        assert ((doms[:, 1] - doms[:, 0]) * (doms[:, 3] - doms[:, 2])).sum() == pytest.approx(1.0)
+        for (i, j), (a, b) in {(0, 0): (0, 2), (-1, 0): (1, 2), (0, -1): (0, 3), (-1, -1): (1, 3)}.items():
+            np.testing.assert_allclose(nets[:, i, j], _bump(doms[:, a], doms[:, b]), atol=1e-12)
+        # what the three.js scene holds is what update returned
+        drawn = view.scene.data("sub-nets")
+        assert len(drawn["segments"]) == 24 * 4 ** level
+        np.testing.assert_allclose(drawn["positions"], nets.reshape(-1, 3))
+        gaps.append(r["gap"])
+        assert len(r["points"]) == 0
+    # each level brings the control points about four times closer (O(h^2) convergence)
+    assert all(3.0 < g0 / g1 < 8.0 for g0, g1 in zip(gaps[1:], gaps[2:]))
+
+
+@pytest.mark.parametrize("height", [0.1, 0.3, 0.6])
+def test_patch_subdivision_3d_view_intersection_is_on_both_surfaces(height):
+    view = views.patch_subdivision_3d_view()
+    r = view.set_values(mode="intersection", level=3, height=height)
+    pts, par = r["points"], r["params"]
+    assert len(pts) >= 8
+    np.testing.assert_allclose(_bump(par[:, 0], par[:, 1]), pts, atol=1e-9)     # on the bicubic patch
+    np.testing.assert_allclose(pts[:, 2], height, atol=1e-9)                     # on the plane
+    # the plane patch's own parameters: x = x0 + (x1 - x0) s over its square
+    plane = view.scene.data("second patch")["positions"]
+    x0, x1 = plane[:, 0].min(), plane[:, 0].max()
+    np.testing.assert_allclose(x0 + (x1 - x0) * par[:, 2], pts[:, 0], atol=1e-9)
+    np.testing.assert_allclose(plane[:, 2], height)
+    # the drawn curve is a closed polyline through the points
+    segs = r["segments"]
+    assert len(segs) == len(pts)
+    np.testing.assert_allclose(view.scene.data("intersection")["positions"], pts)
+    # the sub-nets drawn are exactly those whose boxes reach the plane
+    for P in r["sub-nets"]:
+        assert P[..., 2].min() <= height <= P[..., 2].max()
+    assert len(r["sub-nets"]) < 4 ** 3
+
+
+def test_patch_subdivision_3d_view_rejects_an_unknown_mode():
+    with pytest.raises(ValueError, match="mode must be one of"):
+        views.patch_subdivision_3d_view(mode="nope")

@@ -9,6 +9,10 @@ is a plain function returning what it drew.
 >>> view = subdivision_view()
 >>> sorted(view.update(**view.values()))
 ['gap', 'polygons', 'status']
+
+:func:`patch_subdivision_3d_view` is the chapter's three.js view (through
+:class:`goldman_lib.views.three.SceneView`): the sub-nets of a subdivided bicubic patch and the
+intersection of two patches by subdivision.
 """
 
 from __future__ import annotations
@@ -22,7 +26,7 @@ from goldman_lib.views.bezier import DEFAULT_CUBIC, plot_control_polygon, plot_c
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
 __all__ = ["plot_pieces", "plot_boxes", "plot_patch_domains", "subdivision_view", "adaptive_rendering_view",
-           "intersection_view", "patch_rendering_view", "INTERSECTION_EXAMPLES", "WAVY", "DEFAULT_PATCH_25"]
+           "intersection_view", "patch_rendering_view", "patch_subdivision_3d_view", "INTERSECTION_EXAMPLES", "WAVY", "DEFAULT_PATCH_25"]
 
 #: A quartic with two bends: flat parts and tight parts for adaptive rendering.
 WAVY = np.array([[0.0, 0.0], [0.5, 3.0], [2.0, -1.0], [3.5, 2.5], [4.0, 0.5]])
@@ -316,3 +320,187 @@ def patch_rendering_view(ctrl=DEFAULT_PATCH_25, digits: int = 1) -> InteractiveV
     controls = {"digits": int_slider("tol 1e-", digits, 0, 2)}
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="patch rendering by subdivision")
+
+
+# -- three.js: sub-nets and surface-surface intersection (§25.3.2) -------------------------------
+
+def _net_segments(count: int, rows: int, cols: int) -> np.ndarray:
+    """Index pairs (k, 2) of the row and column edges of ``count`` nets of ``rows x cols`` points
+    stored one after another, row by row."""
+    ii, jj = np.meshgrid(np.arange(rows), np.arange(cols), indexing="ij")
+    idx = ii * cols + jj
+    one = np.concatenate([np.stack([idx[:, :-1].ravel(), idx[:, 1:].ravel()], 1),
+                          np.stack([idx[:-1, :].ravel(), idx[1:, :].ravel()], 1)])
+    return (one[None] + (rows * cols) * np.arange(count)[:, None, None]).reshape(-1, 2)
+
+
+def _uniform_subnets(net: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray]:
+    """The 4**level sub-nets of a patch split ``level`` times at the middle (by
+    :func:`goldman_lib.bezier.subdivide_patch`) and their parameter rectangles ``[u0, u1, v0, v1]``."""
+    nets, doms = [net], [(0.0, 1.0, 0.0, 1.0)]
+    for _ in range(level):
+        new_nets, new_doms = [], []
+        for P, (u0, u1, v0, v1) in zip(nets, doms):
+            four = bezier.subdivide_patch(P)
+            um, vm = (u0 + u1) / 2, (v0 + v1) / 2
+            for i, (a, b) in enumerate(((u0, um), (um, u1))):
+                for j, (c, d) in enumerate(((v0, vm), (vm, v1))):
+                    new_nets.append(four[i, j])
+                    new_doms.append((a, b, c, d))
+        nets, doms = new_nets, new_doms
+    return np.array(nets), np.array(doms)
+
+
+def _scene_png(scene, names, lines=("sub-nets", "intersection"), figsize=(4.8, 3.6), dpi: int = 100) -> bytes:
+    """The static picture of a chapter-25 scene: meshes shaded and translucent, the named segment
+    sets drawn over them (matplotlib's depth sorting would otherwise hide nets lying on a
+    surface), z not squashed to the x-y extent."""
+    import io
+
+    from matplotlib.colors import LightSource, to_rgb
+    from matplotlib.figure import Figure
+    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
+
+    fig = Figure(figsize=figsize, dpi=dpi)
+    ax = fig.add_subplot(1, 1, 1, projection="3d", computed_zorder=False)
+    d = np.subtract(scene.camera_position, scene.target)
+    ax.view_init(elev=np.degrees(np.arctan2(d[2], np.hypot(d[0], d[1]))), azim=np.degrees(np.arctan2(d[1], d[0])))
+    light = LightSource(azdeg=315, altdeg=45)
+    pts = []
+    for order, (name, item) in enumerate((n, scene.data(n)) for n in names):
+        pos = item["positions"]
+        if "triangles" in item:
+            tris = pos[item["triangles"]]
+            area = np.linalg.norm(np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0]), axis=1)
+            tris = tris[area > 1e-12]
+            if not len(tris):
+                continue
+            pts.append(pos)
+            normals = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
+            shade = light.shade_normals(normals, fraction=0.9)
+            colors = np.clip(np.asarray(to_rgb(item["color"]))[None] * (0.45 + 0.55 * shade[:, None]), 0, 1)
+            ax.add_collection3d(Poly3DCollection(tris, facecolors=colors, edgecolors="none", alpha=0.75, zorder=order))
+        elif name in lines:
+            segs = pos[item["segments"]]
+            segs = segs[np.linalg.norm(segs[:, 1] - segs[:, 0], axis=1) > 1e-12]
+            if len(segs):
+                width = 2.5 if name == "intersection" else 0.7
+                ax.add_collection3d(Line3DCollection(segs, colors=item["color"], linewidths=width, zorder=10 + order))
+    if pts:
+        allp = np.concatenate(pts)
+        lo, hi = allp.min(0), allp.max(0)
+        for setter, a, b in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), lo, hi):
+            setter(a, b if b > a else a + 1)
+        ax.set_box_aspect((float(hi[0] - lo[0]) or 1, float(hi[1] - lo[1]) or 1, max(float(hi[2] - lo[2]), 1.0)))
+    ax.set_xlabel("x"), ax.set_ylabel("y"), ax.set_zlabel("z")
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", metadata={"Software": None})
+    return buf.getvalue()
+
+
+def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", level: int = 2, height: float = 0.3,
+                              tol: float = 0.02, resolution: int = 24, width: int = 480,
+                              height_px: int = 360) -> InteractiveView:
+    """Subdivision of a Bezier patch in three.js (Goldman §25.2-25.3.2), two modes.
+
+    ``"sub-nets"``: the patch split ``level`` times at the middle of both parameters (0-4); the
+    control nets of all 4**level sub-patches are drawn over the surface and close in on it.
+    ``"intersection"``: a horizontal plane patch at ``height`` meets the patch; the sub-nets at
+    ``level`` whose bounding boxes still meet the plane's are drawn, with the intersection curve
+    of :func:`goldman_lib.bezier.intersect_patches` (flatness ``tol``), drawn as its polyline.
+
+    ``update(mode, level, height)`` returns the drawn nets (k, m+1, n+1, 3), their parameter
+    rectangles (k, 4), the surface grid, and in intersection mode the curve's points (k, 3),
+    parameters (k, 4) and drawn segments (j, 2, 3).
+    """
+    import ipywidgets as widgets
+
+    from goldman_lib.views.three import SceneView, grid_triangles
+
+    modes = ("sub-nets", "intersection")
+    if mode not in modes:
+        raise ValueError(f"mode must be one of {', '.join(modes)}; got {mode!r}")
+    net = as_points(ctrl, "ctrl", ndim=3, dim=3, min_count=2)
+    resolution = as_int(resolution, "resolution", minimum=2, maximum=100)
+    tol = float(tol)
+    rows, cols = net.shape[0], net.shape[1]
+    grid = np.linspace(0.0, 1.0, resolution)
+    surface = bezier.patch_evaluate_grid(net, grid, grid)
+    lo, hi = net.reshape(-1, 3).min(0), net.reshape(-1, 3).max(0)
+    margin = 0.1 * float((hi - lo)[:2].max())
+
+    def plane(h):
+        return np.array([[[lo[0] - margin, lo[1] - margin, h], [lo[0] - margin, hi[1] + margin, h]],
+                         [[hi[0] + margin, lo[1] - margin, h], [hi[0] + margin, hi[1] + margin, h]]])
+
+    # the sub-nets of every level, and how far their control points are from the surface (at the
+    # parameters (i/m, j/n) of each piece), computed once
+    levels = {}
+    for L in range(5):
+        nets, doms = _uniform_subnets(net, L)
+        fu = np.linspace(0, 1, rows)
+        fv = np.linspace(0, 1, cols)
+        U = doms[:, :1, None] + (doms[:, 1:2, None] - doms[:, :1, None]) * fu[None, :, None]
+        V = doms[:, 2:3, None] + (doms[:, 3:4, None] - doms[:, 2:3, None]) * fv[None, None, :]
+        U, V = np.broadcast_arrays(U, V)
+        on = bezier.patch_de_casteljau(net, U.ravel(), V.ravel()).reshape(nets.shape)
+        levels[L] = (nets, doms, float(np.linalg.norm(nets - on, axis=-1).max()))
+
+    center = (lo + hi) / 2
+    scene = SceneView(width=width, height=height_px, target=tuple(center),
+                      camera_position=tuple(center + np.array([3.0, -4.2, 3.6])), axes=0)
+    scene.add_mesh("surface", surface.reshape(-1, 3), grid_triangles(resolution, resolution),
+                   color=style.PALETTE["surface"])
+    P2 = plane(height)
+    scene.add_mesh("second patch", P2.reshape(-1, 3), np.array([[0, 2, 1], [1, 2, 3]]), color="#edae49",
+                   opacity=0.6)
+    nets0 = levels[0][0]
+    scene.add_segments("sub-nets", nets0.reshape(-1, 3), _net_segments(1, rows, cols), color="#333333")
+    scene.add_segments("intersection", np.zeros((2, 3)) + center, [[0, 1]], color=style.PALETTE["point"])
+    nowhere = np.zeros((1, 3)) + center        # a degenerate primitive stands for "nothing drawn"
+    nothing = {"sub-nets": nets0[:0], "domains": np.zeros((0, 4))}
+
+    def update(mode, level, height):
+        nets, doms, gap = levels[int(level)]
+        if mode == "sub-nets":
+            shown, shown_doms = nets, doms
+            scene.replace_mesh("second patch", np.repeat(nowhere, 3, axis=0), [[0, 1, 2]])
+            scene.replace_segments("intersection", np.repeat(nowhere, 2, axis=0), [[0, 1]])
+            points, params, segs = np.zeros((0, 3)), np.zeros((0, 4)), np.zeros((0, 2, 3))
+            status = (f"level {level}: {len(nets)} sub-patches; their control points are within {gap:.4f} "
+                      f"of the surface")
+        else:
+            P2 = plane(height)
+            boxes = np.stack([nets.min(axis=(1, 2)), nets.max(axis=(1, 2))], axis=1)
+            meet = np.all((boxes[:, 0] <= P2.max(axis=(0, 1))) & (P2.min(axis=(0, 1)) <= boxes[:, 1]), axis=1)
+            shown, shown_doms = nets[meet], doms[meet]
+            points, params, pairs = bezier.intersect_patches(net, P2, tol=tol, segments=True)
+            segs = points[pairs] if len(pairs) else np.zeros((0, 2, 3))
+            scene.replace_mesh("second patch", P2.reshape(-1, 3), [[0, 2, 1], [1, 2, 3]])
+            if len(pairs):
+                scene.replace_segments("intersection", points, pairs)
+            else:
+                scene.replace_segments("intersection", np.repeat(nowhere, 2, axis=0), [[0, 1]])
+            res = 0.0
+            if len(points):
+                res = float(np.abs(bezier.patch_de_casteljau(net, params[:, 0], params[:, 1])[:, 2] - height).max())
+            status = (f"plane z = {height:.2f}: {len(points)} points on the intersection curve "
+                      f"(|z - {height:.2f}| <= {res:.1e}); level {level}: {len(shown)} of {len(nets)} "
+                      f"sub-patches meet the plane's box")
+        if len(shown):
+            scene.replace_segments("sub-nets", shown.reshape(-1, 3), _net_segments(len(shown), rows, cols))
+        else:
+            scene.replace_segments("sub-nets", np.repeat(nowhere, 2, axis=0), [[0, 1]])
+        return {"surface": surface, "sub-nets": shown if len(shown) else nothing["sub-nets"],
+                "domains": shown_doms if len(shown) else nothing["domains"], "gap": gap,
+                "points": points, "params": params, "segments": segs, "status": status}
+
+    level = as_int(level, "level", minimum=0, maximum=4)
+    controls = {"mode": widgets.Dropdown(options=list(modes), value=mode, description="show",
+                                         style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+                "level": int_slider("level", level, 0, 4),
+                "height": float_slider("plane z", height, 0.05, 0.6, 0.05)}
+    view = InteractiveView(controls=controls, views=[scene.widget], update=update, static=lambda: _scene_png(scene, ("surface", "second patch", "sub-nets", "intersection")),
+                           title="patch subdivision and intersection", side=True)
+    view.scene = scene
+    return view
