@@ -393,6 +393,7 @@ def _scene_png(scene, names, lines=("sub-nets", "intersection"), figsize=(4.8, 3
             setter(a, b if b > a else a + 1)
         ax.set_box_aspect((float(hi[0] - lo[0]) or 1, float(hi[1] - lo[1]) or 1, max(float(hi[2] - lo[2]), 1.0)))
     ax.set_xlabel("x"), ax.set_ylabel("y"), ax.set_zlabel("z")
+    ax.locator_params(axis="z", nbins=3)
     buf = io.BytesIO()
     fig.savefig(buf, format="png", metadata={"Software": None})
     return buf.getvalue()
