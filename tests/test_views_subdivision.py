@@ -154,7 +154,9 @@ def test_patch_subdivision_3d_view_intersection_is_on_both_surfaces(height):
     # the drawn curve is a closed polyline through the points
     segs = r["segments"]
     assert len(segs) == len(pts)
-    np.testing.assert_allclose(view.scene.data("intersection")["positions"], pts)
+    drawn = view.scene.data("intersection")["positions"]        # drawn a hair above the plane
+    np.testing.assert_allclose(drawn[:, :2], pts[:, :2])
+    assert np.all((drawn[:, 2] > pts[:, 2]) & (drawn[:, 2] <= pts[:, 2] + 0.021))   # 1% of the net height 2
     # the sub-nets drawn are exactly those whose boxes reach the plane
     for P in r["sub-nets"]:
         assert P[..., 2].min() <= height <= P[..., 2].max()

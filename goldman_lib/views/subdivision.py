@@ -459,6 +459,7 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
     scene.add_segments("sub-nets", nets0.reshape(-1, 3), _net_segments(1, rows, cols), color="#333333")
     scene.add_segments("intersection", np.zeros((2, 3)) + center, [[0, 1]], color=style.PALETTE["point"])
     nowhere = np.zeros((1, 3)) + center        # a degenerate primitive stands for "nothing drawn"
+    lift = np.array([0.0, 0.0, 0.01 * max(float(hi[2] - lo[2]), 1e-3)])
     nothing = {"sub-nets": nets0[:0], "domains": np.zeros((0, 4))}
 
     def update(mode, level, height):
@@ -479,7 +480,8 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
             segs = points[pairs] if len(pairs) else np.zeros((0, 2, 3))
             scene.replace_mesh("second patch", P2.reshape(-1, 3), [[0, 2, 1], [1, 2, 3]])
             if len(pairs):
-                scene.replace_segments("intersection", points, pairs)
+                # drawn a hair above the plane, so the translucent plane does not hide it (z-fighting)
+                scene.replace_segments("intersection", points + lift, pairs)
             else:
                 scene.replace_segments("intersection", np.repeat(nowhere, 2, axis=0), [[0, 1]])
             res = 0.0
