@@ -351,54 +351,6 @@ def _uniform_subnets(net: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarra
     return np.array(nets), np.array(doms)
 
 
-def _scene_png(scene, names, lines=("sub-nets", "intersection"), figsize=(4.8, 3.6), dpi: int = 100) -> bytes:
-    """The static picture of a chapter-25 scene: meshes shaded and translucent, the named segment
-    sets drawn over them (matplotlib's depth sorting would otherwise hide nets lying on a
-    surface), z not squashed to the x-y extent."""
-    import io
-
-    from matplotlib.colors import LightSource, to_rgb
-    from matplotlib.figure import Figure
-    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
-
-    fig = Figure(figsize=figsize, dpi=dpi)
-    ax = fig.add_subplot(1, 1, 1, projection="3d", computed_zorder=False)
-    d = np.subtract(scene.camera_position, scene.target)
-    ax.view_init(elev=np.degrees(np.arctan2(d[2], np.hypot(d[0], d[1]))), azim=np.degrees(np.arctan2(d[1], d[0])))
-    light = LightSource(azdeg=315, altdeg=45)
-    pts = []
-    for order, (name, item) in enumerate((n, scene.data(n)) for n in names):
-        pos = item["positions"]
-        if "triangles" in item:
-            tris = pos[item["triangles"]]
-            area = np.linalg.norm(np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0]), axis=1)
-            tris = tris[area > 1e-12]
-            if not len(tris):
-                continue
-            pts.append(pos)
-            normals = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
-            shade = light.shade_normals(normals, fraction=0.9)
-            colors = np.clip(np.asarray(to_rgb(item["color"]))[None] * (0.45 + 0.55 * shade[:, None]), 0, 1)
-            ax.add_collection3d(Poly3DCollection(tris, facecolors=colors, edgecolors="none", alpha=0.75, zorder=order))
-        elif name in lines:
-            segs = pos[item["segments"]]
-            segs = segs[np.linalg.norm(segs[:, 1] - segs[:, 0], axis=1) > 1e-12]
-            if len(segs):
-                width = 2.5 if name == "intersection" else 0.7
-                ax.add_collection3d(Line3DCollection(segs, colors=item["color"], linewidths=width, zorder=10 + order))
-    if pts:
-        allp = np.concatenate(pts)
-        lo, hi = allp.min(0), allp.max(0)
-        for setter, a, b in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), lo, hi):
-            setter(a, b if b > a else a + 1)
-        ax.set_box_aspect((float(hi[0] - lo[0]) or 1, float(hi[1] - lo[1]) or 1, max(float(hi[2] - lo[2]), 1.0)))
-    ax.set_xlabel("x"), ax.set_ylabel("y"), ax.set_zlabel("z")
-    ax.locator_params(axis="z", nbins=3)
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", metadata={"Software": None})
-    return buf.getvalue()
-
-
 def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", level: int = 2, height: float = 0.3,
                               tol: float = 0.02, resolution: int = 24, width: int = 480,
                               height_px: int = 360) -> InteractiveView:
@@ -456,8 +408,8 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
     scene.add_mesh("second patch", P2.reshape(-1, 3), np.array([[0, 2, 1], [1, 2, 3]]), color="#edae49",
                    opacity=0.6)
     nets0 = levels[0][0]
-    scene.add_segments("sub-nets", nets0.reshape(-1, 3), _net_segments(1, rows, cols), color="#333333")
-    scene.add_segments("intersection", np.zeros((2, 3)) + center, [[0, 1]], color=style.PALETTE["point"])
+    scene.add_segments("sub-nets", nets0.reshape(-1, 3), _net_segments(1, rows, cols), color="#333333", width=0.7)
+    scene.add_segments("intersection", np.zeros((2, 3)) + center, [[0, 1]], color=style.PALETTE["point"], width=2.5)
     nowhere = np.zeros((1, 3)) + center        # a degenerate primitive stands for "nothing drawn"
     lift = np.array([0.0, 0.0, 0.01 * max(float(hi[2] - lo[2]), 1e-3)])
     nothing = {"sub-nets": nets0[:0], "domains": np.zeros((0, 4))}
@@ -503,7 +455,7 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
                                          style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
                 "level": int_slider("level", level, 0, 4),
                 "height": float_slider("plane z", height, 0.05, 0.6, 0.05)}
-    view = InteractiveView(controls=controls, views=[scene.widget], update=update, static=lambda: _scene_png(scene, ("surface", "second patch", "sub-nets", "intersection")),
+    view = InteractiveView(controls=controls, views=[scene.widget], update=update, static=scene.to_png,
                            title="patch subdivision and intersection", side=True)
     view.scene = scene
     return view

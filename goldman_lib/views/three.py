@@ -100,17 +100,19 @@ class SceneView:
         material = p3.MeshPhongMaterial(color=color, side="DoubleSide", shininess=40,
                                         transparent=opacity < 1, opacity=opacity)
         obj = p3.Mesh(geometry=geom, material=material)
-        self._add(name, obj, geom, kind="mesh", positions=pos, triangles=tri, color=color)
+        self._add(name, obj, geom, kind="mesh", positions=pos, triangles=tri, color=color, opacity=float(opacity))
 
-    def add_segments(self, name: str, positions, segments, color: str = "#7a7a7a"):
-        """Line segments between ``positions[segments[:, 0]]`` and ``positions[segments[:, 1]]``."""
+    def add_segments(self, name: str, positions, segments, color: str = "#7a7a7a", width: float = 1.2):
+        """Line segments between ``positions[segments[:, 0]]`` and ``positions[segments[:, 1]]``.
+
+        width: the line width of the static picture (WebGL draws every line 1 pixel wide)."""
         pos = as_points(positions, "positions", dim=3)
         seg = np.asarray(segments, dtype=np.int64)
         if seg.ndim != 2 or seg.shape[1] != 2 or (seg.size and seg.max() >= len(pos)):
             raise ValueError(f"segments must have shape (k, 2) with indices below {len(pos)}; got shape {seg.shape}")
         geom = self._p3.BufferGeometry(attributes={"position": self._attr(pos[seg].reshape(-1, 3))})
         obj = self._p3.LineSegments(geometry=geom, material=self._p3.LineBasicMaterial(color=color, linewidth=2))
-        self._add(name, obj, geom, kind="segments", positions=pos, segments=seg, color=color)
+        self._add(name, obj, geom, kind="segments", positions=pos, segments=seg, color=color, width=float(width))
 
     def add_points(self, name: str, positions, color: str = "#d1495b", size: float = 0.12):
         """Round-ish dots of world size ``size`` at ``positions`` ``(n, 3)``."""
@@ -206,31 +208,47 @@ class SceneView:
 
     # -- the static fallback -------------------------------------------------------------------
     def to_png(self, figsize=(4.8, 3.6), dpi: int = 100) -> bytes:
-        """PNG bytes of the scene drawn by matplotlib from the camera's starting direction."""
+        """PNG bytes of the scene drawn by matplotlib from the camera's starting direction.
+
+        Meshes are shaded (translucent if their opacity is below 1); segments and points are drawn
+        over them, since matplotlib's depth sorting of polygons against lines would bury a control
+        net lying on its surface.  Degenerate triangles and zero-length segments (the padding of a
+        view whose geometry shrank) are left out.  Axes have equal scales.
+        """
         from matplotlib.colors import LightSource, to_rgb
         from matplotlib.figure import Figure
-        from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+        from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
         fig = Figure(figsize=figsize, dpi=dpi)
-        ax = fig.add_subplot(1, 1, 1, projection="3d")
+        ax = fig.add_subplot(1, 1, 1, projection="3d", computed_zorder=False)
         d = np.subtract(self.camera_position, self.target)
         ax.view_init(elev=np.degrees(np.arctan2(d[2], np.hypot(d[0], d[1]))), azim=np.degrees(np.arctan2(d[1], d[0])))
         light = LightSource(azdeg=315, altdeg=45)
         everything = []
-        for item in self._items.values():
+        for order, item in enumerate(self._items.values()):
             pos = item["positions"]
-            everything.append(pos)
             if item["kind"] == "mesh":
                 tris = pos[item["triangles"]]
                 normals = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
+                keep = np.linalg.norm(normals, axis=1) > 1e-12
+                if not keep.any():
+                    continue
+                tris, normals = tris[keep], normals[keep]
                 shade = light.shade_normals(normals, fraction=0.9)
                 colors = np.clip(np.asarray(to_rgb(item["color"]))[None] * (0.45 + 0.55 * shade[:, None]), 0, 1)
-                ax.add_collection3d(Poly3DCollection(tris, facecolors=colors, edgecolors="none"))
+                ax.add_collection3d(Poly3DCollection(tris, facecolors=colors, edgecolors="none",
+                                                     alpha=min(1.0, item["opacity"] + 0.15), zorder=order))
+                everything.append(tris.reshape(-1, 3))
             elif item["kind"] == "segments":
-                for a, b in item["segments"]:
-                    ax.plot(*pos[[a, b]].T, color=item["color"], linewidth=1.2)
+                segs = pos[item["segments"]]
+                segs = segs[np.linalg.norm(segs[:, 1] - segs[:, 0], axis=1) > 1e-12]
+                if len(segs):
+                    ax.add_collection3d(Line3DCollection(segs, colors=item["color"], linewidths=item["width"],
+                                                         zorder=100 + order))
+                    everything.append(segs.reshape(-1, 3))
             else:
-                ax.scatter(*pos.T, color=item["color"], s=18, depthshade=False)
+                ax.scatter(*pos.T, color=item["color"], s=18, depthshade=False, zorder=200 + order)
+                everything.append(pos)
         if everything:
             pts = np.concatenate(everything)
             lo, hi = pts.min(0), pts.max(0)
