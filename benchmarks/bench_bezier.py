@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from benchmarks.timing import best_times, report
+from benchmarks.timing import best_times, report, report_targets
 from goldman_lib import bezier as gb
 
 CURVE_DEGREE = 7
@@ -82,9 +82,7 @@ def main() -> dict[str, float]:
     rng = np.random.default_rng(24)
     ratios = {**bench_curve(rng), **bench_patch(rng)}
     targets = {"bernstein_evaluate": 3.0, "patch_evaluate_grid": 1.0}
-    for name, limit in targets.items():
-        verdict = "met" if ratios[name] <= limit else "MISSED"
-        print(f"target {name} <= {limit:g}x reference: {verdict} ({ratios[name]:.2f}x)")
+    report_targets(ratios, targets)
     return ratios
 
 

@@ -26,7 +26,7 @@ from collections import Counter
 
 import numpy as np
 
-from benchmarks.timing import best_time, best_times, fmt_time, report
+from benchmarks.timing import best_time, best_times, fmt_time, report, report_targets
 from goldman_lib import knot_insertion as ki
 
 DEGREE = 3
@@ -174,9 +174,7 @@ def main() -> dict[str, float]:
     ratios = {**bench_boehm(rng), **bench_oslo(rng)}
     bench_subdivision(rng)
     targets = {"boehm_x1_vs_geomdl": 1.0, "oslo_vs_geomdl": 1.0}
-    for name, limit in targets.items():
-        verdict = "met" if ratios[name] <= limit else "MISSED"
-        print(f"target {name} <= {limit:g}x reference: {verdict} ({ratios[name]:.2f}x)")
+    report_targets(ratios, targets)
     return ratios
 
 

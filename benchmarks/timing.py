@@ -83,3 +83,10 @@ def report(name: str, ours: float, ref: float | None = None, ref_name: str = "re
                 f"ours/reference = {ours / ref:.1f}x")
     print(line, flush=True)
     return line
+
+
+def report_targets(ratios: dict[str, float], targets: dict[str, float]) -> None:
+    """Print whether each ratio (ours / reference, measured in this run) meets its target."""
+    for name, limit in targets.items():
+        verdict = "met" if ratios[name] <= limit else "MISSED"
+        print(f"target {name} <= {limit:g}x reference: {verdict} ({ratios[name]:.2f}x)")
