@@ -53,6 +53,10 @@ def main(only: str | None = None):
         drawn_text = f"update + redraw {fmt_time(drawn):>10}" if drawn is not None else "(rendered by the browser)"
         verdict = "ok" if total < TARGET else "OVER 50 ms"
         print(f"{name:<36} update {fmt_time(alone):>10}   {drawn_text}   {verdict}")
+        if view.figure is not None:  # one figure at a time: a benchmark of 40+ views must not pile them up
+            import matplotlib.pyplot as plt
+
+            plt.close(view.figure)
     print(f"slowest callback: {fmt_time(worst)} (target {fmt_time(TARGET)})")
 
 
