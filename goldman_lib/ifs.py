@@ -143,6 +143,12 @@ class IFS:
 
 
 def as_ifs(system) -> IFS:
+    """An :class:`IFS` from an IFS or a list of 3x3 affine maps (Goldman §6.1); every function of
+    this module accepts either.  Raises TypeError naming ``system`` otherwise.
+
+    >>> as_ifs([affine.scaling(0.5)])
+    IFS('unnamed', 1 maps)
+    """
     if isinstance(system, IFS):
         return system
     try:

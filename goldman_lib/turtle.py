@@ -380,12 +380,26 @@ class Trace:
 
 
 def as_state(point, direction):
+    """The turtle's state ``(P, w)`` (Goldman §1.2) as two validated 2-vectors.
+
+    >>> as_state((0, 0), (1, 0))
+    (array([0., 0.]), array([1., 0.]))
+    """
     p = as_points(point, "point", ndim=1, dim=2)
     w = as_points(direction, "direction", ndim=1, dim=2)
     return p, w
 
 
 def trace_arrays(codes: np.ndarray, values: np.ndarray, p0: np.ndarray, w0: np.ndarray) -> Trace:
+    """Run flat command arrays (as :func:`expand` returns them) from the state ``(p0, w0)``
+    (Goldman §1.2), vectorised: headings are cumulative sums of the turns, step sizes cumulative
+    products of the RESIZE factors.  Recursive programs (``goldman_lib.fractals``) expand to such
+    arrays and draw through here.  No validation: use :func:`trace` for programs from users.
+
+    >>> codes, values = expand("FORWARD 1 TURN 90 FORWARD 1")
+    >>> trace_arrays(codes, values, np.zeros(2), np.array([1.0, 0.0])).polylines[0].tolist()
+    [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]
+    """
     turns = np.where(codes == TURN, values, 0.0)
     factors = np.where(codes == RESIZE, values, 1.0)
     total_turn = float(turns.sum())
@@ -496,6 +510,12 @@ def _as_polyline(polyline, name: str = "polyline") -> np.ndarray:
 
 
 def as_polylines(polylines, name: str = "polylines") -> list[np.ndarray]:
+    """A drawing (Goldman §1.3) as a list of validated ``(m, 2)`` polylines: one polyline or a list
+    of them.  Raises ValueError naming the polyline at fault.
+
+    >>> [p.shape for p in as_polylines([[0, 0], [1, 0]])]
+    [(2, 2)]
+    """
     if isinstance(polylines, np.ndarray) and polylines.ndim == 2:
         return [_as_polyline(polylines, name)]
     if isinstance(polylines, (list, tuple)) and polylines and np.ndim(polylines[0]) == 1:
