@@ -227,8 +227,8 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
     title = ax.set_title("", fontsize=10)
 
     controls = {"maps": int_slider("maps", initial["maps"], 1, max_maps, width="200px"),
-                "edit": widgets.ToggleButtons(options=list(range(1, max_maps + 1)), value=1, description="edit map",
-                                              style={"button_width": "28px", "description_width": "60px"})}
+                "edit": widgets.ToggleButtons(options=list(range(1, max_maps + 1)), value=1, description="edit",
+                                              style={"button_width": "34px", "description_width": "48px"})}
     for i in range(max_maps):
         for key, (label, low, high, step) in PARAMETERS.items():
             controls[f"{key}{i}"] = float_slider(label, initial[f"{key}{i}"], low, high, step,
@@ -239,8 +239,8 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
     controls["points"].step = 1000
     controls["levels"] = int_slider("levels", levels, 0, 12)
     controls["condensation"] = widgets.Dropdown(options=list(CONDENSATIONS), value=initial["condensation"],
-                                                description="condense", style={"description_width": "60px"},
-                                                layout=widgets.Layout(width="260px"))
+                                                description="condensation", style={"description_width": "90px"},
+                                                layout=widgets.Layout(width="290px"))
 
     def update(maps, edit, algorithm, points, levels, condensation, **params):
         k = max(1, min(int(maps), max_maps))

@@ -1,13 +1,12 @@
-"""The live deck (jupyterlab-slideshow) of the Bezier chapter: run the notebook, start the deck,
-walk forward until a slide shows a three.js view, move that view's slider and check the canvas
-changes, then stop the deck.  Cells stay live inside the deck, so pythreejs works there.
+"""Live decks (jupyterlab-slideshow): run a chapter, start its deck, walk forward until a slide
+shows a given live view, move that view's first slider and check its canvas changes, then stop the
+deck.  Cells stay live inside the deck, so pythreejs and ipympl work there.
 
-GOLDMAN_DECK_NOTEBOOK (a path under the served root) overrides the notebook, for development.
+Two decks: chapter 24 up to its three.js patch editor, and chapter 6 up to the IFS map editor (an
+ipympl figure, the shared Part I component an instructor edits live).
 """
 
 from __future__ import annotations
-
-import os
 
 import pytest
 
@@ -16,12 +15,20 @@ from .labdriver import changed_fraction, wait_changed, wait_for, wait_nonblank
 
 pytestmark = pytest.mark.browser
 
-DECK_NOTEBOOK = os.environ.get("GOLDMAN_DECK_NOTEBOOK", "course/24_bezier_curves_and_surfaces.ipynb")
 CHANGE_TOLERANCE = 0.001
 
-# Per three.js canvas: is it inside the window and on top at its centre (what a viewer sees)?
-_JS_THREE_ON_SCREEN = """
-() => Array.from(document.querySelectorAll('.jupyter-threejs canvas')).map((c, i) => {
+# (notebook, what to look for, the title of the view that holds it or "" for any view)
+DECKS = [
+    ("course/24_bezier_curves_and_surfaces.ipynb", ".jupyter-threejs canvas", ""),
+    ("course/06_ifs_fractals.ipynb", ".jupyter-matplotlib-canvas-div", "IFS map editor"),
+]
+
+# Per canvas of the wanted kind (in a view with the wanted title): is it inside the window and on
+# top at its centre (what a viewer sees)?
+_JS_ON_SCREEN = """
+([selector, title]) => Array.from(document.querySelectorAll(selector)).map((c, i) => {
+  const view = c.closest('.goldman-interactive');
+  if (title && !(view && view.textContent.includes(title))) return {i, onTop: false};
   const r = c.getBoundingClientRect();
   const cx = r.x + r.width / 2, cy = r.y + r.height / 2;
   const inView = r.width > 0 && r.height > 0 && cx > 0 && cy > 0 && cx < innerWidth && cy < innerHeight;
@@ -46,31 +53,34 @@ _JS_SLIDE = """
 """
 
 
-def test_live_deck_three_view_responds(request):
-    assert (LAB_ROOT / DECK_NOTEBOOK).exists(), f"{DECK_NOTEBOOK} is missing: the live-deck test needs it"
+@pytest.mark.parametrize("notebook,selector,title", DECKS, ids=["24-three.js", "06-ifs-editor"])
+def test_live_deck_view_responds(request, notebook, selector, title):
+    assert (LAB_ROOT / notebook).exists(), f"{notebook} is missing: the live-deck test needs it"
     lab = request.getfixturevalue("lab")
     page = lab.page
-    lab.open(DECK_NOTEBOOK)
+    lab.open(notebook)
     state = lab.run_all()
     assert not state["errors"], "cells raised:\n" + "\n".join(state["errors"])
     page.evaluate("() => { const w = window.__goldmanNotebook; w.content.activeCellIndex = 0; "
                   "w.content.deselectAll(); }")
     lab.command("deck:start")
     try:
-        _walk_and_move(lab, page)
+        _walk_and_move(lab, page, notebook, selector, title)
     finally:
         lab.command("deck:stop")
         page.wait_for_function("() => !document.querySelector('.jp-Deck')", timeout=30_000)
 
 
-def _walk_and_move(lab, page):
+def _walk_and_move(lab, page, notebook, selector, title):
+    stem = "live-deck-" + notebook.split("/")[-1][:2]
+    on_screen = lambda: page.evaluate(_JS_ON_SCREEN, [selector, title])  # noqa: E731
     page.wait_for_function("() => !!document.querySelector('.jp-Deck')", timeout=30_000)
 
     slide = page.evaluate(_JS_SLIDE)
     steps, seen, found = 0, [slide["heading"]], None
     slides = {slide["slide"]}
     for _ in range(300):
-        hits = [c for c in page.evaluate(_JS_THREE_ON_SCREEN) if c["onTop"]]
+        hits = [c for c in on_screen() if c["onTop"]]
         if hits:
             found = hits[0]["i"]
             break
@@ -94,15 +104,18 @@ def _walk_and_move(lab, page):
             seen.append(slide["heading"])
         page.wait_for_timeout(300)          # let the slide transition settle before judging visibility
     walked = len(slides)
-    assert found is not None, f"walked {walked} slides ({seen}) and none showed a three.js canvas"
+    what = f"{title or 'a view'} ({selector})"
+    assert found is not None, f"walked {walked} slides ({seen}) and none showed {what}"
 
-    canvas = page.locator(".jupyter-threejs canvas").nth(found)
-    view = page.locator(".goldman-interactive").filter(has=canvas)
+    canvas = page.locator(selector).nth(found)
+    # the view holding this canvas (its nearest goldman-interactive ancestor)
+    view = canvas.locator("xpath=ancestor::*[contains(concat(' ', normalize-space(@class), ' '), "
+                          "' goldman-interactive ')][1]")
     before, st = wait_nonblank(canvas)
-    (SCREENSHOTS / "live-deck-three-before.png").write_bytes(before)
-    page.screenshot(path=str(SCREENSHOTS / "live-deck-slide.png"))
-    assert st.nonblank(), f"the three.js canvas on slide {walked} looks blank ({st})"
-    assert view.count() == 1, "the three.js canvas on the slide is not inside a goldman-interactive view"
+    (SCREENSHOTS / f"{stem}-before.png").write_bytes(before)
+    page.screenshot(path=str(SCREENSHOTS / f"{stem}-slide.png"))
+    assert st.nonblank(), f"{what} on slide {walked} looks blank ({st})"
+    assert view.count() == 1, f"{what} on the slide is not inside a goldman-interactive view"
     handle = view.locator(".goldman-controls .noUi-handle").first
     handle.focus()
     for _ in range(5):
@@ -111,12 +124,12 @@ def _walk_and_move(lab, page):
     if frac <= CHANGE_TOLERANCE:
         handle.press("End")
         after, frac = wait_changed(canvas, before, CHANGE_TOLERANCE, timeout=20)
-    (SCREENSHOTS / "live-deck-three-after.png").write_bytes(after)
+    (SCREENSHOTS / f"{stem}-after.png").write_bytes(after)
     # focusing the slider may make its code cell the active one, but the slide must stay, in view
     still_here = (page.evaluate(_JS_SLIDE)["slide"] == slide["slide"]
-                  and page.evaluate(_JS_THREE_ON_SCREEN)[found]["onTop"])
-    print(f"\nlive deck of {DECK_NOTEBOOK}: {steps} deck steps over {walked} slides {seen}; slide {walked} "
-          f"({slide['heading']!r}) holds three.js canvas #{found} ({st}); moving its slider changed "
+                  and on_screen()[found]["onTop"])
+    print(f"\nlive deck of {notebook}: {steps} deck steps over {walked} slides {seen}; slide {walked} "
+          f"({slide['heading']!r}) holds {what} #{found} ({st}); moving its slider changed "
           f"{frac:.1%} of the canvas pixels (changed_fraction={changed_fraction(before, after):.4f})")
     assert still_here, "pressing keys on the slider moved the deck to another slide"
     assert frac > CHANGE_TOLERANCE, f"moving the slider changed only {frac:.2%} of the canvas pixels"
