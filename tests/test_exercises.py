@@ -37,3 +37,59 @@ def test_check_points_names_the_first_point_that_is_off():
 
 def test_fmt_is_compact_and_has_no_negative_zero():
     assert fmt(-0.0) == "0" and fmt(1 / 3) == "0.3333" and fmt([2, -0.0]) == "(2, 0)"
+
+
+# -- every chapter's checkers, found by discovery -------------------------------------------------
+# Each chapter module ``goldman_lib.exercises.chNN`` has ``PROBLEMS`` (checker name -> statement)
+# and the checkers themselves.  Whatever the chapter, a checker must treat ``None`` (and ``...``) as
+# "not answered yet", answer garbage with a message rather than an exception, and have a problem
+# statement that cites its chapter.  Chapter test files check right and wrong answers.
+
+import importlib  # noqa: E402
+import pkgutil  # noqa: E402
+
+import pytest  # noqa: E402
+
+import goldman_lib.exercises as exercises_pkg  # noqa: E402
+
+
+def _chapter_checkers():
+    found = []
+    for info in pkgutil.iter_modules(exercises_pkg.__path__):
+        if not info.name.startswith("ch"):
+            continue
+        module = importlib.import_module(f"goldman_lib.exercises.{info.name}")
+        for name in module.PROBLEMS:
+            found.append(pytest.param(module, name, id=f"{info.name}.{name}"))
+    return found
+
+
+CHAPTER_CHECKERS = _chapter_checkers()
+GARBAGE = ("abc", [[1, 2], [3]], np.nan, [np.nan, 1.0], {"a": 1}, [1.0, 2.0], [1.0, 2.0, 3.0, 4.0, 5.0])
+
+
+def test_every_chapter_with_a_notebook_has_checkers():
+    chapters = {p.id.split(".")[0] for p in CHAPTER_CHECKERS}
+    assert {"ch01", "ch02", "ch06", "ch24", "ch27", "ch30"} <= chapters
+
+
+@pytest.mark.parametrize("module,name", CHAPTER_CHECKERS)
+def test_checker_has_a_statement_citing_its_chapter(module, name):
+    chapter = int(module.__name__.rsplit("ch", 1)[1])
+    assert callable(getattr(module, name, None)), f"PROBLEMS names {name}, which the module does not define"
+    assert f"§{chapter}." in module.PROBLEMS[name], f"the statement of {name} cites no section of chapter {chapter}"
+
+
+@pytest.mark.parametrize("module,name", CHAPTER_CHECKERS)
+def test_unanswered_is_not_failed(module, name):
+    for blank in (None, ...):
+        r = getattr(module, name)(blank)
+        assert isinstance(r, Result) and not r.answered and not r.correct
+        assert repr(r).startswith("Not answered yet"), repr(r)
+
+
+@pytest.mark.parametrize("module,name", CHAPTER_CHECKERS)
+def test_garbage_gets_a_message_not_an_exception(module, name):
+    for bad in GARBAGE:
+        r = getattr(module, name)(bad)
+        assert isinstance(r, Result) and not r.correct and r.answered and r.message, (bad, r)

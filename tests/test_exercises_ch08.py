@@ -18,14 +18,6 @@ def _wrong(result, *fragments):
         assert f in result.message, (f, result.message)
 
 
-@pytest.mark.parametrize("checker", CHECKERS)
-@pytest.mark.parametrize("blank", [None, ...])
-def test_unanswered(checker, blank):
-    result = checker(blank)
-    assert not result.answered and not result.correct
-    assert repr(result).startswith("Not answered yet: replace None with")
-
-
 def test_every_checker_has_a_problem_statement():
     assert set(ch08.PROBLEMS) == {c.__name__ for c in CHECKERS}
 

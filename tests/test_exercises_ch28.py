@@ -1,7 +1,6 @@
 """Tests of the chapter-28 exercise checkers.  Right answers are worked by hand from the problem
 constants (so a bug in goldman_lib.knot_insertion cannot make a checker accept a wrong answer)."""
 
-import numpy as np
 import pytest
 
 from goldman_lib.exercises import Result, ch28
@@ -45,26 +44,6 @@ def test_problem_constants_are_what_the_hand_answers_assume():
 def test_right_answer_is_correct(checker, answer):
     r = checker(answer)
     assert isinstance(r, Result) and r.correct and r.answered, r
-
-
-@pytest.mark.parametrize("checker,answer", CHECKERS, ids=[c.__name__ for c, _ in CHECKERS])
-def test_unanswered_is_not_failed(checker, answer):
-    for blank in (None, ...):
-        r = checker(blank)
-        assert not r.answered and not r.correct
-        assert repr(r).startswith("Not answered yet: replace None with")
-
-
-@pytest.mark.parametrize("checker,answer", CHECKERS, ids=[c.__name__ for c, _ in CHECKERS])
-def test_garbage_gets_a_message_not_an_exception(checker, answer):
-    for bad in ("abc", [[1, 2], [3]], np.nan, [np.nan, 1.0]):
-        r = checker(bad)
-        assert not r.correct and r.answered and r.message
-
-
-@pytest.mark.parametrize("checker,answer", CHECKERS, ids=[c.__name__ for c, _ in CHECKERS])
-def test_every_checker_has_a_problem_statement(checker, answer):
-    assert "Goldman §28." in ch28.PROBLEMS[checker.__name__]
 
 
 def test_boehm_messages():

@@ -18,8 +18,21 @@ from goldman_lib import turtle
 from goldman_lib.exercises import (Result, read_number, check_number, check_points, correct, fmt, is_unanswered,
                                    unanswered, wrong)
 
-__all__ = ["exercise_hexagon", "exercise_star_angle", "exercise_five_pointed_star",
+__all__ = ["PROBLEMS", "exercise_hexagon", "exercise_star_angle", "exercise_five_pointed_star",
            "exercise_final_position", "exercise_total_turning", "sides_of", "FINAL_POSITION_PROGRAM"]
+
+
+#: The problem statement of each exercise (its checker's name -> the text), as in chapters 2-30.
+PROBLEMS = {
+    "exercise_hexagon": "Write a turtle program that draws a regular hexagon with side 2 and closes (Goldman §1.3).",
+    "exercise_star_angle": ("Give the TURN angle a for which REPEAT 7 [FORWARD 1 TURN a] draws the star polygon {7/3} "
+                            "(Goldman §1.3)."),
+    "exercise_five_pointed_star": "Write a turtle program for the five-pointed star {5/2} with side 1 (Goldman §1.3).",
+    "exercise_final_position": ("Where does the turtle end after FINAL_POSITION_PROGRAM, starting at (0, 0) heading "
+                                "(1, 0)? Give the point (x, y) (Goldman §1.2)."),
+    "exercise_total_turning": ("The total turning, in degrees, of the turtle drawing the star {7/3} with "
+                               "REPEAT 7 [FORWARD 1 TURN 360*3/7] (Goldman §1.3)."),
+}
 
 
 def sides_of(polyline, tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray]:

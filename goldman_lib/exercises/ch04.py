@@ -23,11 +23,13 @@ __all__ = ["PROBLEMS", "exercise_rotate_point", "exercise_compose_matrix", "exer
 
 #: The problems, by checker name (the notebook states them in full).
 PROBLEMS = {
-    "exercise_rotate_point": "the image of P = (3, 1) under the rotation by 90 degrees about Q = (1, 1)",
-    "exercise_compose_matrix": "the 3x3 matrix of: translate by (2, -1), then scale by 2 about the origin",
-    "exercise_three_points": "the 3x3 matrix of the affine map sending (0, 0), (1, 0), (0, 1) to (1, 1), (3, 2), (0, 3)",
-    "exercise_vector_image": "the image of the vector v = (1, 1) under: translate by (5, 2), then rotate by 90 degrees",
-    "exercise_nonuniform_scaling": "the 3x3 matrix of the scaling by 3 along the direction (1, 1) about the origin",
+    "exercise_rotate_point": "the image of P = (3, 1) under the rotation by 90 degrees about Q = (1, 1) (Goldman §4.2.2, §4.4)",
+    "exercise_compose_matrix": "the 3x3 matrix of: translate by (2, -1), then scale by 2 about the origin (Goldman §4.3, §4.5)",
+    "exercise_three_points": ("the 3x3 matrix of the affine map sending (0, 0), (1, 0), (0, 1) to (1, 1), (3, 2), (0, 3) "
+                              "(Goldman §4.7.3)"),
+    "exercise_vector_image": ("the image of the vector v = (1, 1) under: translate by (5, 2), then rotate by 90 degrees "
+                              "(Goldman §4.5)"),
+    "exercise_nonuniform_scaling": "the 3x3 matrix of the scaling by 3 along the direction (1, 1) about the origin (Goldman §4.7.2)",
 }
 
 _TOL = 1e-6

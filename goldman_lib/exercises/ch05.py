@@ -21,12 +21,13 @@ __all__ = ["PROBLEMS", "TYPE_EXPRESSIONS", "exercise_hexagon_program", "exercise
            "exercise_expression_types", "exercise_image_program", "exercise_sheared_turn", "segments_of"]
 
 PROBLEMS = {
-    "exercise_hexagon_program": "a CODO program drawing the regular hexagon with centre (0, 0) and a vertex at (1, 0)",
-    "exercise_one_third": "a CODO expression for the point one third of the way from P to Q",
-    "exercise_expression_types": "for each expression, 'point', 'vector' or 'illegal'",
+    "exercise_hexagon_program": ("a CODO program drawing the regular hexagon with centre (0, 0) and a vertex at (1, 0) "
+                                 "(Goldman §5.2.2)"),
+    "exercise_one_third": "a CODO expression for the point one third of the way from P to Q (Goldman §5.2.1)",
+    "exercise_expression_types": "for each expression, 'point', 'vector' or 'illegal' (Goldman §5.2.1)",
     "exercise_image_program": "a CODO program drawing the image of the unit square under the map sending "
-                              "(0, 0), (1, 0), (0, 1) to (1, 0), (3, 1), (2, 2)",
-    "exercise_sheared_turn": "the turtle's first TURN angle for the sheared square",
+                              "(0, 0), (1, 0), (0, 1) to (1, 0), (3, 1), (2, 2) (Goldman §5.2, §4.7.3)",
+    "exercise_sheared_turn": "the turtle's first TURN angle for the sheared square (Goldman §5.1)",
 }
 
 
