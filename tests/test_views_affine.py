@@ -17,14 +17,6 @@ from goldman_lib.views import affine as av  # noqa: E402
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
 
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    import matplotlib.pyplot as plt
-
-    plt.close("all")
-
-
 def drawn(view, k):
     """The points of line k of the view's axes (after the two axis lines), NaN separators dropped."""
     xy = np.asarray(view.figure.axes[0].lines[k + 2].get_xydata(), dtype=float)

@@ -11,30 +11,6 @@ from goldman_lib.views.bezier import DEFAULT_CUBIC
 
 matplotlib.use("Agg")
 
-FACTORIES = [views.blossom_view, views.interval_view]
-
-
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    import matplotlib.pyplot as plt
-
-    plt.close("all")
-
-
-@pytest.mark.parametrize("factory", FACTORIES, ids=lambda f: f.__name__)
-def test_sweep_every_control(factory):
-    view = factory()
-    for values in view.sweep_values():
-        result = view.update(**values)
-        for key, value in result.items():
-            if key != "status":
-                arrays = value if isinstance(value, list) else [value]
-                assert all(np.all(np.isfinite(a)) for a in arrays), f"non-finite {key} at {values}"
-        assert result["status"]
-    assert view.static_png().startswith(b"\x89PNG")
-
-
 def test_blossom_view_apex_on_the_diagonal_is_the_curve_point():
     view = views.blossom_view()
     r = view.set_values(u1=0.3, u2=0.3, u3=0.3)

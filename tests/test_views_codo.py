@@ -13,14 +13,6 @@ from goldman_lib import affine, codo, turtle  # noqa: E402
 from goldman_lib.views import codo as cv  # noqa: E402
 
 
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    import matplotlib.pyplot as plt
-
-    plt.close("all")
-
-
 def line_points(view, k):
     xy = np.asarray(view.figure.axes[0].lines[k].get_xydata(), dtype=float)
     return xy[~np.isnan(xy).any(axis=1)]

@@ -17,14 +17,6 @@ from goldman_lib.views import conformal_ifs as views  # noqa: E402
 SQ3 = math.sqrt(3)
 
 
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    import matplotlib.pyplot as plt
-
-    plt.close("all")
-
-
 def _w(angle, scale):
     return scale * np.array([math.cos(math.radians(angle)), math.sin(math.radians(angle))])
 

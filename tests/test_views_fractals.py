@@ -14,14 +14,6 @@ from goldman_lib import fractals  # noqa: E402
 from goldman_lib.views import fractals as fv  # noqa: E402
 
 
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    import matplotlib.pyplot as plt
-
-    plt.close("all")
-
-
 def _same(a, b):
     assert len(a) == len(b)
     for p, q in zip(a, b):

@@ -16,14 +16,6 @@ from goldman_lib.views import turtle as tv  # noqa: E402
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
 
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    import matplotlib.pyplot as plt
-
-    plt.close("all")
-
-
 def _check_drawn(result):
     polys = result["polylines"]
     for p in polys:

@@ -1,7 +1,7 @@
 """Every widget factory of goldman_lib.views, found by its return annotation (``->
 InteractiveView``), is swept over its controls' ranges, corners included: no exception escapes
-``update``, nothing it draws is NaN or infinite (NaN rows that separate strokes aside), and the
-view has a static fallback PNG.  A new chapter's widgets are covered as soon as they exist;
+``update``, nothing it draws is NaN or infinite, it always reports a status, and the view has a
+static fallback PNG.  A new chapter's widgets are covered as soon as they exist;
 chapter tests add checks of *what* is drawn.
 """
 
@@ -36,7 +36,7 @@ def drawn_arrays(result):
 
 def test_every_chapter_so_far_has_widget_factories():
     ids = {p.id.split(".")[0] for p in FACTORIES}
-    assert {"bezier", "turtle"} <= ids
+    assert {"bezier", "turtle", "ifs_editor", "knot_editor", "fractals", "subdivision_surfaces"} <= ids
 
 
 @pytest.mark.parametrize("factory", FACTORIES)
@@ -44,9 +44,12 @@ def test_sweep_over_every_control_range(factory):
     view = factory()
     assert isinstance(view, InteractiveView) and view.last_error is None, view.last_error
     combos = view.sweep_values(n=3)
+    if any(hasattr(w, "min") and hasattr(w, "max") for w in view.controls.values()):
+        assert len(combos) >= 3, "a view with sliders is swept over at least its ends and middle"
     for values in combos:
         result = view.update(**values)
-        assert isinstance(result, dict) and isinstance(result.get("status", ""), str)
+        # every view says what it shows (a count, a distance, an error bound) in its status line
+        assert isinstance(result, dict) and isinstance(result.get("status"), str) and result["status"], values
         for arr in drawn_arrays(result):
             assert np.all(np.isfinite(arr)), f"{factory.__name__} drew a non-finite value at {values}"
     view.set_values(**combos[-1])
