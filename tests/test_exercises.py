@@ -65,7 +65,8 @@ def _chapter_checkers():
 
 
 CHAPTER_CHECKERS = _chapter_checkers()
-GARBAGE = ("abc", [[1, 2], [3]], np.nan, [np.nan, 1.0], {"a": 1}, [1.0, 2.0], [1.0, 2.0, 3.0, 4.0, 5.0])
+GARBAGE = ("abc", [[1, 2], [3]], [[1, "x"]], np.nan, np.inf, [np.nan, 1.0], {"a": 1}, [1.0, 2.0],
+           [1.0, 2.0, 3.0, 4.0, 5.0])
 
 
 def test_every_chapter_with_a_notebook_has_checkers():
@@ -85,7 +86,7 @@ def test_unanswered_is_not_failed(module, name):
     for blank in (None, ...):
         r = getattr(module, name)(blank)
         assert isinstance(r, Result) and not r.answered and not r.correct
-        assert repr(r).startswith("Not answered yet"), repr(r)
+        assert repr(r).startswith("Not answered yet: replace None with"), repr(r)
 
 
 @pytest.mark.parametrize("module,name", CHAPTER_CHECKERS)

@@ -12,16 +12,6 @@ def _assert_wrong(result, *fragments):
         assert f in result.message, (f, result.message)
 
 
-@pytest.mark.parametrize("checker", [ch01.exercise_hexagon, ch01.exercise_star_angle,
-                                     ch01.exercise_five_pointed_star, ch01.exercise_final_position,
-                                     ch01.exercise_total_turning])
-@pytest.mark.parametrize("blank", [None, ...])
-def test_unanswered(checker, blank):
-    result = checker(blank)
-    assert not result.answered and not result.correct
-    assert repr(result).startswith("Not answered yet: replace None with")
-
-
 @pytest.mark.parametrize("program", ["REPEAT 6 [FORWARD 2 TURN 60]", "REPEAT 6 [FORWARD 2 TURN -60]",
                                      "repeat 6 [forward 1 forward 1 turn 60]",
                                      "TURN 30 REPEAT 6 [FORWARD 2 TURN 60]",
