@@ -35,7 +35,7 @@ import math
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_int, as_parameter, as_points, check_finite
+from goldman_lib.validation import as_float, as_float_array, as_int, as_parameter, as_points, check_finite
 
 __all__ = [
     "check_knots", "clamped_knots", "uniform_knots", "find_span", "multiplicity", "domain",
@@ -78,12 +78,7 @@ def check_knots(knots, degree, n_ctrl=None, name: str = "knots") -> np.ndarray:
     ValueError: knots must be non-decreasing; knots[3]=0.2 < knots[2]=0.5
     """
     degree = as_int(degree, "degree", minimum=0)
-    if isinstance(knots, (str, bytes)):
-        raise TypeError(f"{name} must be numeric, not {type(knots).__name__}")
-    try:
-        t = np.array(knots, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be a numeric array-like; got {type(knots).__name__} ({exc})") from None
+    t = np.array(as_float_array(knots, name))  # a copy: the caller's array is never aliased
     if t.ndim != 1:
         raise ValueError(f"{name} must be a 1-D array of knots; got shape {t.shape}")
     check_finite(t, name)

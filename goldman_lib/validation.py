@@ -19,7 +19,7 @@ import numbers
 
 import numpy as np
 
-__all__ = ["as_points", "as_parameter", "as_int", "as_float", "check_finite"]
+__all__ = ["as_points", "as_parameter", "as_int", "as_float", "as_float_array", "check_finite"]
 
 
 def _index(arr, flat):
@@ -44,7 +44,13 @@ def check_finite(arr: np.ndarray, name: str) -> np.ndarray:
     return arr
 
 
-def _as_float_array(x, name: str) -> np.ndarray:
+def as_float_array(x, name: str) -> np.ndarray:
+    """``x`` as a float array, or TypeError naming ``name`` if it is not numeric (finiteness is
+    :func:`check_finite`'s job).
+
+    >>> as_float_array([1, 2], "knots")
+    array([1., 2.])
+    """
     if isinstance(x, (str, bytes)):
         raise TypeError(f"{name} must be numeric, not {type(x).__name__}")
     try:
@@ -67,7 +73,7 @@ def as_points(x, name: str, *, ndim: int | None = 2, dim: int | tuple[int, ...] 
     ...
     ValueError: ctrl must hold 2-dimensional points (last axis of length 2); got shape (1, 3)
     """
-    arr = _as_float_array(x, name)
+    arr = as_float_array(x, name)
     if ndim is not None and arr.ndim != ndim:
         shape = {1: "(d,)", 2: "(n, d)", 3: "(m, n, d)"}.get(ndim, f"{ndim} axes")
         raise ValueError(f"{name} must have shape {shape} with coordinates in the last axis; got shape {arr.shape}")
@@ -96,7 +102,7 @@ def as_parameter(t, name: str = "t", *, low: float | None = None, high: float | 
     ...
     ValueError: t must lie in [0.0, 1.0]; t is 2.0
     """
-    arr = check_finite(_as_float_array(t, name), name)
+    arr = check_finite(as_float_array(t, name), name)
     for bound, bad in ((low, arr < low if low is not None else None), (high, arr > high if high is not None else None)):
         if bad is not None and bad.any():
             flat = int(np.flatnonzero(bad)[0])
