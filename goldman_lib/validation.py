@@ -19,7 +19,15 @@ import numbers
 
 import numpy as np
 
-__all__ = ["as_points", "as_parameter", "as_int", "as_float", "as_float_array", "check_finite"]
+__all__ = ["as_points", "as_parameter", "as_int", "as_float", "as_float_array", "check_finite", "within_budget",
+           "largest_within", "MAX_ITEMS", "MAX_ITERATIONS"]
+
+#: The most points, segments, triangles or matrix entries one call may produce or allocate: about
+#: 160 MB of float64 pairs, a second or two of numpy work on a 2-core machine.  Every level, count,
+#: degree and size parameter is bounded through :func:`within_budget` so that its result stays under it.
+MAX_ITEMS = 10_000_000
+#: The most iterations (or interpreted steps) one call may run.
+MAX_ITERATIONS = 1_000_000
 
 
 def _index(arr, flat):
@@ -160,3 +168,54 @@ def as_float(x, name: str, *, positive: bool = False, nonzero: bool = False) -> 
     if nonzero and x == 0:
         raise ValueError(f"{name} must be nonzero; got {x}")
     return x
+
+
+def largest_within(cost, limit: int, start: int = 0) -> int:
+    """The largest integer ``v >= start`` with ``cost(v) <= limit``, for a non-decreasing ``cost``
+    (``start - 1`` if even ``cost(start)`` is over).  Evaluates ``cost`` only at small arguments
+    (doubling, then bisection), so an exponential cost is never computed at a huge input.
+
+    >>> largest_within(lambda level: 4 ** level, 10_000_000)
+    11
+    """
+    if cost(start) > limit:
+        return start - 1
+    lo, step = start, 1
+    while cost(lo + step) <= limit:
+        lo, step = lo + step, step * 2
+        if step > 2 ** 62:
+            return lo
+    hi = lo + step  # cost(lo) <= limit < cost(hi)
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        lo, hi = (mid, hi) if cost(mid) <= limit else (lo, mid)
+    return lo
+
+
+def within_budget(value, name: str, *, cost, what: str, unit: str = "points", limit: int = MAX_ITEMS,
+                  minimum: int = 0) -> int:
+    """Check a size parameter (a level, count, degree, number of iterations) against the work its
+    result would cost, before any work starts: the one work-budget rule of the library.
+
+    value: the learner's integer.  cost(v) -> the number of ``unit`` the result has at ``v`` (exact,
+    Python ints; non-decreasing in ``v``).  what: the result in words, for the message.  limit: the
+    budget (:data:`MAX_ITEMS` points by default, :data:`MAX_ITERATIONS` for iteration counts).
+    Returns ``value`` as an ``int``.  Raises ``TypeError`` for a non-integer and ``ValueError`` naming
+    the parameter, the largest allowed value and why.
+
+    >>> within_budget(5, "level", cost=lambda n: 4 ** n + 1, what="the Koch curve", unit="points")
+    5
+    >>> within_budget(10**6, "level", cost=lambda n: 4 ** n + 1, what="the Koch curve", unit="points")
+    Traceback (most recent call last):
+    ...
+    ValueError: level must be <= 11: the Koch curve at level 12 has 16,777,217 points, over the limit of 10,000,000
+    """
+    value = as_int(value, name, minimum=minimum)
+    if value <= minimum:
+        return value
+    largest = largest_within(cost, limit, start=minimum)
+    if value > largest:
+        over = largest + 1
+        raise ValueError(f"{name} must be <= {largest}: {what} at {name} {over} has {cost(over):,} {unit}, "
+                         f"over the limit of {limit:,}")
+    return value

@@ -16,7 +16,8 @@ def test_result_verdicts_render_as_text_and_html():
 def test_check_number_says_how_far_off():
     assert check_number(6.0000001, 6, what="x").correct
     r = check_number(6.5, 6, what="the perimeter", hint="six sides")
-    assert repr(r) == "Not yet: the perimeter should be 6, you gave 6.5 (off by 0.5). Hint: six sides."
+    assert repr(r) == "Not yet: the perimeter is off by 0.5. Hint: six sides."
+    assert "6" not in repr(check_number(6.5, 6, what="x")).replace("6.5", ""), "the expected value is not given"
     assert repr(check_number("six", 6, what="x")) == "Not yet: x should be a number; you gave 'six'."
     assert repr(check_number(float("nan"), 6, what="x")) == "Not yet: x should be a finite number; you gave nan."
     assert not check_number(None, 6, what="x").answered and not check_number(..., 6, what="x").answered
@@ -31,7 +32,7 @@ def test_read_number():
 def test_check_points_names_the_first_point_that_is_off():
     assert check_points([[0, 0], [1, 1]], np.array([[0, 0], [1, 1]]), what="P").correct
     r = check_points([[0, 0], [1, 2]], [[0, 0], [1, 1]], what="the points")
-    assert repr(r) == "Not yet: point 1 of the points should be (1, 1), you gave (1, 2) (1 away)."
+    assert repr(r) == "Not yet: point 1 of the points, (1, 2), is 1 away from where it should be (1 of 2 points are off)."
     assert "shape (2, 2); yours has shape (3, 2)" in repr(check_points(np.zeros((3, 2)), np.zeros((2, 2)), what="P"))
 
 
@@ -94,3 +95,79 @@ def test_garbage_gets_a_message_not_an_exception(module, name):
     for bad in GARBAGE:
         r = getattr(module, name)(bad)
         assert isinstance(r, Result) and not r.correct and r.answered and r.message, (bad, r)
+
+
+# -- the programming-project checker --------------------------------------------------------------
+
+from goldman_lib.exercises.projects import Case, check_project, compare_numbers, compare_points  # noqa: E402
+
+SQUARE_CASES = [Case(f"x = {x}", (x,), kind="negative" if x < 0 else "") for x in (0.0, 1.5, -2.0, 3.0)]
+
+
+def _square(x):
+    return x * x
+
+
+def test_project_checker_accepts_a_correct_function_and_names_the_case_kinds():
+    r = check_project(lambda x: x ** 2, SQUARE_CASES, reference=_square, compare=compare_numbers(), what="squaring")
+    assert r.correct and repr(r) == "Correct: squaring passes all 4 cases, including negative."
+
+
+def test_project_checker_reports_the_first_wrong_case_with_input_output_and_hint():
+    r = check_project(lambda x: x * abs(x), SQUARE_CASES, reference=_square, compare=compare_numbers(),
+                      what="squaring", hint="the sign")
+    assert not r.correct and r.answered
+    assert repr(r) == ("Not yet: case 3 of 4 (x = -2.0): your function returned -4; it is off by 8. "
+                       "Hint: the sign.")
+
+
+def test_project_checker_reports_the_learners_exception_with_their_line():
+    def broken(x):
+        y = x + 1
+        return [y][2]
+
+    r = check_project(broken, SQUARE_CASES, reference=_square, compare=compare_numbers(), what="squaring")
+    assert not r.correct and r.answered
+    assert "case 1 of 4 (x = 0.0): your function raised IndexError ('list index out of range')" in r.message
+    assert "line 3 of its cell: `return [y][2]`" in r.message
+
+
+def test_project_checker_stops_endless_loops_and_recursion():
+    def forever(x):
+        while True:
+            x += 1
+
+    def recurse(x):
+        return recurse(x)
+
+    r = check_project(forever, SQUARE_CASES, reference=_square, compare=compare_numbers(), what="s", time_limit=0.2)
+    assert not r.correct and "longer than 0.2 s" in r.message
+    r = check_project(recurse, SQUARE_CASES, reference=_square, compare=compare_numbers(), what="s")
+    assert not r.correct and "recursed too deeply" in r.message
+
+
+def test_project_checker_unanswered_and_not_callable():
+    assert not check_project(None, SQUARE_CASES, reference=_square, compare=compare_numbers(), what="s").answered
+
+    def starter(x):
+        """Square x."""
+        ...
+
+    assert not check_project(starter, SQUARE_CASES, reference=_square, compare=compare_numbers(), what="s").answered
+    r = check_project(4.0, SQUARE_CASES, reference=_square, compare=compare_numbers(), what="s")
+    assert r.answered and not r.correct and "pass your function itself" in r.message
+
+
+def test_project_checker_does_not_let_a_function_spoil_its_input():
+    import numpy as np
+
+    cases = [Case("points", (np.array([[0.0, 0.0], [1.0, 1.0]]),))] * 2
+
+    def mutate(p):
+        p += 1
+        return p
+
+    r = check_project(mutate, cases, reference=lambda p: p + 1, compare=compare_points(), what="shift")
+    assert r.correct, r
+    r = check_project(lambda p: p[:1], cases, reference=lambda p: p + 1, compare=compare_points(), what="shift")
+    assert "shape (1, 2); the expected result has shape (2, 2)" in r.message

@@ -14,7 +14,14 @@ Not answered yet: replace None with the perimeter.
 >>> check_number(6.0, 6.0, what="the perimeter")
 Correct: the perimeter is 6.
 >>> check_number(5.5, 6.0, what="the perimeter", hint="a hexagon has six sides")
-Not yet: the perimeter should be 6, you gave 5.5 (off by 0.5). Hint: a hexagon has six sides.
+Not yet: the perimeter is off by 0.5. Hint: a hexagon has six sides.
+
+A wrong answer is explained, never answered: messages say how far off an answer is and what to
+check, not what the answer is (``tests/test_exercises.py`` feeds every checker its recognised slips
+and fails if a message gives the expected value away).  A right answer may confirm it.  Worked
+solutions are not printed by code: they sit in collapsed ``<details>`` blocks of the notebook
+(``tests/test_solutions.py`` runs their code and checks each one passes its checker), and the
+programming projects' checker is :mod:`goldman_lib.exercises.projects`.
 """
 
 from __future__ import annotations
@@ -25,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = ["Result", "correct", "wrong", "unanswered", "is_unanswered", "read_number", "read_points", "check_number",
-           "check_points", "fmt", "fmt_points"]
+           "check_points", "fmt", "fmt_points", "off_by"]
 
 
 def fmt(x, digits: int = 4) -> str:
@@ -148,16 +155,15 @@ def check_number(answer, expected: float, *, what: str, tol: float = 1e-6, hint:
         return problem
     if abs(value - expected) <= tol:
         return correct(f"{what} is {fmt(expected)}.")
-    msg = f"{what} should be {fmt(expected)}, you gave {fmt(value)} (off by {fmt(abs(value - expected), 3)})."
-    return wrong(msg + (f" Hint: {hint}." if hint else ""))
+    return wrong(f"{what} is {off_by(value, expected)}." + (f" Hint: {hint}." if hint else ""))
 
 
 def check_points(answer, expected, *, what: str, tol: float = 1e-6, hint: str | None = None) -> Result:
     """Check an array of points against ``expected`` (same shape) within ``tol`` per coordinate,
-    naming the first point that is off.
+    naming the first point that is off and how far, without saying where it should be.
 
     >>> check_points([[0, 0], [1, 1.1]], [[0, 0], [1, 1]], what="the control points")
-    Not yet: point 1 of the control points should be (1, 1), you gave (1, 1.1) (0.1 away).
+    Not yet: point 1 of the control points, (1, 1.1), is 0.1 away from where it should be (1 of 2 points are off).
     """
     got, problem = read_points(answer, what)
     if problem is not None:
@@ -171,6 +177,19 @@ def check_points(answer, expected, *, what: str, tol: float = 1e-6, hint: str | 
         return correct(f"{what} match.")
     k = int(bad[0])
     g, e = got.reshape(err.shape)[k], exp.reshape(err.shape)[k]
-    msg = (f"point {k} of {what} should be {fmt(e)}, you gave {fmt(g)} "
-           f"({fmt(np.linalg.norm(g - e), 3)} away).")
+    msg = (f"point {k} of {what}, {fmt(g)}, is {fmt(np.linalg.norm(g - e), 2)} away from where it should be "
+           f"({bad.size} of {err.shape[0]} points are off).")
     return wrong(msg + (f" Hint: {hint}." if hint else ""))
+
+
+def off_by(value: float, expected: float) -> str:
+    """How far a number is from the expected one, in words that do not give the expected value
+    away: the distance to two significant digits, with no direction (and no relative error, which
+    with the distance would give the expected value back).
+
+    >>> off_by(5.5, 6.0)
+    'off by 0.5'
+    >>> off_by(0.3333, 1 / 3)
+    'off by 3.3e-05'
+    """
+    return f"off by {fmt(abs(float(value) - float(expected)), 2)}"
