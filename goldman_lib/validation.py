@@ -20,7 +20,7 @@ import numbers
 import numpy as np
 
 __all__ = ["as_points", "as_parameter", "as_int", "as_float", "as_float_array", "check_finite", "within_budget",
-           "largest_within", "MAX_ITEMS", "MAX_ITERATIONS"]
+           "largest_within", "MAX_ITEMS", "MAX_ITERATIONS", "as_tolerance"]
 
 #: The most points, segments, triangles or matrix entries one call may produce or allocate: about
 #: 160 MB of float64 pairs, a second or two of numpy work on a 2-core machine.  Every level, count,
@@ -58,9 +58,22 @@ def as_float_array(x, name: str) -> np.ndarray:
 
     >>> as_float_array([1, 2], "knots")
     array([1., 2.])
+    >>> as_float_array([1 + 2j], "t")
+    Traceback (most recent call last):
+    ...
+    TypeError: t must be real; complex numbers are not points or parameters here
     """
     if isinstance(x, (str, bytes)):
         raise TypeError(f"{name} must be numeric, not {type(x).__name__}")
+    if isinstance(x, (complex, np.complexfloating)) or (isinstance(x, np.ndarray) and np.iscomplexobj(x)):
+        raise TypeError(f"{name} must be real; complex numbers are not points or parameters here")
+    if isinstance(x, (list, tuple)):
+        try:
+            probe = np.asarray(x)
+        except (TypeError, ValueError):
+            probe = None
+        if probe is not None and np.iscomplexobj(probe):
+            raise TypeError(f"{name} must be real; complex numbers are not points or parameters here")
     try:
         arr = np.asarray(x, dtype=float)
     except (TypeError, ValueError) as exc:
@@ -219,3 +232,16 @@ def within_budget(value, name: str, *, cost, what: str, unit: str = "points", li
         raise ValueError(f"{name} must be <= {largest}: {what} at {name} {over} has {cost(over):,} {unit}, "
                          f"over the limit of {limit:,}")
     return value
+
+
+def as_tolerance(tol, name: str = "tol") -> float:
+    """A tolerance: a finite, positive real number (NaN would make every comparison False).
+
+    >>> as_tolerance(1e-9)
+    1e-09
+    >>> as_tolerance(float("nan"))
+    Traceback (most recent call last):
+    ...
+    ValueError: tol must be finite; got nan
+    """
+    return as_float(tol, name, positive=True)
