@@ -35,6 +35,12 @@ def test_notebook_runs_and_views_respond(lab, notebook):
     problems = lab.dom_problems()
     assert not problems, f"{rel}: error output or widget error views:\n" + "\n".join(problems)
     nb = page.locator(".jp-NotebookPanel:not(.lm-mod-hidden) .jp-Notebook")
+    # After Run All no answer shows: worked solutions are closed <details> blocks, and no checker
+    # says "Correct" (every exercise cell starts unanswered).
+    details = nb.locator("details")
+    assert all(not details.nth(k).evaluate("d => d.open") for k in range(details.count())), (
+        f"{rel}: a worked solution is open after Run All")
+    assert "Correct:" not in nb.inner_text(), f"{rel}: an answer's verdict shows after Run All"
 
     report = [f"{rel}: {state['total']} code cells ran"]
     for kind, selector in (("mpl", MPL), ("three", THREE)):

@@ -136,7 +136,21 @@ def test_offline_deck(browser_page):
     assert "[interactive view" not in page.inner_text("body"), "a widget placeholder text is shown instead of its image"
     assert page.locator('script[type="application/vnd.jupyter.widget-view+json"]').count() == 0
 
-    # 5. MathJax (local) typesets the LaTeX of the markdown cells.
+    # 5. Worked solutions are in the deck but closed: no answer shows until the <summary> is clicked.
+    solutions = sum("solution" in c.metadata.get("tags", []) for c in nb.cells)
+    if solutions:
+        found = page.evaluate("""() => Array.from(document.querySelectorAll('.reveal .slides details'))
+            .map(d => ({open: d.open, summary: !!d.querySelector('summary'),
+                        code: d.querySelector('pre, code') ? d.querySelector('pre, code').getClientRects().length : -1}))""")
+        assert len(found) >= solutions, f"{len(found)} <details> blocks in the deck, {solutions} worked solutions"
+        assert all(not d["open"] and d["summary"] for d in found), "a worked solution is open in the deck"
+        assert all(d["code"] == 0 for d in found), "a worked solution's code is rendered while its block is closed"
+        assert "Correct:" not in page.inner_text("body"), "a checker's verdict on the answer shows in the deck"
+        opened = page.evaluate("""() => { const d = document.querySelector('.reveal .slides details');
+            d.open = true; return d.querySelector('pre, code').getClientRects().length; }""")
+        assert opened > 0, "opening a worked solution does not show its code"
+
+    # 6. MathJax (local) typesets the LaTeX of the markdown cells.
     has_math = any(c.cell_type == "markdown" and re.search(r"\$[^$]+\$", c.source) for c in nb.cells
                    if c.metadata.get("slideshow", {}).get("slide_type") != "skip")
     if has_math:
