@@ -1,0 +1,358 @@
+"""Complex numbers and quaternions as rotations and conformal maps (Goldman Chapter 15).
+
+Quaternions are numpy arrays ``(..., 4)`` in the order ``(w, x, y, z)``: ``w`` the scalar part and
+``(x, y, z)`` the vector part; every function vectorises over leading axes.  Angles are in degrees.
+Matrices follow the book's convention used throughout the library: points are row vectors and a
+transformation acts on the right, ``Q = P @ M``; 4x4 matrices hold the translation in the last
+row.  So ``to_matrix(q)`` is the *transpose* of the column-convention matrix found in many texts,
+and ``v @ to_matrix(q)[:3, :3] == rotate(q, v)``.
+
+>>> q = from_axis_angle([0, 0, 1], 90)
+>>> np.round(rotate(q, [1, 0, 0]), 12) + 0.0
+array([0., 1., 0.])
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from goldman_lib.validation import as_float_array, as_parameter, as_points, check_finite
+
+__all__ = ["complex_rotation", "complex_multiply", "multiply", "conjugate", "norm", "inverse", "normalize",
+           "from_axis_angle", "to_axis_angle", "rotate", "conformal_map", "to_matrix", "from_matrix", "slerp",
+           "key_frames", "matrix_lerp", "matrix_distortion"]
+
+
+def _quaternions(q, name: str) -> np.ndarray:
+    arr = check_finite(as_float_array(q, name), name)
+    if arr.ndim == 0 or arr.shape[-1] != 4:
+        raise ValueError(f"{name} must hold quaternions (w, x, y, z) in its last axis of length 4; got shape {arr.shape}")
+    return arr
+
+
+def _join(w: np.ndarray, vec: np.ndarray) -> np.ndarray:
+    """Scalar parts (..., 1) and vector parts (..., 3) into quaternions, broadcasting leading axes."""
+    lead = np.broadcast_shapes(w.shape[:-1], vec.shape[:-1])
+    return np.concatenate([np.broadcast_to(w, lead + (1,)), np.broadcast_to(vec, lead + (3,))], axis=-1)
+
+
+def _nonzero(q: np.ndarray, name: str) -> np.ndarray:
+    n = np.sqrt(np.sum(q * q, axis=-1))
+    if np.any(n == 0):
+        raise ValueError(f"{name} must be nonzero: the zero quaternion has no inverse and is no rotation")
+    return n
+
+
+# -- §15.2: complex numbers as rotations and scalings of the plane ---------------------------------
+
+def complex_rotation(angle, scale=1.0) -> complex:
+    """The complex number ``scale * e^{i angle}`` (Goldman §15.2): multiplying a point ``x + iy``
+    by it rotates the point about the origin by ``angle`` degrees and scales it by ``scale``.
+
+    >>> z = complex_rotation(90)
+    >>> complex(np.round(z * (1 + 0j), 12))
+    1j
+    """
+    a = np.radians(float(as_parameter(angle, "angle")))
+    s = float(as_parameter(scale, "scale"))
+    return complex(s * np.cos(a), s * np.sin(a))
+
+
+def complex_multiply(points, z) -> np.ndarray:
+    """Apply the complex number ``z`` to 2D points ``(n, 2)`` (rows ``(x, y)`` as ``x + iy``): the
+    conformal map of the plane that rotates by ``arg z`` and scales by ``|z|`` (Goldman §15.2).
+
+    >>> complex_multiply([[1, 0], [0, 2]], 2j).tolist()
+    [[0.0, 2.0], [-4.0, 0.0]]
+    """
+    pts = as_points(points, "points", ndim=None, dim=2)
+    if not isinstance(z, (int, float, complex, np.number)) or isinstance(z, bool):
+        raise TypeError(f"z must be a complex number; got {z!r}")
+    z = complex(z)
+    if not (np.isfinite(z.real) and np.isfinite(z.imag)):
+        raise ValueError(f"z must be finite; got {z}")
+    w = (pts[..., 0] + 1j * pts[..., 1]) * z
+    return np.stack([w.real, w.imag], axis=-1)
+
+
+# -- §15.3.1: the quaternion algebra ---------------------------------------------------------------
+
+def multiply(p, q) -> np.ndarray:
+    """The quaternion product ``p q`` (Goldman §15.3.1), not commutative:
+    ``(a, u)(b, v) = (ab - u·v, a v + b u + u × v)``.
+
+    >>> multiply([0, 1, 0, 0], [0, 0, 1, 0]).tolist()   # i j = k
+    [0.0, 0.0, 0.0, 1.0]
+    >>> multiply([0, 0, 1, 0], [0, 1, 0, 0]).tolist()   # j i = -k
+    [0.0, 0.0, 0.0, -1.0]
+    """
+    p = _quaternions(p, "p")
+    q = _quaternions(q, "q")
+    a, u = p[..., :1], p[..., 1:]
+    b, v = q[..., :1], q[..., 1:]
+    w = a * b - np.sum(u * v, axis=-1, keepdims=True)
+    vec = a * v + b * u + np.cross(u, v)
+    return _join(w, vec)
+
+
+def conjugate(q) -> np.ndarray:
+    """The conjugate ``q* = (w, -x, -y, -z)`` (Goldman §15.3.1).
+
+    >>> conjugate([1, 2, 3, 4]).tolist()
+    [1.0, -2.0, -3.0, -4.0]
+    """
+    q = _quaternions(q, "q")
+    return q * np.array([1.0, -1.0, -1.0, -1.0])
+
+
+def norm(q) -> np.ndarray:
+    """The norm ``|q| = sqrt(q q*)`` (Goldman §15.3.1).
+
+    >>> float(norm([1, 2, 2, 4]))
+    5.0
+    """
+    q = _quaternions(q, "q")
+    return np.sqrt(np.sum(q * q, axis=-1))
+
+
+def inverse(q) -> np.ndarray:
+    """The inverse ``q^{-1} = q* / |q|^2`` (Goldman §15.3.1).  Raises ValueError for zero.
+
+    >>> inverse([0, 0, 2, 0]).tolist()
+    [0.0, -0.0, -0.5, -0.0]
+    """
+    q = _quaternions(q, "q")
+    n = _nonzero(q, "q")
+    return conjugate(q) / (n * n)[..., None]
+
+
+def normalize(q) -> np.ndarray:
+    """``q / |q|``, a unit quaternion.  Raises ValueError for zero.
+
+    >>> normalize([0, 0, 0, 3]).tolist()
+    [0.0, 0.0, 0.0, 1.0]
+    """
+    q = _quaternions(q, "q")
+    return q / _nonzero(q, "q")[..., None]
+
+
+# -- §15.3.2-15.3.3: rotations and conformal maps -----------------------------------------------------
+
+def from_axis_angle(axis, angle) -> np.ndarray:
+    """The unit quaternion ``(cos(θ/2), sin(θ/2) u)`` that rotates by ``angle`` degrees about the
+    unit vector ``u`` along ``axis`` (counterclockwise looking down the axis; Goldman §15.3.2).
+
+    axis: (3,) or (..., 3), nonzero.  angle: degrees, scalar or array broadcasting with the axes.
+
+    >>> np.round(from_axis_angle([0, 0, 2], 180), 12).tolist()
+    [0.0, 0.0, 0.0, 1.0]
+    """
+    ax = check_finite(as_float_array(axis, "axis"), "axis")
+    if ax.ndim == 0 or ax.shape[-1] != 3:
+        raise ValueError(f"axis must be a 3D vector (last axis of length 3); got shape {ax.shape}")
+    length = np.linalg.norm(ax, axis=-1, keepdims=True)
+    if np.any(length == 0):
+        raise ValueError("axis must be nonzero: a rotation needs a direction to turn about")
+    half = np.radians(as_parameter(angle, "angle"))[..., None] / 2
+    u = ax / length
+    w = np.cos(half)
+    return _join(w, np.sin(half) * u)
+
+
+def to_axis_angle(q) -> tuple[np.ndarray, np.ndarray]:
+    """The unit axis and the angle in degrees, in [0, 180], of the rotation of ``q`` (Goldman
+    §15.3.2).  For the identity rotation the axis is (1, 0, 0) by convention.
+
+    >>> axis, angle = to_axis_angle(from_axis_angle([0, 1, 0], 270))
+    >>> (np.round(axis, 12) + 0.0).tolist(), round(float(angle), 9)
+    ([0.0, -1.0, 0.0], 90.0)
+    """
+    q = normalize(q)
+    q = np.where(q[..., :1] < 0, -q, q)
+    vec = q[..., 1:]
+    s = np.linalg.norm(vec, axis=-1)
+    angle = np.degrees(2 * np.arctan2(s, q[..., 0]))
+    safe = np.where(s[..., None] > 0, vec / np.where(s > 0, s, 1)[..., None], np.array([1.0, 0.0, 0.0]))
+    return safe, angle
+
+
+def rotate(q, v) -> np.ndarray:
+    """Rotate vectors ``v`` by the unit quaternion ``q``: the vector part of ``q v q*`` (Goldman
+    §15.3.2).  ``q`` is normalised first, so any nonzero ``q`` gives a pure rotation (use
+    :func:`conformal_map` for the rotation and scaling of a non-unit ``q``).
+
+    q: (..., 4).  v: (..., 3).  Returns the broadcast shape (..., 3).
+
+    >>> (np.round(rotate(from_axis_angle([1, 1, 1], 120), [1, 0, 0]), 12) + 0.0).tolist()
+    [0.0, 1.0, 0.0]
+    """
+    q = normalize(q)
+    vec = check_finite(as_float_array(v, "v"), "v")
+    if vec.ndim == 0 or vec.shape[-1] != 3:
+        raise ValueError(f"v must hold 3D vectors (last axis of length 3); got shape {vec.shape}")
+    w, u = q[..., :1], q[..., 1:]
+    # q v q* = v + 2w (u × v) + 2 u × (u × v) for a unit q
+    t = 2 * np.cross(u, vec)
+    return vec + w * t + np.cross(u, t)
+
+
+def conformal_map(q, v) -> np.ndarray:
+    """``q v q*`` for any nonzero quaternion: the rotation of ``q / |q|`` followed by scaling by
+    ``|q|^2`` -- the conformal maps of 3-space fixing the origin (Goldman §15.3.3).
+
+    >>> conformal_map([0, 0, 0, 2], [1, 0, 0]).tolist()   # 180° about z, scaled by 4
+    [-4.0, 0.0, 0.0]
+    """
+    q = _quaternions(q, "q")
+    n = _nonzero(q, "q")
+    return rotate(q, v) * (n * n)[..., None]
+
+
+# -- §15.3.6: conversion formulas ----------------------------------------------------------------------
+
+def to_matrix(q) -> np.ndarray:
+    """The 4x4 matrix of the rotation of ``q`` in the book's row convention ``P' = P @ M``
+    (rotation in the upper-left 3x3 block, no translation; Goldman §15.3.6).
+
+    >>> M = to_matrix(from_axis_angle([0, 0, 1], 90))
+    >>> (np.round(np.array([1, 0, 0, 1]) @ M, 12) + 0.0).tolist()
+    [0.0, 1.0, 0.0, 1.0]
+    """
+    w, x, y, z = np.moveaxis(normalize(q), -1, 0)
+    shape = w.shape
+    M = np.zeros(shape + (4, 4))
+    # column-convention R, stored transposed: M[i, j] = R[j, i]
+    M[..., 0, 0] = 1 - 2 * (y * y + z * z)
+    M[..., 1, 0] = 2 * (x * y - w * z)
+    M[..., 2, 0] = 2 * (x * z + w * y)
+    M[..., 0, 1] = 2 * (x * y + w * z)
+    M[..., 1, 1] = 1 - 2 * (x * x + z * z)
+    M[..., 2, 1] = 2 * (y * z - w * x)
+    M[..., 0, 2] = 2 * (x * z - w * y)
+    M[..., 1, 2] = 2 * (y * z + w * x)
+    M[..., 2, 2] = 1 - 2 * (x * x + y * y)
+    M[..., 3, 3] = 1.0
+    return M
+
+
+def from_matrix(M, tol: float = 1e-6) -> np.ndarray:
+    """The unit quaternion (with ``w >= 0``) of a rotation matrix in the row convention, 3x3 or 4x4
+    (Goldman §15.3.6; Shepperd's stable choice of the largest of w, x, y, z to divide by).
+
+    M: (..., 3, 3) or (..., 4, 4).  Raises ValueError if the 3x3 block is not a rotation (not
+    orthogonal with determinant 1 to within ``tol``) or a 4x4 matrix has a translation.
+
+    >>> np.round(from_matrix(to_matrix([0.5, 0.5, 0.5, 0.5])), 12).tolist()
+    [0.5, 0.5, 0.5, 0.5]
+    """
+    A = check_finite(as_float_array(M, "M"), "M")
+    if A.ndim < 2 or A.shape[-2:] not in ((3, 3), (4, 4)):
+        raise ValueError(f"M must be a 3x3 or 4x4 matrix (or a stack of them); got shape {A.shape}")
+    if A.shape[-1] == 4:
+        if np.any(np.abs(A[..., 3, :3]) > tol) or np.any(np.abs(A[..., :3, 3]) > tol) or np.any(np.abs(A[..., 3, 3] - 1) > tol):
+            raise ValueError("M must be a pure rotation: its last row and column must be (0, 0, 0, 1)")
+        A = A[..., :3, :3]
+    if np.any(np.abs(A @ np.swapaxes(A, -1, -2) - np.eye(3)) > tol) or np.any(np.abs(np.linalg.det(A) - 1) > tol):
+        raise ValueError("M must be a rotation matrix: orthogonal with determinant +1")
+    R = np.swapaxes(A, -1, -2)  # column convention
+    tr = R[..., 0, 0] + R[..., 1, 1] + R[..., 2, 2]
+    cands = np.stack([tr, R[..., 0, 0], R[..., 1, 1], R[..., 2, 2]], axis=-1)
+    k = np.argmax(cands, axis=-1)
+    q = np.empty(A.shape[:-2] + (4,))
+    # 4 w^2 = 1 + tr, 4 x^2 = 1 + 2 R00 - tr, ...
+    big = np.sqrt(np.maximum(1 + 2 * np.take_along_axis(cands, k[..., None], -1)[..., 0] - tr, 0.0)) / 2
+    s = 1 / (4 * big)
+    r = {(i, j): R[..., i, j] for i in range(3) for j in range(3)}
+    options = [
+        np.stack([big, (r[2, 1] - r[1, 2]) * s, (r[0, 2] - r[2, 0]) * s, (r[1, 0] - r[0, 1]) * s], -1),
+        np.stack([(r[2, 1] - r[1, 2]) * s, big, (r[0, 1] + r[1, 0]) * s, (r[0, 2] + r[2, 0]) * s], -1),
+        np.stack([(r[0, 2] - r[2, 0]) * s, (r[0, 1] + r[1, 0]) * s, big, (r[1, 2] + r[2, 1]) * s], -1),
+        np.stack([(r[1, 0] - r[0, 1]) * s, (r[0, 2] + r[2, 0]) * s, (r[1, 2] + r[2, 1]) * s, big], -1),
+    ]
+    q = np.choose(k[..., None], options)
+    q = np.where(q[..., :1] < 0, -q, q)
+    return q / np.linalg.norm(q, axis=-1, keepdims=True)
+
+
+# -- §15.3.4-15.3.5: interpolation without distortion; key frames -------------------------------------
+
+def slerp(q0, q1, t) -> np.ndarray:
+    """Spherical linear interpolation of unit quaternions along the shorter arc (Goldman §15.3.4):
+    ``sin((1-t)θ)/sin θ q0 + sin(tθ)/sin θ q1`` with ``cos θ = |q0·q1|`` (``q1`` is negated when
+    ``q0·q1 < 0``, since ``q`` and ``-q`` are the same rotation).  Inputs are normalised.
+
+    q0, q1: (..., 4).  t: scalar or array; the result has the broadcast shape of ``q0[..., 0]``,
+    ``q1[..., 0]`` and ``t``, plus (4,).
+
+    >>> np.round(slerp([1, 0, 0, 0], from_axis_angle([0, 0, 1], 90), 0.5), 6).tolist()
+    [0.92388, 0.0, 0.0, 0.382683]
+    """
+    a = normalize(q0)
+    b = normalize(q1)
+    tt = as_parameter(t, "t")[..., None]
+    d = np.sum(a * b, axis=-1, keepdims=True)
+    b = np.where(d < 0, -b, b)
+    d = np.abs(d)
+    theta = np.arccos(np.minimum(d, 1.0))
+    sin = np.sin(theta)
+    small = sin < 1e-9
+    safe = np.where(small, 1.0, sin)
+    wa = np.where(small, 1 - tt, np.sin((1 - tt) * theta) / safe)
+    wb = np.where(small, tt, np.sin(tt * theta) / safe)
+    out = wa * a + wb * b
+    return out / np.linalg.norm(out, axis=-1, keepdims=True)
+
+
+def key_frames(orientations, times, t) -> np.ndarray:
+    """Key-frame animation (Goldman §15.3.5): the orientation at time(s) ``t`` interpolated by slerp
+    between the key orientations (unit quaternions) at the key ``times`` (strictly increasing).
+    Times outside ``[times[0], times[-1]]`` are clamped to the first/last key.
+
+    >>> keys = [[1, 0, 0, 0], from_axis_angle([0, 0, 1], 90), from_axis_angle([0, 0, 1], 180)]
+    >>> axis, angle = to_axis_angle(key_frames(keys, [0, 1, 2], 1.5))
+    >>> round(float(angle), 9)
+    135.0
+    """
+    keys = _quaternions(orientations, "orientations")
+    if keys.ndim != 2 or len(keys) < 2:
+        raise ValueError(f"orientations must be at least two quaternions (k, 4); got shape {keys.shape}")
+    ts = check_finite(as_float_array(times, "times"), "times")
+    if ts.shape != (len(keys),):
+        raise ValueError(f"times must have one entry per orientation ({len(keys)}); got shape {ts.shape}")
+    if np.any(np.diff(ts) <= 0):
+        i = int(np.flatnonzero(np.diff(ts) <= 0)[0])
+        raise ValueError(f"times must be strictly increasing; times[{i + 1}]={ts[i + 1]} <= times[{i}]={ts[i]}")
+    tt = np.clip(as_parameter(t, "t"), ts[0], ts[-1])
+    seg = np.clip(np.searchsorted(ts, tt, side="right") - 1, 0, len(ts) - 2)
+    local = (tt - ts[seg]) / (ts[seg + 1] - ts[seg])
+    return slerp(keys[seg], keys[seg + 1], local)
+
+
+def matrix_lerp(M0, M1, t) -> np.ndarray:
+    """Linear interpolation ``(1-t) M0 + t M1`` of two matrices: what §15.3.4 warns against for
+    rotations, since the result is in general not a rotation (it shears and shrinks).
+
+    >>> M = matrix_lerp(np.eye(3), to_matrix(from_axis_angle([0, 0, 1], 180))[:3, :3], 0.5)
+    >>> np.round(M, 12).tolist()[2]
+    [0.0, 0.0, 1.0]
+    """
+    A = check_finite(as_float_array(M0, "M0"), "M0")
+    B = check_finite(as_float_array(M1, "M1"), "M1")
+    if A.shape != B.shape or A.ndim < 2:
+        raise ValueError(f"M0 and M1 must be matrices of the same shape; got {A.shape} and {B.shape}")
+    tt = as_parameter(t, "t")[..., None, None]
+    return (1 - tt) * A + tt * B
+
+
+def matrix_distortion(M) -> np.ndarray:
+    """How far the 3x3 block of ``M`` is from a rotation: ``max |σ_i - 1|`` over its singular values
+    (0 for a rotation; a linear interpolation of rotations shrinks some directions; Goldman §15.3.4).
+
+    >>> float(matrix_distortion(np.diag([1.0, 1.0, 0.5])))
+    0.5
+    """
+    A = check_finite(as_float_array(M, "M"), "M")
+    if A.ndim < 2 or A.shape[-2:] not in ((3, 3), (4, 4)):
+        raise ValueError(f"M must be a 3x3 or 4x4 matrix (or a stack of them); got shape {A.shape}")
+    sv = np.linalg.svd(A[..., :3, :3], compute_uv=False)
+    return np.max(np.abs(sv - 1), axis=-1)

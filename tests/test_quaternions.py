@@ -1,0 +1,128 @@
+"""Quaternions (Goldman ch 15) against scipy.spatial.transform.Rotation / Slerp and hand values."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+from scipy.spatial.transform import Rotation, Slerp
+
+from goldman_lib import quaternions as qt
+
+finite = st.floats(-10, 10, allow_nan=False)
+vec3 = st.tuples(finite, finite, finite)
+nonzero_vec3 = vec3.filter(lambda v: np.linalg.norm(v) > 1e-3)
+angle = st.floats(-720, 720, allow_nan=False)
+quat = st.tuples(finite, finite, finite, finite).filter(lambda q: np.linalg.norm(q) > 1e-3)
+
+
+def scipy_quat(q):
+    """(w, x, y, z) -> scipy's (x, y, z, w)."""
+    q = np.asarray(q, float)
+    return np.concatenate([q[..., 1:], q[..., :1]], axis=-1)
+
+
+def test_hamilton_rules_by_hand():
+    i, j, k, one = [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1], [1, 0, 0, 0]
+    assert qt.multiply(i, i).tolist() == [-1, 0, 0, 0]
+    assert qt.multiply(j, k).tolist() == [0, 1, 0, 0] and qt.multiply(k, i).tolist() == [0, 0, 1, 0]
+    assert qt.multiply(k, j).tolist() == [0, -1, 0, 0]
+    assert qt.multiply(one, [1, 2, 3, 4]).tolist() == [1, 2, 3, 4]
+    # (1 + 2i + 3j + 4k)(5 + 6i + 7j + 8k) worked by hand: (-60, 12, 30, 24)
+    assert qt.multiply([1, 2, 3, 4], [5, 6, 7, 8]).tolist() == [-60, 12, 30, 24]
+
+
+def test_norm_conjugate_inverse_by_hand():
+    assert float(qt.norm([1, 2, 2, 4])) == 5.0
+    assert qt.conjugate([1, 2, 3, 4]).tolist() == [1, -2, -3, -4]
+    assert np.allclose(qt.multiply([1, 2, 3, 4], qt.inverse([1, 2, 3, 4])), [1, 0, 0, 0])
+    with pytest.raises(ValueError, match="q must be nonzero"):
+        qt.inverse([0, 0, 0, 0])
+
+
+def test_complex_numbers_rotate_and_scale_the_plane():
+    z = qt.complex_rotation(30, 2.0)
+    out = qt.complex_multiply([[1.0, 0.0], [0.0, 1.0]], z)
+    c, s = np.cos(np.radians(30)), np.sin(np.radians(30))
+    assert np.allclose(out, [[2 * c, 2 * s], [-2 * s, 2 * c]])
+    with pytest.raises(TypeError, match="z must be a complex number"):
+        qt.complex_multiply([[1, 0]], "i")
+
+
+@settings(max_examples=60, deadline=None)
+@given(nonzero_vec3, angle, vec3)
+def test_rotation_matches_scipy(axis, deg, v):
+    q = qt.from_axis_angle(axis, deg)
+    u = np.asarray(axis) / np.linalg.norm(axis)
+    ref = Rotation.from_rotvec(np.radians(deg) * u)
+    assert np.allclose(qt.rotate(q, v), ref.apply(v), atol=1e-9)
+    assert np.allclose(np.asarray(v) @ qt.to_matrix(q)[:3, :3], ref.apply(v), atol=1e-9)
+    assert np.allclose(qt.to_matrix(q)[:3, :3], ref.as_matrix().T, atol=1e-12)
+
+
+@settings(max_examples=60, deadline=None)
+@given(quat)
+def test_from_matrix_inverts_to_matrix_and_matches_scipy(q):
+    unit = np.asarray(q) / np.linalg.norm(q)
+    back = qt.from_matrix(qt.to_matrix(unit))
+    assert np.allclose(back, unit if unit[0] >= 0 else -unit, atol=1e-9) or np.isclose(abs(unit[0]), 0, atol=1e-9)
+    ref = Rotation.from_matrix(qt.to_matrix(unit)[:3, :3].T).as_quat()
+    assert np.allclose(np.abs(np.dot(scipy_quat(back), ref)), 1, atol=1e-9)
+
+
+@settings(max_examples=60, deadline=None)
+@given(quat, quat, vec3)
+def test_rotation_preserves_length_and_composes_like_matrices(p, q, v):
+    rotated = qt.rotate(q, v)
+    assert np.isclose(np.linalg.norm(rotated), np.linalg.norm(v), atol=1e-9)
+    both = qt.rotate(qt.multiply(p, q), v)  # first q, then p
+    assert np.allclose(both, qt.rotate(p, qt.rotate(q, v)), atol=1e-8)
+    M = qt.to_matrix(q) @ qt.to_matrix(p)  # row convention: first q then p
+    assert np.allclose(qt.to_matrix(qt.multiply(p, q)), M, atol=1e-9)
+
+
+def test_conformal_map_scales_by_the_norm_squared():
+    q = 2 * qt.from_axis_angle([0, 0, 1], 90)
+    assert np.allclose(qt.conformal_map(q, [1, 0, 0]), [0, 4, 0])
+
+
+@settings(max_examples=40, deadline=None)
+@given(quat, quat, st.floats(0, 1))
+def test_slerp_matches_scipy_on_the_shorter_arc(a, b, t):
+    a = np.asarray(a) / np.linalg.norm(a)
+    b = np.asarray(b) / np.linalg.norm(b)
+    ours = qt.slerp(a, b, t)
+    ref = Slerp([0, 1], Rotation.from_quat(np.stack([scipy_quat(a), scipy_quat(b)])))([t]).as_quat()[0]
+    assert np.isclose(abs(np.dot(scipy_quat(ours), ref)), 1, atol=1e-8)
+
+
+def test_slerp_takes_the_shorter_arc_and_keeps_constant_speed():
+    a = qt.from_axis_angle([0, 0, 1], 0)
+    b = -qt.from_axis_angle([0, 0, 1], 90)   # same rotation as +q
+    _, ang = qt.to_axis_angle(qt.slerp(a, b, np.linspace(0, 1, 5)))
+    assert np.allclose(ang, [0, 22.5, 45, 67.5, 90])
+
+
+def test_key_frames_and_the_distortion_of_matrix_interpolation():
+    keys = np.stack([qt.from_axis_angle([0, 0, 1], 0), qt.from_axis_angle([0, 0, 1], 120),
+                     qt.from_axis_angle([1, 0, 0], 120)])
+    q = qt.key_frames(keys, [0, 1, 3], [0.5, 2.0, 5.0])
+    _, ang = qt.to_axis_angle(q[0])
+    assert np.isclose(ang, 60)
+    assert np.allclose(q[2], keys[2])  # clamped
+    # Halfway between identity and a 120° turn, the linear blend of the matrices is not a rotation:
+    # its x/y singular values are |1 + cos 120°| / 2 ... = 0.5 (a closed form).
+    M = qt.matrix_lerp(np.eye(3), qt.to_matrix(keys[1])[:3, :3], 0.5)
+    assert np.isclose(qt.matrix_distortion(M), 0.5)
+    assert qt.matrix_distortion(qt.to_matrix(q[0])) < 1e-12
+    with pytest.raises(ValueError, match="times must be strictly increasing"):
+        qt.key_frames(keys, [0, 1, 1], 0.5)
+
+
+def test_bad_input_names_the_parameter():
+    with pytest.raises(ValueError, match="axis must be nonzero"):
+        qt.from_axis_angle([0, 0, 0], 30)
+    with pytest.raises(ValueError, match="q must hold quaternions"):
+        qt.multiply([1, 0, 0, 0], [1, 0, 0])
+    with pytest.raises(ValueError, match="M must be a rotation matrix"):
+        qt.from_matrix(np.diag([1.0, 1.0, -1.0]))
+    with pytest.raises(ValueError, match="t must be finite"):
+        qt.slerp([1, 0, 0, 0], [0, 1, 0, 0], np.nan)
