@@ -1,0 +1,313 @@
+"""Affine and projective transformations of 3-space: the coordinate-free formulas of Goldman
+Chapter 12 and their 4x4 matrices (Chapter 13).
+
+Convention (the book's, as everywhere in this library): points are **row vectors** and a matrix
+acts on the right, ``[Q 1] = [P 1] @ M``.  A 4x4 matrix holds the linear part in its upper-left
+3x3 block, the translation in its **last row**, and (for projections) the homogeneous column in
+its last column; :func:`apply` multiplies and divides by the homogeneous coordinate.
+
+Each transformation exists twice: as a function on points written with dot and cross products
+(``rotate``, ``reflect``, ``scale``, ``scale_along``, ``project_orthogonal``,
+``project_perspective``, ``translate`` -- Chapter 12) and as the matrix that does the same
+(``rotation``, ``mirror``, ``scaling``, ``nonuniform_scaling``, ``orthogonal_projection``,
+``perspective``, ``translation`` -- Chapter 13).  The tests check every pair agrees.
+
+>>> M = rotation([0, 0, 1], 90)
+>>> (np.round(apply([[1, 0, 0]], M), 12) + 0.0).tolist()
+[[0.0, 1.0, 0.0]]
+>>> (np.round(rotate([[1, 0, 0]], [0, 0, 1], 90), 12) + 0.0).tolist()
+[[0.0, 1.0, 0.0]]
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from goldman_lib.validation import as_float, as_float_array, as_points, check_finite
+
+__all__ = ["translation", "rotation", "mirror", "scaling", "nonuniform_scaling", "orthogonal_projection",
+           "perspective", "apply", "compose", "translate", "rotate", "reflect", "scale", "scale_along",
+           "project_orthogonal", "project_perspective"]
+
+
+def _point(x, name: str) -> np.ndarray:
+    arr = check_finite(as_float_array(x, name), name)
+    if arr.shape != (3,):
+        raise ValueError(f"{name} must be one 3D point or vector (shape (3,)); got shape {arr.shape}")
+    return arr
+
+
+def _unit(x, name: str, what: str) -> np.ndarray:
+    v = _point(x, name)
+    n = np.linalg.norm(v)
+    if n <= 1e-300 or not np.isfinite(n):
+        raise ValueError(f"{name} must be a nonzero vector: {what}")
+    return v / n
+
+
+def _points(points) -> np.ndarray:
+    return as_points(points, "points", ndim=None, dim=3)
+
+
+def _affine(linear: np.ndarray, fixed: np.ndarray) -> np.ndarray:
+    """The 4x4 matrix with linear part ``linear`` (row convention) fixing the point ``fixed``."""
+    M = np.eye(4)
+    M[:3, :3] = linear
+    M[3, :3] = fixed - fixed @ linear
+    return M
+
+
+def _cross_matrix(w: np.ndarray) -> np.ndarray:
+    """The 3x3 matrix A with ``v @ A == w × v`` for row vectors v."""
+    return np.array([[0.0, w[2], -w[1]], [-w[2], 0.0, w[0]], [w[1], -w[0], 0.0]])
+
+
+# -- Chapter 12: the formulas on points -------------------------------------------------------------
+
+def translate(points, v) -> np.ndarray:
+    """``P + v`` (Goldman §12.3.1).
+
+    >>> translate([[1, 2, 3]], [1, 0, -1]).tolist()
+    [[2.0, 2.0, 2.0]]
+    """
+    return _points(points) + _point(v, "v")
+
+
+def rotate(points, axis, angle, point=None) -> np.ndarray:
+    """Rotate points by ``angle`` degrees about the line through ``point`` (default the origin) along
+    ``axis``, counterclockwise looking down the axis (Goldman §12.3.2, Rodrigues' formula):
+    ``R(v) = cos θ v + (1 - cos θ)(v·w) w + sin θ (w × v)`` applied to ``v = P - Q``.
+
+    >>> (np.round(rotate([[1, 0, 5]], [0, 0, 2], 180, point=[1, 1, 0]), 12) + 0.0).tolist()
+    [[1.0, 2.0, 5.0]]
+    """
+    P = _points(points)
+    w = _unit(axis, "axis", "a rotation needs an axis direction")
+    th = np.radians(as_float(angle, "angle"))
+    Q = np.zeros(3) if point is None else _point(point, "point")
+    v = P - Q
+    c, s = np.cos(th), np.sin(th)
+    return Q + c * v + (1 - c) * (v @ w)[..., None] * w + s * np.cross(w, v)
+
+
+def reflect(points, plane_point, normal) -> np.ndarray:
+    """Mirror points in the plane through ``plane_point`` with ``normal`` (Goldman §12.3.3):
+    ``P - 2 ((P - Q)·N) N`` for the unit normal N.
+
+    >>> reflect([[1, 2, 3]], [0, 0, 1], [0, 0, 5]).tolist()
+    [[1.0, 2.0, -1.0]]
+    """
+    P = _points(points)
+    Q = _point(plane_point, "plane_point")
+    N = _unit(normal, "normal", "a mirror plane needs a normal direction")
+    return P - 2 * ((P - Q) @ N)[..., None] * N
+
+
+def scale(points, s, center=None) -> np.ndarray:
+    """Uniform scaling by ``s`` about ``center`` (default the origin): ``Q + s (P - Q)`` (Goldman §12.4).
+
+    >>> scale([[2, 2, 2]], 3, center=[1, 1, 1]).tolist()
+    [[4.0, 4.0, 4.0]]
+    """
+    P = _points(points)
+    s = as_float(s, "s")
+    Q = np.zeros(3) if center is None else _point(center, "center")
+    return Q + s * (P - Q)
+
+
+def scale_along(points, s, direction, center=None) -> np.ndarray:
+    """Nonuniform scaling by ``s`` along ``direction`` about ``center`` (Goldman §12.4):
+    ``P + (s - 1)((P - Q)·w) w`` for the unit direction w; directions perpendicular to w are kept.
+
+    >>> scale_along([[1, 1, 1]], 3, [0, 1, 0]).tolist()
+    [[1.0, 3.0, 1.0]]
+    """
+    P = _points(points)
+    s = as_float(s, "s")
+    w = _unit(direction, "direction", "a scaling needs a direction to stretch along")
+    Q = np.zeros(3) if center is None else _point(center, "center")
+    return P + (s - 1) * ((P - Q) @ w)[..., None] * w
+
+
+def project_orthogonal(points, plane_point, normal) -> np.ndarray:
+    """Orthogonal projection onto the plane (Goldman §12.5): ``P - ((P - Q)·N) N`` for the unit N.
+
+    >>> project_orthogonal([[1, 2, 3]], [0, 0, 1], [0, 0, 1]).tolist()
+    [[1.0, 2.0, 1.0]]
+    """
+    P = _points(points)
+    Q = _point(plane_point, "plane_point")
+    N = _unit(normal, "normal", "a plane needs a normal direction")
+    return P - ((P - Q) @ N)[..., None] * N
+
+
+def _check_perspective(eye, Q, N):
+    if abs((Q - eye) @ N) <= 1e-12 * (1 + np.linalg.norm(Q - eye)):
+        raise ValueError("eye must not lie on the plane of projection: every line through it would meet the "
+                         "plane at the eye itself")
+
+
+def project_perspective(points, eye, plane_point, normal) -> np.ndarray:
+    """Perspective projection from ``eye`` onto the plane (Goldman §12.5): the point where the line
+    from the eye through P meets the plane, ``E + [(Q - E)·N / (P - E)·N] (P - E)``.
+
+    Raises ValueError for a point whose line of sight is parallel to the plane ((P - E)·N = 0: its
+    image is at infinity) and for an eye on the plane.
+
+    >>> project_perspective([[2, 4, 2]], [0, 0, 0], [0, 0, 1], [0, 0, 1]).tolist()
+    [[1.0, 2.0, 1.0]]
+    """
+    P = _points(points)
+    E = _point(eye, "eye")
+    Q = _point(plane_point, "plane_point")
+    N = _unit(normal, "normal", "a plane needs a normal direction")
+    _check_perspective(E, Q, N)
+    d = (P - E) @ N
+    if np.any(np.abs(d) <= 1e-12 * (1 + np.linalg.norm(P - E, axis=-1))):
+        raise ValueError("points must not lie on the plane through the eye parallel to the projection plane: "
+                         "their images are at infinity")
+    return E + (((Q - E) @ N) / d)[..., None] * (P - E)
+
+
+# -- Chapter 13: the same maps as 4x4 matrices --------------------------------------------------------
+
+def translation(v) -> np.ndarray:
+    """The 4x4 matrix of translation by ``v`` (Goldman §13.2): the identity with ``v`` in the last row.
+
+    >>> translation([1, 2, 3])[3].tolist()
+    [1.0, 2.0, 3.0, 1.0]
+    """
+    M = np.eye(4)
+    M[3, :3] = _point(v, "v")
+    return M
+
+
+def rotation(axis, angle, point=None) -> np.ndarray:
+    """The 4x4 matrix of the rotation of :func:`rotate` (Goldman §13.3): linear part
+    ``cos θ I + (1 - cos θ) wᵀw + sin θ A_w`` with ``v A_w = w × v``, and the translation row that
+    keeps ``point`` fixed.
+
+    >>> (np.round(rotation([1, 0, 0], 90)[:3, :3], 12) + 0.0).tolist()
+    [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]]
+    """
+    w = _unit(axis, "axis", "a rotation needs an axis direction")
+    th = np.radians(as_float(angle, "angle"))
+    Q = np.zeros(3) if point is None else _point(point, "point")
+    c, s = np.cos(th), np.sin(th)
+    linear = c * np.eye(3) + (1 - c) * np.outer(w, w) + s * _cross_matrix(w)
+    return _affine(linear, Q)
+
+
+def mirror(plane_point, normal) -> np.ndarray:
+    """The 4x4 matrix of the mirror of :func:`reflect` (Goldman §13.3): linear part ``I - 2 NᵀN``,
+    translation row ``2 (Q·N) N``.  An involution with determinant -1.
+
+    >>> mirror([0, 0, 1], [0, 0, 1])[3].tolist()
+    [0.0, 0.0, 2.0, 1.0]
+    """
+    Q = _point(plane_point, "plane_point")
+    N = _unit(normal, "normal", "a mirror plane needs a normal direction")
+    return _affine(np.eye(3) - 2 * np.outer(N, N), Q)
+
+
+def scaling(s, center=None) -> np.ndarray:
+    """The 4x4 matrix of uniform scaling about ``center`` (Goldman §13.4).
+
+    >>> scaling(2, center=[1, 0, 0])[3].tolist()
+    [-1.0, 0.0, 0.0, 1.0]
+    """
+    s = as_float(s, "s")
+    Q = np.zeros(3) if center is None else _point(center, "center")
+    return _affine(s * np.eye(3), Q)
+
+
+def nonuniform_scaling(s, direction, center=None) -> np.ndarray:
+    """The 4x4 matrix of scaling by ``s`` along ``direction`` about ``center`` (Goldman §13.4):
+    linear part ``I + (s - 1) wᵀw``.
+
+    >>> nonuniform_scaling(3, [0, 0, 1])[:3, :3].tolist()
+    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 3.0]]
+    """
+    s = as_float(s, "s")
+    w = _unit(direction, "direction", "a scaling needs a direction to stretch along")
+    Q = np.zeros(3) if center is None else _point(center, "center")
+    return _affine(np.eye(3) + (s - 1) * np.outer(w, w), Q)
+
+
+def orthogonal_projection(plane_point, normal) -> np.ndarray:
+    """The 4x4 matrix of orthogonal projection onto a plane (Goldman §13.5): ``I - NᵀN`` and the
+    translation row ``(Q·N) N``; singular (determinant 0).
+
+    >>> orthogonal_projection([0, 0, 2], [0, 0, 1])[:, 2].tolist()
+    [0.0, 0.0, 0.0, 2.0]
+    """
+    Q = _point(plane_point, "plane_point")
+    N = _unit(normal, "normal", "a plane needs a normal direction")
+    return _affine(np.eye(3) - np.outer(N, N), Q)
+
+
+def perspective(eye, plane_point, normal) -> np.ndarray:
+    """The 4x4 matrix of perspective projection from ``eye`` onto the plane (Goldman §13.5):
+
+        | c I + Nᵀ E    Nᵀ    |        c = (Q - E)·N,  N the unit normal
+        | -(Q·N) E    -(E·N)  |
+
+    so ``[P 1] M = [c P + ((P - E)·N) E - c E ... , (P - E)·N]``, whose homogeneous divide is the
+    point of :func:`project_perspective`.  Raises ValueError for an eye on the plane.
+
+    >>> M = perspective([0, 0, 0], [0, 0, 1], [0, 0, 1])
+    >>> apply([[2, 4, 2]], M).tolist()
+    [[1.0, 2.0, 1.0]]
+    """
+    E = _point(eye, "eye")
+    Q = _point(plane_point, "plane_point")
+    N = _unit(normal, "normal", "a plane needs a normal direction")
+    _check_perspective(E, Q, N)
+    c = (Q - E) @ N
+    M = np.zeros((4, 4))
+    M[:3, :3] = c * np.eye(3) + np.outer(N, E)
+    M[:3, 3] = N
+    M[3, :3] = -(Q @ N) * E
+    M[3, 3] = -(E @ N)
+    return M
+
+
+def compose(*matrices) -> np.ndarray:
+    """The matrix of applying ``matrices`` in the order given: ``compose(A, B) == A @ B`` in the
+    row convention (A first, then B).
+
+    >>> compose(translation([1, 0, 0]), scaling(2))[3].tolist()
+    [2.0, 0.0, 0.0, 1.0]
+    """
+    if not matrices:
+        raise ValueError("matrices must hold at least one 4x4 matrix")
+    out = np.eye(4)
+    for k, m in enumerate(matrices):
+        A = check_finite(as_float_array(m, f"matrices[{k}]"), f"matrices[{k}]")
+        if A.shape != (4, 4):
+            raise ValueError(f"matrices[{k}] must be a 4x4 matrix; got shape {A.shape}")
+        out = out @ A
+    return out
+
+
+def apply(points, M) -> np.ndarray:
+    """Apply a 4x4 matrix to points in the row convention, ``[P 1] @ M``, and divide by the
+    homogeneous coordinate (Goldman §13.1).  Raises ValueError for a point sent to infinity
+    (homogeneous coordinate 0).
+
+    points: (..., 3).  M: (4, 4).  Returns (..., 3).
+
+    >>> apply([[1, 1, 1], [0, 0, 0]], translation([0, 0, 5])).tolist()
+    [[1.0, 1.0, 6.0], [0.0, 0.0, 5.0]]
+    """
+    P = _points(points)
+    A = check_finite(as_float_array(M, "M"), "M")
+    if A.shape != (4, 4):
+        raise ValueError(f"M must be a 4x4 matrix; got shape {A.shape}")
+    h = P @ A[:3] + A[3]
+    w = h[..., 3]
+    scale_ = np.maximum(1.0, np.abs(h[..., :3]).max(axis=-1))
+    if np.any(np.abs(w) <= 1e-12 * scale_):
+        k = int(np.flatnonzero(np.abs(w).ravel() <= 1e-12 * scale_.ravel())[0])
+        raise ValueError(f"points[{k}] is sent to infinity by M (its homogeneous coordinate is 0)")
+    return h[..., :3] / w[..., None]
