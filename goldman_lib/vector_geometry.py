@@ -388,7 +388,7 @@ def _crossings(poly: np.ndarray, Q: np.ndarray, signed: bool) -> np.ndarray:
     count = np.zeros(len(Q), dtype=np.int64)
     if len(Q) == 0:
         return count
-    order = np.argsort(Q[:, 1], kind="stable")
+    order = np.argsort(Q[:, 1])
     ys = Q[order, 1]
     xs = Q[order, 0]
     a = poly
