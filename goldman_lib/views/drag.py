@@ -1,0 +1,153 @@
+"""Points you drag with the mouse: the one drag helper every 2D view shares (CONVENTIONS, "Direct
+manipulation").
+
+Under ``%matplotlib widget`` (ipympl) the browser sends mouse events to the kernel, and matplotlib
+delivers them to callbacks registered with ``canvas.mpl_connect``.  :class:`PointDrag` turns them
+into drags: a press within ``radius`` pixels of a draggable point grabs the nearest one, each
+motion reports its new position, a release lets go.  :func:`drag_sliders` connects the drags of a
+view's points to the sliders that also set them, so both the mouse and the keyboard drive the
+same plain ``update`` callback: a drag sets the point's two sliders (through
+:meth:`InteractiveView.set_values`, which updates once for both) and the sliders follow the mouse.
+
+The same events arrive on any canvas, so tests drive a drag without a browser:
+
+>>> import matplotlib
+>>> from matplotlib.figure import Figure
+>>> fig = Figure(); ax = fig.add_subplot(); _ = ax.set_xlim(0, 10), ax.set_ylim(0, 10)
+>>> pts = np.array([[2.0, 2.0], [8.0, 5.0]])
+>>> moved = []
+>>> drag = PointDrag(ax, lambda: pts, lambda k, x, y: moved.append((k, round(x, 3), round(y, 3))))
+>>> drag.press_at(8.1, 5.0); drag.move_to(7.0, 6.0); drag.release()
+>>> moved
+[(1, 7.0, 6.0)]
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Sequence
+
+import numpy as np
+
+__all__ = ["PointDrag", "drag_sliders"]
+
+
+class PointDrag:
+    """Make the points returned by ``get_points()`` (an ``(n, 2)`` array in data coordinates of
+    ``ax``) draggable; ``on_drag(index, x, y)`` is called for each mouse motion while a point is held.
+
+    radius: how close (in display pixels) a press must be to grab a point.  ``enabled`` switches
+    dragging off and on.  :meth:`disconnect` removes the callbacks.
+    """
+
+    def __init__(self, ax, get_points: Callable[[], np.ndarray], on_drag: Callable[[int, float, float], None],
+                 radius: float = 12.0, on_release: Callable[[int], None] | None = None):
+        self.ax = ax
+        self.get_points = get_points
+        self.on_drag = on_drag
+        self.on_release = on_release
+        self.radius = float(radius)
+        self.active: int | None = None
+        self.enabled = True
+        canvas = ax.figure.canvas
+        self._cids = [canvas.mpl_connect("button_press_event", self._press),
+                      canvas.mpl_connect("motion_notify_event", self._motion),
+                      canvas.mpl_connect("button_release_event", self._release)]
+
+    def disconnect(self):
+        """Stop listening to the canvas."""
+        for cid in self._cids:
+            self.ax.figure.canvas.mpl_disconnect(cid)
+        self._cids = []
+
+    def nearest(self, x_pixels: float, y_pixels: float) -> int | None:
+        """The index of the draggable point within ``radius`` pixels of a display position, or None."""
+        pts = np.asarray(self.get_points(), dtype=float).reshape(-1, 2)
+        if len(pts) == 0:
+            return None
+        screen = self.ax.transData.transform(pts)
+        d = np.hypot(screen[:, 0] - x_pixels, screen[:, 1] - y_pixels)
+        k = int(np.argmin(d))
+        return k if d[k] <= self.radius else None
+
+    # -- matplotlib event handlers ------------------------------------------------------------------
+    def _press(self, event):
+        if not self.enabled or event.inaxes is not self.ax or event.button not in (1, None):
+            return
+        if self.ax.get_navigate_mode() is not None:   # the toolbar's pan or zoom has the mouse
+            return
+        self.active = self.nearest(event.x, event.y)
+
+    def _motion(self, event):
+        if self.active is None or event.inaxes is not self.ax or event.xdata is None:
+            return
+        self._drag_to(event.xdata, event.ydata)
+
+    def _release(self, event):
+        if self.active is not None and self.on_release is not None:
+            self.on_release(self.active)
+        self.active = None
+
+    def _drag_to(self, x, y):
+        if x is None or y is None or not (np.isfinite(x) and np.isfinite(y)):
+            return
+        self.on_drag(self.active, float(x), float(y))
+
+    # -- driving it from code (tests, demos) ------------------------------------------------------------
+    def _event(self, name: str, x: float, y: float):
+        from matplotlib.backend_bases import MouseEvent
+
+        px, py = self.ax.transData.transform((x, y))
+        event = MouseEvent(name, self.ax.figure.canvas, px, py, button=1)
+        self.ax.figure.canvas.callbacks.process(name, event)
+
+    def press_at(self, x: float, y: float):
+        """Press the mouse at data position (x, y) of the axes, as a learner would."""
+        self._event("button_press_event", x, y)
+
+    def move_to(self, x: float, y: float):
+        """Move the mouse to data position (x, y)."""
+        self._event("motion_notify_event", x, y)
+
+    def release(self):
+        """Release the mouse button."""
+        from matplotlib.backend_bases import MouseEvent
+
+        event = MouseEvent("button_release_event", self.ax.figure.canvas, 0, 0, button=1)
+        self.ax.figure.canvas.callbacks.process("button_release_event", event)
+
+
+def _snap(slider, value: float) -> float:
+    """``value`` clamped to a slider's range and rounded to its step (what the slider would hold)."""
+    lo, hi = slider.min, slider.max
+    value = min(max(value, lo), hi)
+    step = getattr(slider, "step", None)
+    if step:
+        value = lo + round((value - lo) / step) * step
+        value = min(max(value, lo), hi)
+    return float(round(value, 10))
+
+
+def drag_sliders(view, ax, pairs: Sequence[tuple[str, str]], radius: float = 12.0) -> PointDrag:
+    """Let the mouse drag the points of ``view`` whose coordinates are the slider pairs ``pairs``
+    (``[("x0", "y0"), ("x1", "y1"), ...]``, point k's x and y sliders) in the axes ``ax``.
+
+    A drag sets the two sliders of the grabbed point (clamped to their ranges, rounded to their
+    steps) through ``view.set_values``, so the view updates once per motion and the sliders show
+    where the point is.  Returns the :class:`PointDrag` (``view.drag`` also keeps it).
+    """
+    for x_name, y_name in pairs:
+        for name in (x_name, y_name):
+            if name not in view.controls:
+                raise KeyError(f"pairs names a control {name!r} the view does not have; controls are {sorted(view.controls)}")
+
+    def points():
+        vals = view.values()
+        return np.array([[vals[x], vals[y]] for x, y in pairs], dtype=float)
+
+    def on_drag(k, x, y):
+        x_name, y_name = pairs[k]
+        view.set_values(**{x_name: _snap(view.controls[x_name], x), y_name: _snap(view.controls[y_name], y)})
+
+    drag = PointDrag(ax, points, on_drag, radius=radius)
+    view.drag = drag
+    return drag

@@ -1,0 +1,79 @@
+"""The shared drag helper: a press near a point grabs it, motions move it, sliders follow, and the
+view's plain update runs once per motion."""
+
+import ipywidgets as widgets
+import numpy as np
+import pytest
+from matplotlib.figure import Figure
+
+from goldman_lib.views.drag import PointDrag, drag_sliders
+from goldman_lib.views.interactive import InteractiveView, float_slider
+
+
+def _view():
+    fig = Figure()
+    ax = fig.add_subplot()
+    ax.set_xlim(-2, 12), ax.set_ylim(-2, 12)
+    (line,) = ax.plot([1, 5], [1, 5], "o-")
+    calls = []
+
+    def update(x0, y0, x1, y1):
+        calls.append((x0, y0, x1, y1))
+        line.set_data([x0, x1], [y0, y1])
+        return {"points": np.array([[x0, y0], [x1, y1]]), "status": "ok"}
+
+    controls = {"x0": float_slider("x0", 1, 0, 10, 0.1), "y0": float_slider("y0", 1, 0, 10, 0.1),
+                "x1": float_slider("x1", 5, 0, 10, 0.1), "y1": float_slider("y1", 5, 0, 10, 0.1)}
+    view = InteractiveView(controls=controls, views=[widgets.HTML("")], update=update, figure=fig)
+    return view, ax, calls
+
+
+def test_a_drag_moves_the_nearest_point_and_its_sliders_follow():
+    view, ax, calls = _view()
+    drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
+    calls.clear()
+    drag.press_at(5.05, 4.95)            # near point 1
+    drag.move_to(7.23, 2.0)
+    drag.move_to(8.0, 3.04)
+    drag.release()
+    assert view.values() == {"x0": 1.0, "y0": 1.0, "x1": 8.0, "y1": 3.0}   # snapped to the 0.1 steps
+    assert calls == [(1.0, 1.0, 7.2, 2.0), (1.0, 1.0, 8.0, 3.0)]            # one update per motion
+    drag.move_to(2.0, 2.0)               # released: motions do nothing
+    assert len(calls) == 2
+
+
+def test_a_press_far_from_every_point_grabs_nothing_and_drags_stay_in_range():
+    view, ax, calls = _view()
+    drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
+    calls.clear()
+    drag.press_at(9.0, 9.0)
+    drag.move_to(3.0, 3.0)
+    drag.release()
+    assert calls == [] and view.values()["x1"] == 5.0
+    drag.press_at(1.0, 1.0)
+    drag.move_to(-1.0, 11.0)              # past the sliders' ranges: clamped
+    assert view.values()["x0"] == 0.0 and view.values()["y0"] == 10.0
+
+
+def test_point_drag_reports_index_and_data_coordinates():
+    fig = Figure()
+    ax = fig.add_subplot()
+    ax.set_xlim(-1, 1), ax.set_ylim(-1, 1)
+    got = []
+    d = PointDrag(ax, lambda: np.array([[0.0, 0.0], [0.5, 0.5]]), lambda k, x, y: got.append((k, x, y)),
+                  on_release=lambda k: got.append(("released", k)))
+    d.press_at(0.01, -0.01)
+    d.move_to(-0.25, 0.75)
+    d.release()
+    assert got[0][0] == 0 and np.allclose(got[0][1:], (-0.25, 0.75)) and got[1] == ("released", 0)
+    d.enabled = False
+    d.press_at(0.5, 0.5)
+    d.move_to(0.0, 0.0)
+    assert len(got) == 2
+    d.disconnect()
+
+
+def test_drag_sliders_refuses_unknown_controls():
+    view, ax, _ = _view()
+    with pytest.raises(KeyError, match="x9"):
+        drag_sliders(view, ax, [("x9", "y0")])
