@@ -95,8 +95,21 @@ def numbers_in(text: str, drop_counters: bool = False) -> list[tuple[float, int]
     return found
 
 
+def _digits_needed(value: float) -> int:
+    """Significant digits that write ``value`` to within 1e-9 (2 -> 1, 0.375 -> 3, 1/3 -> 10)."""
+    for digits in range(1, 16):
+        if abs(float(f"{value:.{digits}g}") - value) <= 1e-9 * max(1.0, abs(value)):
+            return digits
+    return 16
+
+
 def _matches(expected: float, written: float, digits: int) -> bool:
-    return float(f"{expected:.{digits}g}") == written or abs(expected - written) <= 1e-9
+    """Whether a number written with ``digits`` significant digits gives ``expected`` away: it is
+    ``expected`` rounded to that precision, written precisely enough to tell it (three digits, or
+    all the digits ``expected`` has) -- "1" does not give away 1.2034, "1.20" does."""
+    if abs(expected - written) <= 1e-9:
+        return True
+    return digits >= min(3, _digits_needed(expected)) and float(f"{expected:.{digits}g}") == written
 
 
 def leaked(message: str, answer, given: str) -> list[float]:
