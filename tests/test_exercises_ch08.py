@@ -20,7 +20,7 @@ def _wrong(result, *fragments):
 
 
 def test_every_checker_has_a_problem_statement_and_slips():
-    names = {"check_moved_point", "check_level_end", "check_ron_map", "check_tao_body", "check_bump_dimension"}
+    names = {"check_moved_point", "check_level_end", "check_ron_map", "check_tao_body", "check_bump_from_ifs"}
     assert set(ch08.PROBLEMS) == names == set(ch08.SLIPS)
     for name in names:
         assert not getattr(ch08, name)(None).answered
@@ -91,17 +91,19 @@ def test_tao_body_slips():
     _wrong(ch08.check_tao_body(42), "as a string")
 
 
-def test_bump_dimension():
-    # scales 1/2, 1/4, 1/4, 1/4: x + 3x^2 = 1 with x = 2^-D, x = (sqrt(13) - 1)/6
-    d = math.log2(6 / (math.sqrt(13) - 1))
-    assert abs(d - 1.20337) < 1e-5
-    assert ch08.check_bump_dimension(d).correct and ch08.check_bump_dimension(1.2034).correct
-    _wrong(ch08.check_bump_dimension(1), "four maps of scale 0.25")
-    _wrong(ch08.check_bump_dimension(math.log(4) / math.log(3)), "Koch curve's dimension")
-    _wrong(ch08.check_bump_dimension(2), "squared")
-    _wrong(ch08.check_bump_dimension(math.log(3) / math.log(4)), "left out the long first segment")
-    _wrong(ch08.check_bump_dimension(math.log(4) / math.log(3.2)), "average scale")
-    _wrong(ch08.check_bump_dimension(1.3), "off by 0.097")
+def test_bump_from_ifs():
+    # T1: (0,0)->(0,0), (1,0)->(0.3,0.4); T2: (0,0)->(0.6,0), (1,0)->(0.6,0)+(-0.3,0.4) = (0.3,0.4), backwards;
+    # T3: (0,0)->(0.6,0), (1,0)->(1,0)
+    right = [[0, 0], [0.3, 0.4], [0.6, 0], [1, 0]]
+    r = ch08.check_bump_from_ifs(right)
+    assert r.correct and "T2" in r.message and "backwards" in r.message
+    _wrong(ch08.check_bump_from_ifs(right[:3]), "3 maps has 4 points")
+    _wrong(ch08.check_bump_from_ifs(right[::-1]), "in reverse")
+    _wrong(ch08.check_bump_from_ifs([[0, 0], [0.6, 0], [0.6, 0], [1, 0]]), "last row as the start", "backwards")
+    _wrong(ch08.check_bump_from_ifs([[0, 0], [0.3, 0.4], [-0.3, 0.4], [0.4, 0]]), "a direction, not a point")
+    _wrong(ch08.check_bump_from_ifs([[0, 0], [0.3, 0.5], [0.6, 0], [1, 0]]), "point 1 of your bump is 0.1 away")
+    _wrong(ch08.check_bump_from_ifs(right + [[2, 0]]), "yours has 5")
+    _wrong(ch08.check_bump_from_ifs([0, 0]), "list of points")
 
 
 def test_parse_body_reads_fractions_and_sqrt2():

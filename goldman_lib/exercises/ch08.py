@@ -3,7 +3,7 @@
 Each exercise's data are module constants, so the notebook prints the problem from here and the
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers each checker recognises.  ``None`` or ``...`` means "not answered yet".
-Every exercise uses other states, programs, maps and bumps than the chapter's worked examples.  The
+Every exercise uses other states, programs and maps than the chapter's worked examples.  The
 programming project, :func:`check_rons_algorithm_project`, runs the learner's Ron's algorithm
 against :func:`goldman_lib.conformal_ifs.rons_algorithm` on generated programs.
 
@@ -23,13 +23,13 @@ import numpy as np
 
 from goldman_lib import affine, fractals
 from goldman_lib import conformal_ifs as cf
-from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, read_points, unanswered, wrong
+from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 from goldman_lib.exercises.projects import Case, check_project, describe
 from goldman_lib.turtle import Turtle
 
 __all__ = ["PROBLEMS", "SLIPS", "MOVED_POINT", "STATE_POINT", "STATE_DIRECTION", "LEVEL_BODY", "RON_BODY",
-           "RON_CALL", "TAO_MAPS", "TAO_BASE", "BUMP", "check_moved_point", "check_level_end", "check_ron_map",
-           "check_tao_body", "check_bump_dimension", "check_rons_algorithm_project", "rons_project_cases",
+           "RON_CALL", "TAO_MAPS", "TAO_BASE", "BUMP_MAPS", "check_moved_point", "check_level_end", "check_ron_map",
+           "check_tao_body", "check_bump_from_ifs", "check_rons_algorithm_project", "rons_project_cases",
            "parse_body", "call_states"]
 
 R2 = math.sqrt(2.0)
@@ -47,8 +47,13 @@ RON_CALL = 3
 #: segment and comes home, as Tao's base cases do).
 TAO_MAPS = (affine.similarity(0.5, 0), affine.similarity(0.5, 90, (1.0, 0.0)))
 TAO_BASE = (("FORWARD", 1.0), ("MOVE", -1.0))
-#: Exercise 5 (§8.5): a bump with one segment of length 1/2 and three of length 1/4.
-BUMP = np.array([[0.0, 0.0], [0.5, 0.0], [0.625, math.sqrt(3) / 8], [0.875, math.sqrt(3) / 8], [1.0, 0.0]])
+#: Exercise 5 (§8.5): the maps of a bump fractal (the second draws its segment backwards).
+BUMP_MAPS = (cf.state_map((0.0, 0.0), (0.3, 0.4)), cf.state_map((0.6, 0.0), (-0.3, 0.4)),
+             cf.state_map((0.6, 0.0), (0.4, 0.0)))
+
+
+def _matrix_text(M) -> str:
+    return "[" + ", ".join("[" + ", ".join(fmt(v + 0.0) for v in row) + "]" for row in np.asarray(M)) + "]"
 
 PROBLEMS = {
     "check_moved_point": (
@@ -69,10 +74,12 @@ PROBLEMS = {
         "and comes home) whose IFS is {T1: scale by 1/2; T2: scale by 1/2, rotate by 90 degrees, then translate "
         "by (1, 0)}, as Tao's algorithm does: for each map move the turtle (pen up) to the map's state, RECURSE, "
         "and move back. Give it as a string such as \"RESIZE 2 RECURSE TURN 90\" (Goldman §8.4)."),
-    "check_bump_dimension": (
-        "A bump fractal has the bump (0, 0), (1/2, 0), (5/8, sqrt(3)/8), (7/8, sqrt(3)/8), (1, 0). Its IFS has "
-        "one similarity per segment of the bump, scaled by the segment's length. Give the similarity dimension "
-        "of the fractal to 4 decimals (Goldman §8.5, §3.2)."),
+    "check_bump_from_ifs": (
+        "This IFS draws a bump fractal: each map sends the unit segment from (0, 0) to (1, 0) onto one segment of "
+        "the bump, one of them backwards (as in the dragon). "
+        + "; ".join(f"T{i + 1} = {_matrix_text(M)}" for i, M in enumerate(BUMP_MAPS))
+        + " (row-vector convention, translation in the last row). Give the bump as its list of points "
+          "[[x0, y0], [x1, y1], ...], from (0, 0) to (1, 0) (Goldman §8.5)."),
 }
 
 
@@ -368,41 +375,49 @@ def check_tao_body(answer) -> Result:
 
 # -- §8.5 ----------------------------------------------------------------------------------------------
 
-def check_bump_dimension(answer) -> Result:
-    """Check the similarity dimension of the bump fractal of ``BUMP``: scales 1/2, 1/4, 1/4, 1/4, so
-    x + 3 x^2 = 1 with x = (1/2)^D: x = (sqrt(13) - 1)/6, D = log2(6/(sqrt(13) - 1)) = 1.2034 (Goldman §8.5).
+def check_bump_from_ifs(answer) -> Result:
+    """Check the bump read back from ``BUMP_MAPS`` (Goldman §8.5): T_i sends (0, 0) to its last row P and
+    (1, 0) to P + w (first row); the segments chain (0, 0) -> (0.3, 0.4) -> (0.6, 0) -> (1, 0), T2 from
+    its end (0.6, 0) back to (0.3, 0.4).
 
-    Recognises all four maps taken at scale 1/4, the Koch curve's dimension, the equation without
-    the square, the long segment left out, and one average scale.
+    Recognises the last rows taken as the segments' starts (missing the backward segment), the first
+    rows taken as points, a missing end point and the bump in reverse.
 
-    >>> check_bump_dimension(1)
-    Not yet: that is what four maps of scale 0.25 give; the first segment is half the chord long, so its map has scale 0.5: solve 0.5^D + 3 x 0.25^D = one.
+    >>> check_bump_from_ifs([[0, 0], [0.3, 0.4], [0.6, 0]])
+    Not yet: a bump with 3 maps has 4 points, one more than segments: from (0, 0) through the segments' joints to (1, 0).
     """
-    value, problem = read_number(answer, "the similarity dimension")
-    if problem is not None:
-        return problem
-    scales = np.hypot(*np.diff(BUMP, axis=0).T)
-    expected = fractals.similarity_dimension(scales)
+    got, err = read_points(answer, "your bump", ask="the bump as a list of points [[x0, y0], ...]")
+    if err is not None:
+        return err
+    expected, reverse = cf.bump_of(list(BUMP_MAPS))
+    n = len(expected)
     tol = 1e-4
-    if abs(value - expected) <= tol:
-        return correct(f"the similarity dimension is {expected:.4f}: with x = (1/2)^D the equation "
-                       f"(1/2)^D + 3 (1/4)^D = 1 is x + 3x^2 = 1.")
-    if abs(value - 1.0) <= tol:
-        return wrong("that is what four maps of scale 0.25 give; the first segment is half the chord long, so its "
-                     "map has scale 0.5: solve 0.5^D + 3 x 0.25^D = one.")
-    if abs(value - math.log(4) / math.log(3)) <= tol:
-        return wrong("that is the Koch curve's dimension (four maps scaled by a third); this bump's segments are "
-                     "half and a quarter of the chord: measure them.")
-    if abs(value - 2.0) <= tol:
-        return wrong("0.25^D is (0.5^D) squared, not 0.5^D: with x = 0.5^D the equation is quadratic in x.")
-    if abs(value - math.log(3) / math.log(4)) <= tol:
-        return wrong("you left out the long first segment; every segment of the bump is a map, so the sum has "
-                     "four terms.")
-    if abs(value - math.log(4) / math.log(1 / scales.mean())) <= tol:
-        return wrong("you used one average scale for all four maps; with unequal scales solve "
-                     "sum of s_i^D = one with each segment's own length.")
-    return wrong(f"the similarity dimension is {off_by(value, expected)}. Hint: the scales are the segment "
-                 f"lengths; solve sum of s_i^D = one (Newton's method of chapter 7, or put x = 0.5^D).")
+    if got.ndim != 2 or got.shape[1:] != (2,):
+        return wrong(f"give the bump as a list of points [[x0, y0], [x1, y1], ...]; yours has shape {got.shape}.")
+    if got.shape == expected.shape and np.allclose(got, expected, atol=tol):
+        return correct(f"the bump has {n} points; T{reverse[0] + 1} sends (0, 0) to the END of its segment, so "
+                       f"it draws it backwards.")
+    if got.shape[0] == n - 1:
+        return wrong(f"a bump with {n - 1} maps has {n} points, one more than segments: from (0, 0) through the "
+                     f"segments' joints to (1, 0).")
+    if got.shape[0] != n:
+        return wrong(f"a bump with {n - 1} maps has {n} points; yours has {got.shape[0]}.")
+    if np.allclose(got, expected[::-1], atol=tol):
+        return wrong("that is the bump in reverse; it runs from (0, 0), where T1 starts, to (1, 0).")
+    starts = np.array([M[2, :2] for M in BUMP_MAPS] + [[1.0, 0.0]])
+    if np.allclose(got, starts, atol=tol):
+        return wrong(f"you took each map's last row as the start of its segment; it is the image of (0, 0), and "
+                     f"T{reverse[0] + 1} draws its segment backwards, so its last row is where its segment ENDS. "
+                     f"Chain the segments: each begins where the one before ended.")
+    rows = np.array([[0.0, 0.0]] + [M[0, :2] for M in BUMP_MAPS])
+    if np.allclose(got, rows, atol=tol):
+        return wrong("the first row of a map is w, a direction, not a point: the image of (1, 0) is P + w, the "
+                     "last row plus the first.")
+    bad = [k for k in range(n) if np.linalg.norm(got[k] - expected[k]) > tol]
+    k = bad[0]
+    return wrong(f"point {k} of your bump is {fmt(np.linalg.norm(got[k] - expected[k]), 2)} away from where it "
+                 f"should be ({len(bad)} of {n} points are off). Each map sends (0, 0) to its last row P and "
+                 f"(1, 0) to P + w; one of them runs backwards.")
 
 
 # -- the programming project: Ron's algorithm (§8.4) -------------------------------------------------
@@ -536,6 +551,10 @@ SLIPS = {
         "RESIZE 1/2 RECURSE MOVE 1 TURN 90 RECURSE TURN -90 MOVE -1 RESIZE 2",
         "RESIZE 1/2 RECURSE RESIZE 2 MOVE 1 TURN -90 RESIZE 1/2 RECURSE RESIZE 2 TURN 90 MOVE -1",
     ],
-    "check_bump_dimension": [1.0, math.log(4) / math.log(3), 2.0, math.log(3) / math.log(4),
-                             math.log(4) / math.log(3.2)],
+    "check_bump_from_ifs": [
+        [[0, 0], [0.3, 0.4], [0.6, 0]],
+        [[1, 0], [0.6, 0], [0.3, 0.4], [0, 0]],
+        [[0, 0], [0.6, 0], [0.6, 0], [1, 0]],
+        [[0, 0], [0.3, 0.4], [-0.3, 0.4], [0.4, 0]],
+    ],
 }
