@@ -1,13 +1,18 @@
 """Exercise checkers for chapter 8, recursive turtle programs and conformal IFS (Goldman §8.2-8.5).
 
 Each exercise's data are module constants, so the notebook prints the problem from here and the
-checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name.
-``None`` or ``...`` means "not answered yet".
+checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
+``SLIPS`` the wrong answers each checker recognises.  ``None`` or ``...`` means "not answered yet".
+Every exercise uses other states, programs and maps than the chapter's worked examples.  The
+programming project, :func:`check_rons_algorithm_project`, runs the learner's Ron's algorithm
+against :func:`goldman_lib.conformal_ifs.rons_algorithm` on generated programs.
 
->>> print(PROBLEMS["check_bump_dimension"])
-The square Koch curve replaces a segment by the bump (0, 0), (1/3, 0), (1/3, 1/3), (2/3, 1/3), (2/3, 0), (1, 0). Its IFS has one map per segment of the bump. What is the similarity dimension of the curve (Goldman §8.5, §3.2)?
->>> check_bump_dimension(math.log(5) / math.log(3))
-Correct: the similarity dimension is 1.465: 5 maps of scale 1/3, so D = log 5 / log 3.
+"Conformal" here means what the turtle can do: translation, rotation and uniform scaling, no mirror.
+
+>>> print(PROBLEMS["check_moved_point"])
+A turtle program drawn from the standard state ((0, 0), (1, 0)) passes through the point (1/2, 1/2). The same program is started at P = (-1, 2) with w = (1, 1). Where is that point drawn now? Give [x, y] (Goldman §8.2).
+>>> check_moved_point([-0.5, 2.5])
+Not yet: you translated by P but did not turn or scale: w = (1, 1) is turned 45 degrees and is sqrt(2) long, so the drawing turns and grows before it moves to P.
 """
 
 from __future__ import annotations
@@ -18,126 +23,97 @@ import numpy as np
 
 from goldman_lib import affine, fractals
 from goldman_lib import conformal_ifs as cf
-from goldman_lib.exercises import (Result, check_number, correct, fmt, is_unanswered, read_points, unanswered,
-                                   wrong)
+from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
+from goldman_lib.exercises.projects import Case, check_project, describe
+from goldman_lib.turtle import Turtle
 
-__all__ = ["PROBLEMS", "STATE_POINT", "STATE_DIRECTION", "APEX", "TARGET_MAPS", "CANDIDATE_MAPS",
-           "check_moved_apex", "check_call_state", "check_tao_body", "check_bump_dimension",
-           "check_conformal_maps", "parse_body"]
+__all__ = ["PROBLEMS", "SLIPS", "MOVED_POINT", "STATE_POINT", "STATE_DIRECTION", "LEVEL_BODY", "RON_BODY",
+           "RON_CALL", "TAO_MAPS", "TAO_BASE", "BUMP_MAPS", "check_moved_point", "check_level_end", "check_ron_map",
+           "check_tao_body", "check_bump_from_ifs", "check_rons_algorithm_project", "rons_project_cases",
+           "parse_body", "call_states"]
 
-#: Exercise 1: the new initial state of the Koch curve, and the apex of its level 1.
-STATE_POINT = (2.0, 1.0)
-STATE_DIRECTION = (0.0, 1.0)
-APEX = (0.5, math.sqrt(3) / 6)
-#: Exercise 3: the IFS whose turtle program is asked for (the two halves of the unit segment).
-TARGET_MAPS = (affine.similarity(0.5, 0), affine.similarity(0.5, 0, (0.5, 0.0)))
-#: Exercise 5: maps to sort into those a turtle can follow and those it cannot.
-CANDIDATE_MAPS = {
-    "A": ("scaling(1/2) about the origin", affine.scaling(0.5)),
-    "B": ("scaling by 1/2 along x and 1/4 along y", affine.scaling([0.5, 0.25])),
-    "C": ("similarity(1/2, 30°) with a reflection", affine.similarity(0.5, 30, reflect=True)),
-    "D": ("rotation by 90° then translation by (1, 0)", affine.rotation(90) @ affine.translation([1, 0])),
-    "E": ("the shear (x, y) -> (x + y/2, y)", affine.shear(0.5)),
-}
+R2 = math.sqrt(2.0)
+
+#: Exercise 1 (§8.2): a point of the drawing from the standard state, and the new initial state.
+MOVED_POINT = (0.5, 0.5)
+STATE_POINT = (-1.0, 2.0)
+STATE_DIRECTION = (1.0, 1.0)
+#: Exercise 2 (§8.3): a body (base case FORWARD 1) whose level 1 ends elsewhere than its base case.
+LEVEL_BODY = "RESIZE 1/2 RECURSE TURN 90 RECURSE TURN -90 RESIZE 2"
+#: Exercise 3 (§8.4, Ron's algorithm): a body with base case FORWARD 1, and the call asked for (1-based).
+RON_BODY = "RESIZE 1/4 RECURSE TURN 45 RESIZE sqrt2 RECURSE TURN -90 RECURSE TURN 45 RESIZE 1/sqrt2 RECURSE RESIZE 4"
+RON_CALL = 3
+#: Exercise 4 (§8.4, Tao's algorithm): the IFS to write a body for, and the base case (draws the unit
+#: segment and comes home, as Tao's base cases do).
+TAO_MAPS = (affine.similarity(0.5, 0), affine.similarity(0.5, 90, (1.0, 0.0)))
+TAO_BASE = (("FORWARD", 1.0), ("MOVE", -1.0))
+#: Exercise 5 (§8.5): the maps of a bump fractal (the second draws its segment backwards).
+BUMP_MAPS = (cf.state_map((0.0, 0.0), (0.3, 0.4)), cf.state_map((0.6, 0.0), (-0.3, 0.4)),
+             cf.state_map((0.6, 0.0), (0.4, 0.0)))
+
+
+def _matrix_text(M) -> str:
+    return "[" + ", ".join("[" + ", ".join(fmt(v + 0.0) for v in row) + "]" for row in np.asarray(M)) + "]"
 
 PROBLEMS = {
-    "check_moved_apex": (
-        f"Level 1 of the Koch curve drawn from the standard state ((0, 0), (1, 0)) has its apex at "
-        f"(1/2, sqrt(3)/6). The turtle now starts at P = {fmt(STATE_POINT)} heading w = {fmt(STATE_DIRECTION)}. "
-        f"Where is the apex drawn? Give (x, y) (Goldman §8.2)."),
-    "check_call_state": (
-        "The C-curve's body is TURN 45 RESIZE 1/sqrt2 C TURN -90 C TURN 45 RESIZE sqrt2, and its base case "
-        "FORWARD 1. Starting from ((0, 0), (1, 0)), what is the turtle's state (P, w) at the second recursive "
-        "call C? Give [P, w] as [[Px, Py], [wx, wy]] (Goldman §8.4, Ron's algorithm)."),
+    "check_moved_point": (
+        f"A turtle program drawn from the standard state ((0, 0), (1, 0)) passes through the point (1/2, 1/2). "
+        f"The same program is started at P = {fmt(STATE_POINT)} with w = {fmt(STATE_DIRECTION)}. Where is that "
+        f"point drawn now? Give [x, y] (Goldman §8.2)."),
+    "check_level_end": (
+        f"A recursive turtle program has base case FORWARD 1 and body {LEVEL_BODY}. From the standard state "
+        f"((0, 0), (1, 0)), where is the turtle at the end of level 1? Give P as [x, y], and compare it with "
+        f"where level 0 ends (Goldman §8.3)."),
+    "check_ron_map": (
+        f"A recursive turtle program has base case FORWARD 1 and body {RON_BODY} (sqrt2 = 1.41421...). By Ron's "
+        f"algorithm, call number {RON_CALL} gives the map T{RON_CALL} sending the standard state ((0, 0), (1, 0)) "
+        f"to the turtle's state at that call. Give T{RON_CALL} as a 3x3 matrix in the row-vector convention "
+        f"(Q = [x, y, 1] T, translation in the last row) (Goldman §8.4)."),
     "check_tao_body": (
-        "Write the body of a recursive turtle program with base case FORWARD 1 whose IFS (by Ron's "
-        "algorithm) is {scale by 1/2 about (0, 0), scale by 1/2 then translate by (1/2, 0)}: the two halves "
-        "of the unit segment. Give it as a string such as \"RESIZE 2 RECURSE TURN 90\" "
-        "(Goldman §8.4, Tao's algorithm)."),
-    "check_bump_dimension": (
-        "The square Koch curve replaces a segment by the bump (0, 0), (1/3, 0), (1/3, 1/3), (2/3, 1/3), "
-        "(2/3, 0), (1, 0). Its IFS has one map per segment of the bump. What is the similarity dimension of "
-        "the curve (Goldman §8.5, §3.2)?"),
-    "check_conformal_maps": (
-        "Which of these maps can Tao's algorithm turn into turtle commands? "
-        + "; ".join(f"{k}: {d}" for k, (d, _) in CANDIDATE_MAPS.items())
-        + ". Answer with the set of letters, e.g. {\"A\", \"B\"} (Goldman §8.3-8.4)."),
+        "Write the body of a recursive turtle program with base case FORWARD 1 MOVE -1 (it draws the unit segment "
+        "and comes home) whose IFS is {T1: scale by 1/2; T2: scale by 1/2, rotate by 90 degrees, then translate "
+        "by (1, 0)}, as Tao's algorithm does: for each map move the turtle (pen up) to the map's state, RECURSE, "
+        "and move back. Give it as a string such as \"RESIZE 2 RECURSE TURN 90\" (Goldman §8.4)."),
+    "check_bump_from_ifs": (
+        "This IFS draws a bump fractal: each map sends the unit segment from (0, 0) to (1, 0) onto one segment of "
+        "the bump, one of them backwards (as in the dragon). "
+        + "; ".join(f"T{i + 1} = {_matrix_text(M)}" for i, M in enumerate(BUMP_MAPS))
+        + " (row-vector convention, translation in the last row). Give the bump as its list of points "
+          "[[x0, y0], [x1, y1], ...], from (0, 0) to (1, 0) (Goldman §8.5)."),
 }
 
 
-def _moved(point) -> np.ndarray:
-    return affine.apply(np.asarray(point, float)[None], cf.state_map(STATE_POINT, STATE_DIRECTION))[0]
+# -- reading answers ---------------------------------------------------------------------------------
 
-
-def check_moved_apex(answer) -> Result:
-    """Check where the Koch apex lands when the initial state changes (Goldman §8.2).
-
-    >>> check_moved_apex([2 - math.sqrt(3) / 6, 1.5])
-    Correct: the apex is drawn at (1.711, 1.5): the map sends (x, y) to (2 - y, 1 + x), a quarter turn then a translation by P.
-    >>> check_moved_apex([2.5, 1 + math.sqrt(3) / 6])
-    Not yet: you translated by P but did not turn: w = (0, 1) points up, so the whole drawing turns by 90 degrees (x, y) -> (-y, x) before it moves to P.
-    """
-    what = "the apex"
+def _read_point(answer, what: str):
     got, err = read_points(answer, "your point", ask=what + " as [x, y]")
     if err is not None:
-        return err
+        return None, err
     if got.shape != (2,):
-        return wrong(f"{what} should be one point [x, y]; yours has shape {got.shape}.")
-    expected = _moved(APEX)
-    if np.linalg.norm(got - expected) <= 1e-6:
-        return correct(f"the apex is drawn at {fmt(expected)}: the map sends (x, y) to (2 - y, 1 + x), a quarter "
-                       f"turn then a translation by P.")
-    apex = np.array(APEX)
-    if np.linalg.norm(got - (apex + STATE_POINT)) <= 1e-6:
-        return wrong("you translated by P but did not turn: w = (0, 1) points up, so the whole drawing turns by "
-                     "90 degrees (x, y) -> (-y, x) before it moves to P.")
-    if np.linalg.norm(got - (np.array([apex[1], -apex[0]]) + STATE_POINT)) <= 1e-6:
-        return wrong("you turned the drawing clockwise: the heading turns from (1, 0) to (0, 1), a counterclockwise "
-                     "quarter turn (x, y) -> (-y, x).")
-    if np.linalg.norm(got - np.array([-apex[1], apex[0]])) <= 1e-6:
-        return wrong("you turned the drawing but forgot to move it: the start (0, 0) goes to P = (2, 1).")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from the apex; map the apex by the "
-                 f"similarity sending (0, 0) to P and (1, 0) to P + w.")
-
-
-def check_call_state(answer) -> Result:
-    """Check the state at the C-curve's second recursive call (Goldman §8.4).
-
-    >>> check_call_state([[0.5, 0.5], [0.5, -0.5]])
-    Correct: at the second call P = (0.5, 0.5), w = (0.5, -0.5): the first call moved the turtle one (resized) step along w, and TURN -90 turned it.
-    >>> check_call_state([[0, 0], [0.5, -0.5]])
-    Not yet: your P is where the first call started: a recursive call moves the turtle, as its base case FORWARD 1 does, so the second call starts one step further along.
-    """
-    got, err = read_points(answer, "your state", ask="the state [[Px, Py], [wx, wy]]")
-    if err is not None:
-        return err
-    if got.shape != (2, 2):
-        return wrong(f"give the state as [[Px, Py], [wx, wy]]; yours has shape {got.shape}.")
-    conv = cf.rons_algorithm(fractals.c_curve_program())
-    T = conv.maps[1]
-    P, w = T[2, :2], T[0, :2]
-    if np.allclose(got, [P, w], atol=1e-6):
-        return correct(f"at the second call P = {fmt(P)}, w = {fmt(w)}: the first call moved the turtle one "
-                       f"(resized) step along w, and TURN -90 turned it.")
-    if np.allclose(got[0], [0, 0], atol=1e-6):
-        return wrong("your P is where the first call started: a recursive call moves the turtle, as its base case "
-                     "FORWARD 1 does, so the second call starts one step further along.")
-    if np.allclose(got[0], P, atol=1e-6) and np.allclose(np.hypot(*got[1]), 1.0, atol=1e-6):
-        return wrong("P is right, but w is too long: RESIZE 1/sqrt2 shrank the step, so |w| = 1/sqrt2.")
-    if np.allclose(got[0], P, atol=1e-6):
-        return wrong(f"P is right, but w should be {fmt(w)}: heading 45 - 90 = -45 degrees, length 1/sqrt2.")
-    return wrong(f"follow the body command by command from P = (0, 0), w = (1, 0); the first call ends at "
-                 f"P + w, like FORWARD 1.")
+        return None, wrong(f"{what} should be one point [x, y]; yours has shape {got.shape}.")
+    return got, None
 
 
 def parse_body(text: str) -> list[tuple[str, float | None]]:
     """Read a body written as text: commands ``FORWARD d``, ``MOVE d``, ``TURN a``, ``RESIZE s`` and
-    ``RECURSE``, separated by spaces, commas or line breaks; numbers may be fractions like 1/2.
-    Raises ValueError naming the token that is not understood.
+    ``RECURSE``, separated by spaces, commas or line breaks; numbers may be fractions like 1/2 and
+    may use ``sqrt2`` (``1/sqrt2``, ``sqrt2/2``).  Raises ValueError naming the token that is not
+    understood.
 
     >>> parse_body("RESIZE 1/2 RECURSE MOVE 1")
     [('RESIZE', 0.5), ('RECURSE', None), ('MOVE', 1.0)]
+    >>> parse_body("RESIZE 1/sqrt2")[0][1] == 1 / math.sqrt(2)
+    True
     """
+    def number(tok: str) -> float:
+        tok = tok.lower()
+        parts = tok.split("/")
+        if len(parts) > 2:
+            raise ValueError
+        vals = [R2 if p in ("sqrt2", "sqrt(2)", "√2") else (-R2 if p in ("-sqrt2", "-sqrt(2)") else float(p))
+                for p in parts]
+        return vals[0] / vals[1] if len(vals) == 2 else vals[0]
+
     tokens = text.replace(",", " ").split()
     out, i = [], 0
     while i < len(tokens):
@@ -150,27 +126,207 @@ def parse_body(text: str) -> list[tuple[str, float | None]]:
             raise ValueError(f"{tokens[i]!r} is not a command (FORWARD, MOVE, TURN, RESIZE, RECURSE)")
         if i + 1 >= len(tokens):
             raise ValueError(f"{word} needs a number after it")
-        num = tokens[i + 1]
         try:
-            if "/" in num:
-                a, b = num.split("/")
-                value = float(a) / float(b)
-            else:
-                value = float(num)
+            value = number(tokens[i + 1])
         except (ValueError, ZeroDivisionError):
-            raise ValueError(f"{num!r} after {word} is not a number") from None
+            raise ValueError(f"{tokens[i + 1]!r} after {word} is not a number") from None
         out.append((word, value))
         i += 2
     return out
 
 
-def check_tao_body(answer) -> Result:
-    """Check a body whose IFS is the two halves of the unit segment (Goldman §8.4).
+def call_states(body, *, base_moves: float = 1.0, turn_sign: float = 1.0, resize: bool = True):
+    """Run a body once from the standard state with the library's turtle, each RECURSE changing the
+    state as a base case ``MOVE base_moves`` would; return the similarities ``state_map(P, w)`` of the
+    states at the RECURSEs, and the final ``(P, w)``.  With ``turn_sign=-1`` every TURN is negated,
+    with ``resize=False`` RESIZE is ignored: the states a learner who made those slips computes.
 
-    >>> check_tao_body("RESIZE 1/2 RECURSE RECURSE RESIZE 2")
-    Correct: Ron's algorithm finds the maps scale 1/2 at (0, 0) and scale 1/2 at (0.5, 0): the first call ends where the second begins.
-    >>> check_tao_body("RESIZE 1/2 RECURSE RECURSE")
-    Not yet: the program is not consistent: the base case leaves the turtle at point (1, 0), direction (1, 0) but level 1 leaves it at point (1, 0), direction (0.5, 0) (from the standard state); Ron's algorithm needs every level to change the turtle's state the same way (Goldman §8.3). Undo the RESIZE and TURN commands at the end of the body.
+    >>> maps, (P, w) = call_states(parse_body("RESIZE 1/2 RECURSE RECURSE RESIZE 2"))
+    >>> [M[2, :2].tolist() for M in maps], P.tolist(), w.tolist()
+    ([[0.0, 0.0], [0.5, 0.0]], [1.0, 0.0], [1.0, 0.0])
+    """
+    t = Turtle()
+    maps = []
+    for cmd, value in body:
+        if cmd == "RECURSE":
+            maps.append(cf.state_map(t.point, t.direction))
+            if base_moves:
+                t.move(base_moves)
+        elif cmd == "TURN":
+            t.turn(turn_sign * value)
+        elif cmd == "RESIZE":
+            if resize:
+                t.resize(value)
+        elif cmd == "FORWARD":
+            t.forward(value)
+        elif cmd == "MOVE":
+            t.move(value)
+    return maps, (t.point.copy(), t.direction.copy())
+
+
+def _program(body, base=(("FORWARD", 1.0),)):
+    return fractals.RecursiveTurtleProgram(body, list(base))
+
+
+# -- §8.2 ----------------------------------------------------------------------------------------------
+
+def check_moved_point(answer) -> Result:
+    """Check where (1/2, 1/2) is drawn from the state P = (-1, 2), w = (1, 1): the map sends (x, y)
+    to P + x w + y w_perp = (-1 + x - y, 2 + x + y), so (-1, 3) (Goldman §8.2).
+
+    Recognises a translation only, a clockwise turn, a turn without the scaling, a turn and scaling
+    without the translation.
+
+    >>> check_moved_point([0, 2])
+    Not yet: you turned the drawing clockwise: the heading turns from (1, 0) to w = (1, 1), counterclockwise, so (0, 1) goes to the perpendicular (-1, 1), not (1, -1).
+    """
+    what = "the moved point"
+    got, err = _read_point(answer, what)
+    if err is not None:
+        return err
+    M = cf.state_map(STATE_POINT, STATE_DIRECTION)
+    q = np.array(MOVED_POINT)
+    expected = affine.apply(q[None], M)[0]
+    P, w = np.array(STATE_POINT), np.array(STATE_DIRECTION)
+    tol = 1e-4
+    if np.linalg.norm(got - expected) <= tol:
+        return correct(f"the point is drawn at {fmt(expected)}: (x, y) goes to P + x w + y w_perp with "
+                       f"w_perp = (-1, 1).")
+    if np.linalg.norm(got - (q + P)) <= tol:
+        return wrong("you translated by P but did not turn or scale: w = (1, 1) is turned 45 degrees and is "
+                     "sqrt(2) long, so the drawing turns and grows before it moves to P.")
+    clockwise = P + q[0] * w + q[1] * np.array([w[1], -w[0]])
+    if np.linalg.norm(got - clockwise) <= tol:
+        return wrong("you turned the drawing clockwise: the heading turns from (1, 0) to w = (1, 1), "
+                     "counterclockwise, so (0, 1) goes to the perpendicular (-1, 1), not (1, -1).")
+    if np.linalg.norm(got - (expected - P)) <= tol:
+        return wrong("you turned and scaled the drawing but forgot to move it: the start (0, 0) goes to P.")
+    unscaled = affine.apply(q[None], affine.rotation(45) @ affine.translation(P))[0]
+    if np.linalg.norm(got - unscaled) <= tol:
+        return wrong("you turned by 45 degrees but kept the size: the step |w| = sqrt(2) scales the whole drawing.")
+    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from where "
+                 f"it is drawn; send (0, 0) to P and (1, 0) to P + w, and (0, 1) to P plus w turned 90 degrees "
+                 f"counterclockwise.")
+
+
+# -- §8.3 ----------------------------------------------------------------------------------------------
+
+def check_level_end(answer) -> Result:
+    """Check where level 1 of ``LEVEL_BODY`` ends: RESIZE 1/2, a call moves by (1/2, 0), TURN 90, a
+    call moves by (0, 1/2): P = (1/2, 1/2), while level 0 (FORWARD 1) ends at (1, 0) (Goldman §8.3).
+
+    Recognises the base case's end, calls that do not move the turtle, a forgotten RESIZE and a
+    clockwise turn.
+
+    >>> check_level_end([1, 0])
+    Not yet: (1, 0) is where level 0, FORWARD 1, ends; level 1 runs the body, and each of its calls moves the turtle as FORWARD 1 does, with the step and heading in force at the call.
+    """
+    what = "the end of level 1"
+    got, err = _read_point(answer, what)
+    if err is not None:
+        return err
+    body = parse_body(LEVEL_BODY)
+    expected = _program(body).trace(1).point
+    base_end = _program(body).trace(0).point
+    tol = 1e-4
+    if np.linalg.norm(got - expected) <= tol:
+        return correct(f"level 1 ends at {fmt(expected)}, but level 0 ends at {fmt(base_end)}: the levels change "
+                       f"the turtle's state differently, so this program breaks the hypothesis of the equivalence "
+                       f"theorem and Ron's algorithm refuses it (each call would be drawn from a state the maps "
+                       f"cannot predict).")
+    if np.linalg.norm(got - base_end) <= tol:
+        return wrong(f"{fmt(base_end)} is where level 0, FORWARD 1, ends; level 1 runs the body, and each of its "
+                     f"calls moves the turtle as FORWARD 1 does, with the step and heading in force at the call.")
+    _, (still, _) = call_states(body, base_moves=0.0)
+    if np.linalg.norm(got - still) <= tol:
+        return wrong("your calls did not move the turtle: at level 1 each RECURSE runs the base case FORWARD 1, "
+                     "which moves it one (resized) step.")
+    _, (big, _) = call_states(body, resize=False)
+    if np.linalg.norm(got - big) <= tol:
+        return wrong("you left out RESIZE 1/2: each call moves the turtle by the halved step.")
+    _, (cw, _) = call_states(body, turn_sign=-1.0)
+    if np.linalg.norm(got - cw) <= tol:
+        return wrong("you turned clockwise: TURN 90 turns the heading counterclockwise, from (1, 0) towards (0, 1).")
+    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from the end "
+                 f"of level 1; follow the body command by command, each RECURSE acting like FORWARD 1.")
+
+
+# -- §8.4 ----------------------------------------------------------------------------------------------
+
+def _ron_expected() -> np.ndarray:
+    return cf.rons_algorithm(_program(parse_body(RON_BODY))).maps[RON_CALL - 1]
+
+
+def check_ron_map(answer) -> Result:
+    """Check the map of the third call of ``RON_BODY``: the turtle is at P = (1/2, 1/4) with
+    w = (1/4, -1/4), so T3 = [[1/4, -1/4, 0], [1/4, 1/4, 0], [1/2, 1/4, 1]] (Goldman §8.4).
+
+    Recognises the transposed (column-vector) matrix, the map of another call, calls that do not
+    move the turtle, clockwise turns, and a second row that reflects.
+
+    >>> check_ron_map([[0.25, 0.25, 0.5], [-0.25, 0.25, 0.25], [0, 0, 1]])
+    Not yet: that is the transposed matrix, for column vectors; here points are rows, Q = [x, y, 1] T, so the translation is the last row and the first row is the image of (1, 0), the direction w.
+    """
+    what = f"T{RON_CALL}"
+    got, err = read_points(answer, "your matrix", ask=f"{what} as a 3x3 matrix [[.., .., 0], [.., .., 0], [.., .., 1]]")
+    if err is not None:
+        return err
+    if got.shape != (3, 3):
+        return wrong(f"{what} is a 3x3 matrix; yours has shape {got.shape}.")
+    expected = _ron_expected()
+    tol = 1e-4
+    if np.allclose(got, expected, atol=tol):
+        P, w = expected[2, :2], expected[0, :2]
+        return correct(f"{what} has last row (P, 1) with P = {fmt(P)} and first row (w, 0) with w = {fmt(w)}: the "
+                       f"turtle's state at call {RON_CALL}.")
+    if np.allclose(got, expected.T, atol=tol):
+        return wrong("that is the transposed matrix, for column vectors; here points are rows, Q = [x, y, 1] T, so "
+                     "the translation is the last row and the first row is the image of (1, 0), the direction w.")
+    body = parse_body(RON_BODY)
+    maps, _ = call_states(body)
+    for k, M in enumerate(maps, start=1):
+        if k != RON_CALL and np.allclose(got, M, atol=tol):
+            return wrong(f"that is the map of call {k}; count the RECURSEs: call {RON_CALL} comes after "
+                         f"{RON_CALL - 1} others, each moving the turtle one step.")
+    if np.allclose(got, call_states(body, base_moves=0.0)[0][RON_CALL - 1], atol=tol):
+        return wrong("the direction is right but the point is not: each earlier RECURSE moves the turtle as the "
+                     "base case FORWARD 1 does, one (resized) step along w.")
+    if np.allclose(got, call_states(body, turn_sign=-1.0)[0][RON_CALL - 1], atol=tol):
+        return wrong("your turns go clockwise: TURN 45 turns w counterclockwise, and TURN -90 clockwise.")
+    mirrored = expected.copy()
+    mirrored[1, :2] = -mirrored[1, :2]
+    if np.allclose(got, mirrored, atol=tol):
+        return wrong("your second row is (w_y, -w_x): that map reflects. The image of (0, 1) is w turned 90 degrees "
+                     "counterclockwise, (-w_y, w_x).")
+    if not np.allclose(got[:, 2], [0, 0, 1], atol=tol):
+        return wrong("an affine matrix in the row-vector convention has last column (0, 0, 1); put P in the last "
+                     "row, w in the first.")
+    bad_p = np.linalg.norm(got[2, :2] - expected[2, :2]) > tol
+    bad_w = np.linalg.norm(got[0, :2] - expected[0, :2]) > tol
+    parts = []
+    if bad_p:
+        parts.append(f"the point P (last row) is {off_by(np.linalg.norm(got[2, :2] - expected[2, :2]), 0.0)}")
+    if bad_w:
+        parts.append(f"the direction w (first row) is {off_by(np.linalg.norm(got[0, :2] - expected[0, :2]), 0.0)}")
+    if not parts:
+        parts.append("the second row should be w turned 90 degrees counterclockwise")
+    return wrong("; ".join(parts) + f". Follow the body to call {RON_CALL}, each RECURSE acting like FORWARD 1.")
+
+
+def _describe_map(M) -> str:
+    P, w = M[2, :2], M[0, :2]
+    heading = math.degrees(math.atan2(w[1], w[0])) + 0.0
+    return f"at P = {fmt(P + 0.0)}, heading {fmt(round(heading, 6))} degrees, step {fmt(math.hypot(*w))}"
+
+
+def check_tao_body(answer) -> Result:
+    """Check a body whose IFS (base case FORWARD 1 MOVE -1) is ``TAO_MAPS`` (Goldman §8.4): any body
+    whose calls are made at the two maps' states and that leaves the turtle where it started.
+
+    >>> check_tao_body("RESIZE 1/2 RECURSE RESIZE 2 MOVE 1 TURN 90 RESIZE 1/2 RECURSE RESIZE 2 TURN -90 MOVE -1")
+    Correct: Ron's algorithm reads T1 and T2 back from your body, and it leaves the turtle where it started, like the base case.
+    >>> check_tao_body("RESIZE 1/2 RECURSE RESIZE 2 MOVE 1 TURN 90 RESIZE 1/2 RECURSE RESIZE 2 MOVE -1")
+    Not yet: your body does not bring the turtle back: it ends at P = (1, -1), heading 90 degrees, step 1, but the base case ends where it started, at P = (0, 0), heading 0 degrees, step 1. Undo every TURN, MOVE and RESIZE after the last RECURSE, in reverse order (a heading not restored is the usual slip).
     """
     if is_unanswered(answer):
         return unanswered("a body in quotes, such as \"RESIZE 1/2 RECURSE ...\"")
@@ -178,95 +334,227 @@ def check_tao_body(answer) -> Result:
         return wrong(f"give the body as a string of commands; you gave {type(answer).__name__}.")
     try:
         body = parse_body(answer)
-        program = fractals.RecursiveTurtleProgram(body, [("FORWARD", 1.0)])
+        program = _program(body, TAO_BASE)
     except (TypeError, ValueError) as exc:
         return wrong(f"the body does not read: {exc}.")
-    try:
-        conv = cf.rons_algorithm(program)
-    except ValueError as exc:
-        message = str(exc).replace("the program: ", "")
-        end = program.trace(1, max_commands=10_000)
-        if not (abs(end.direction[0] - 1) < 1e-9 and abs(end.direction[1]) < 1e-9):
-            hint = " Undo the RESIZE and TURN commands at the end of the body."
+    maps, (P, w) = call_states(body, base_moves=0.0)
+    home = cf.state_map((0, 0), (1, 0))
+    if not np.allclose(cf.state_map(P, w), home, atol=1e-9):
+        return wrong(f"your body does not bring the turtle back: it ends {_describe_map(cf.state_map(P, w))}, but "
+                     f"the base case ends where it started, {_describe_map(home)}. Undo every TURN, MOVE and "
+                     f"RESIZE after the last RECURSE, in reverse order (a heading not restored is the usual slip).")
+    conv = cf.rons_algorithm(program)
+    got = list(conv.maps)
+    if len(got) != len(TAO_MAPS):
+        return wrong(f"your body calls itself {len(got)} times; the IFS has {len(TAO_MAPS)} maps, one RECURSE each.")
+    left = list(TAO_MAPS)
+    unmatched = []
+    for M in got:
+        k = next((j for j, T in enumerate(left) if np.allclose(M, T, atol=1e-6)), None)
+        if k is None:
+            unmatched.append(M)
         else:
-            hint = " The body must end where FORWARD 1 ends, at (1, 0)."
-        return wrong(f"the program is not consistent: {message}.{hint}")
-    maps = list(conv.maps)
-    if len(maps) != len(TARGET_MAPS):
-        return wrong(f"your body calls itself {len(maps)} times; the IFS has {len(TARGET_MAPS)} maps, one RECURSE each.")
-    if cf._maps_match(maps, list(TARGET_MAPS), 1e-6):
-        return correct("Ron's algorithm finds the maps scale 1/2 at (0, 0) and scale 1/2 at (0.5, 0): the first "
-                       "call ends where the second begins.")
-    scales = [math.sqrt(abs(np.linalg.det(M[:2, :2]))) for M in maps]
-    if any(abs(s - 0.5) > 1e-6 for s in scales):
-        return wrong(f"your calls are drawn at scales {', '.join(fmt(s) for s in scales)}; both halves need RESIZE 1/2.")
-    starts = [fmt(M[2, :2]) for M in maps]
-    return wrong(f"your calls start at {', '.join(starts)} with headings "
-                 f"{', '.join(fmt(round(affine.to_parameters(M)['angle'], 6)) for M in maps)} degrees; they should "
-                 f"start at (0, 0) and (0.5, 0), both heading along the x-axis.")
+            del left[k]
+    if not unmatched:
+        return correct("Ron's algorithm reads T1 and T2 back from your body, and it leaves the turtle where it "
+                       "started, like the base case.")
+    M = unmatched[0]
+    i = next(j for j, G in enumerate(got) if G is M) + 1
+    hint = ""
+    if abs(math.hypot(*M[0, :2]) - 0.5) > 1e-6:
+        hint = " Both maps scale by 1/2: RESIZE 1/2 just before each RECURSE, RESIZE 2 just after."
+    elif np.linalg.norm(M[2, :2] - [0.5, 0.0]) < 1e-6:
+        hint = " A MOVE 1 made after RESIZE 1/2 goes only half as far: undo the RESIZE before you move."
+    elif np.linalg.norm(M[2, :2] - [0.0, 1.0]) < 1e-6:
+        hint = " MOVE goes along the current heading: MOVE 1 first, then TURN 90."
+    elif np.linalg.norm(M[0, :2] - [0.0, -0.5]) < 1e-6:
+        hint = " TURN 90 turns counterclockwise; a negative angle turns the wrong way."
+    return wrong(f"call {i} of your body is made {_describe_map(M)}, which is neither T1 (at P = (0, 0), heading 0, "
+                 f"step 1/2) nor T2 (at P = (1, 0), heading 90, step 1/2).{hint}")
 
 
-def check_bump_dimension(answer) -> Result:
-    """Check the similarity dimension of the square Koch curve (Goldman §8.5).
+# -- §8.5 ----------------------------------------------------------------------------------------------
 
-    >>> check_bump_dimension(math.log(4) / math.log(3))
-    Not yet: log 4 / log 3 is the Koch curve's dimension (4 segments); this bump has 5 segments of length 1/3. Hint: count the segments of the bump: each is a map of scale 1/3.
+def check_bump_from_ifs(answer) -> Result:
+    """Check the bump read back from ``BUMP_MAPS`` (Goldman §8.5): T_i sends (0, 0) to its last row P and
+    (1, 0) to P + w (first row); the segments chain (0, 0) -> (0.3, 0.4) -> (0.6, 0) -> (1, 0), T2 from
+    its end (0.6, 0) back to (0.3, 0.4).
+
+    Recognises the last rows taken as the segments' starts (missing the backward segment), the first
+    rows taken as points, a missing end point and the bump in reverse.
+
+    >>> check_bump_from_ifs([[0, 0], [0.3, 0.4], [0.6, 0]])
+    Not yet: a bump with 3 maps has 4 points, one more than segments: from (0, 0) through the segments' joints to (1, 0).
     """
-    poly, rev = cf.BUMPS["square Koch curve"]
-    system = cf.bump_ifs(poly, rev)
-    scales = np.sqrt(np.abs(np.linalg.det(system.maps[:, :2, :2])))
-    expected = fractals.similarity_dimension(scales)
-    if not is_unanswered(answer):
-        try:
-            v = float(answer)
-        except (TypeError, ValueError):
-            v = None
-        if v is not None and abs(v - math.log(4) / math.log(3)) <= 1e-6:
-            return wrong("log 4 / log 3 is the Koch curve's dimension (4 segments); this bump has 5 segments of "
-                         "length 1/3. Hint: count the segments of the bump: each is a map of scale 1/3.")
-        if v is not None and abs(v - expected) <= 1e-6:
-            return correct(f"the similarity dimension is {fmt(expected)}: {len(scales)} maps of scale 1/3, so "
-                           f"D = log 5 / log 3.")
-    return check_number(answer, expected, what="the similarity dimension",
-                        hint="solve 5 (1/3)^D = 1")
+    got, err = read_points(answer, "your bump", ask="the bump as a list of points [[x0, y0], ...]")
+    if err is not None:
+        return err
+    expected, reverse = cf.bump_of(list(BUMP_MAPS))
+    n = len(expected)
+    tol = 1e-4
+    if got.ndim != 2 or got.shape[1:] != (2,):
+        return wrong(f"give the bump as a list of points [[x0, y0], [x1, y1], ...]; yours has shape {got.shape}.")
+    if got.shape == expected.shape and np.allclose(got, expected, atol=tol):
+        return correct(f"the bump has {n} points; T{reverse[0] + 1} sends (0, 0) to the END of its segment, so "
+                       f"it draws it backwards.")
+    if got.shape[0] == n - 1:
+        return wrong(f"a bump with {n - 1} maps has {n} points, one more than segments: from (0, 0) through the "
+                     f"segments' joints to (1, 0).")
+    if got.shape[0] != n:
+        return wrong(f"a bump with {n - 1} maps has {n} points; yours has {got.shape[0]}.")
+    if np.allclose(got, expected[::-1], atol=tol):
+        return wrong("that is the bump in reverse; it runs from (0, 0), where T1 starts, to (1, 0).")
+    starts = np.array([M[2, :2] for M in BUMP_MAPS] + [[1.0, 0.0]])
+    if np.allclose(got, starts, atol=tol):
+        return wrong(f"you took each map's last row as the start of its segment; it is the image of (0, 0), and "
+                     f"T{reverse[0] + 1} draws its segment backwards, so its last row is where its segment ENDS. "
+                     f"Chain the segments: each begins where the one before ended.")
+    rows = np.array([[0.0, 0.0]] + [M[0, :2] for M in BUMP_MAPS])
+    if np.allclose(got, rows, atol=tol):
+        return wrong("the first row of a map is w, a direction, not a point: the image of (1, 0) is P + w, the "
+                     "last row plus the first.")
+    bad = [k for k in range(n) if np.linalg.norm(got[k] - expected[k]) > tol]
+    k = bad[0]
+    return wrong(f"point {k} of your bump is {fmt(np.linalg.norm(got[k] - expected[k]), 2)} away from where it "
+                 f"should be ({len(bad)} of {n} points are off). Each map sends (0, 0) to its last row P and "
+                 f"(1, 0) to P + w; one of them runs backwards.")
 
 
-def check_conformal_maps(answer) -> Result:
-    """Check which maps a turtle can follow (Goldman §8.3-8.4): orientation-preserving similarities.
+# -- the programming project: Ron's algorithm (§8.4) -------------------------------------------------
 
-    >>> check_conformal_maps({"A", "D"})
-    Correct: A and D are similarities that keep orientation: a MOVE, a TURN and a RESIZE reach their states.
-    >>> check_conformal_maps({"A", "C", "D"})
-    Not yet: C is conformal but reverses orientation (a reflection): a turtle's MOVE, TURN and RESIZE never mirror the drawing.
-    """
-    if is_unanswered(answer):
-        return unanswered("a set of letters, such as {\"A\", \"B\"}")
-    if isinstance(answer, str):
-        answer = set(answer.replace(",", " ").split()) if len(answer) > 1 else {answer}
+_TURNS = (-150.0, -120.0, -90.0, -60.0, -45.0, -30.0, 30.0, 45.0, 60.0, 90.0, 120.0, 135.0, 180.0)
+_RESIZES = (0.5, 0.25, 2.0, 0.75, 1.5)
+_STEPS = (1.0, 0.5, -1.0, 2.0, 0.25)
+
+
+def _closing(body) -> list:
+    """Commands that take the turtle from where ``body`` leaves it (each RECURSE moving it as
+    FORWARD 1) back to ``((1, 0), (1, 0))``, so the program is consistent with base case FORWARD 1."""
+    _, (P, w) = call_states(body)
+    return [(c, float(v)) for c, v in cf.move_commands(P, w, (1.0, 0.0), (1.0, 0.0))]
+
+
+def _label(body) -> str:
+    parts = []
+    for c, v in body:
+        parts.append(c if c == "RECURSE" else f"{c} {fmt(v)}")
+    text = " ".join(parts)
+    return text if len(text) <= 160 else text[:157] + "..."
+
+
+def rons_project_cases() -> list[Case]:
+    """The project's cases from a fixed seed: random bodies with 1 to 4 calls among TURN, RESIZE,
+    FORWARD and MOVE, closed so that every level ends where FORWARD 1 does; plus the Koch curve and
+    C-curve bodies, a single call (the identity map), two calls in the same state, a body that ends
+    with its call, and a body with a full turn."""
+    rng = np.random.default_rng(8)
+    cases: list[Case] = []
+
+    def add(body, kind=""):
+        body = [(c, None if c == "RECURSE" else float(v)) for c, v in body]
+        cases.append(Case(f"body {_label(body)}", (body,), kind=kind))
+
+    add(fractals.koch_curve_program().body, "the Koch curve")
+    add(fractals.c_curve_program().body, "the C-curve")
+    for _ in range(6):
+        body = []
+        calls = int(rng.integers(1, 5))
+        for _k in range(calls):
+            for _j in range(int(rng.integers(1, 4))):
+                kind = rng.choice(["TURN", "RESIZE", "FORWARD", "MOVE"])
+                pool = _TURNS if kind == "TURN" else _RESIZES if kind == "RESIZE" else _STEPS
+                body.append((str(kind), float(pool[int(rng.integers(len(pool)))])))
+            body.append(("RECURSE", None))
+        add(body + _closing(body), "random bodies")
+    add([("RECURSE", None)], "a single call (the identity map)")
+    add([("RESIZE", 0.5), ("RECURSE", None), ("MOVE", -1.0), ("RECURSE", None), ("MOVE", 1.0), ("RESIZE", 2.0)],
+        "two calls in the same state")
+    add([("FORWARD", 1.0), ("TURN", 90.0), ("FORWARD", 0.5), ("TURN", 180.0), ("MOVE", 0.5), ("TURN", 90.0),
+         ("MOVE", -1.0), ("RECURSE", None)], "a body ending with its call")
+    add([("TURN", 360.0), ("RESIZE", 0.5), ("RECURSE", None), ("TURN", -720.0), ("RECURSE", None), ("RESIZE", 2.0)],
+        "full turns")
+    return cases
+
+
+def _rons_reference(body) -> np.ndarray:
+    return cf.rons_algorithm(_program(body)).maps
+
+
+def _compare_rons(got, expected, case) -> str | None:
+    (body,) = case.args
     try:
-        chosen = {str(a).strip().upper() for a in answer}
-    except TypeError:
-        return wrong(f"give a set of letters such as {{\"A\", \"B\"}}; you gave {answer!r}.")
-    unknown = chosen - set(CANDIDATE_MAPS)
-    if unknown:
-        return wrong(f"{', '.join(sorted(unknown))} is not one of the maps {', '.join(CANDIDATE_MAPS)}.")
-    ok = set()
-    reasons = {}
-    for k, (_, M) in CANDIDATE_MAPS.items():
-        if not affine.is_conformal(M):
-            reasons[k] = (f"{k} is not conformal: it stretches one direction more than another (or shears), "
-                          f"which no RESIZE can do")
-        elif np.linalg.det(M[:2, :2]) < 0:
-            reasons[k] = (f"{k} is conformal but reverses orientation (a reflection): a turtle's MOVE, TURN and "
-                          f"RESIZE never mirror the drawing")
-        else:
-            ok.add(k)
-    if chosen == ok:
-        return correct(f"{' and '.join(sorted(ok))} are similarities that keep orientation: a MOVE, a TURN and a "
-                       f"RESIZE reach their states.")
-    extra = sorted(chosen - ok)
-    if extra:
-        return wrong(reasons[extra[0]] + ".")
-    missing = sorted(ok - chosen)
-    return wrong(f"{missing[0]} can be followed too: it is a rotation, a uniform scaling and a translation, "
-                 f"which are TURN, RESIZE and MOVE.")
+        arr = np.asarray(got, dtype=float)
+    except (TypeError, ValueError):
+        return "it should be an array of 3x3 matrices, one per RECURSE"
+    k = len(expected)
+    if arr.shape != expected.shape:
+        if arr.ndim == 3 and arr.shape[1:] == (3, 3):
+            return f"it has {arr.shape[0]} maps; the body has {k} RECURSE{'s' if k != 1 else ''}, one map each"
+        return f"it should have shape ({k}, 3, 3), one 3x3 matrix per RECURSE; yours has shape {arr.shape}"
+    if not np.all(np.isfinite(arr)):
+        return "it contains NaN or infinite values"
+    err = np.abs(arr - expected).reshape(k, -1).max(axis=1)
+    if err.max() <= 1e-8:
+        return None
+    if np.allclose(arr, expected.transpose(0, 2, 1), atol=1e-8):
+        return ("your matrices are transposed (column-vector convention): here points are rows, Q = [x, y, 1] M, "
+                "so the translation P goes in the last row and the direction w in the first")
+    slips = [
+        (dict(base_moves=0.0), "your calls do not move the turtle: each RECURSE changes the state as the base "
+                               "case FORWARD 1 does, P <- P + w"),
+        (dict(turn_sign=-1.0), "your turns go clockwise: TURN a turns w counterclockwise by a degrees"),
+        (dict(resize=False), "you ignored RESIZE: it multiplies w, the turtle's step, by its factor"),
+    ]
+    for kwargs, text in slips:
+        alt = np.array(call_states(body, **kwargs)[0])
+        if alt.shape == expected.shape and np.allclose(arr, alt, atol=1e-8):
+            return text
+    i = int(np.argmax(err > 1e-8))
+    M, E = arr[i], expected[i]
+    mirror = E.copy()
+    mirror[1, :2] = -mirror[1, :2]
+    if np.allclose(M, mirror, atol=1e-8):
+        return (f"map {i + 1} reflects: its second row should be w turned 90 degrees counterclockwise, "
+                f"(-w_y, w_x), as in [[w_x, w_y, 0], [-w_y, w_x, 0], [P_x, P_y, 1]]")
+    return (f"map {i + 1} (call {i + 1}) is off by {fmt(float(err[i]), 2)} in an entry: yours is the state "
+            f"{_describe_map(M)}, but at that call the turtle is {_describe_map(E)}")
+
+
+def check_rons_algorithm_project(function) -> Result:
+    """Check the learner's ``rons_maps(body)`` against :func:`goldman_lib.conformal_ifs.rons_algorithm`
+    on :func:`rons_project_cases` (base case FORWARD 1): one 3x3 map per RECURSE, in order (Goldman §8.4).
+
+    >>> def at_origin(body):
+    ...     return np.array([np.eye(3) for c, v in body if c == "RECURSE"])
+    >>> print(check_rons_algorithm_project(at_origin).message)   # doctest: +ELLIPSIS
+    case 1 of 12 (body RESIZE 0.3333 RECURSE TURN 60 ...): your function returned ...; map 1 (call 1) is off by 0.67 in an entry: ...
+    """
+    return check_project(function, rons_project_cases(), reference=_rons_reference, compare=_compare_rons,
+                         what="rons_maps",
+                         hint="walk the body once with the turtle; at each RECURSE record [[w_x, w_y, 0], "
+                              "[-w_y, w_x, 0], [P_x, P_y, 1]], then move P by w as FORWARD 1 would")
+
+
+SLIPS = {
+    "check_moved_point": [[-0.5, 2.5], [0.0, 2.0], [0.0, 1.0], [-1.0, 2 + R2 / 2]],
+    "check_level_end": [[1, 0], [0, 0], [1, 1], [0.5, -0.5]],
+    "check_ron_map": [
+        [[0.25, 0.25, 0.5], [-0.25, 0.25, 0.25], [0, 0, 1]],
+        [[0.25, 0.25, 0], [-0.25, 0.25, 0], [0.25, 0, 1]],
+        [[0.25, -0.25, 0], [0.25, 0.25, 0], [0, 0, 1]],
+        [[0.25, 0.25, 0], [-0.25, 0.25, 0], [0.5, -0.25, 1]],
+        [[0.25, -0.25, 0], [-0.25, -0.25, 0], [0.5, 0.25, 1]],
+    ],
+    "check_tao_body": [
+        "RESIZE 1/2 RECURSE RESIZE 2 MOVE 1 TURN 90 RESIZE 1/2 RECURSE RESIZE 2 MOVE -1",
+        "RESIZE 1/2 RECURSE RESIZE 2 TURN 90 MOVE 1 RESIZE 1/2 RECURSE RESIZE 2 MOVE -1 TURN -90",
+        "RESIZE 1/2 RECURSE MOVE 1 TURN 90 RECURSE TURN -90 MOVE -1 RESIZE 2",
+        "RESIZE 1/2 RECURSE RESIZE 2 MOVE 1 TURN -90 RESIZE 1/2 RECURSE RESIZE 2 TURN 90 MOVE -1",
+    ],
+    "check_bump_from_ifs": [
+        [[0, 0], [0.3, 0.4], [0.6, 0]],
+        [[1, 0], [0.6, 0], [0.3, 0.4], [0, 0]],
+        [[0, 0], [0.6, 0], [0.6, 0], [1, 0]],
+        [[0, 0], [0.3, 0.4], [-0.3, 0.4], [0.4, 0]],
+    ],
+}
