@@ -58,6 +58,7 @@ __all__ = [
     "RECURSE", "RecursiveTurtleProgram",
     "koch_curve_program", "koch_snowflake_program", "sierpinski_gasket_program",
     "sierpinski_carpet_program", "polygon_gasket_program", "c_curve_program", "dragon_program",
+    "quadratic_koch_program", "quadratic_koch",
     "tree_program", "bush_program", "PROGRAMS",
     "koch_curve", "koch_snowflake", "sierpinski_gasket", "sierpinski_carpet", "polygon_gasket",
     "c_curve", "dragon", "tree", "bush",
@@ -429,6 +430,28 @@ def c_curve_program() -> RecursiveTurtleProgram:
     return RecursiveTurtleProgram(body, _cmds(("FORWARD", 1)), "C-curve")
 
 
+def quadratic_koch_program() -> RecursiveTurtleProgram:
+    """The quadratic Koch curve (Goldman §2.3, bump fractals; the "square bump" curve): each
+    segment replaced by five segments one third as long -- forward, up, forward, down, forward --
+    with the square bump on the turtle's left.
+
+    level 0: ``FORWARD 1``; level n: ``RESIZE 1/3 Q TURN 90 Q TURN -90 Q TURN -90 Q TURN 90 Q
+    RESIZE 3``.  From ``(0, 0)`` heading ``(1, 0)`` it ends at ``(1, 0)``; level n draws ``5**n``
+    segments of length ``3**-n``.  (Chapter 2's programming project asks the learner to write it.)
+
+    >>> quadratic_koch_program().polylines(1)[0].round(6) + 0.0
+    array([[0.      , 0.      ],
+           [0.333333, 0.      ],
+           [0.333333, 0.333333],
+           [0.666667, 0.333333],
+           [0.666667, 0.      ],
+           [1.      , 0.      ]])
+    """
+    body = _cmds(("RESIZE", 1 / 3), _R, ("TURN", 90), _R, ("TURN", -90), _R, ("TURN", -90), _R,
+                 ("TURN", 90), _R, ("RESIZE", 3))
+    return RecursiveTurtleProgram(body, _cmds(("FORWARD", 1)), "quadratic Koch curve")
+
+
 def dragon_program() -> RecursiveTurtleProgram:
     """The Heighway dragon (Goldman §2.3, bump fractals): like the C-curve, but the bumps
     alternate sides.
@@ -567,6 +590,15 @@ def c_curve(level: int) -> list[np.ndarray]:
     1025
     """
     return c_curve_program().polylines(level)
+
+
+def quadratic_koch(level: int) -> list[np.ndarray]:
+    """The strokes of the quadratic Koch curve at ``level`` from (0, 0) to (1, 0) (Goldman §2.3).
+
+    >>> len(quadratic_koch(3)[0]) - 1
+    125
+    """
+    return quadratic_koch_program().polylines(level)
 
 
 def dragon(level: int) -> list[np.ndarray]:

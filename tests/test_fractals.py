@@ -469,3 +469,18 @@ def test_base_that_draws_nothing_is_an_error():
 def test_points_on_subdivides_each_segment():
     pts = fractals.points_on([np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 2.0]])], 2)
     np.testing.assert_allclose(pts, [[0, 0], [0.5, 0], [1, 0], [1, 1], [1, 2]])
+
+
+def test_quadratic_koch_curve_closed_forms():
+    """Level 1 is forward, up, forward, down, forward in thirds; level n has 5**n segments of length
+    3**-n, ends at (1, 0), and the curve's dimension is log 5 / log 3 (five copies at scale 1/3)."""
+    (p1,) = fractals.quadratic_koch(1)
+    third = 1 / 3
+    np.testing.assert_allclose(p1, [[0, 0], [third, 0], [third, third], [2 * third, third], [2 * third, 0], [1, 0]],
+                               atol=1e-12)
+    for n in range(5):
+        (p,) = fractals.quadratic_koch(n)
+        assert len(p) - 1 == 5 ** n
+        np.testing.assert_allclose(p[-1], [1, 0], atol=1e-12)
+        assert turtle.length(p) == pytest.approx((5 / 3) ** n, rel=1e-12)
+    assert fractals.program_dimension(fractals.quadratic_koch_program()) == pytest.approx(math.log(5) / math.log(3))
