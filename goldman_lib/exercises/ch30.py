@@ -53,8 +53,8 @@ PROBLEMS = {
         f"On a regular grid, one level of split and average for the box spline with multiplicities "
         f"{BOX_MULTIPLICITIES} for the directions e1 = (1, 0), e2 = (0, 1), e3 = (1, 1): split, then average "
         f"r - 1 = 1 time along e1, s - 1 = 1 time along e2 and t = 1 time along e3. Give its mask times 8, as a "
-        f"4 x 4 list of rows laid out like the masks printed in §30.2 (the e3 diagonal runs from top left to "
-        f"bottom right) (Goldman §30.2)."),
+        f"4 x 4 list of rows laid out like the masks printed in §30.2, with the e3 diagonal running from top left "
+        f"to bottom right (Goldman §30.2)."),
     "check_prism_counts": (
         f"The prism over a pentagon has V = 10 vertices, E = 15 edges and F = 7 faces (five quadrilaterals and "
         f"two pentagons). After {PRISM_LEVELS} levels of quadrilateral centroid averaging, how many vertices, "
