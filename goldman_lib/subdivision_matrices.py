@@ -33,10 +33,10 @@ import math
 import numpy as np
 
 from goldman_lib import ifs
-from goldman_lib.validation import as_float, as_int, as_points, check_finite
+from goldman_lib.validation import as_float, as_int, as_points, check_finite, within_budget
 
 __all__ = ["bezier_subdivision_matrices", "bspline_subdivision_matrices", "check_rows_sum_to_one",
-           "lift_control_points", "curve_ifs", "attractor", "curve_as_attractor", "normal_curve",
+           "lift_control_points", "curve_ifs", "contraction_factors", "attractor", "curve_as_attractor", "normal_curve",
            "normal_curve_control_points", "fractal_matrices", "sierpinski_matrices", "control_point_ifs",
            "MAX_POINTS"]
 
@@ -191,6 +191,36 @@ def curve_ifs(ctrl, kind: str = "bezier") -> tuple[np.ndarray, np.ndarray]:
     L, R = bezier_subdivision_matrices(n) if kind == "bezier" else bspline_subdivision_matrices(n)
     Pinv = np.linalg.inv(P)
     return np.stack([Pinv @ L @ P, Pinv @ R @ P]), P
+
+
+def contraction_factors(maps, length: int = 1) -> np.ndarray:
+    """Contraction factors of all compositions of ``length`` maps of an IFS, in any dimension
+    (Goldman §29.3; §7.3.3 in the plane).
+
+    maps: ``(k, D+1, D+1)`` affine maps on homogeneous row vectors (``X @ M``, translation in the
+    last row), e.g. the maps of :func:`curve_ifs`.  length: how many maps are composed (>= 1).
+    Returns ``(k^length,)``: the spectral norm of the linear part of ``M_{i_1} @ ... @ M_{i_length}``,
+    the most that composition stretches any distance, for every word ``i_1 ... i_length`` in base-k
+    order.  A map of a curve's IFS may stretch some direction (a factor above 1) while every
+    composition of two or three maps shrinks; then the Hutchinson operator applied that many times is
+    a contraction, which is enough for the curve to be the unique attractor.
+    Raises ValueError for maps that are not square or for more than ``MAX_POINTS`` compositions.
+
+    >>> maps, _ = curve_ifs([[0, 0], [1, 2], [2, 0]])
+    >>> contraction_factors(maps).round(4).tolist()
+    [0.7302, 0.7302]
+    """
+    M = check_finite(np.asarray(maps, dtype=float), "maps")
+    if M.ndim != 3 or M.shape[1] != M.shape[2] or M.shape[1] < 2:
+        raise ValueError(f"maps must be a stack of square matrices (k, D+1, D+1); got shape {M.shape}")
+    k = len(M)
+    length = within_budget(length, "length", cost=lambda m: k ** m, what="the compositions of the maps",
+                           unit="compositions", limit=MAX_POINTS, minimum=1)
+    A = M[:, :-1, :-1]
+    products = A
+    for _ in range(length - 1):
+        products = np.matmul(products[:, None], A[None]).reshape(-1, *A.shape[1:])
+    return np.linalg.svd(products, compute_uv=False)[:, 0]
 
 
 def attractor(maps, levels: int, start) -> np.ndarray:

@@ -13,7 +13,9 @@ Two layers, as everywhere in ``goldman_lib``:
   halves of centroid averaging, :func:`bilinear_split` and :func:`quad_average` (§30.3.1),
   :func:`midpoint_split` and :func:`triangle_average` (§30.4.1), put together in
   :func:`centroid_averaging`; and the stencils of §30.3.2 and §30.4.2 as functions of the valence,
-  with :func:`apply_stencils` computing one level from them directly.
+  with :func:`apply_stencils` computing one level from them directly; around one vertex, the
+  local subdivision matrix and its eigenvalues (:func:`local_subdivision_matrix`,
+  :func:`local_eigenvalues`), which tell what the limit surface does at an extraordinary vertex.
 
 Every algorithm is vectorised: a mesh keeps its faces as one flat array of *corners* (vertex
 indices, face after face) with the faces' sizes, and adjacency as index arrays, so a level of
@@ -37,7 +39,7 @@ from functools import cached_property
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_int, as_points
+from goldman_lib.validation import as_float, as_int, as_points, within_budget
 
 __all__ = [
     "Mesh", "cube", "tetrahedron", "octahedron", "prism", "quad_star", "quad_grid", "triangle_grid",
@@ -45,7 +47,7 @@ __all__ = [
     "bilinear_split", "quad_average", "midpoint_split", "triangle_average", "centroid_averaging",
     "quad_vertex_stencil", "quad_edge_stencil", "quad_face_stencil",
     "triangle_vertex_stencil", "triangle_edge_stencil", "apply_stencils",
-    "BOX_SPLINE_SELF_WEIGHT",
+    "local_subdivision_matrix", "local_eigenvalues", "BOX_SPLINE_SELF_WEIGHT",
 ]
 
 #: Weight of a vertex itself in the weighted triangle centroid used by the triangle scheme; the
@@ -830,3 +832,83 @@ def apply_stencils(mesh: Mesh, scheme: str | None = None, self_weight: float = B
     vertex_pts = a * V + b[:, None] * nbr_sum
     ea, eb = triangle_edge_stencil(w)
     return np.concatenate([vertex_pts, ea * ends + eb * wings])
+
+
+# --------------------------------------------------------------------------------------------
+# §30.3.2 and §30.4.2 around one vertex: the local subdivision matrix
+# --------------------------------------------------------------------------------------------
+
+def local_subdivision_matrix(valence: int, scheme: str = "triangle",
+                             self_weight: float = BOX_SPLINE_SELF_WEIGHT) -> np.ndarray:
+    """The matrix of one level of centroid averaging around a vertex of valence n (Goldman §30.3.2,
+    §30.4.2): the stencils, written as one linear map from a vertex's ring to its new ring.
+
+    scheme ``"triangle"``: the points (rows) ``[v, u_1, ..., u_n]``, the neighbours of ``v`` in
+    cyclic order (triangles ``(v, u_i, u_{i+1})``), go to ``[v', e_1, ..., e_n]``: the new vertex
+    point and the new edge points of the edges ``(v, u_i)``, whose opposite vertices are
+    ``u_{i-1}`` and ``u_{i+1}``.  Shape ``(n+1, n+1)``; weights from :func:`triangle_vertex_stencil`
+    and :func:`triangle_edge_stencil` (with ``self_weight``).
+
+    scheme ``"quad"``: ``[v, u_1..u_n, d_1..d_n]`` with faces ``(v, u_i, d_i, u_{i+1})`` go to
+    ``[v', e_1..e_n, f_1..f_n]``: the vertex point, the edge points of ``(v, u_i)`` and the face
+    points of the n faces.  Shape ``(2n+1, 2n+1)``; weights from :func:`quad_vertex_stencil`,
+    :func:`quad_edge_stencil` and :func:`quad_face_stencil`.
+
+    The new ring has the same structure as the old one (v' has valence n again), so ``S^k @ ring``
+    is the ring after k levels: the eigenvalues of S (:func:`local_eigenvalues`) decide how the
+    surface behaves at the vertex.  Rows sum to one.
+    Raises ValueError for a valence below 3 (or beyond the work budget) or an unknown scheme.
+
+    >>> (local_subdivision_matrix(3) * 8).tolist()
+    [[5.0, 1.0, 1.0, 1.0], [3.0, 3.0, 1.0, 1.0], [3.0, 1.0, 3.0, 1.0], [3.0, 1.0, 1.0, 3.0]]
+    """
+    n = within_budget(valence, "valence", cost=lambda m: (2 * m + 1) ** 2, what="the local subdivision matrix",
+                      unit="entries", minimum=3)
+    if scheme not in ("quad", "triangle"):
+        raise ValueError(f"scheme must be 'quad' or 'triangle'; got {scheme!r}")
+    i = np.arange(n)
+    if scheme == "triangle":
+        a, b = triangle_vertex_stencil(n, self_weight)
+        ea, eb = triangle_edge_stencil(self_weight)
+        S = np.zeros((n + 1, n + 1))
+        S[0, 0], S[0, 1:] = a, b
+        S[1 + i, 0] = ea
+        S[1 + i, 1 + i] += ea
+        S[1 + i, 1 + (i - 1) % n] += eb
+        S[1 + i, 1 + (i + 1) % n] += eb
+        return S
+    a, b, c = quad_vertex_stencil(n)
+    ea, eb = quad_edge_stencil()
+    f = quad_face_stencil(4)
+    u = lambda k: 1 + k % n          # noqa: E731  (column of u_k)
+    d = lambda k: 1 + n + k % n      # noqa: E731  (column of d_k)
+    S = np.zeros((2 * n + 1, 2 * n + 1))
+    S[0, 0], S[0, 1:n + 1], S[0, n + 1:] = a, b, c
+    S[u(i), 0] += ea
+    S[u(i), u(i)] += ea
+    for cols in (u(i - 1), d(i - 1), d(i), u(i + 1)):   # the other vertices of faces i-1 and i
+        S[u(i), cols] += eb
+    for cols in (np.zeros(n, dtype=int), u(i), d(i), u(i + 1)):
+        S[d(i), cols] += f
+    return S
+
+
+def local_eigenvalues(valence: int, scheme: str = "triangle",
+                      self_weight: float = BOX_SPLINE_SELF_WEIGHT) -> np.ndarray:
+    """Eigenvalues of :func:`local_subdivision_matrix`, sorted by decreasing modulus (Goldman §30.4.2).
+
+    The first is 1 (rows sum to one: the ring converges to a limit point).  The ring's shape near
+    the limit point is governed by the next ones: a tangent plane needs the subdominant eigenvalues
+    lambda_1 = lambda_2 to be equal and strictly larger in modulus than all the others (the ring then
+    shrinks like lambda_1^k and flattens onto a plane).  Both spectra here are real; the real parts
+    are returned (the imaginary parts are rounding noise).
+
+    >>> local_eigenvalues(6).round(4).tolist()[:4]
+    [1.0, 0.5, 0.5, 0.25]
+    >>> local_eigenvalues(3).round(4).tolist()
+    [1.0, 0.25, 0.25, 0.25]
+    """
+    S = local_subdivision_matrix(valence, scheme, self_weight)
+    ev = np.linalg.eigvals(S)
+    ev = ev[np.lexsort((-ev.real, -np.round(np.abs(ev), 12)))]
+    return ev.real

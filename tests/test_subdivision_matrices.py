@@ -183,3 +183,28 @@ def test_bad_input_rules():
         sm.control_point_ifs([[0, 0], [1, 2], [2, 0], [3, 1]], sm.fractal_matrices())
     with pytest.raises(ValueError, match="would make"):
         sm.attractor(sm.curve_ifs([[0, 0], [1, 2], [2, 0]])[0], 40, [[0, 0]])
+
+
+def test_contraction_factors_agree_with_the_planar_ifs_and_compose_in_word_order():
+    from goldman_lib import ifs as ifs_mod
+    quad = np.array([[0.0, 0.0], [1.0, 3.0], [3.0, 1.0]])
+    maps, _ = sm.curve_ifs(quad)
+    planar = ifs_mod.IFS(maps).contraction_factors()
+    assert np.allclose(sm.contraction_factors(maps), planar)
+    # words in base-k order: index 1 is M_0 then M_1 (X @ M_0 @ M_1)
+    two = sm.contraction_factors(maps, 2)
+    assert two.shape == (4,)
+    assert np.isclose(two[1], np.linalg.svd((maps[0] @ maps[1])[:2, :2], compute_uv=False)[0])
+    # a scaling by 1/2 in 3-space: every composition of m maps scales by 2^-m
+    half = np.diag([0.5, 0.5, 0.5, 1.0])
+    assert np.allclose(sm.contraction_factors(np.stack([half, half]), 3), 0.125)
+
+
+def test_contraction_factors_validate_their_input():
+    maps, _ = sm.curve_ifs([[0, 0], [1, 2], [2, 0]])
+    with pytest.raises(ValueError, match="length must be >= 1"):
+        sm.contraction_factors(maps, 0)
+    with pytest.raises(ValueError, match="length must be <= 20"):
+        sm.contraction_factors(maps, 40)
+    with pytest.raises(ValueError, match="square matrices"):
+        sm.contraction_factors(np.zeros((2, 3, 4)))

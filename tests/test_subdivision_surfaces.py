@@ -457,3 +457,92 @@ def test_algorithm_argument_rules():
         ss.quad_grid(np.zeros((3, 3)))
     with pytest.raises(ValueError, match="vertices must hold 8 points"):
         ss.cube().with_vertices(np.zeros((7, 3)))
+
+
+# -- the local subdivision matrix around one vertex -------------------------------------------------
+
+def _ring(mesh, v):
+    """The ring of vertex v read from the faces: (u_1..u_n) in cyclic order, (d_1..d_n) for quads
+    (face i = (v, u_i, d_i, u_{i+1})), and the face indices."""
+    faces = [(k, list(f)) for k, f in enumerate(mesh.faces) if v in list(f)]
+    rotated = {}
+    for k, f in faces:
+        j = f.index(v)
+        f = f[j:] + f[:j]
+        rotated[f[1]] = (k, f)
+    start = next(iter(rotated))
+    us, ds, ks = [], [], []
+    u = start
+    for _ in range(len(faces)):
+        k, f = rotated[u]
+        us.append(f[1])
+        ks.append(k)
+        if len(f) == 4:
+            ds.append(f[2])
+        u = f[-1]
+    return us, ds, ks
+
+
+def _edge_index(mesh, a, b):
+    e = mesh.edges
+    return int(np.flatnonzero(((e[:, 0] == a) & (e[:, 1] == b)) | ((e[:, 0] == b) & (e[:, 1] == a)))[0])
+
+
+def bipyramid(n):
+    """A closed triangle mesh with two apices of valence n (an independent construction)."""
+    ang = 2 * np.pi * np.arange(n) / n
+    V = np.vstack([[0, 0, 1.3], np.column_stack([np.cos(ang), np.sin(ang), 0.1 * np.cos(3 * ang)]), [0, 0, -0.9]])
+    faces = [[0, 1 + i, 1 + (i + 1) % n] for i in range(n)] + [[n + 1, 1 + (i + 1) % n, 1 + i] for i in range(n)]
+    return ss.Mesh(V, faces)
+
+
+@pytest.mark.parametrize("n", [3, 4, 5, 7, 12])
+def test_local_triangle_matrix_is_the_stencils_of_a_closed_mesh(n):
+    mesh = bipyramid(n)
+    new = ss.apply_stencils(mesh)
+    us, _, _ = _ring(mesh, 0)
+    S = ss.local_subdivision_matrix(n, "triangle")
+    got = S @ mesh.vertices[[0] + us]
+    want = np.vstack([new[0]] + [new[mesh.n_vertices + _edge_index(mesh, 0, u)] for u in us])
+    assert np.allclose(got, want, atol=1e-12)
+    # by hand at valence 3: v' = 5/8 v + 1/8 sum u; e_i = 3/8 (v + u_i) + 1/8 (u_{i-1} + u_{i+1})
+    if n == 3:
+        assert np.allclose(S * 8, [[5, 1, 1, 1], [3, 3, 1, 1], [3, 1, 3, 1], [3, 1, 1, 3]])
+
+
+@pytest.mark.parametrize("name,vertex", [("cube", 0), ("prism after one level", -1)])
+def test_local_quad_matrix_is_the_stencils_of_a_closed_mesh(name, vertex):
+    mesh = ss.cube() if name == "cube" else ss.centroid_averaging(ss.prism(5), 1)
+    v = vertex % mesh.n_vertices
+    if name != "cube":   # the face point of a pentagon: valence 5
+        v = int(np.flatnonzero(mesh.valences == 5)[0])
+    new = ss.apply_stencils(mesh)
+    us, ds, ks = _ring(mesh, v)
+    n = len(us)
+    S = ss.local_subdivision_matrix(n, "quad")
+    got = S @ mesh.vertices[[v] + us + ds]
+    nv, ne = mesh.n_vertices, mesh.n_edges
+    want = np.vstack([new[v]] + [new[nv + _edge_index(mesh, v, u)] for u in us] + [new[nv + ne + k] for k in ks])
+    assert np.allclose(got, want, atol=1e-12)
+
+
+def test_local_eigenvalues_by_hand():
+    # triangle scheme: Fourier modes 3/8 + 1/4 cos(2 pi k / n), and 5/8 - 3/8 = 1/4 from the centre
+    for n in (3, 4, 5, 6, 9):
+        modes = sorted([1.0, 0.25] + [3 / 8 + np.cos(2 * np.pi * k / n) / 4 for k in range(1, n)], key=lambda x: -abs(x))
+        assert np.allclose(ss.local_eigenvalues(n), modes, atol=1e-12)
+    # valence 3: the subdominant eigenvalue 1/4 is triple (no tangent plane); valence 6: 1/2 double
+    assert np.allclose(ss.local_eigenvalues(3)[1:], 0.25)
+    assert np.allclose(ss.local_eigenvalues(6)[:4], [1, 0.5, 0.5, 0.25])
+    # quad scheme at valence 4 is the bicubic B-spline: 1, 1/2, 1/2, 1/4, ...
+    assert np.allclose(ss.local_eigenvalues(4, "quad")[:3], [1, 0.5, 0.5])
+    assert np.allclose(ss.local_subdivision_matrix(5, "quad").sum(axis=1), 1)
+
+
+def test_local_matrix_validation():
+    with pytest.raises(ValueError, match="valence must be >= 3"):
+        ss.local_subdivision_matrix(2)
+    with pytest.raises(ValueError, match="scheme must be"):
+        ss.local_subdivision_matrix(5, "loop")
+    with pytest.raises(ValueError, match="valence must be <="):
+        ss.local_subdivision_matrix(10 ** 6)

@@ -1,151 +1,258 @@
 """Exercise checkers for chapter 29, subdivision matrices and iterated function systems
-(Goldman §29.2-29.4).
+(Goldman §29.2-29.4), and the checker of the chapter's programming project.
 
 Each exercise's data are module constants, so the notebook prints the problem from here and the
-checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name.
+checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
+``SLIPS`` the wrong answers of the kinds each checker recognises.
 
->>> check_normal_curve_point([3 / 8, 3 / 8, 1 / 8])
-Correct: N(1/2) = (B_1^3, B_2^3, B_3^3)(1/2) = (0.375, 0.375, 0.125).
+>>> check_normal_curve_point([32 / 81, 24 / 81, 8 / 81, 1 / 81])
+Correct: N(1/3) = (B_1^4, B_2^4, B_3^4, B_4^4)(1/3) = (0.3951, 0.2963, 0.09877, 0.01235).
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from goldman_lib import affine
 from goldman_lib import subdivision_matrices as sm
-from goldman_lib.exercises import fmt_points, Result, check_points, correct, fmt, read_points, wrong
+from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_points, wrong
+from goldman_lib.exercises.projects import Case, check_project
 
-__all__ = ["PROBLEMS", "FIXED_CTRL", "FRACTAL_CTRL", "FRACTAL_MIDDLE",
-           "check_quadratic_left_matrix", "check_chaikin_right_matrix", "check_normal_curve_point",
-           "check_right_map_fixed_point", "check_fractal_joint"]
+__all__ = ["PROBLEMS", "SLIPS", "SPLIT_T", "BSPLINE_CTRL", "COMPOSED_CTRL", "NORMAL_DEGREE", "NORMAL_T",
+           "FRACTAL_CTRL", "FRACTAL_MIDDLE",
+           "check_left_matrix_at_t", "check_bspline_right_half", "check_composed_fixed_point",
+           "check_normal_curve_point", "check_fractal_joint", "check_fractal_quarter_joint",
+           "check_subdivision_matrices_project"]
 
-#: Exercise 4: the quadratic whose map P^-1 R P is asked about.
-FIXED_CTRL = np.array([[0.0, 0.0], [2.0, 4.0], [6.0, 2.0]])
-#: Exercise 5: the control points and middle weight of the fractal curve.
+#: Exercise 1: the split parameter of the quadratic's left subdivision matrix.
+SPLIT_T = 1 / 3
+#: Exercise 2: one segment of a uniform cubic B-spline, subdivided at its middle.
+BSPLINE_CTRL = np.array([[0.0, 0.0], [2.0, 6.0], [6.0, 6.0], [8.0, 2.0]])
+#: Exercise 3: the quadratic whose IFS map "first M_L, then M_R" is asked about.
+COMPOSED_CTRL = np.array([[0.0, 0.0], [3.0, 6.0], [9.0, 0.0]])
+#: Exercise 4: the degree and parameter of the normal-curve point.
+NORMAL_DEGREE = 4
+NORMAL_T = 1 / 3
+#: Exercises 5 and 6: the control points and middle weight of the fractal curve.
 FRACTAL_CTRL = np.array([[0.0, 0.0], [2.0, 4.0], [4.0, 0.0]])
 FRACTAL_MIDDLE = -0.5
 
+#: Relative tolerance for hand-computed decimals (1/81 typed as 0.01235 is right).
+REL_TOL = 1e-4
 
 PROBLEMS = {
-    "check_quadratic_left_matrix": (
-        "Give the left subdivision matrix L of a quadratic Bezier curve at t = 1/2, as a 3x3 list of rows: "
-        "L @ P are the control points of the half on [0, 1/2] (Goldman §29.2)."),
-    "check_chaikin_right_matrix": (
-        "Give the right subdivision matrix R of one segment of a uniform quadratic B-spline (three control "
-        "points), as a 3x3 list of rows (Goldman §29.2)."),
+    "check_left_matrix_at_t": (
+        "Subdivide a quadratic Bezier curve at t = 1/3 instead of 1/2. Give the left subdivision matrix L "
+        "(3x3, a list of rows) such that L @ P are the control points of the piece over [0, 1/3]; "
+        "fractions or 4-digit decimals are fine (Goldman §29.2)."),
+    "check_bspline_right_half": (
+        f"One segment of a uniform cubic B-spline has control points {fmt_points(BSPLINE_CTRL)}. Halving the knot "
+        f"spacing splits it in two; give the four control points R @ P of the right half, as [[x, y], ...] "
+        f"(Goldman §29.2)."),
+    "check_composed_fixed_point": (
+        f"The quadratic Bezier curve with control points {fmt_points(COMPOSED_CTRL)} is the attractor of its IFS "
+        f"{{M_L, M_R}} = {{P^-1 L P, P^-1 R P}}. Which point does the composite map X -> X M_L M_R (first M_L, then "
+        f"M_R; points are row vectors) leave fixed? Give [x, y] to 4 digits (Goldman §29.3)."),
     "check_normal_curve_point": (
-        "Give the point N(1/2) of the normal curve of degree 3, whose control points are the origin and "
-        "the unit points e1, e2, e3 of 3-space (Goldman §29.3)."),
-    "check_right_map_fixed_point": (
-        f"For the quadratic Bezier curve with control points {fmt_points(FIXED_CTRL)}, which point does the map "
-        f"P^-1 R P of its IFS leave fixed? Give [x, y] (Goldman §29.3)."),
+        f"Give the point N(1/3) of the normal curve of degree {NORMAL_DEGREE}, whose control points are the origin "
+        f"and the unit points e1, ..., e4 of 4-space, as [x1, x2, x3, x4] (fractions or 4-digit decimals; "
+        f"Goldman §29.3)."),
     "check_fractal_joint": (
         f"With L = [[1, 0, 0], [1/2, 1/2, 0], [u, v, u]] and R = [[u, v, u], [0, 1/2, 1/2], [0, 0, 1]], "
         f"v = {fmt(FRACTAL_MIDDLE)} and rows summing to one, the two halves of the fractal with control points "
         f"{fmt_points(FRACTAL_CTRL)} meet at one point. Give it as [x, y] (Goldman §29.4)."),
+    "check_fractal_quarter_joint": (
+        f"Same fractal (v = {fmt(FRACTAL_MIDDLE)}, control points {fmt_points(FRACTAL_CTRL)}). Its left half is "
+        f"itself a copy of the fractal, with control points L @ P, and is made of two quarters. Where do the first "
+        f"and the second quarter meet? Give [x, y] (Goldman §29.4)."),
 }
 
 
-def _matrix(answer, what, shape=(3, 3)):
-    got, err = read_points(answer, what, ask=what + " as a list of rows")
+# -- reading and comparing -------------------------------------------------------------------------
+
+def _close(got, expected) -> bool:
+    exp = np.asarray(expected, dtype=float)
+    return got.shape == exp.shape and bool(np.all(np.abs(got - exp) <= REL_TOL * np.maximum(1.0, np.abs(exp))))
+
+
+def _read(answer, what, ask, shape):
+    got, err = read_points(answer, what, ask=ask)
     if err is not None:
         return None, err
     if got.shape != shape:
-        return None, wrong(f"{what} should be a {shape[0]}x{shape[1]} matrix; yours has shape {got.shape}.")
+        return None, wrong(f"{what} should have shape {shape}; yours has shape {got.shape}. "
+                           f"Check what the exercise asks for.")
     return got, None
 
 
-def check_quadratic_left_matrix(answer) -> Result:
-    """Check L of the quadratic Bezier curve (Goldman §29.2); recognises R and the transpose of L.
+def _far(got, expected, what, hint) -> Result:
+    """The generic verdict: which entry or point is off and by how much, never where it should be."""
+    exp = np.asarray(expected, dtype=float)
+    if got.ndim == 1:
+        if exp.size <= 4 and got.size == exp.size and exp.ndim == 1 and exp.size != 2:
+            k = int(np.argmax(np.abs(got - exp)))
+            return wrong(f"coordinate x{k + 1} of {what} is {off_by(got[k], exp[k])}; {hint}.")
+        return wrong(f"{what} is {fmt(np.linalg.norm(got - exp), 2)} away from where it should be; {hint}.")
+    err = np.linalg.norm((got - exp).reshape(len(exp), -1), axis=1)
+    bad = np.flatnonzero(err > REL_TOL * np.maximum(1.0, np.abs(exp).reshape(len(exp), -1).max(axis=1)))
+    k = int(bad[0])
+    others = "the only point that is off" if bad.size == 1 else f"one of {bad.size} points off"
+    return wrong(f"point {k} of {what} is {fmt(err[k], 2)} away from where it should be ({others}); {hint}.")
 
-    >>> check_quadratic_left_matrix([[1, 0, 0], [0.5, 0.5, 0], [0.25, 0.5, 0.25]])
-    Correct: L is the left edge of the de Casteljau triangle: row i holds B_j^i(1/2).
-    >>> check_quadratic_left_matrix([[1, 0.5, 0.25], [0, 0.5, 0.5], [0, 0, 0.25]])
-    Not yet: that is the transpose of L: with points as rows, each new control point is a row of L, and the rows (not the columns) sum to 1.
+
+def _matrix_entry(got, expected, name, hint) -> Result:
+    bad = np.argwhere(np.abs(got - expected) > REL_TOL * np.maximum(1.0, np.abs(expected)))
+    i, j = (int(x) for x in bad[0])
+    return wrong(f"the entry in row {i}, column {j} of {name} is {off_by(got[i, j], expected[i, j])}; {hint}.")
+
+
+# -- §29.2 ------------------------------------------------------------------------------------------
+
+def check_left_matrix_at_t(answer) -> Result:
+    """Check L of a quadratic Bezier curve split at ``SPLIT_T`` (Goldman §29.2); recognises the
+    transpose, R, the matrix at 1 - t (t and 1 - t swapped), the matrix at 1/2, and rows that do not
+    sum to one.
+
+    >>> check_left_matrix_at_t([[1, 0, 0], [2 / 3, 1 / 3, 0], [4 / 9, 4 / 9, 1 / 9]])
+    Correct: row i of L is the left edge of the de Casteljau triangle at t = 1/3: (B_0^i, ..., B_i^i)(1/3).
     """
-    got, err = _matrix(answer, "L")
+    got, err = _read(answer, "L", "L as a list of rows", (3, 3))
     if err is not None:
         return err
-    L, R = sm.bezier_subdivision_matrices(2)
-    if np.allclose(got, L, atol=1e-9):
-        return correct("L is the left edge of the de Casteljau triangle: row i holds B_j^i(1/2).")
-    if np.allclose(got, L.T, atol=1e-9):
-        return wrong("that is the transpose of L: with points as rows, each new control point is a row of L, and "
-                     "the rows (not the columns) sum to 1.")
-    if np.allclose(got, R, atol=1e-9):
-        return wrong("that is R, the right half; L starts at P0: its first row is (1, 0, 0).")
+    L, R = sm.bezier_subdivision_matrices(2, SPLIT_T)
+    if _close(got, L):
+        return correct("row i of L is the left edge of the de Casteljau triangle at t = 1/3: (B_0^i, ..., B_i^i)(1/3).")
+    if _close(got, L.T):
+        return wrong("that is the transpose of L: with points as rows, each new control point is a row of L, "
+                     "and the rows (not the columns) sum to 1.")
+    if _close(got, R):
+        return wrong("that is R, whose rows control the piece over [1/3, 1]; L starts at P0, so its first row "
+                     "is (1, 0, 0).")
+    if _close(got, sm.bezier_subdivision_matrices(2, 1 - SPLIT_T)[0]):
+        return wrong("t and 1 - t are swapped: that is L at t = 2/3. The first de Casteljau step gives "
+                     "(1 - t) P0 + t P1, so P1 gets the weight t.")
+    if _close(got, sm.bezier_subdivision_matrices(2, 0.5)[0]):
+        return wrong("that is L at t = 1/2, the matrix of the chapter; here the split is at t = 1/3.")
     sums = got.sum(axis=1)
-    if not np.allclose(sums, 1, atol=1e-9):
-        k = int(np.flatnonzero(np.abs(sums - 1) > 1e-9)[0])
-        return wrong(f"every row of L must sum to 1 (each new control point is an affine combination); row {k} sums to {fmt(sums[k])}.")
-    return check_points(got, L, what="the rows of L", tol=1e-9, hint="row i is (B_0^i, ..., B_i^i)(1/2), then zeros")
+    if not np.allclose(sums, 1, atol=1e-3):
+        k = int(np.flatnonzero(np.abs(sums - 1) > 1e-3)[0])
+        return wrong(f"every row of L must sum to 1 (each new control point is an affine combination); "
+                     f"row {k} sums to {fmt(sums[k])}.")
+    return _matrix_entry(got, L, "L", "row i holds the Bernstein values B_j^i(t), j = 0..i, then zeros")
 
 
-def check_chaikin_right_matrix(answer) -> Result:
-    """Check R of a uniform quadratic B-spline segment (Goldman §29.2); recognises L and the Bezier R.
+def check_bspline_right_half(answer) -> Result:
+    """Check R @ P for the uniform cubic B-spline segment ``BSPLINE_CTRL`` (Goldman §29.2);
+    recognises L @ P, the Bezier R @ P, the transposed matrix and the whole refined polygon.
 
-    >>> check_chaikin_right_matrix([[0.25, 0.75, 0], [0, 0.75, 0.25], [0, 0.25, 0.75]])
-    Correct: R holds Chaikin's weights 3/4, 1/4: the right half of the segment is controlled by the cuts near P1 and P2.
+    >>> check_bspline_right_half([[2.25, 5.25], [4, 6], [5.75, 5.5], [7, 4]])
+    Correct: R @ P uses the cubic mask 1/8 (1, 6, 1) at the old points and 1/2 (1, 1) at the midpoints: the four points match.
     """
-    got, err = _matrix(answer, "R")
+    got, err = read_points(answer, "your points", ask="the four points as [[x, y], ...]")
     if err is not None:
         return err
-    L, R = sm.bspline_subdivision_matrices(2)
-    if np.allclose(got, R, atol=1e-9):
-        return correct("R holds Chaikin's weights 3/4, 1/4: the right half of the segment is controlled by the cuts "
-                       "near P1 and P2.")
-    if np.allclose(got, L, atol=1e-9):
-        return wrong("that is L, the left half; R uses the cuts of the legs P0P1 and P1P2 nearer to P2's side.")
-    if np.allclose(got, sm.bezier_subdivision_matrices(2)[1], atol=1e-9):
-        return wrong("that is the Bezier R; a B-spline segment is subdivided by Chaikin's corner cutting "
-                     "(weights 3/4 and 1/4), and does not pass through its end control points.")
-    return check_points(got, R, what="the rows of R", tol=1e-9, hint="every row is 3/4 of one point plus 1/4 of a neighbour")
+    P = BSPLINE_CTRL
+    Lb, Rb = sm.bspline_subdivision_matrices(3)
+    expected = Rb @ P
+    if got.shape == (5, 2):
+        return wrong("those are five points: the refined polygon of the whole segment. Each half of a cubic "
+                     "segment is again a cubic segment, with four control points; keep the last four.")
+    if got.shape != (4, 2):
+        return wrong(f"give four points [x, y]; yours has shape {got.shape}.")
+    if _close(got, expected):
+        return correct("R @ P uses the cubic mask 1/8 (1, 6, 1) at the old points and 1/2 (1, 1) at the "
+                       "midpoints: the four points match.")
+    if _close(got, Lb @ P):
+        return wrong("that is L @ P, the left half: it starts at the midpoint of P0 and P1. The right half ends "
+                     "at the midpoint of P2 and P3.")
+    if _close(got, sm.bezier_subdivision_matrices(3)[1] @ P):
+        return wrong("that is the Bezier R @ P: it ends at P3. A B-spline segment does not pass through its "
+                     "control points; use the B-spline matrices of §29.2 (the Lane-Riesenfeld mask).")
+    if _close(got, Rb.T @ P):
+        return wrong("that is R transposed applied to P: each new point is a row of R times P, so its weights "
+                     "are a row (summing to 1), not a column.")
+    return _far(got, expected, "R @ P", "each new point is a row of R times P; the rows of 8R are printed "
+                                        "in §29.2")
 
 
-def check_normal_curve_point(answer) -> Result:
-    """Check N(1/2) for the normal curve of degree 3 (Goldman §29.3); recognises the answer with B_0.
+# -- §29.3 ------------------------------------------------------------------------------------------
 
-    >>> check_normal_curve_point([1 / 8, 3 / 8, 3 / 8, 1 / 8])
-    Not yet: the normal curve lives in 3-space: its coordinates are B_1, B_2, B_3; B_0 is the weight of the origin and adds nothing.
-    """
-    got, err = read_points(answer, "your point", ask="the point as [x, y, z]")
-    if err is not None:
-        return err
-    expected = sm.normal_curve(3, 0.5)
-    if got.shape == (4,) and np.allclose(got, [1 / 8, 3 / 8, 3 / 8, 1 / 8], atol=1e-9):
-        return wrong("the normal curve lives in 3-space: its coordinates are B_1, B_2, B_3; B_0 is the weight of "
-                     "the origin and adds nothing.")
-    if got.shape != (3,):
-        return wrong(f"N(1/2) should be one point [x, y, z]; yours has shape {got.shape}.")
-    if np.allclose(got, expected, atol=1e-9):
-        return correct(f"N(1/2) = (B_1^3, B_2^3, B_3^3)(1/2) = {fmt(expected)}.")
-    return check_points(got, expected, what="N(1/2)", tol=1e-9, hint="B_k^3(1/2) = C(3, k) / 8")
+def _bezier_point(ctrl, t):
+    from goldman_lib import bezier
+    return bezier.de_casteljau(ctrl, t)
 
 
-def check_right_map_fixed_point(answer) -> Result:
-    """Check the fixed point of ``P^-1 R P`` for ``FIXED_CTRL`` (Goldman §29.3); recognises P0 (the
-    fixed point of the left map) and the curve point at t = 1/2.
+def check_composed_fixed_point(answer) -> Result:
+    """Check the fixed point of ``X -> X M_L M_R`` for ``COMPOSED_CTRL`` (Goldman §29.3); recognises
+    the maps taken in the other order, the fixed points of M_L and M_R alone, C(1/2), and the
+    parameter typed instead of the point.
 
-    >>> check_right_map_fixed_point([6, 2])
-    Correct: the right map sends the whole curve to its right half and keeps the end P2 = (6, 2) where it is.
+    >>> check_composed_fixed_point([16 / 3, 8 / 3])
+    Correct: M_L sends C(t) to C(t/2) and M_R sends C(s) to C((1 + s)/2), so the composite sends C(t) to C(1/2 + t/4) and fixes C(2/3).
     """
     got, err = read_points(answer, "your point", ask="the fixed point as [x, y]")
     if err is not None:
         return err
+    if got.size == 1:
+        return wrong("give the point [x, y], not a parameter: find the t whose curve point the composite map "
+                     "leaves in place, then evaluate the curve there.")
     if got.shape != (2,):
         return wrong(f"the fixed point should be one point [x, y]; yours has shape {got.shape}.")
-    maps, P = sm.curve_ifs(FIXED_CTRL)
-    M = maps[1]
-    expected = np.linalg.solve((np.eye(3) - M)[:2, :2].T, M[2, :2])  # x (I - A) = t for x -> x A + t
-    if np.allclose(got, expected, atol=1e-6):
-        return correct(f"the right map sends the whole curve to its right half and keeps the end P2 = {fmt(expected)} where it is.")
-    if np.allclose(got, FIXED_CTRL[0], atol=1e-6):
-        return wrong("P0 is the fixed point of the left map P^-1 L P; the right map fixes the other end.")
-    mid = (FIXED_CTRL[0] + 2 * FIXED_CTRL[1] + FIXED_CTRL[2]) / 4
-    if np.allclose(got, mid, atol=1e-6):
-        return wrong("C(1/2) is where the halves meet, but the right map moves it (to C(3/4)); a fixed point of a "
-                     "map onto the right half is an end that the half shares with the whole curve.")
-    return check_points(got, expected, what="the fixed point", tol=1e-6, hint="R's last row is (0, 0, 1)")
+    maps, _ = sm.curve_ifs(COMPOSED_CTRL)
+    expected = affine.fixed_point(maps[0] @ maps[1])
+    if _close(got, expected):
+        return correct("M_L sends C(t) to C(t/2) and M_R sends C(s) to C((1 + s)/2), so the composite sends C(t) "
+                       "to C(1/2 + t/4) and fixes C(2/3).")
+    if _close(got, affine.fixed_point(maps[1] @ maps[0])):
+        return wrong("that is the fixed point of M_R followed by M_L: with row vectors, X M_L M_R applies M_L "
+                     "first. Follow a curve point C(t) through M_L, then through M_R.")
+    if _close(got, COMPOSED_CTRL[0]):
+        return wrong("P0 is the fixed point of M_L alone; after M_L the map M_R moves it into the right half.")
+    if _close(got, COMPOSED_CTRL[-1]):
+        return wrong("P2 is the fixed point of M_R alone, but M_L first sends it to C(1/2), and M_R does not "
+                     "bring that back to P2.")
+    if _close(got, _bezier_point(COMPOSED_CTRL, 0.5)):
+        return wrong("C(1/2) is where the two halves meet, but the composite moves it (M_L sends it to C(1/4)). "
+                     "Solve t = where the composite sends C(t).")
+    return _far(got, expected, "your point", "write where M_L, then M_R send the curve point C(t) as a parameter, "
+                                            "solve for the t that stays, and evaluate the curve there")
+
+
+def check_normal_curve_point(answer) -> Result:
+    """Check N(1/3) on the normal curve of degree 4 (Goldman §29.3); recognises the answer with
+    B_0, t and 1 - t swapped, and the binomial coefficients left out.
+
+    >>> check_normal_curve_point([16 / 81, 32 / 81, 24 / 81, 8 / 81, 1 / 81])
+    Not yet: the normal curve lives in 4-space: its coordinates are B_1, ..., B_4; B_0 is the weight of the origin and adds nothing.
+    """
+    got, err = read_points(answer, "your point", ask="the point as [x1, x2, x3, x4]")
+    if err is not None:
+        return err
+    n, t = NORMAL_DEGREE, NORMAL_T
+    bern = np.array([math.comb(n, k) * t ** k * (1 - t) ** (n - k) for k in range(n + 1)])
+    if got.shape == (n + 1,) and _close(got, bern):
+        return wrong("the normal curve lives in 4-space: its coordinates are B_1, ..., B_4; B_0 is the weight "
+                     "of the origin and adds nothing.")
+    if got.shape != (n,):
+        return wrong(f"N(1/3) should be one point of 4-space [x1, x2, x3, x4]; yours has shape {got.shape}.")
+    expected = sm.normal_curve(n, t)
+    if _close(got, expected):
+        return correct(f"N(1/3) = (B_1^4, B_2^4, B_3^4, B_4^4)(1/3) = {fmt(expected)}.")
+    if _close(got, sm.normal_curve(n, 1 - t)):
+        return wrong("t and 1 - t are swapped: that is N(2/3). B_k^4(t) = C(4, k) t^k (1 - t)^(4 - k), so "
+                     "the last coordinate is t^4, the smallest for t = 1/3.")
+    if _close(got, [t ** k * (1 - t) ** (n - k) for k in range(1, n + 1)]):
+        return wrong("the binomial coefficients C(4, k) = 4, 6, 4, 1 are missing: B_k^4(t) = C(4, k) t^k (1 - t)^(4 - k).")
+    return _far(got, expected, "N(1/3)", "B_k^4(1/3) = C(4, k) 2^(4 - k) / 81")
+
+
+# -- §29.4 ------------------------------------------------------------------------------------------
+
+def _fractal():
+    L, R = sm.fractal_matrices(FRACTAL_MIDDLE)
+    return L, R, FRACTAL_CTRL
 
 
 def check_fractal_joint(answer) -> Result:
@@ -153,25 +260,196 @@ def check_fractal_joint(answer) -> Result:
     midpoint C(1/2) and weights that do not sum to one.
 
     >>> check_fractal_joint([2, -2])
-    Correct: the joint is u P0 + v P1 + u P2 with v = -0.5 and u = (1 - v)/2 = 0.75: (2, -2).
+    Correct: the joint is the last row of L (the first of R) applied to the control points: u P0 + v P1 + u P2 = (2, -2).
     """
     got, err = read_points(answer, "your point", ask="the joint as [x, y]")
     if err is not None:
         return err
     if got.shape != (2,):
         return wrong(f"the joint should be one point [x, y]; yours has shape {got.shape}.")
+    L, R, P = _fractal()
     v = FRACTAL_MIDDLE
     u = (1 - v) / 2
-    P = FRACTAL_CTRL
-    expected = u * P[0] + v * P[1] + u * P[2]
-    if np.allclose(got, expected, atol=1e-6):
-        return correct(f"the joint is u P0 + v P1 + u P2 with v = {fmt(v)} and u = (1 - v)/2 = {fmt(u)}: {fmt(expected)}.")
-    if np.allclose(got, (P[0] + 2 * P[1] + P[2]) / 4, atol=1e-6):
+    expected = L[2] @ P
+    if _close(got, expected):
+        return correct(f"the joint is the last row of L (the first of R) applied to the control points: "
+                       f"u P0 + v P1 + u P2 = {fmt(expected)}.")
+    if _close(got, (P[0] + 2 * P[1] + P[2]) / 4):
         return wrong("that is the Bezier midpoint C(1/2) (v = 1/2); here the middle weight is "
-                     f"{fmt(v)}, so u = (1 - v)/2 = {fmt(u)}.")
-    for uu in (0.5, (1 + v) / 2, 0.25):
-        if np.allclose(got, uu * P[0] + v * P[1] + uu * P[2], atol=1e-6):
-            return wrong(f"the weights must sum to one (an affine combination): u + v + u = 1 gives u = {fmt(u)}, "
-                         f"not {fmt(uu)}.")
-    return check_points(got, expected, what="the joint", tol=1e-6,
-                        hint="it is the last row of L (the first of R) applied to the control points")
+                     f"{fmt(v)}, and u follows from it.")
+    for uu in (0.5, (1 + v) / 2, 0.25, 1.0):
+        if abs(uu - u) > 1e-9 and _close(got, uu * P[0] + v * P[1] + uu * P[2]):
+            return wrong(f"the weights must sum to one (an affine combination): u + v + u = 1 fixes u, and "
+                         f"u = {fmt(uu)} does not satisfy it.")
+    return _far(got, expected, "the joint", "it is the last row of L (the first of R) applied to the control points")
+
+
+def check_fractal_quarter_joint(answer) -> Result:
+    """Check where the first two quarters of the fractal meet (Goldman §29.4): the joint of the
+    left half, ``(L @ L @ P)[2]``; recognises the right half's joint, the Bezier point C(1/4), the
+    joint of the whole curve, and the midpoint of P0 and the joint.
+
+    >>> check_fractal_quarter_joint([1, -2.5])
+    Correct: the left half has control points L @ P = P0, (P0 + P1)/2 and the joint, and its own joint is u, v, u applied to those: (1, -2.5).
+    """
+    got, err = read_points(answer, "your point", ask="the point as [x, y]")
+    if err is not None:
+        return err
+    if got.shape != (2,):
+        return wrong(f"the point should be one point [x, y]; yours has shape {got.shape}.")
+    L, R, P = _fractal()
+    expected = (L @ L @ P)[2]
+    if _close(got, expected):
+        return correct(f"the left half has control points L @ P = P0, (P0 + P1)/2 and the joint, and its own joint "
+                       f"is u, v, u applied to those: {fmt(expected)}.")
+    if _close(got, (L @ R @ P)[2]) or _close(got, (R @ R @ P)[0]):
+        return wrong("that is where the third and fourth quarters meet, in the right half; the first two "
+                     "quarters make up the left half, with control points L @ P.")
+    if _close(got, (L @ P)[2]):
+        return wrong("that is the joint of the two halves; the quarters of the left half meet at the joint of "
+                     "the left half, whose control points are L @ P.")
+    if _close(got, _bezier_point(P, 0.25)):
+        return wrong("that is the Bezier point C(1/4) (middle weight 1/2); the fractal's weights u, v, u with "
+                     f"v = {fmt(FRACTAL_MIDDLE)} apply to the left half's control points.")
+    if _close(got, ((L @ P)[0] + (L @ P)[2]) / 2):
+        return wrong("that is the midpoint of P0 and the joint: the left half is a copy of the fractal, not a "
+                     "segment; apply u, v, u to its three control points L @ P.")
+    return _far(got, expected, "your point", "compute L @ P (three points), then apply the row (u, v, u) to them")
+
+
+SLIPS = {
+    "check_left_matrix_at_t": [
+        [[1, 2 / 3, 4 / 9], [0, 1 / 3, 4 / 9], [0, 0, 1 / 9]],           # transposed
+        [[4 / 9, 4 / 9, 1 / 9], [0, 2 / 3, 1 / 3], [0, 0, 1]],           # R
+        [[1, 0, 0], [1 / 3, 2 / 3, 0], [1 / 9, 4 / 9, 4 / 9]],           # t and 1 - t swapped
+        [[1, 0, 0], [0.5, 0.5, 0], [0.25, 0.5, 0.25]],                   # t = 1/2
+        [[1, 0, 0], [2 / 3, 1 / 3, 0], [4 / 9, 2 / 9, 1 / 9]],           # binomial 2 forgotten
+    ],
+    "check_bspline_right_half": [
+        [[1, 3], [2.25, 5.25], [4, 6], [5.75, 5.5]],                      # L @ P
+        [[4, 4.75], [5.5, 5], [7, 4], [8, 2]],                            # Bezier R @ P
+        [[0, 0], [1.75, 3.75], [9.5, 8.5], [4.75, 1.75]],                 # R^T @ P
+        [[1, 3], [2.25, 5.25], [4, 6], [5.75, 5.5], [7, 4]],              # the whole refined polygon
+    ],
+    "check_composed_fixed_point": [
+        [7 / 3, 8 / 3],        # M_R then M_L: C(1/3)
+        [0, 0], [9, 0],        # fixed points of M_L, M_R alone
+        [3.75, 3],             # C(1/2)
+        2 / 3,                 # the parameter, not the point
+    ],
+    "check_normal_curve_point": [
+        [16 / 81, 32 / 81, 24 / 81, 8 / 81, 1 / 81],   # with B_0
+        [8 / 81, 24 / 81, 32 / 81, 16 / 81],           # N(2/3)
+        [8 / 81, 4 / 81, 2 / 81, 1 / 81],              # no binomials
+    ],
+    "check_fractal_joint": [
+        [2, 2],      # Bezier midpoint
+        [1, -2],     # u = 1/2
+        [0, -2],     # u = 1/4
+    ],
+    "check_fractal_quarter_joint": [
+        [3, -2.5],   # the right half's joint
+        [2, -2],     # the joint of the halves
+        [1, 1.5],    # Bezier C(1/4)
+        [1, -1],     # midpoint of P0 and the joint
+    ],
+}
+
+
+# -- the programming project ------------------------------------------------------------------------
+
+def _project_cases():
+    rng = np.random.default_rng(2929)
+    cases = [Case("degree 1, a segment, at t = 1/2", (1,), {"t": 0.5}, kind="degree 1 (a segment)")]
+    cases += [Case(f"degree {n} at t = 1/2", (n,), {"t": 0.5}, kind="degrees 2-6 at t = 1/2") for n in range(2, 7)]
+    for n, t in zip(rng.integers(2, 7, size=4), rng.uniform(0.1, 0.9, size=4)):
+        t = round(float(t), 3)
+        cases.append(Case(f"degree {int(n)} at t = {t}", (int(n),), {"t": t}, kind="random t"))
+    cases.append(Case("degree 3 at t = 0 (the left piece is the point P0)", (3,), {"t": 0.0},
+                      kind="degenerate t = 0 and t = 1"))
+    cases.append(Case("degree 2 at t = 1 (the right piece is the point P2)", (2,), {"t": 1.0},
+                      kind="degenerate t = 0 and t = 1"))
+    return cases
+
+
+class _Returned:
+    """What the learner's function returned, described briefly ("(L, R), two 4 x 4 matrices") so that
+    a failing case does not print whole matrices; the comparison looks at ``value``."""
+
+    def __init__(self, value):
+        self.value = value
+
+    def __repr__(self):
+        v = self.value
+        if isinstance(v, (tuple, list)) and len(v) == 2:
+            shapes = [np.shape(m) for m in v]
+            if all(len(sh) == 2 for sh in shapes):
+                if shapes[0] == shapes[1]:
+                    return f"(L, R), two {shapes[0][0]} x {shapes[0][1]} matrices"
+                return f"(L, R) with L of shape {shapes[0]} and R of shape {shapes[1]}"
+        text = repr(v)
+        return text if len(text) <= 60 else text[:57] + "..."
+
+
+class _Learner:
+    """Calls the learner's function and wraps what it returns in :class:`_Returned`; carries the
+    function's ``__code__`` so that the project checker reports an exception at the learner's line."""
+
+    def __init__(self, function):
+        self.function = function
+        self.__code__ = getattr(function, "__code__", None)
+
+    def __call__(self, *args, **kwargs):
+        value = self.function(*args, **kwargs)
+        if value is None:
+            return None
+        named = type(type(value).__name__, (_Returned,), {})  # describe() says "(a tuple)", "(a list)"
+        return named(value)
+
+
+def _compare_matrices(got, expected, case):
+    got = got.value if isinstance(got, _Returned) else got
+    if not isinstance(got, (tuple, list)) or len(got) != 2:
+        return "it should be a pair (L, R) of matrices"
+    try:
+        L, R = (np.asarray(m, dtype=float) for m in got)
+    except (TypeError, ValueError):
+        return "L and R should be arrays of numbers"
+    EL, ER = expected
+    if L.shape != EL.shape or R.shape != ER.shape:
+        return (f"for degree {len(EL) - 1} both L and R should have shape {EL.shape}, one row per control point "
+                f"of a piece and one column per control point of the curve")
+    if not (np.all(np.isfinite(L)) and np.all(np.isfinite(R))):
+        return "it contains NaN or infinite values"
+    ok = lambda a, b: bool(np.allclose(a, b, atol=1e-9))  # noqa: E731
+    if ok(L, EL) and ok(R, ER):
+        return None
+    if ok(L, ER) and ok(R, EL):
+        return "L and R are swapped: L @ P should control the piece over [0, t], which starts at P0"
+    if ok(L, EL.T) or ok(R, ER.T):
+        which = "L" if ok(L, EL.T) else "R"
+        return (f"{which} is transposed: with control points as rows, each new control point is a row of {which} "
+                f"times P, so the rows (not the columns) sum to 1")
+    for name, M, E in (("L", L, EL), ("R", R, ER)):
+        bad = np.argwhere(np.abs(M - E) > 1e-9)
+        if bad.size:
+            i, j = (int(x) for x in bad[0])
+            return (f"{name}[{i}, {j}] (row {i}, column {j}) is {fmt(M[i, j])}, expected {fmt(E[i, j])} "
+                    f"(entries of {name} off: {len(bad)} of {E.size})")
+    return None
+
+
+def check_subdivision_matrices_project(function) -> Result:
+    """Run the learner's ``function(n, t=0.5) -> (L, R)`` against
+    :func:`goldman_lib.subdivision_matrices.bezier_subdivision_matrices` for degrees 1 to 6 at t = 1/2,
+    at random t (fixed seed) and at the degenerate t = 0 and t = 1 (Goldman §29.2, programming project).
+
+    >>> from goldman_lib import subdivision_matrices as sm
+    >>> check_subdivision_matrices_project(sm.bezier_subdivision_matrices)
+    Correct: subdivision_matrices(n, t) passes all 12 cases, including degenerate t = 0 and t = 1, degree 1 (a segment), degrees 2-6 at t = 1/2, random t.
+    """
+    learner = _Learner(function) if callable(function) else function
+    return check_project(learner, _project_cases(), reference=sm.bezier_subdivision_matrices,
+                         compare=_compare_matrices, what="subdivision_matrices(n, t)",
+                         hint="L[i, j] = B_j^i(t) (the left edge of the de Casteljau triangle) and "
+                              "R[i, j] = B_{j-i}^{n-i}(t) (its right edge)")

@@ -1,10 +1,12 @@
-"""Exercise checkers for chapter 30, subdivision surfaces (Goldman §30.2-30.4).
+"""Exercise checkers for chapter 30, subdivision surfaces (Goldman §30.2-30.4), and the checker of
+the chapter's programming project.
 
 Each exercise's data are module constants, so the notebook prints the problem from here and the
-checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name.
+checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
+``SLIPS`` the wrong answers of the kinds each checker recognises.
 
->>> check_cube_counts([26, 48, 24])
-Correct: after one level the cube has V, E, F = (26, 48, 24), and V - E + F = 2 still.
+>>> check_prism_counts([122, 240, 120])
+Correct: two levels take the pentagonal prism to V, E, F = (122, 240, 120), and V - E + F = 2 at every level.
 """
 
 from __future__ import annotations
@@ -12,49 +14,152 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import subdivision_surfaces as ss
-from goldman_lib.exercises import fmt_points, Result, check_points, correct, fmt, read_points, wrong
+from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
+from goldman_lib.exercises.projects import Case, check_project
 
-__all__ = ["PROBLEMS", "CHAIKIN_CTRL", "STENCIL_VALENCE", "EDGE_POINTS",
-           "check_cube_counts", "check_quad_vertex_stencil", "check_cube_vertex_point",
-           "check_triangle_edge_point", "check_chaikin"]
+__all__ = ["PROBLEMS", "SLIPS", "BOX_MULTIPLICITIES", "PRISM_SIDES", "PRISM_LEVELS", "QUAD_EDGE_POINTS",
+           "STAR_VALENCE", "STAR_HEIGHTS", "TETRA_VERTICES", "EDGE_POINTS",
+           "check_box_spline_mask", "check_prism_counts", "check_quad_edge_point", "check_extraordinary_height",
+           "check_tetrahedron_vertex", "check_triangle_edge_point", "check_ring_step_project"]
 
-#: Exercise 2: the valence of the extraordinary vertex whose stencil is asked for.
-STENCIL_VALENCE = 5
-#: Exercise 4: the edge (v, w) and the opposite vertices x, y of its two triangles.
+#: Exercise 1: the multiplicities (r, s, t) of the directions e1, e2, e3 of the box spline.
+BOX_MULTIPLICITIES = (2, 2, 1)
+#: Exercise 2: the prism over a pentagon and the number of levels of the quadrilateral scheme.
+PRISM_SIDES = 5
+PRISM_LEVELS = 2
+#: Exercise 3: the edge (v, w) and the other two vertices of each of its quadrilaterals.
+QUAD_EDGE_POINTS = np.array([[0.0, 0.0, 0.0], [2.0, 0.0, 0.0],     # v, w
+                             [2.0, 2.0, 1.0], [0.0, 2.0, 1.0],     # x1, y1: face (v, w, x1, y1)
+                             [0.0, -2.0, 2.0], [2.0, -2.0, 0.0]])  # y2, x2: face (w, v, y2, x2)
+#: Exercise 4: a vertex of valence 5 in a quadrilateral mesh; heights (z) of the vertex, of its
+#: edge neighbours and of its diagonal neighbours.
+STAR_VALENCE = 5
+STAR_HEIGHTS = (8.0, 2.0, 6.0)
+#: Exercise 5: the regular tetrahedron (valence 3 everywhere) and the vertex asked about (row 0).
+TETRA_VERTICES = np.array([[1.0, 1.0, 1.0], [1.0, -1.0, -1.0], [-1.0, 1.0, -1.0], [-1.0, -1.0, 1.0]])
+#: Exercise 6: the edge (v, w) and the opposite vertices x, y of its two triangles.
 EDGE_POINTS = np.array([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [2.0, 3.0, 1.0], [2.0, -3.0, 3.0]])
-#: Exercise 5: the open control polygon refined by one level of split and average with degree 2.
-CHAIKIN_CTRL = np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 4.0]])
+
+#: Relative tolerance for hand-computed decimals.
+REL_TOL = 1e-4
+
+
+def _pts(P):
+    return ", ".join(fmt(p) for p in P)
 
 
 PROBLEMS = {
-    "check_cube_counts": (
-        "The cube has V = 8 vertices, E = 12 edges and F = 6 faces. After one level of centroid averaging "
-        "(the quadrilateral scheme), how many vertices, edges and faces are there? Give [V, E, F] (Goldman §30.3)."),
-    "check_quad_vertex_stencil": (
-        f"A vertex v of valence n = {STENCIL_VALENCE} in a quadrilateral mesh moves, after one level of centroid "
-        f"averaging, to a v + b (sum of its edge neighbours) + c (sum of its diagonal neighbours). "
-        f"Give [a, b, c] (Goldman §30.3.2)."),
-    "check_cube_vertex_point": (
-        "Where does the cube's vertex (1, 1, 1) go after one level of quadrilateral centroid averaging? "
-        "Give the point [x, y, z] (Goldman §30.3.2)."),
+    "check_box_spline_mask": (
+        f"On a regular grid, one level of split and average for the box spline with multiplicities "
+        f"{BOX_MULTIPLICITIES} for the directions e1 = (1, 0), e2 = (0, 1), e3 = (1, 1): split, then average "
+        f"r - 1 = 1 time along e1, s - 1 = 1 time along e2 and t = 1 time along e3. Give its mask times 8, as a "
+        f"4 x 4 list of rows laid out like the masks printed in §30.2, with the e3 diagonal running from top left "
+        f"to bottom right (Goldman §30.2)."),
+    "check_prism_counts": (
+        f"The prism over a pentagon has V = 10 vertices, E = 15 edges and F = 7 faces (five quadrilaterals and "
+        f"two pentagons). After {PRISM_LEVELS} levels of quadrilateral centroid averaging, how many vertices, "
+        f"edges and faces are there? Give [V, E, F] (Goldman §30.3)."),
+    "check_quad_edge_point": (
+        f"An edge of a quadrilateral mesh runs from v = {fmt(QUAD_EDGE_POINTS[0])} to w = {fmt(QUAD_EDGE_POINTS[1])}. "
+        f"Its two faces are (v, w, {fmt(QUAD_EDGE_POINTS[2])}, {fmt(QUAD_EDGE_POINTS[3])}) and "
+        f"(w, v, {fmt(QUAD_EDGE_POINTS[4])}, {fmt(QUAD_EDGE_POINTS[5])}). Where is the new edge point after one "
+        f"level of quadrilateral centroid averaging? Give [x, y, z] (Goldman §30.3)."),
+    "check_extraordinary_height": (
+        f"In a quadrilateral mesh, a vertex v of valence {STAR_VALENCE} is at height z = {fmt(STAR_HEIGHTS[0])}; its "
+        f"{STAR_VALENCE} edge neighbours are at z = {fmt(STAR_HEIGHTS[1])} and its {STAR_VALENCE} diagonal neighbours "
+        f"(the far corners of its faces) at z = {fmt(STAR_HEIGHTS[2])}. At what height is its new vertex point after "
+        f"one level of quadrilateral centroid averaging? Give z to 4 digits (Goldman §30.3)."),
+    "check_tetrahedron_vertex": (
+        f"The tetrahedron with vertices {_pts(TETRA_VERTICES)} is a triangle mesh whose vertices all have valence 3. "
+        f"Where does the vertex {fmt(TETRA_VERTICES[0])} go after one level of the triangle scheme (weighted "
+        f"centroids 1/4, 3/8, 3/8)? Give [x, y, z] (Goldman §30.4)."),
     "check_triangle_edge_point": (
         f"An edge of a triangle mesh runs from v = {fmt(EDGE_POINTS[0])} to w = {fmt(EDGE_POINTS[1])}; its two "
         f"triangles have opposite vertices x = {fmt(EDGE_POINTS[2])} and y = {fmt(EDGE_POINTS[3])}. Where is the new "
-        f"edge point after one level of the triangle scheme (weights 1/4, 3/8, 3/8)? (Goldman §30.4.2)"),
-    "check_chaikin": (
-        f"Apply one level of split and average with degree 2 to the open polygon {fmt_points(CHAIKIN_CTRL)}: split "
-        f"(double every point), then average twice. Give the new control points (Goldman §30.2)."),
+        f"edge point after one level of the triangle scheme (weighted centroids 1/4, 3/8, 3/8)? Give [x, y, z] "
+        f"(Goldman §30.4)."),
 }
 
 
-def check_cube_counts(answer) -> Result:
-    """Check [V, E, F] of the cube after one level of the quadrilateral scheme (Goldman §30.3).
+# -- reading and comparing -------------------------------------------------------------------------
 
-    Recognises the triangle scheme's counts, the counts without face points, and an answer whose
-    V - E + F is not 2.
+def _close(got, expected) -> bool:
+    exp = np.asarray(expected, dtype=float)
+    return got.shape == exp.shape and bool(np.all(np.abs(got - exp) <= REL_TOL * np.maximum(1.0, np.abs(exp))))
 
-    >>> check_cube_counts([20, 48, 24])
-    Not yet: V should be 8 old vertices + 12 edge points + 6 face points = 26; you left out the face points.
+
+def _point(answer, what, ask):
+    got, err = read_points(answer, what, ask=ask)
+    if err is not None:
+        return None, err
+    if got.shape != (3,):
+        return None, wrong(f"{what} should be one point [x, y, z]; yours has shape {got.shape}.")
+    return got, None
+
+
+def _far(got, expected, what, hint) -> Result:
+    return wrong(f"{what} is {fmt(np.linalg.norm(got - np.asarray(expected)), 2)} away from where it should be; "
+                 f"{hint}.")
+
+
+# -- §30.2 box splines -------------------------------------------------------------------------------
+
+def _box_mask(multiplicities):
+    delta = np.zeros((5, 5, 1))
+    delta[2, 2] = 1.0
+    box = ss.box_spline_split_and_average(delta, multiplicities, 1)[..., 0]
+    return box[box.any(1)][:, box.any(0)]
+
+
+def check_box_spline_mask(answer) -> Result:
+    """Check the mask (times 8) of the box spline with multiplicities (2, 2, 1) (Goldman §30.2);
+    recognises the mirrored layout (the e3 diagonal the other way), the mask not scaled by 8, the
+    mask without the e3 factor, and entries that do not sum to 4 times 8.
+
+    >>> check_box_spline_mask([[1, 2, 1, 0], [2, 5, 4, 1], [1, 4, 5, 2], [0, 1, 2, 1]])
+    Correct: the mask is (1 + x)^2 (1 + y)^2 (1 + xy) / 8 multiplied out: each new point is an affine combination of the old ones.
+    """
+    got, err = read_points(answer, "your mask", ask="the mask times 8 as a list of rows")
+    if err is not None:
+        return err
+    expected = _box_mask(BOX_MULTIPLICITIES) * 8
+    if got.shape == (3, 3) and _close(got, np.outer([1, 2, 1], [1, 2, 1])):
+        return wrong("that is the mask of the bilinear box spline (1 + x)^2 (1 + y)^2, without the averaging "
+                     "along e3; one averaging along e3 multiplies it by (1 + xy) and shifts a copy along the "
+                     "diagonal.")
+    if got.shape != expected.shape:
+        return wrong(f"the mask should be a four by four list of rows; yours has shape {got.shape}.")
+    if _close(got, expected):
+        return correct("the mask is (1 + x)^2 (1 + y)^2 (1 + xy) / 8 multiplied out: each new point is an affine "
+                       "combination of the old ones.")
+    if _close(got, expected[::-1]) or _close(got, expected[:, ::-1]):
+        return wrong("that is the mask mirrored: the averaging along e3 = (1, 1) adds P[i+1, j+1] to P[i, j], so "
+                     "the band of the diagonal runs from top left to bottom right, as in the masks of §30.2.")
+    if _close(got, expected / 8):
+        return wrong("those are the weights themselves; the exercise asks for the mask times 8 (whole numbers).")
+    if _close(got * 2, expected):
+        return wrong("the entries should total 32 (four kinds of new points, each an affine combination, times "
+                     "8); yours total half of that: one factor of 1/2 too many.")
+    total = got.sum()
+    if abs(total - 32) > 1e-6:
+        return wrong(f"the entries of the mask times 8 should total 32 (four kinds of new points, each an affine "
+                     f"combination); yours total {fmt(total)}. Multiply (1 + x)^2 (1 + y)^2 by (1 + xy).")
+    bad = np.argwhere(np.abs(got - expected) > 1e-6)
+    i, j = (int(x) for x in bad[0])
+    return wrong(f"the entry in row {i}, column {j} is {off_by(got[i, j], expected[i, j])}; the mask is the "
+                 f"product of the direction factors (1 + x)^2 (1 + y)^2 (1 + xy): multiply the bilinear mask by "
+                 f"(1 + xy), that is, add to it a copy shifted one step along the diagonal.")
+
+
+# -- §30.3 quadrilateral meshes ----------------------------------------------------------------------
+
+def check_prism_counts(answer) -> Result:
+    """Check [V, E, F] of the pentagonal prism after two levels of the quadrilateral scheme
+    (Goldman §30.3); recognises the counts after one level, face points left out, F = 4F (as if all
+    faces were quadrilaterals), and an answer whose V - E + F is not 2.
+
+    >>> check_prism_counts([32, 60, 30])
+    Not yet: those are the counts after one level; apply the rules V' = V + E + F, E' = 2E + (sum of face sizes), F' = sum of face sizes once more (now every face is a quadrilateral).
     """
     what = "[V, E, F]"
     got, err = read_points(answer, what)
@@ -62,142 +167,299 @@ def check_cube_counts(answer) -> Result:
         return err
     if got.shape != (3,):
         return wrong(f"{what} should be three numbers; yours has shape {got.shape}.")
+    if not np.allclose(got, np.round(got)):
+        return wrong("V, E and F count vertices, edges and faces: they are whole numbers.")
     V, E, F = (int(round(x)) for x in got)
-    m = ss.centroid_averaging(ss.cube(), 1)
-    expected = (m.n_vertices, m.n_edges, m.n_faces)
-    if (V, E, F) == expected and np.allclose(got, expected):
-        return correct(f"after one level the cube has V, E, F = {expected}, and V - E + F = 2 still.")
-    if V == 8 + 12:
-        return wrong("V should be 8 old vertices + 12 edge points + 6 face points = 26; you left out the face points.")
-    tri = ss.centroid_averaging(ss.triangulate(ss.cube()), 1)
-    if (V, E, F) == (tri.n_vertices, tri.n_edges, tri.n_faces):
-        return wrong("those are the counts of the triangle scheme on the triangulated cube; the quadrilateral "
-                     "scheme splits each of the 6 squares into 4 squares.")
-    parts = []
-    if V != expected[0]:
-        parts.append("V = 8 old vertices + 12 edge points + 6 face points")
-    if F != expected[2]:
-        parts.append("F = 4 quadrilaterals for each of the 6 faces")
-    if E != expected[1]:
-        parts.append("E = 2 halves of each of the 12 edges + 4 new edges inside each of the 6 faces")
-    euler = V - E + F
-    note = f" Your V - E + F = {euler}, but subdivision never changes it from 2." if euler != 2 else ""
-    return wrong("count again: " + "; ".join(parts) + "." + note)
+    mesh = ss.prism(PRISM_SIDES)
+    m1 = ss.centroid_averaging(mesh, 1)
+    m2 = ss.centroid_averaging(mesh, PRISM_LEVELS)
+    expected = (m2.n_vertices, m2.n_edges, m2.n_faces)
+    if (V, E, F) == expected:
+        return correct(f"two levels take the pentagonal prism to V, E, F = {expected}, and V - E + F = 2 at "
+                       f"every level.")
+    if (V, E, F) == (m1.n_vertices, m1.n_edges, m1.n_faces):
+        return wrong("those are the counts after one level; apply the rules V' = V + E + F, E' = 2E + (sum of "
+                     "face sizes), F' = sum of face sizes once more (now every face is a quadrilateral).")
+    if (V, E, F) == (m1.n_vertices + m1.n_edges, m2.n_edges, m2.n_faces) or V == m1.n_vertices + m1.n_edges:
+        return wrong("V leaves out the face points: the bilinear split adds a point at every edge and at every "
+                     "face, V' = V + E + F.")
+    if F == 4 * 7 or (F == 4 * 4 * 7):
+        return wrong("a k-gon is cut into k quadrilaterals, not 4: the two pentagons give five each, so at the "
+                     "first level F' is the sum of the face sizes.")
+    chi = V - E + F
+    if chi != 2:
+        return wrong(f"your counts give V - E + F = {chi}, but subdivision refines the mesh without changing its "
+                     f"topology, so V - E + F stays what it was for the prism. Count each level with V' = V + E + F, "
+                     f"E' = 2E + (sum of face sizes), F' = sum of face sizes.")
+    return wrong("V - E + F is right but the counts are not; count each level with V' = V + E + F, "
+                 "E' = 2E + (sum of face sizes), F' = sum of face sizes.")
 
 
-def check_quad_vertex_stencil(answer) -> Result:
-    """Check the weights [a, b, c] of the quadrilateral vertex stencil at valence ``STENCIL_VALENCE``
-    (Goldman §30.3.2).  Recognises the valence-4 weights and weights that do not sum to one.
+def check_quad_edge_point(answer) -> Result:
+    """Check the edge point of the quadrilateral scheme for ``QUAD_EDGE_POINTS`` (Goldman §30.3);
+    recognises the midpoint, the average of the two face centroids, the triangle weights, and the
+    midpoint averaged with the face centroids with equal weights.
 
-    >>> check_quad_vertex_stencil([9 / 16, 3 / 40, 1 / 80])
-    Correct: [a, b, c] = [9/16, 3/(8n), 1/(16n)] = (0.5625, 0.075, 0.0125) for n = 5.
-    >>> check_quad_vertex_stencil([9 / 16, 3 / 32, 1 / 64])
-    Not yet: these are the weights of a regular vertex (n = 4); with n = 5 neighbours of each kind the 7/16 left over is shared by 5, not 4.
+    >>> check_quad_edge_point([1, 0, 0.25])
+    Correct: the edge point is 3/8 (v + w) + 1/16 (the four other corners of its two faces): the average of the centroids of the four small quadrilaterals around the edge's midpoint.
     """
-    n = STENCIL_VALENCE
-    got, err = read_points(answer, "[a, b, c]")
+    got, err = _point(answer, "the edge point", "the edge point as [x, y, z]")
     if err is not None:
         return err
-    if got.shape != (3,):
-        return wrong(f"[a, b, c] should be three numbers; yours has shape {got.shape}.")
-    expected = np.array(ss.quad_vertex_stencil(n))
-    if np.allclose(got, expected, atol=1e-9):
-        return correct(f"[a, b, c] = [9/16, 3/(8n), 1/(16n)] = {fmt(expected)} for n = {n}.")
-    if np.allclose(got, ss.quad_vertex_stencil(4), atol=1e-9):
-        return wrong(f"these are the weights of a regular vertex (n = 4); with n = {n} neighbours of each kind "
-                     f"the 7/16 left over is shared by {n}, not 4.")
-    total = got[0] + n * got[1] + n * got[2]
-    if abs(total - 1) > 1e-9:
-        return wrong(f"the weights must sum to one over the vertex and its {2 * n} neighbours "
-                     f"(a + {n} b + {n} c = 1); yours sum to {fmt(total)}.")
-    return wrong(f"[a, b, c] should be {fmt(expected)}: average the centroids of the {n} quadrilaterals "
-                 f"(v, m_i, F_i, m_(i+1)) around v after the bilinear split.")
+    v, w, x1, y1, y2, x2 = QUAD_EDGE_POINTS
+    others = x1 + y1 + y2 + x2
+    ea, eb = ss.quad_edge_stencil()
+    expected = ea * (v + w) + eb * others
+    if _close(got, expected):
+        return correct("the edge point is 3/8 (v + w) + 1/16 (the four other corners of its two faces): the "
+                       "average of the centroids of the four small quadrilaterals around the edge's midpoint.")
+    mid = (v + w) / 2
+    f1, f2 = (v + w + x1 + y1) / 4, (w + v + y2 + x2) / 4
+    if _close(got, mid):
+        return wrong("that is the midpoint of the edge, where the bilinear split puts the new point; the averaging "
+                     "step then moves it to the centroid of the centroids of its four small faces.")
+    if _close(got, (f1 + f2) / 2):
+        return wrong("that is the average of the centroids of the two old faces; the edge point lies in four "
+                     "small quadrilaterals of the split mesh, and their centroids are what is averaged.")
+    if _close(got, (mid + f1 + f2) / 3):
+        return wrong("you averaged the midpoint and the two face centroids with equal weights; average instead the "
+                     "centroids of the four small quadrilaterals (midpoint, an end's half, a face centroid, ...) "
+                     "around the midpoint.")
+    if _close(got, 3 / 8 * (v + w) + 1 / 8 * others):
+        return wrong("those are the triangle scheme's weights 3/8, 1/8; in a quadrilateral mesh the edge has four "
+                     "other corners and each gets 1/16 (the weights must sum to one).")
+    return _far(got, expected, "the edge point", "average the centroids of the four small quadrilaterals around the "
+                                                 "midpoint of the edge")
 
 
-def check_cube_vertex_point(answer) -> Result:
-    """Check the image of the cube's vertex (1, 1, 1) after one level of the quad scheme (Goldman §30.3.2).
+def _star_slips():
+    n = STAR_VALENCE
+    zv, zu, zd = STAR_HEIGHTS
+    face = (zv + 2 * zu + zd) / 4
+    return {
+        "valence 4": 9 / 16 * zv + n * 3 / 32 * zu + n * 1 / 64 * zd,
+        "swapped": 9 / 16 * zv + n * 1 / (16 * n) * zu + n * 3 / (8 * n) * zd,
+        "no diagonals": 9 / 16 * zv + n * 3 / (8 * n) * zu,
+        "triangle": 5 / 8 * zv + n * 3 / (8 * n) * zu,
+        "catmull-clark": (face + 2 * (zv + zu) / 2 + (n - 3) * zv) / n,
+    }
 
-    Recognises Catmull-Clark's vertex point (a different rule at valence 3) and the valence-4 stencil.
 
-    >>> check_cube_vertex_point([2 / 3, 2 / 3, 2 / 3])
-    Correct: (1, 1, 1) goes to (0.6667, 0.6667, 0.6667) = 9/16 v + 1/8 (sum of 3 neighbours) + 1/48 (sum of 3 diagonals).
-    >>> check_cube_vertex_point([5 / 9, 5 / 9, 5 / 9])
-    Not yet: (0.5556, 0.5556, 0.5556) is the Catmull-Clark vertex point; centroid averaging agrees with Catmull-Clark only at valence 4. Use 9/16, 3/(8n), 1/(16n) with n = 3.
+def check_extraordinary_height(answer) -> Result:
+    """Check the height of the new vertex point of a valence-5 vertex in a quadrilateral mesh
+    (Goldman §30.3); recognises the valence-4 weights, the edge and diagonal weights swapped, the
+    diagonal neighbours left out, the triangle rule, and Catmull-Clark's vertex rule.
+
+    >>> check_extraordinary_height(5.625)
+    Correct: 9/16 of the vertex, 3/(8n) of each edge neighbour and 1/(16n) of each diagonal neighbour, with n = 5.
     """
-    got, err = read_points(answer, "your point", ask="the new vertex as [x, y, z]")
+    value, err = read_number(answer, "the height")
     if err is not None:
         return err
-    if got.shape != (3,):
-        return wrong(f"the new vertex should be one point [x, y, z]; yours has shape {got.shape}.")
-    expected = np.full(3, 2 / 3)
-    if np.allclose(got, expected, atol=1e-6):
-        return correct(f"(1, 1, 1) goes to {fmt(expected)} = 9/16 v + 1/8 (sum of 3 neighbours) + 1/48 (sum of 3 diagonals).")
-    if np.allclose(got, 5 / 9, atol=1e-6):
-        return wrong(f"{fmt(got)} is the Catmull-Clark vertex point; centroid averaging agrees with Catmull-Clark "
-                     f"only at valence 4. Use 9/16, 3/(8n), 1/(16n) with n = 3.")
-    if np.allclose(got, 41 / 64, atol=1e-6):
-        return wrong("you used the valence-4 weights 3/32 and 1/64; the cube's vertices have valence 3, so "
-                     "b = 3/24 and c = 1/48.")
-    return check_points(got, expected, what="the new vertex", tol=1e-6,
-                        hint="neighbours sum to (1, 1, 1), diagonal neighbours to (-1, -1, -1)")
+    n = STAR_VALENCE
+    a, b, c = ss.quad_vertex_stencil(n)
+    zv, zu, zd = STAR_HEIGHTS
+    expected = a * zv + n * b * zu + n * c * zd
+    close = lambda x: abs(value - x) <= REL_TOL * max(1.0, abs(x))  # noqa: E731
+    if close(expected):
+        return correct(f"9/16 of the vertex, 3/(8n) of each edge neighbour and 1/(16n) of each diagonal neighbour, "
+                       f"with n = {n}.")
+    slips = _star_slips()
+    if close(slips["valence 4"]):
+        return wrong("you used the weights of a regular vertex (valence 4); this vertex has five neighbours of each "
+                     "kind, so the weights of the neighbours are shared among n = 5, and only the vertex's own "
+                     "weight stays the same.")
+    if close(slips["swapped"]):
+        return wrong("the edge and diagonal weights are swapped: the edge neighbours are the nearer ones and get "
+                     "the larger weight.")
+    if close(slips["no diagonals"]):
+        return wrong("the diagonal neighbours are missing: they are corners of the faces around v, so they enter "
+                     "through the face centroids (and without them the weights do not sum to one).")
+    if close(slips["triangle"]):
+        return wrong("that is the triangle scheme's vertex rule; in a quadrilateral mesh the face centroids bring "
+                     "in the diagonal neighbours, and the vertex keeps 9/16 of its own position.")
+    if close(slips["catmull-clark"]):
+        return wrong("that is Catmull-Clark's vertex rule, whose own weight depends on the valence; centroid "
+                     "averaging keeps 9/16 at every valence and shares the rest among the neighbours.")
+    return wrong(f"the height is {off_by(value, expected)}. Hint: a v + b (sum of the edge neighbours) + c (sum of "
+                 f"the diagonal neighbours), with the weights of §30.3 for n = {n}.")
+
+
+# -- §30.4 triangle meshes ---------------------------------------------------------------------------
+
+def check_tetrahedron_vertex(answer) -> Result:
+    """Check where the tetrahedron's vertex goes after one level of the triangle scheme (Goldman
+    §30.4); recognises Loop's (Warren's) valence-3 weight 3/16, the regular (valence 6) weights,
+    plain centroids, and the vertex left where it was.
+
+    >>> check_tetrahedron_vertex([0.5, 0.5, 0.5])
+    Correct: 5/8 v + 3/(8n) (sum of its neighbours) with n = 3. At valence 3 every level shrinks the corner and its ring by 1/4 in every direction at once, so the corner keeps its shape: a cone point (see the eigenvalues in §30.4).
+    """
+    got, err = _point(answer, "the new vertex", "the new vertex as [x, y, z]")
+    if err is not None:
+        return err
+    v, nbrs = TETRA_VERTICES[0], TETRA_VERTICES[1:]
+    a, b = ss.triangle_vertex_stencil(3)
+    expected = a * v + b * nbrs.sum(axis=0)
+    if _close(got, expected):
+        return correct("5/8 v + 3/(8n) (sum of its neighbours) with n = 3. At valence 3 every level shrinks the "
+                       "corner and its ring by 1/4 in every direction at once, so the corner keeps its shape: a cone "
+                       "point (see the eigenvalues in §30.4).")
+    if _close(got, v):
+        return wrong("the midpoint split keeps the old vertices where they are, but the averaging step then moves "
+                     "each one to the average of the weighted centroids of its triangles.")
+    if _close(got, (1 - 3 * 3 / 16) * v + 3 / 16 * nbrs.sum(axis=0)):
+        return wrong("that is Loop's vertex rule with Warren's valence-3 weight 3/16; the chapter's scheme averages "
+                     "weighted centroids, which gives each neighbour 3/(8n) at every valence.")
+    if _close(got, 10 / 16 * v + 1 / 16 * nbrs.sum(axis=0)):
+        return wrong("you used the regular weight 1/16 of a valence-6 vertex; here n = 3, and the neighbours share "
+                     "3/8 among themselves.")
+    a3, b3 = ss.triangle_vertex_stencil(3, self_weight=1 / 3)
+    if _close(got, a3 * v + b3 * nbrs.sum(axis=0)):
+        return wrong("those are plain centroids (1/3, 1/3, 1/3); the scheme weights each triangle's corner v by "
+                     "1/4 and the other two by 3/8.")
+    return _far(got, expected, "the new vertex", "average over the three triangles at v their weighted centroids "
+                                                "1/4 v + 3/8 a + 3/8 b")
 
 
 def check_triangle_edge_point(answer) -> Result:
-    """Check the new edge point of the triangle scheme for ``EDGE_POINTS`` (Goldman §30.4.2).
-
-    Recognises the plain midpoint (no averaging) and the plain-centroid weights 7/18, 1/9.
+    """Check the edge point of the triangle scheme for ``EDGE_POINTS`` (Goldman §30.4); recognises
+    the midpoint, plain centroids, and the quadrilateral scheme's weights.
 
     >>> check_triangle_edge_point([2, 0, 0.5])
-    Correct: the edge point is 3/8 (v + w) + 1/8 (x + y) = (2, 0, 0.5).
-    >>> check_triangle_edge_point([2, 0, 0])
-    Not yet: (2, 0, 0) is the midpoint of the edge, the split alone; the averaging step then pulls it towards the opposite vertices: 3/8 (v + w) + 1/8 (x + y).
+    Correct: the edge point is 3/8 (v + w) + 1/8 (x + y).
     """
-    got, err = read_points(answer, "your point", ask="the edge point as [x, y, z]")
+    got, err = _point(answer, "the edge point", "the edge point as [x, y, z]")
     if err is not None:
         return err
-    if got.shape != (3,):
-        return wrong(f"the edge point should be one point [x, y, z]; yours has shape {got.shape}.")
     v, w, x, y = EDGE_POINTS
-    a, b = ss.triangle_edge_stencil()
-    expected = a * (v + w) + b * (x + y)
-    if np.allclose(got, expected, atol=1e-6):
-        return correct(f"the edge point is 3/8 (v + w) + 1/8 (x + y) = {fmt(expected)}.")
-    if np.allclose(got, (v + w) / 2, atol=1e-6):
-        return wrong(f"{fmt(got)} is the midpoint of the edge, the split alone; the averaging step then pulls it "
-                     f"towards the opposite vertices: 3/8 (v + w) + 1/8 (x + y).")
+    ea, eb = ss.triangle_edge_stencil()
+    expected = ea * (v + w) + eb * (x + y)
+    if _close(got, expected):
+        return correct("the edge point is 3/8 (v + w) + 1/8 (x + y).")
+    if _close(got, (v + w) / 2):
+        return wrong("that is the midpoint of the edge, where the split puts the new point; the averaging step then "
+                     "pulls it towards the opposite vertices x and y.")
     pa, pb = ss.triangle_edge_stencil(1 / 3)
-    if np.allclose(got, pa * (v + w) + pb * (x + y), atol=1e-6):
+    if _close(got, pa * (v + w) + pb * (x + y)):
         return wrong("these are the weights 7/18, 1/9 of plain centroids; the scheme here weights each corner "
-                     "1/4 itself and 3/8 the other two, giving 3/8 and 1/8.")
-    return check_points(got, expected, what="the edge point", tol=1e-6, hint="3/8 (v + w) + 1/8 (x + y)")
+                     "by 1/4 in its own triangle's centroid and the other two by 3/8.")
+    if _close(got, 3 / 8 * (v + w) + 1 / 16 * (x + y)):
+        return wrong("1/16 is the quadrilateral scheme's weight, for four other corners; a triangle edge has two "
+                     "opposite vertices (and the weights must sum to one).")
+    return _far(got, expected, "the edge point", "average, over the small triangles around the edge's midpoint, "
+                                                "their weighted centroids")
 
 
-def check_chaikin(answer) -> Result:
-    """Check one level of degree-2 split and average on ``CHAIKIN_CTRL`` (Goldman §30.2).
+SLIPS = {
+    "check_box_spline_mask": [
+        [[0, 1, 2, 1], [1, 4, 5, 2], [2, 5, 4, 1], [1, 2, 1, 0]],          # mirrored
+        [[1 / 8, 2 / 8, 1 / 8, 0], [2 / 8, 5 / 8, 4 / 8, 1 / 8], [1 / 8, 4 / 8, 5 / 8, 2 / 8], [0, 1 / 8, 2 / 8, 1 / 8]],
+        [[1, 2, 1], [2, 4, 2], [1, 2, 1]],                                    # no e3 factor
+        [[0.5, 1, 0.5, 0], [1, 2.5, 2, 0.5], [0.5, 2, 2.5, 1], [0, 0.5, 1, 0.5]],  # halved
+    ],
+    "check_prism_counts": [
+        [32, 60, 30],      # one level
+        [92, 240, 120],    # face points left out at the second level
+        [122, 240, 112],   # F = 4F at the first level
+        [122, 242, 120],   # V - E + F = 0
+    ],
+    "check_quad_edge_point": [
+        [1, 0, 0],         # midpoint
+        [1, 0, 0.5],       # average of the two face centroids
+        [1, 0, 1 / 3],     # midpoint and face centroids, equal weights
+        [1.25, 0, 0.5],    # triangle weights
+    ],
+    "check_extraordinary_height": [
+        189 / 32,          # valence-4 weights
+        6.875,             # edge and diagonal weights swapped
+        5.25,              # diagonals left out
+        5.75,              # triangle rule
+        6.1,               # Catmull-Clark
+    ],
+    "check_tetrahedron_vertex": [
+        [1, 1, 1],                 # not moved
+        [0.25, 0.25, 0.25],        # Warren's 3/16
+        [9 / 16, 9 / 16, 9 / 16],  # valence-6 weights
+        [5 / 9, 5 / 9, 5 / 9],     # plain centroids
+    ],
+    "check_triangle_edge_point": [
+        [2, 0, 0],         # midpoint
+        [2, 0, 4 / 9],     # plain centroids
+        [1.75, 0, 0.25],   # the quadrilateral weight 1/16
+    ],
+}
 
-    Recognises a single averaging (degree 1) and the split alone.
 
-    >>> check_chaikin([[1, 0], [3, 0], [4, 1], [4, 3]])
-    Correct: split and average with degree 2 cuts every corner at 1/4 and 3/4 (Chaikin): the points match.
-    >>> check_chaikin([[0, 0], [2, 0], [4, 0], [4, 2], [4, 4]])
-    Not yet: you averaged once (degree 1: the midpoints are added and the polygon is unchanged); degree 2 averages twice.
+# -- the programming project -------------------------------------------------------------------------
+
+def _ring_reference(v, ring):
+    pts = np.vstack([np.asarray(v, dtype=float)[None], np.asarray(ring, dtype=float)])
+    return ss.local_subdivision_matrix(len(ring), "triangle") @ pts
+
+
+def _regular_ring(n, radius=1.0, height=0.0, rng=None):
+    ang = 2 * np.pi * np.arange(n) / n
+    ring = np.column_stack([radius * np.cos(ang), radius * np.sin(ang), np.full(n, height)])
+    if rng is not None:
+        ring = ring + rng.normal(scale=0.2, size=ring.shape)
+    return ring
+
+
+def _project_cases():
+    rng = np.random.default_rng(3030)
+    cases = [Case("valence 6, a flat regular hexagon around v = (0, 0, 0)", (np.zeros(3), _regular_ring(6)),
+                  kind="regular (valence 6)")]
+    for n in (3, 3, 4, 5, 7):
+        v = rng.normal(size=3) + [0, 0, 1]
+        cases.append(Case(f"valence {n}, v and a jittered ring drawn from the seed", (v, _regular_ring(n, rng=rng)),
+                          kind="valence 3" if n == 3 else "valences 4, 5, 7"))
+    for n in (12, 20):
+        cases.append(Case(f"valence {n}, a jittered ring", (rng.normal(size=3), _regular_ring(n, 2.0, rng=rng)),
+                          kind="high valence (12, 20)"))
+    p = np.array([1.0, -2.0, 0.5])
+    cases.append(Case("valence 5, all points at (1, -2, 0.5)", (p.copy(), np.tile(p, (5, 1))),
+                      kind="degenerate: all points equal"))
+    return cases
+
+
+def _compare_ring(got, expected, case):
+    arr = np.asarray(got, dtype=float)
+    exp = np.asarray(expected, dtype=float)
+    n = len(exp) - 1
+    if arr.shape != exp.shape:
+        return (f"it has shape {arr.shape}; for a vertex of valence {n} return {n + 1} points: the vertex point, "
+                f"then one edge point per neighbour")
+    if not np.all(np.isfinite(arr)):
+        return "it contains NaN or infinite values"
+    err = np.linalg.norm(arr - exp, axis=1)
+    bad = np.flatnonzero(err > 1e-9)
+    if bad.size == 0:
+        return None
+    for shift in (1, -1):
+        if np.allclose(arr[1:], np.roll(exp[1:], shift, axis=0), atol=1e-9):
+            return ("the edge points are shifted by one place: row 1 + i should be the edge point of the edge "
+                    "(v, ring[i]), whose opposite vertices are ring[i - 1] and ring[i + 1]")
+    k = int(bad[0])
+    if k == 0:
+        return f"the vertex point (row 0) is {fmt(err[0], 2)} from where it should be, expected {fmt(exp[0])}"
+    return (f"the edge point of the edge (v, ring[{k - 1}]) (row {k}) is {fmt(err[k], 2)} from where it should be, "
+            f"expected {fmt(exp[k])}")
+
+
+def check_ring_step_project(function) -> Result:
+    """Run the learner's ``function(v, ring) -> (n+1, 3)`` (one level of the triangle scheme's stencils
+    around a vertex of valence n: its new vertex point and the new edge points of its n edges) against
+    :func:`goldman_lib.subdivision_surfaces.local_subdivision_matrix` on generated rings (fixed seed):
+    the regular valence 6, valence 3, valences 4, 5 and 7, the high valences 12 and 20, and a
+    degenerate ring whose points all coincide (Goldman §30.4, programming project).
+
+    >>> def reference(v, ring):
+    ...     return ss.local_subdivision_matrix(len(ring)) @ np.vstack([v, ring])
+    >>> check_ring_step_project(reference)
+    Correct: ring_step(v, ring) passes all 9 cases, including degenerate: all points equal, high valence (12, 20), regular (valence 6), valence 3, valences 4, 5, 7.
     """
-    got, err = read_points(answer, "your points")
-    if err is not None:
-        return err
-    expected = ss.split_and_average(CHAIKIN_CTRL, 2, 1)
-    if got.shape == expected.shape and np.allclose(got, expected, atol=1e-6):
-        return correct("split and average with degree 2 cuts every corner at 1/4 and 3/4 (Chaikin): the points match.")
-    once = ss.split_and_average(CHAIKIN_CTRL, 1, 1)
-    if got.shape == once.shape and np.allclose(got, once, atol=1e-6):
-        return wrong("you averaged once (degree 1: the midpoints are added and the polygon is unchanged); degree 2 "
-                     "averages twice.")
-    split = np.repeat(CHAIKIN_CTRL, 2, axis=0)
-    if got.shape == split.shape and np.allclose(got, split, atol=1e-6):
-        return wrong("that is the split alone; now average twice, each time replacing the polygon by the "
-                     "midpoints of its legs.")
-    if got.ndim != 2 or got.shape[-1] != 2 or len(got) != len(expected):
-        return wrong(f"there should be {len(expected)} points [x, y]: the split gives {2 * len(CHAIKIN_CTRL)}, "
-                     f"and each of the two averagings of an open polygon drops one; yours has shape {got.shape}.")
-    return check_points(got, expected, what="the new control points", tol=1e-6,
-                        hint="each new point is 3/4 of one old point plus 1/4 of its neighbour")
+    return check_project(function, _project_cases(), reference=_ring_reference, compare=_compare_ring,
+                         what="ring_step(v, ring)",
+                         hint="the chapter's vertex rule 5/8, 3/(8n) holds at every valence, n = 3 included, and the "
+                              "edge (v, ring[i]) has the opposite vertices ring[i - 1] and ring[i + 1], indices mod n")
