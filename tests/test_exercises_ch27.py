@@ -1,61 +1,120 @@
-"""Chapter 27 exercise checkers: right answers pass, typical wrong answers fail with the right
-explanation, None is "unanswered".  Expected values are hand-computed here or by scipy."""
-
-import math
+"""Chapter 27 exercise checkers: right answers (worked by hand here, not by the library) pass, each
+recognised slip gets its own explanation, and no message gives the answer away (the generic
+checks of every checker are in tests/test_exercises.py and tests/test_solutions.py)."""
 
 import numpy as np
 import pytest
 from scipy.interpolate import BSpline
 
-from goldman_lib.exercises import ch27
+from goldman_lib.exercises import Result, ch27
+
+# Exercise 1: knots 0,0,0,1,3,4,4,4, u = 2 in [t3, t4) = [1, 3): P1 = (1, 3), P2 = (4, 6), P3 = (7, 0).
+# level 1: node 2, a = (2 - t2)/(t4 - t2) = 2/3 -> (1, 3) + 2/3 (3, 3) = (3, 5)
+#          node 3, a = (2 - t3)/(t5 - t3) = 1/3 -> (4, 6) + 1/3 (3, -6) = (5, 4)
+# level 2: node 3, a = (2 - t3)/(t4 - t3) = 1/2 -> (4, 4.5)
+DE_BOOR = [4.0, 4.5]
+# Exercise 2: u = 2.5: N_3,0 = 1; N_2,1 = (3 - 2.5)/2 = 1/4, N_3,1 = (2.5 - 1)/2 = 3/4;
+# N_1,2 = (3 - 2.5)/3 * 1/4 = 1/24; N_2,2 = 2.5/3 * 1/4 + (4 - 2.5)/3 * 3/4 = 7/12; N_3,2 = 1.5/3 * 3/4 = 3/8.
+BASIS = [1 / 24, 7 / 12, 3 / 8]
+# Exercise 3: quartic, multiplicities 1, 2, 3, 4 -> C^(4 - m).
+ORDERS = [3, 2, 1, 0]
+# Exercise 4: blossoms b1(u1, u2) = (u1 + u2) - u1 u2 of 2u - u^2, b2 = 0.5 + (u1 + u2)/2 - u1 u2 / 2:
+# P0 = b1(0, 0) = 0, P1 = b1(0, 1) = 1, P2 = b1(1, 3) = 4 - 3 = 1 = b2(1, 3) = 0.5 + 2 - 1.5, P3 = b2(3, 3) = -1.
+SPLINE = [0.0, 1.0, 1.0, -1.0]
+# Exercise 5: u = 1.5: rows 1, 2 weigh 1/2; v = 0.5: Bernstein 1/4, 1/2, 1/4.
+# row 1 heights 2, 4, 2 -> 3; row 2 heights 4, 0, 6 -> 2.5; z = 2.75; x = 1.5, y = 1.
+SURFACE = [1.5, 1.0, 2.75]
+# Exercise 6: N_1,2(1.5) = 1/8, N_2,2 = 5/8, N_3,2 = 1/4; weighted 2/8, 5/8, 6/8, sum 13/8;
+# numerator 1/4 (1, 2) + 5/8 (3, 2) + 3/4 (4, 0) = (41/8, 14/8) -> (41/13, 14/13).
+NURBS = [41 / 13, 14 / 13]
+
+CHECKERS = [
+    (ch27.check_local_de_boor, DE_BOOR),
+    (ch27.check_basis_values, BASIS),
+    (ch27.check_continuity_orders, ORDERS),
+    (ch27.check_spline_control_points, SPLINE),
+    (ch27.check_surface_point, SURFACE),
+    (ch27.check_nurbs_point, NURBS),
+]
 
 
-def test_every_checker_has_a_problem_and_handles_none():
-    for name in ch27.PROBLEMS:
-        res = getattr(ch27, name)(None)
-        assert not res.answered and not res.correct and "replace None" in res.message
+def test_problem_constants_are_what_the_hand_answers_assume():
+    assert ch27.CURVE_CTRL.tolist() == [[0, 0], [1, 3], [4, 6], [7, 0], [9, 2]]
+    assert ch27.CURVE_KNOTS.tolist() == [0, 0, 0, 1, 3, 4, 4, 4] and ch27.CURVE_DEGREE == 2
+    assert (ch27.DE_BOOR_U, ch27.BASIS_U) == (2.0, 2.5)
+    assert ch27.CONT_DEGREE == 4 and ch27.CONT_KNOTS.tolist() == [0] * 5 + [1] + [2] * 2 + [3] * 3 + [4] * 4 + [5] * 5
+    assert ch27.SURF_HEIGHTS.tolist() == [[0, 2, 0], [2, 4, 2], [4, 0, 6]] and ch27.SURF_UV == (1.5, 0.5)
+    assert ch27.NURBS_WEIGHTS.tolist() == [1, 2, 1, 3] and ch27.NURBS_U == 1.5
 
 
-def test_span_control_points():
-    assert ch27.check_span_control_points([1, 2, 3]).correct
-    assert ch27.check_span_control_points((3, 1, 2)).correct          # order does not matter
-    assert "ending at P_k" in ch27.check_span_control_points([3, 4, 5]).message
-    assert "p+1 = 3 control points" in ch27.check_span_control_points([1, 2]).message
-    assert not ch27.check_span_control_points([0, 1, 2]).correct
+@pytest.mark.parametrize("checker,answer", CHECKERS, ids=[c.__name__ for c, _ in CHECKERS])
+def test_right_answer_is_correct(checker, answer):
+    r = checker(answer)
+    assert isinstance(r, Result) and r.correct and r.answered, r
 
 
-def test_de_boor_point_against_scipy():
-    ref = BSpline(ch27.DE_BOOR_KNOTS, ch27.DE_BOOR_CTRL, 2)(ch27.DE_BOOR_U)
-    np.testing.assert_allclose(ref, [4.25, 1.0])
-    assert ch27.check_de_boor_point(ref).correct
-    assert "first level" in ch27.check_de_boor_point([3.5, 1]).message
-    # de Casteljau's weights on the span [1, 2] with s = 0.5 over P1, P2, P3
-    bez = 0.25 * np.array([2, 4]) + 0.5 * np.array([4, 0]) + 0.25 * np.array([6, 2])
-    assert "de Casteljau's weights" in ch27.check_de_boor_point(bez).message
-    assert "one point" in ch27.check_de_boor_point([1, 2, 3]).message
-    assert "from C(1.5)" in ch27.check_de_boor_point([0, 0]).message
+def test_hand_answers_agree_with_scipy():
+    assert np.allclose(BSpline(ch27.CURVE_KNOTS, ch27.CURVE_CTRL, 2)(2.0), DE_BOOR)
+    assert np.allclose(BSpline.design_matrix([2.5], ch27.CURVE_KNOTS, 2).toarray()[0, 1:4], BASIS)
+    knots = [0, 0, 0, 1, 3, 3, 3]
+    spline = BSpline(knots, SPLINE, 2)
+    u = np.linspace(0, 3, 13)
+    assert np.allclose(spline(u), np.where(u <= 1, 2 * u - u ** 2, 0.5 + u - u ** 2 / 2))
 
 
-def test_basis_value_against_scipy():
-    N = BSpline.design_matrix([ch27.BASIS_U], ch27.DE_BOOR_KNOTS, 2).toarray()[0]
-    assert ch27.check_basis_value(N[1]).correct and N[1] == pytest.approx(0.625)
-    assert "Bernstein" in ch27.check_basis_value(0.5).message
-    assert "neighbouring" in ch27.check_basis_value(N[0]).message
-    assert "should be 0.625" in ch27.check_basis_value(0.9).message
-    assert "number" in ch27.check_basis_value("x").message
+def test_local_de_boor_slips():
+    assert "de Casteljau's weight" in ch27.check_local_de_boor([4, 3.75]).message
+    assert "level 1" in ch27.check_local_de_boor([3, 5]).message
+    assert "level 1" in ch27.check_local_de_boor([5, 4]).message
+    assert "P0..P2, the points of another span" in ch27.check_local_de_boor([4, 4]).message
+    assert "P2..P4" in ch27.check_local_de_boor([5, 10]).message
+    assert "is 6 from C(2)" in ch27.check_local_de_boor([0, 0]).message
+    assert "one point" in ch27.check_local_de_boor([1, 2, 3]).message
 
 
-def test_continuity():
-    assert ch27.check_continuity(1).correct
-    assert "simple knot" in ch27.check_continuity(2).message
-    assert "one order too few" in ch27.check_continuity(0).message
-    assert "C^(p - m)" in ch27.check_continuity(3).message
+def test_basis_values_slips():
+    assert ch27.check_basis_values([0.0417, 0.5833, 0.375]).correct        # 4 decimals are enough
+    assert "Bernstein" in ch27.check_basis_values([0.0625, 0.375, 0.5625]).message
+    assert "reverse order" in ch27.check_basis_values(BASIS[::-1]).message
+    assert "sum to 0.9" in ch27.check_basis_values([0.1, 0.5, 0.3]).message
+    assert "N_1,2 is off by 0.0083" in ch27.check_basis_values([0.05, 0.575, 0.375]).message
+    assert "three basis functions" in ch27.check_basis_values([0.2, 0.8]).message
 
 
-def test_circle_weight():
-    assert ch27.check_circle_weight(math.sqrt(2) / 2).correct
-    assert ch27.check_circle_weight(0.70711).correct
-    assert "parabola" in ch27.check_circle_weight(1).message
-    assert "1/cos 45" in ch27.check_circle_weight(math.sqrt(2)).message
-    assert "positive" in ch27.check_circle_weight(-1).message
-    assert "inside the circle" in ch27.check_circle_weight(0.5).message
+def test_continuity_orders_slips():
+    assert "multiplicities" in ch27.check_continuity_orders([1, 2, 3, 4]).message
+    assert "one too low" in ch27.check_continuity_orders([2, 1, 0, -1]).message
+    assert "simple knot only" in ch27.check_continuity_orders([3, 3, 3, 3]).message
+    assert "at u = 3 is not right" in ch27.check_continuity_orders([3, 2, 0, 0]).message
+    assert "each of the 4 interior knots" in ch27.check_continuity_orders([3, 2, 1]).message
+
+
+def test_spline_control_points_slips():
+    assert "values of the spline" in ch27.check_spline_control_points([0, 0.75, 0.5, -1]).message
+    assert "second piece" in ch27.check_spline_control_points([0, 1, 1, -3]).message
+    assert "P2 is off by 1" in ch27.check_spline_control_points([0, 1, 2, -1]).message
+    assert "has 4 control points" in ch27.check_spline_control_points([0, 1, -1]).message
+
+
+def test_surface_point_slips():
+    assert "u knots along j" in ch27.check_surface_point([1, 1.5, 2.5]).message
+    assert "row 1 alone" in ch27.check_surface_point([1, 1, 3]).message
+    assert "row 2 alone" in ch27.check_surface_point([2, 1, 2.5]).message
+    assert "height is off by 0.25" in ch27.check_surface_point([1.5, 1, 3]).message
+    assert "one point" in ch27.check_surface_point([1.5, 1]).message
+
+
+def test_nurbs_point_slips():
+    assert ch27.check_nurbs_point([3.154, 1.077]).correct                 # 3 decimals are enough
+    assert "polynomial B-spline" in ch27.check_nurbs_point([3, 1.5]).message
+    assert "forgot to divide" in ch27.check_nurbs_point([5.125, 1.75]).message
+    assert "sum of the weights" in ch27.check_nurbs_point([5.125 / 7, 1.75 / 7]).message
+    assert "divided by the weights" in ch27.check_nurbs_point([2.9459, 1.7838]).message
+    assert "0.17 from C(1.5)" in ch27.check_nurbs_point([3, 1]).message
+
+
+def test_slips_are_all_recognised_as_wrong():
+    for name, slips in ch27.SLIPS.items():
+        for slip in slips:
+            r = getattr(ch27, name)(slip)
+            assert r.answered and not r.correct, (name, slip, r)
