@@ -39,7 +39,8 @@ from . import affine
 from .validation import as_int, as_points, check_finite
 
 __all__ = ["IFS", "deterministic", "chaos_game", "chaos_game_with_maps", "map_images", "set_map", "iterate_map", "UNIT_SQUARE", "MAX_POINTS", "STANDARD",
-           "sierpinski", "koch", "barnsley_fern", "dragon", "c_curve", "tree", "sierpinski_carpet", "cantor"]
+           "sierpinski", "koch", "barnsley_fern", "dragon", "c_curve", "tree", "sierpinski_carpet", "cantor",
+           "grid_fractal"]
 
 #: The most points :func:`deterministic` or :func:`chaos_game` will produce (memory guard).
 MAX_POINTS = 5_000_000
@@ -468,3 +469,33 @@ STANDARD = {
     "Sierpinski carpet": sierpinski_carpet,
     "Cantor set": cantor,
 }
+
+
+def grid_fractal(cells, corner=(0.0, 0.0), side=1.0, name: str = "") -> IFS:
+    """A "grid fractal" (Goldman §6.3): cut a square into 3 x 3 cells and keep some of them.
+
+    The map for the kept cell ``(i, j)`` (column ``i``, row ``j``, both in 0..2, counted from the
+    lower-left corner) scales the square by 1/3 about its lower-left ``corner`` and then
+    translates by ``(i, j) * side / 3``, so it sends the square onto that cell.  All eight border
+    cells give the Sierpinski carpet, the four corners and the centre the Vicsek "box" fractal.
+
+    cells: ``(k, 2)`` integer pairs in 0..2.  corner: ``(2,)``.  side: > 0.  Returns an
+    :class:`IFS` of ``k`` maps, in the order of ``cells``.  Raises ValueError naming the
+    parameter that breaks a rule.
+
+    >>> box = grid_fractal([(0, 0), (2, 0), (1, 1), (0, 2), (2, 2)], corner=(1, 0), side=3)
+    >>> deterministic(box, 1, start=[[1, 0]]).round(12).tolist()
+    [[1.0, 0.0], [3.0, 0.0], [2.0, 1.0], [1.0, 2.0], [3.0, 2.0]]
+    """
+    C = np.array(cells)
+    if C.ndim != 2 or C.shape[1:] != (2,) or len(C) == 0:
+        raise ValueError(f"cells must be a non-empty list of (i, j) pairs; got shape {C.shape}")
+    if not np.issubdtype(C.dtype, np.integer) or C.min() < 0 or C.max() > 2:
+        raise ValueError(f"cells must hold whole numbers 0, 1 or 2 (column i, row j); got {C.tolist()}")
+    P = as_points(corner, "corner", ndim=1, dim=2)
+    a = float(side)
+    if not math.isfinite(a) or a <= 0:
+        raise ValueError(f"side must be a positive number; got {side!r}")
+    shrink = affine.scaling(1.0 / 3.0, center=P)
+    return IFS([shrink @ affine.translation(np.array([i, j]) * a / 3.0) for i, j in C.tolist()],
+               name=name or "grid fractal")

@@ -1,58 +1,164 @@
-"""Chapter 6 exercise checkers: hand-worked right answers pass, typical slips fail with the reason,
-None is 'not answered'."""
-
-import math
+"""Chapter 6 checkers: hand-worked right answers pass, each recognised slip gets its reason, other
+wrong answers say how far off; the grid-fractal project passes a right function (in any map order),
+and names the failing case for a subtly wrong one (swapped index, transposed matrix, maps composed
+the wrong way round) and for one that crashes."""
 
 import numpy as np
 import pytest
 
+from goldman_lib import ifs
 from goldman_lib.exercises import ch06
 
-# hand-worked: P = P/2 + (1, 0.5) -> P/2 = (1, 0.5) -> P = (2, 1)
-FIXED = [2.0, 1.0]
-# scale 1/2, turn 90 ccw ((x, y) -> (-y, x)), add (1, 0)
-SQUARE = [[1, 0], [1, 0.5], [0.5, 0.5], [0.5, 0]]
-CORNERS = [(0, 0), (2, 0), (0, 2)]
+
+def _assert_wrong(result, *fragments):
+    assert result.answered and not result.correct, result
+    for f in fragments:
+        assert f in result.message, (f, result.message)
 
 
-def half_about(c):
-    return np.array([[0.5, 0, 0], [0, 0.5, 0], [c[0] / 2, c[1] / 2, 1]])
+def test_problems_and_slips_listed():
+    names = {"check_iterate_map", "check_carpet_points", "check_fixed_point", "check_chaos_game_steps",
+             "check_tree_branches"}
+    assert set(ch06.PROBLEMS) == names == set(ch06.SLIPS)
+    assert "check_grid_fractal_project" in ch06.__all__ and "check_grid_fractal_project" not in ch06.PROBLEMS
 
 
-CASES = [
-    (ch06.check_fixed_point, FIXED, [1, 0.5], "one step from the origin"),
-    (ch06.check_gasket_count, 3 ** 5, 15, "multiplies by 3"),
-    (ch06.check_tree_branches, 31, 16, "newest"),
-    (ch06.check_square_image, SQUARE, [[1, 0], [1, -0.5], [1.5, -0.5], [1.5, 0]], "clockwise"),
-    (ch06.check_gasket_maps, [half_about(c) for c in CORNERS], [half_about(c) for c in [(0, 0), (1, 0), (0, 1)]],
-     "unit triangle"),
-]
+def test_iterate_map():
+    # (8, 0) -> (0, 4) -> (-2, 0) -> (0, -1)
+    assert ch06.check_iterate_map([0, -1]).correct
+    _assert_wrong(ch06.check_iterate_map([0, 1]), "clockwise")          # (8,0) -> (0,-4) -> (-2,0) -> (0,1)
+    _assert_wrong(ch06.check_iterate_map([0, -8]), "does not halve")
+    _assert_wrong(ch06.check_iterate_map([1, 0]), "does not turn")
+    _assert_wrong(ch06.check_iterate_map([-2, 0]), "one step short")
+    _assert_wrong(ch06.check_iterate_map([0.5, 0]), "one step too many")
+    _assert_wrong(ch06.check_iterate_map([0, -2]), "off by 1 (distance)")
+    _assert_wrong(ch06.check_iterate_map([0, -1, 0]), "one point")
 
 
-@pytest.mark.parametrize("checker,right,wrong_answer,reason", CASES, ids=[c[0].__name__ for c in CASES])
-def test_right_wrong_and_unanswered(checker, right, wrong_answer, reason):
-    r = checker(right)
-    assert r.correct and r.answered, r
-    w = checker(wrong_answer)
-    assert not w.correct and w.answered and reason in w.message, w
-    n = checker(None)
-    assert not n.answered and "Not answered yet" in repr(n)
+def test_carpet_points():
+    assert ch06.check_carpet_points(2560).correct                     # 5 * 8^3
+    _assert_wrong(ch06.check_carpet_points(512), "copies of the square")
+    _assert_wrong(ch06.check_carpet_points(2048), "4 corners")
+    _assert_wrong(ch06.check_carpet_points(120), "multiplies by 8")
+    _assert_wrong(ch06.check_carpet_points(2925), "every level")      # 5 (1 + 8 + 64 + 512)
+    _assert_wrong(ch06.check_carpet_points(320), "one level short")
+    _assert_wrong(ch06.check_carpet_points(2561), "off by 1")
+    _assert_wrong(ch06.check_carpet_points("many"), "should be a number")
 
 
-def test_gasket_maps_accepts_any_order_and_symmetric_maps():
-    maps = [half_about(c) for c in reversed(CORNERS)]
-    assert ch06.check_gasket_maps(maps).correct
-    # the gasket is symmetric in the line y = x: a map that also reflects in it draws the same set
-    swap = np.array([[0, 1, 0], [1, 0, 0], [0, 0, 1.0]])
-    assert ch06.check_gasket_maps([swap @ half_about(CORNERS[0])] + [half_about(c) for c in CORNERS[1:]]).correct
-    assert "does not shrink" in ch06.check_gasket_maps([np.eye(3)]).message
-    assert "3x3" in ch06.check_gasket_maps([[1, 2]]).message
+def test_fixed_point():
+    # x = -y/2 + 5, y = x/2 -> x = 4, y = 2
+    assert ch06.check_fixed_point([4, 2]).correct
+    _assert_wrong(ch06.check_fixed_point([5, 0]), "applied once to the origin")
+    _assert_wrong(ch06.check_fixed_point([5, -2.5]), "INVERSE")       # (5, 0)(I - L) = (5, 0) - (0, 5/2)
+    _assert_wrong(ch06.check_fixed_point([10, 0]), "ignores the turn")
+    _assert_wrong(ch06.check_fixed_point([4, -2]), "clockwise")
+    _assert_wrong(ch06.check_fixed_point([0, 0]), "w moves your point by 5")
 
 
-def test_other_slips_are_explained():
-    assert "counts every level" in ch06.check_gasket_count(sum(3 ** j for j in range(6))).message
-    assert "off by one level" in ch06.check_tree_branches(15).message
-    assert "translated before rotating" in ch06.check_square_image([[0, 1], [0, 1.5], [-0.5, 1.5], [-0.5, 1]]).message
-    assert "not the same point" in ch06.check_fixed_point([0, 0]).message
-    assert not ch06.check_gasket_count("many").correct
-    assert math.isclose(ch06.FIXED_POINT_MAP[0, 0], 0.5)
+def test_chaos_game_steps():
+    # (0,0) -> (2,0) -> (1,2) -> (0.5,3) -> (0.25,1.5)
+    assert ch06.check_chaos_game_steps([0.25, 1.5]).correct
+    _assert_wrong(ch06.check_chaos_game_steps([2, 1.5]), "reverse order")   # maps 1, 3, 3, 2
+    _assert_wrong(ch06.check_chaos_game_steps([0.5, 3]), "one step short")
+    _assert_wrong(ch06.check_chaos_game_steps([0, 0]), "HALFWAY")
+    _assert_wrong(ch06.check_chaos_game_steps([1, 2]), "averages the corners")
+    _assert_wrong(ch06.check_chaos_game_steps([0.25, 2.5]), "off by 1 (distance)")
+
+
+def test_tree_branches():
+    assert ch06.check_tree_branches(121).correct                      # 1 + 3 + 9 + 27 + 81
+    _assert_wrong(ch06.check_tree_branches(81), "newest")
+    _assert_wrong(ch06.check_tree_branches(243), "add the copies level by level")
+    _assert_wrong(ch06.check_tree_branches(40), "one level short")
+    _assert_wrong(ch06.check_tree_branches(364), "one level too many")
+    _assert_wrong(ch06.check_tree_branches(31), "2 maps")
+    _assert_wrong(ch06.check_tree_branches(100), "off by 21")
+
+
+# -- the programming project ------------------------------------------------------------------------
+
+def third(corner):
+    """Scaling by 1/3 about ``corner``, written out: P -> corner + (P - corner)/3."""
+    x0, y0 = corner
+    return np.array([[1 / 3, 0, 0], [0, 1 / 3, 0], [2 * x0 / 3, 2 * y0 / 3, 1]])
+
+
+def shift(dx, dy):
+    return np.array([[1, 0, 0], [0, 1, 0], [dx, dy, 1.0]])
+
+
+def right(corner, side, cells):
+    return [third(corner) @ shift(i * side / 3, j * side / 3) for i, j in cells]
+
+
+def test_project_accepts_a_right_function_in_any_map_order_and_an_ifs():
+    r = ch06.check_grid_fractal_project(right)
+    assert r.correct and "passes all 12 cases" in r.message and "degenerate: one cell" in r.message, r
+    assert ch06.check_grid_fractal_project(lambda c, s, cells: right(c, s, cells)[::-1]).correct
+    assert ch06.check_grid_fractal_project(lambda c, s, cells: ifs.IFS(right(c, s, cells))).correct
+
+
+def test_project_names_the_case_of_a_swapped_index():
+    def swapped(corner, side, cells):
+        return [third(corner) @ shift(j * side / 3, i * side / 3) for i, j in cells]
+
+    r = ch06.check_grid_fractal_project(swapped)
+    # the box fractal and the carpet are symmetric in the diagonal: the uneven "L" is the first to fail
+    _assert_wrong(r, "case 3 of 12 (corner (0, 0), side 1, cells [(0, 0), (1, 0), (2, 0), (0, 1)])",
+                  "mirrored in the diagonal")
+
+
+def test_project_names_a_transposed_matrix_and_the_wrong_order_of_composition():
+    r = ch06.check_grid_fractal_project(lambda c, s, cells: [M.T for M in right(c, s, cells)])
+    _assert_wrong(r, "case 1 of 12", "map 1 has last column", "transposed")
+    r = ch06.check_grid_fractal_project(lambda c, s, cells: [shift(i * s / 3, j * s / 3) @ third(c) for i, j in cells])
+    _assert_wrong(r, "case 1 of 12", "translate first and then scale")
+    r = ch06.check_grid_fractal_project(lambda c, s, cells: [third((0, 0)) @ shift(i * s / 3, j * s / 3)
+                                                             for i, j in cells])
+    _assert_wrong(r, "case 2 of 12 (corner (2, 1)", "scale about the square's corner")
+
+
+def test_project_reports_counts_shapes_contractions_and_distances():
+    _assert_wrong(ch06.check_grid_fractal_project(lambda c, s, cells: right(c, s, cells)[1:]),
+                  "case 1 of 12", "it has 4 maps; 5 cells are kept")
+    _assert_wrong(ch06.check_grid_fractal_project(lambda c, s, cells: [M[:2, :2] for M in right(c, s, cells)]),
+                  "3x3 matrices", "2x2 linear parts")
+    _assert_wrong(ch06.check_grid_fractal_project(lambda c, s, cells: [np.diag([3.0, 3.0, 1.0])] * len(cells)),
+                  "map 0 stretches distances by up to 3")
+
+    def half(corner, side, cells):
+        x0, y0 = corner
+        h = np.array([[0.5, 0, 0], [0, 0.5, 0], [x0 / 2, y0 / 2, 1]])
+        return [h @ shift(i * side / 3, j * side / 3) for i, j in cells]
+
+    _assert_wrong(ch06.check_grid_fractal_project(half), "case 1 of 12", "Hausdorff distance", "your point")
+
+
+def test_project_reports_a_crash_with_the_learners_line():
+    def crashing(corner, side, cells):
+        maps = []
+        for i, j in cells:
+            maps.append(third(corner) @ shift(i * side[0] / 3, j))
+        return maps
+
+    r = ch06.check_grid_fractal_project(crashing)
+    _assert_wrong(r, "case 1 of 12", "raised TypeError", "maps.append(third(corner) @ shift(i * side[0] / 3, j))")
+
+
+def test_project_unanswered():
+    def grid_fractal_ifs(corner, side, cells):
+        """The starter."""
+        ...
+
+    assert not ch06.check_grid_fractal_project(grid_fractal_ifs).answered
+    assert not ch06.check_grid_fractal_project(None).answered
+
+
+def test_project_cases_are_fixed_and_cover_the_degenerate_patterns():
+    cases = ch06.grid_fractal_cases()
+    assert [c.label for c in cases] == [c.label for c in ch06.grid_fractal_cases()]
+    kinds = {c.kind for c in cases}
+    assert {"degenerate: one cell (the attractor is a point)", "degenerate: all nine cells", "a tiny square",
+            "an asymmetric pattern"} <= kinds
+    assert any(sorted(c.args[2]) != sorted((j, i) for i, j in c.args[2]) for c in cases[:3])

@@ -164,3 +164,27 @@ def test_bad_input_is_rejected_naming_the_rule():
         ifs.iterate_map(np.stack([np.eye(3)] * 2), [[0, 0]], 1)
     with pytest.raises(TypeError, match="rng must be"):
         ifs.chaos_game(ifs.sierpinski(), 10, rng="seed")
+
+
+def test_grid_fractal_maps_send_the_square_onto_its_cells():
+    # square with corner (1, -2) and side 3: cell (i, j) is [1 + i, 2 + i] x [-2 + j, -1 + j]
+    cells = [(0, 0), (2, 1), (1, 2)]
+    s = ifs.grid_fractal(cells, corner=(1, -2), side=3)
+    square = np.array([[1.0, -2.0], [4.0, -2.0], [4.0, 1.0], [1.0, 1.0]])
+    for M, (i, j) in zip(s.maps, cells):
+        cell = np.array([[1 + i, -2 + j], [2 + i, -2 + j], [2 + i, -1 + j], [1 + i, -1 + j]], dtype=float)
+        assert np.allclose(affine.apply(square, M), cell)
+    assert np.allclose(s.contraction_factors(), 1 / 3)
+    carpet = ifs.grid_fractal([(i, j) for i in range(3) for j in range(3) if (i, j) != (1, 1)])
+    assert np.allclose(carpet.maps, ifs.sierpinski_carpet().maps)
+
+
+def test_grid_fractal_rejects_bad_cells_and_sides():
+    with pytest.raises(ValueError, match="cells must hold whole numbers"):
+        ifs.grid_fractal([(0, 3)])
+    with pytest.raises(ValueError, match="cells must hold whole numbers"):
+        ifs.grid_fractal([(0.5, 1)])
+    with pytest.raises(ValueError, match="cells must be a non-empty"):
+        ifs.grid_fractal([])
+    with pytest.raises(ValueError, match="side must be a positive"):
+        ifs.grid_fractal([(0, 0)], side=0)

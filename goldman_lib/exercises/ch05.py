@@ -1,35 +1,80 @@
-"""Exercise checkers for chapter 5, the CODO language (Goldman §5.1-5.2).
+"""Exercise checkers for chapter 5, turtle shortcomings and the CODO language (Goldman §5.1-5.2).
 
-Answers are CODO programs or expressions (strings), numbers, or a table of types.  A program that
-does not run is answered with the interpreter's own message (line, column, token).  ``None`` or
+Answers are CODO programs or expressions (strings, parsed and run by :mod:`goldman_lib.codo`, never
+by Python's ``eval``), numbers, or a table of types.  A program that does not run is answered with
+the interpreter's own message (line, column, token).  Drawings are compared segment by segment
+within a tolerance, so decimals to about four places (``0.86603``) are as good as ``sqrt(3)/2``.
+Messages name the slip and how far off an answer is, never the expected numbers.  ``None`` or
 ``...`` means "not answered yet".
 
->>> exercise_one_third("P + (Q - P)/3")
-Correct: P + (Q - P)/3 is the point one third of the way from P to Q, for every P and Q.
->>> exercise_one_third("P + Q/3")
-Not yet: P + Q/3 does not run: line 1, column 3, at '+': P + Q/3 is neither a point nor a vector: its weights add up to 1.33333. Adding points or scaling a point is legal only in an affine combination whose weights sum to 1 (a point, e.g. (P + Q)/2 or 0.25*P + 0.75*Q) or 0 (a vector, e.g. P - Q).
+>>> check_parallelogram_vertex("A + C - B")
+Correct: A + C - B is the fourth vertex D of the parallelogram ABCD, for every A, B, C.
+>>> print(check_parallelogram_vertex("A + C").message)
+A + C does not run: line 1, column 3, at '+': A + C is neither a point nor a vector: its weights add up to 2.
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from goldman_lib import codo
-from goldman_lib.exercises import Result, correct, fmt, is_unanswered, read_number, unanswered, wrong
+from goldman_lib.exercises import (Result, correct, fmt, is_unanswered, off_by, read_number, read_points,
+                                   unanswered, wrong)
 
-__all__ = ["PROBLEMS", "TYPE_EXPRESSIONS", "exercise_hexagon_program", "exercise_one_third",
-           "exercise_expression_types", "exercise_image_program", "exercise_sheared_turn", "segments_of"]
+__all__ = ["PROBLEMS", "SLIPS", "HEXAGON_SIDES", "PARALLELOGRAM_TRIPLES", "TYPE_EXPRESSIONS", "IMAGE_SRC",
+           "IMAGE_DST", "UNIT_SQUARE", "TURTLE_DOTS", "SEGMENT_TOL",
+           "check_hexagon_program", "check_parallelogram_vertex", "check_expression_types",
+           "check_image_program", "check_sheared_turn", "check_turtle_through_dots", "segments_of"]
+
+#: Tolerance on the dots of a drawing (hand-typed decimals such as 0.86603 pass).
+SEGMENT_TOL = 1e-4
+#: Exercise 1: the regular hexagon with centre (0, 0) and a vertex at (1, 0).
+HEXAGON_SIDES = 6
+#: Exercise 2: triples (A, B, C) the learner's expression is evaluated on.
+PARALLELOGRAM_TRIPLES = (((1.0, 2.0), (4.0, 1.0), (6.0, 5.0)), ((-2.0, 0.5), (3.0, -3.0), (0.0, 4.0)))
+#: Exercise 3: the expressions to classify (P, Q, R points; v a vector).
+TYPE_EXPRESSIONS = ("Q - 2*P", "P + v", "(P + Q + R)/3", "P - 2*Q + R", "2*P - Q", "3*v - P", "(P - Q)/2 + R",
+                    "0.5*P + 0.5*v")
+#: Exercise 4: the map sending IMAGE_SRC to IMAGE_DST, applied to UNIT_SQUARE.
+IMAGE_SRC = ((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))
+IMAGE_DST = ((1.0, 0.0), (3.0, 1.0), (2.0, 2.0))
+UNIT_SQUARE = ((0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0))
+#: Exercise 6: the dots a turtle at the first one, heading (1, 0), must connect.
+TURTLE_DOTS = ((1.0, 1.0), (-3.0, 4.0), (-3.0, 0.0))
+
+
+def _pts(points) -> str:
+    return ", ".join(fmt(p) for p in points)
+
 
 PROBLEMS = {
-    "exercise_hexagon_program": ("a CODO program drawing the regular hexagon with centre (0, 0) and a vertex at (1, 0) "
-                                 "(Goldman §5.2.2)"),
-    "exercise_one_third": "a CODO expression for the point one third of the way from P to Q (Goldman §5.2.1)",
-    "exercise_expression_types": "for each expression, 'point', 'vector' or 'illegal' (Goldman §5.2.1)",
-    "exercise_image_program": "a CODO program drawing the image of the unit square under the map sending "
-                              "(0, 0), (1, 0), (0, 1) to (1, 0), (3, 1), (2, 2) (Goldman §5.2, §4.7.3)",
-    "exercise_sheared_turn": "the turtle's first TURN angle for the sheared square (Goldman §5.1)",
+    "check_hexagon_program": (
+        f"Write a CODO program that draws the regular hexagon with centre (0, 0) and a vertex at (1, 0): its "
+        f"{HEXAGON_SIDES} sides and nothing else (Goldman §5.2.2). Dots are compared to 1e-4, so sqrt(3)/2 or "
+        f"decimals to four places are both fine."),
+    "check_parallelogram_vertex": (
+        "A, B, C are three consecutive vertices of the parallelogram ABCD. Write a CODO expression in A, B and C "
+        "for the fourth vertex D (Goldman §5.2.1: affine combinations)."),
+    "check_expression_types": (
+        "P, Q, R are points and v is a vector. For each expression say whether it is a 'point', a 'vector' or "
+        "'illegal': " + ", ".join(TYPE_EXPRESSIONS) + ". Answer with a dict {expression: word} (Goldman §5.2.1)."),
+    "check_image_program": (
+        f"Write a CODO program that draws the image of the unit square {_pts(UNIT_SQUARE)} under the affine map "
+        f"sending {_pts(IMAGE_SRC)} to {_pts(IMAGE_DST)} (Goldman §5.2, §4.7.3)."),
+    "check_sheared_turn": (
+        "The turtle draws the unit square with REPEAT 4 [FORWARD 1 TURN 90]. Its image under the shear "
+        "(x, y) -> (x + y, y) is the parallelogram (0, 0), (1, 0), (2, 1), (1, 1). By how many degrees must a turtle "
+        "that has just drawn the side from (0, 0) to (1, 0) TURN at (1, 0) to draw the next side (Goldman §5.1)?"),
+    "check_turtle_through_dots": (
+        f"A turtle stands at {fmt(TURTLE_DOTS[0])} heading along (1, 0). Which TURN and FORWARD commands make it "
+        f"draw the polyline {_pts(TURTLE_DOTS)}? Answer [turn 1, forward 1, turn 2, forward 2], angles in degrees "
+        f"counterclockwise, to 0.01 degree (Goldman §5.1)."),
 }
 
+
+# -- drawings, compared segment by segment within a tolerance ------------------------------------
 
 def segments_of(polylines, digits: int = 6) -> set:
     """The segments of a drawing as a set of unordered pairs of rounded points (orientation and
@@ -48,9 +93,38 @@ def segments_of(polylines, digits: int = 6) -> set:
     return out
 
 
-def _run(answer, what) -> tuple[list | None, Result | None]:
+def _segment_list(polylines) -> list[np.ndarray]:
+    """The drawing's segments as (2, 2) arrays, zero-length ones and repeats (within the tolerance) dropped."""
+    out: list[np.ndarray] = []
+    for p in polylines:
+        q = np.asarray(p, dtype=float)
+        for a, b in zip(q[:-1], q[1:]):
+            s = np.array([a, b])
+            if np.abs(a - b).max() <= SEGMENT_TOL:
+                continue
+            if not any(_gap(s, t) <= SEGMENT_TOL for t in out):
+                out.append(s)
+    return out
+
+
+def _show(p) -> str:
+    """A drawn point for a message, round-off (1e-16) cleared."""
+    return fmt(np.round(np.asarray(p, dtype=float), 9) + 0.0)
+
+
+def _gap(s: np.ndarray, t: np.ndarray) -> float:
+    """How far apart two segments' end points are, either way round."""
+    return float(min(np.abs(s - t).max(), np.abs(s - t[::-1]).max()))
+
+
+def _polygon(vertices) -> list[np.ndarray]:
+    V = np.asarray(vertices, dtype=float)
+    return [np.array([V[i], V[(i + 1) % len(V)]]) for i in range(len(V))]
+
+
+def _run(answer, ask) -> tuple[list | None, Result | None]:
     if is_unanswered(answer):
-        return None, unanswered(what)
+        return None, unanswered(ask)
     if not isinstance(answer, str):
         return None, wrong(f"the answer should be a CODO program in quotes; you gave {type(answer).__name__} "
                            f"{answer!r}.")
@@ -60,96 +134,107 @@ def _run(answer, what) -> tuple[list | None, Result | None]:
         return None, wrong(f"the program does not run: {exc}.")
 
 
-def _polygon_segments(vertices) -> set:
-    V = np.asarray(vertices, dtype=float)
-    return segments_of([np.vstack([V, V[:1]])])
-
-
-def _compare(drawn: set, expected: set, name: str) -> Result:
-    if drawn == expected:
-        return correct(f"your drawing is {name}: its {len(expected)} sides and nothing else.")
-    missing, extra = expected - drawn, drawn - expected
+def _compare(polylines, expected: list[np.ndarray], name: str, hint: str) -> Result:
+    drawn = _segment_list(polylines)
+    n = len(expected)
     if not drawn:
         return wrong("your program draws nothing: use CONNECT (or DRAW a figure).")
-    if missing and not extra:
-        a, b = sorted(missing)[0]
-        return wrong(f"{len(missing)} of the {len(expected)} sides {'is' if len(missing) == 1 else 'are'} missing, "
-                     f"e.g. the side from {fmt(a)} to "
-                     f"{fmt(b)}.")
-    if len(drawn) != len(expected):
-        ok = len(drawn & expected)
-        return wrong(f"you drew {len(drawn)} different segment{'s' * (len(drawn) != 1)}, {ok} of them sides of "
-                     f"{name}; {name} has "
-                     f"{len(expected)} sides.")
-    a, b = sorted(extra)[0]
-    if not drawn & expected:
-        return wrong(f"you drew {len(drawn)} segments but none of them is a side of {name} (e.g. {fmt(a)} to "
-                     f"{fmt(b)}): check the position and size of your figure.")
-    return wrong(f"you drew a segment from {fmt(a)} to {fmt(b)}, which is not a side of {name}"
-                 + (f"; {len(missing)} sides are missing." if missing else "."))
+    missing = [e for e in expected if not any(_gap(e, d) <= SEGMENT_TOL for d in drawn)]
+    extra = [d for d in drawn if not any(_gap(d, e) <= SEGMENT_TOL for e in expected)]
+    if not missing and not extra:
+        return correct(f"your drawing is {name}: its {n} sides and nothing else.")
+    if extra:
+        d = extra[0]
+        near = min(_gap(d, e) for e in expected)
+        if near <= 0.05:
+            return wrong(f"your segment from {_show(d[0])} to {_show(d[1])} is nearly a side of {name} but "
+                         f"{off_by(0, near)}: type more decimals (four places) or exact values such as sqrt(3)/2.")
+        if not any(_gap(d, e) <= SEGMENT_TOL for d in drawn for e in expected):
+            return wrong(f"none of your {len(drawn)} segments is a side of {name} (e.g. {_show(d[0])} to {_show(d[1])}): "
+                         f"{hint}.")
+        return wrong(f"your segment from {_show(d[0])} to {_show(d[1])} is not a side of {name}"
+                     + (f", and {len(missing)} of its {n} sides are missing" if missing else "") + f": {hint}.")
+    return wrong(f"{len(missing)} of the {n} sides of {name} {'is' if len(missing) == 1 else 'are'} missing: "
+                 f"{hint}.")
 
 
-def exercise_hexagon_program(answer) -> Result:
-    """Exercise 5.1: a CODO program that draws the regular hexagon with centre ``(0, 0)`` and a
-    vertex at ``(1, 0)`` (Goldman §5.2.2).  answer: program text.  Checks the set of segments drawn.
+def _hexagon() -> list[np.ndarray]:
+    a = np.radians(360.0 / HEXAGON_SIDES * np.arange(HEXAGON_SIDES))
+    return _polygon(np.column_stack([np.cos(a), np.sin(a)]))
 
-    >>> exercise_hexagon_program(codo.SAMPLES["regular pentagon"].replace("72", "60").replace("5", "6"))
+
+def check_hexagon_program(answer) -> Result:
+    """Exercise 1: a CODO program that draws the regular hexagon with centre ``(0, 0)`` and a
+    vertex at ``(1, 0)`` (Goldman §5.2.2).  answer: program text.  Compares the segments drawn,
+    each end within :data:`SEGMENT_TOL`.
+
+    >>> check_hexagon_program("CONNECT point(1, 0), point(0.5, 0.86603), point(-0.5, 0.86603), point(-1, 0), "
+    ...                       "point(-0.5, -0.86603), point(0.5, -0.86603), point(1, 0)")
     Correct: your drawing is the regular hexagon: its 6 sides and nothing else.
-    >>> exercise_hexagon_program(codo.SAMPLES["regular pentagon"])
-    Not yet: you drew 5 different segments, 0 of them sides of the regular hexagon; the regular hexagon has 6 sides.
+    >>> print(check_hexagon_program(codo.SAMPLES["regular pentagon"]).message)
+    none of your 5 segments is a side of the regular hexagon (e.g. (1, 0) to (0.309, 0.9511)): the hexagon turns by 360/6 degrees at the centre from one vertex to the next.
     """
     lines, problem = _run(answer, "a CODO program (in quotes) for the hexagon")
     if problem is not None:
         return problem
-    a = np.radians(60.0 * np.arange(6))
-    return _compare(segments_of(lines), _polygon_segments(np.column_stack([np.cos(a), np.sin(a)])),
-                    "the regular hexagon")
+    return _compare(lines, _hexagon(), "the regular hexagon",
+                    "the hexagon turns by 360/6 degrees at the centre from one vertex to the next")
 
 
-_PAIRS = [((1.0, 2.0), (7.0, 5.0)), ((-3.0, 0.5), (2.0, -4.0))]
-
-
-def exercise_one_third(answer) -> Result:
-    """Exercise 5.2: a CODO expression in ``P`` and ``Q`` for the point one third of the way from
-    ``P`` to ``Q`` (Goldman §5.2.1: affine combinations).  answer: expression text.  Evaluated for
-    two different pairs ``P, Q``.
-
-    >>> exercise_one_third("(P + Q)/3")
-    Not yet: (P + Q)/3 does not run: line 1, column 8, at '/': (P + Q)/3 is neither a point nor a vector: its weights add up to 0.666667. Adding points or scaling a point is legal only in an affine combination whose weights sum to 1 (a point, e.g. (P + Q)/2 or 0.25*P + 0.75*Q) or 0 (a vector, e.g. P - Q).
-    """
+def _one_expression(answer, names, setup_values, ask):
+    """Evaluate a learner's CODO expression with the named points set up; (value, None) or (None, Result)."""
     if is_unanswered(answer):
-        return unanswered("a CODO expression (in quotes) such as \"P + ...\"")
+        return None, unanswered(ask)
     if not isinstance(answer, str):
-        return wrong(f"the answer should be a CODO expression in quotes; you gave {answer!r}.")
-    expr = " ".join(answer.split())
-    for k, (P, Q) in enumerate(_PAIRS):
-        setup = f"P = point({P[0]!r}, {P[1]!r}); Q = point({Q[0]!r}, {Q[1]!r})\n"
-        try:
-            X = codo.execute(setup + "X = " + answer).variables["X"]
-        except codo.CodoError as exc:
-            # report the message for the learner's own line, numbered as they wrote it
-            msg = str(exc).replace(f"line {exc.line},", "line 1,", 1).replace(
-                f"column {exc.column},", f"column {exc.column - 4 if exc.line == 2 else exc.column},", 1)
-            return wrong(f"{expr} does not run: {msg}.")
+        return None, wrong(f"the answer should be a CODO expression in quotes; you gave {answer!r}.")
+    if "\n" in answer.strip() or ";" in answer:
+        return None, wrong("write one expression (no statements, no ';'), e.g. \"A + ...\".")
+    setup = "; ".join(f"{n} = point({x!r}, {y!r})" for n, (x, y) in zip(names, setup_values)) + "\n"
+    try:
+        return codo.execute(setup + "X = " + answer.strip()).variables["X"], None
+    except codo.CodoError as exc:
+        # the message for the learner's own line, numbered as they wrote it
+        msg = str(exc).replace(f"line {exc.line},", "line 1,", 1).replace(
+            f"column {exc.column},", f"column {exc.column - 4 if exc.line == 2 else exc.column},", 1)
+        return None, wrong(f"{' '.join(answer.split())} does not run: {msg.split('. Adding')[0]}.")
+
+
+def check_parallelogram_vertex(answer) -> Result:
+    """Exercise 2: a CODO expression in ``A, B, C`` for the fourth vertex ``D`` of the
+    parallelogram ``ABCD`` (Goldman §5.2.1).  answer: expression text, evaluated by the CODO
+    interpreter for the triples :data:`PARALLELOGRAM_TRIPLES`.
+
+    >>> print(check_parallelogram_vertex("B + C - A").message)
+    B + C - A is the vertex opposite A, which makes ABDC a parallelogram with B and C next to each other; in ABCD the vertex D is next to A and to C, opposite B.
+    """
+    expr = " ".join(answer.split()) if isinstance(answer, str) else ""
+    for k, (A, B, C) in enumerate(PARALLELOGRAM_TRIPLES):
+        X, problem = _one_expression(answer, "ABC", (A, B, C), "a CODO expression (in quotes) in A, B and C")
+        if problem is not None:
+            return problem
+        if isinstance(X, codo.Vector):
+            return wrong(f"{expr} is a vector (its weights add up to 0), not a point: a vertex is a point, e.g. a "
+                         f"point plus a vector.")
         if not isinstance(X, codo.Point):
-            return wrong(f"{expr} is {'a vector' if isinstance(X, codo.Vector) else type(X).__name__}, not a point: "
-                         f"add it to P (a point plus a vector is a point).")
-        P_, Q_ = np.array(P), np.array(Q)
-        want = P_ + (Q_ - P_) / 3
-        got = np.array(X)
+            return wrong(f"{expr} is a {type(X).__name__}, not a point.")
+        A_, B_, C_ = (np.array(p) for p in (A, B, C))
+        got, want = np.array(X), A_ + C_ - B_
         if np.allclose(got, want, atol=1e-9):
             continue
-        if np.allclose(got, P_ + 2 * (Q_ - P_) / 3, atol=1e-9):
-            return wrong(f"{expr} is two thirds of the way from P to Q (one third from Q); start at P.")
+        if np.allclose(got, B_ + C_ - A_, atol=1e-9):
+            return wrong(f"{expr} is the vertex opposite A, which makes ABDC a parallelogram with B and C next to "
+                         f"each other; in ABCD the vertex D is next to A and to C, opposite B.")
+        if np.allclose(got, A_ + B_ - C_, atol=1e-9):
+            return wrong(f"{expr} is the vertex opposite C; in ABCD the vertex D is next to A and to C, opposite B.")
+        if np.allclose(got, (A_ + C_) / 2, atol=1e-9):
+            return wrong(f"{expr} is the centre of the parallelogram (where the diagonals cross), not a vertex: D is "
+                         f"as far beyond the centre as B is before it.")
         if k == 1:
-            return wrong(f"{expr} gives the right point for P = {fmt(_PAIRS[0][0])}, Q = {fmt(_PAIRS[0][1])} but not "
-                         f"for P = {fmt(P)}, Q = {fmt(Q)}: write it in terms of P and Q.")
-        return wrong(f"for P = {fmt(P)} and Q = {fmt(Q)}, {expr} is {fmt(got)}; one third of the way is {fmt(want)}.")
-    return correct(f"{expr} is the point one third of the way from P to Q, for every P and Q.")
-
-
-#: The expressions of exercise 5.3 (P, Q, R points; v a vector).
-TYPE_EXPRESSIONS = ("P - Q", "P + v", "P + Q", "(P + Q + R)/3", "P - 2*Q + R", "2*P - Q", "3*v - P")
+            return wrong(f"{expr} gives D for the first triple A, B, C = {_pts(PARALLELOGRAM_TRIPLES[0])} but not "
+                         f"for A, B, C = {_pts((A, B, C))}: write it in terms of A, B and C, not numbers.")
+        return wrong(f"for A, B, C = {_pts((A, B, C))}, {expr} is {off_by(0, np.linalg.norm(got - want))} from D. "
+                     f"Hint: opposite sides of a parallelogram are the same vector, D - A = C - B.")
+    return correct(f"{expr} is the fourth vertex D of the parallelogram ABCD, for every A, B, C.")
 
 
 def _type_of(expression: str) -> tuple[str, str]:
@@ -162,20 +247,18 @@ def _type_of(expression: str) -> tuple[str, str]:
     return ("point" if isinstance(X, codo.Point) else "vector"), ""
 
 
-def exercise_expression_types(answer) -> Result:
-    """Exercise 5.3: for each expression of :data:`TYPE_EXPRESSIONS`, is it a ``"point"``, a
+def check_expression_types(answer) -> Result:
+    """Exercise 3: for each expression of :data:`TYPE_EXPRESSIONS`, is it a ``"point"``, a
     ``"vector"``, or ``"illegal"``?  (Goldman §5.2.1.)  answer: a dict expression -> word.
-
     The rule: the weights of the points must sum to 1 (a point) or 0 (a vector).
 
-    >>> exercise_expression_types({"P - Q": "vector", "P + v": "point", "P + Q": "illegal", "(P + Q + R)/3": "point",
-    ...     "P - 2*Q + R": "vector", "2*P - Q": "point", "3*v - P": "illegal"})
-    Correct: all 7 types are right: the weights of the points sum to 1 (point), 0 (vector) or something else (illegal).
+    >>> print(check_expression_types({e: "point" for e in TYPE_EXPRESSIONS}).message)
+    Q - 2*P is illegal: Q - 2*P is neither a point nor a vector: its weights add up to -1.
     """
     if is_unanswered(answer):
         return unanswered("a dict giving 'point', 'vector' or 'illegal' for each expression")
     if not isinstance(answer, dict):
-        return wrong(f"the answer should be a dict like {{\"P - Q\": \"vector\", ...}}; you gave {type(answer).__name__}.")
+        return wrong(f"the answer should be a dict like {{\"P + v\": \"point\", ...}}; you gave {type(answer).__name__}.")
     missing = [e for e in TYPE_EXPRESSIONS if e not in answer]
     if missing:
         return wrong(f"give a type for every expression; {missing[0]!r} is missing.")
@@ -187,61 +270,180 @@ def exercise_expression_types(answer) -> Result:
         if given != kind:
             if kind == "illegal":
                 return wrong(f"{e} is illegal: {why.split('. Adding')[0]}.")
+            if "v" in e and given == "illegal":
+                return wrong(f"{e} is a {kind}: a vector may be added to anything, and does not count in the "
+                             f"weights; only the points' weights must sum to 1 or 0.")
             weights = "1" if kind == "point" else "0"
             return wrong(f"{e} is a {kind}: the weights of its points add up to {weights}.")
     return correct(f"all {len(TYPE_EXPRESSIONS)} types are right: the weights of the points sum to 1 (point), "
                    f"0 (vector) or something else (illegal).")
 
 
-def exercise_image_program(answer) -> Result:
-    """Exercise 5.4: a CODO program that draws the image of the unit square
-    ``(0, 0), (1, 0), (1, 1), (0, 1)`` under the affine map sending ``(0, 0), (1, 0), (0, 1)`` to
-    ``(1, 0), (3, 1), (2, 2)`` (Goldman §5.2, §4.7.3).  answer: program text.
+def _image_square() -> np.ndarray:
+    from goldman_lib import affine
+    return affine.apply(np.array(UNIT_SQUARE), affine.affine_from_points(IMAGE_SRC, IMAGE_DST))
 
-    >>> exercise_image_program('''M = affine(point(0,0), point(1,0), point(0,1), point(1,0), point(3,1), point(2,2))
+
+def check_image_program(answer) -> Result:
+    """Exercise 4: a CODO program that draws the image of :data:`UNIT_SQUARE` under the affine map
+    sending :data:`IMAGE_SRC` to :data:`IMAGE_DST` (Goldman §5.2, §4.7.3).  answer: program text.
+
+    >>> check_image_program('''M = affine(point(0,0), point(1,0), point(0,1), point(1,0), point(3,1), point(2,2))
     ... DRAW M(polygon(point(0,0), point(1,0), point(1,1), point(0,1)))''')
     Correct: your drawing is the image of the square: its 4 sides and nothing else.
     """
     lines, problem = _run(answer, "a CODO program (in quotes) that draws the image of the square")
     if problem is not None:
         return problem
-    drawn = segments_of(lines)
-    expected = _polygon_segments([[1, 0], [3, 1], [4, 3], [2, 2]])
-    if drawn == _polygon_segments([[0, 0], [1, 0], [1, 1], [0, 1]]):
+    drawn = _segment_list(lines)
+
+    def same(vertices):
+        exp = _polygon(vertices)
+        return len(drawn) == len(exp) and all(any(_gap(e, d) <= SEGMENT_TOL for d in drawn) for e in exp)
+
+    dst = np.array(IMAGE_DST)
+    if same(UNIT_SQUARE):
         return wrong("that is the square itself: apply the map to it, as M(F) for a figure F.")
-    if drawn == _polygon_segments([[1, 0], [3, 1], [3, 3], [2, 2]]) or drawn == _polygon_segments(
-            [[1, 0], [3, 1], [2, 2], [1, 0]]):
-        return wrong("the image of (1, 1) is not a corner you can read off: it is Q1 + (Q2 - Q1) + (Q3 - Q1) = (4, 3), "
-                     "since an affine map keeps the square a parallelogram.")
-    return _compare(drawn, expected, "the image of the square")
+    if same(dst):
+        return wrong("that is the image of the triangle (0, 0), (1, 0), (0, 1); the square has a fourth corner, "
+                     "(1, 1), and its image is needed too.")
+    guesses = [np.array([dst[0], dst[1], np.array([dst[1][0], dst[2][1]]), dst[2]])]
+    if any(same(g) for g in guesses):
+        return wrong("the image of (1, 1) is not a corner you can read off: an affine map keeps the square a "
+                     "parallelogram, so it is Q1 + (Q2 - Q1) + (Q3 - Q1).")
+    return _compare(lines, _polygon(_image_square()), "the image of the square",
+                    "the images of (0, 0), (1, 0), (0, 1) are given; (1, 1) = (1, 0) + (0, 1) - (0, 0) goes to the "
+                    "same combination of the images")
 
 
-def exercise_sheared_turn(answer) -> Result:
-    """Exercise 5.5: the turtle draws the unit square with ``REPEAT 4 [FORWARD 1 TURN 90]``.  Its
-    image under the shear ``(x, y) -> (x + y, y)`` is the parallelogram ``(0, 0), (1, 0), (2, 1),
-    (1, 1)``.  By how many degrees must a turtle TURN at ``(1, 0)`` to draw it?  (Goldman §5.1.)
+def check_sheared_turn(answer) -> Result:
+    """Exercise 5: the turtle's TURN at ``(1, 0)`` for the sheared square (Goldman §5.1: the
+    turtle cannot draw the affine image of its drawing by changing only its initial state).
 
-    >>> exercise_sheared_turn(45)
-    Correct: the turtle turns by 45 degrees at (1, 0): the side (1, 0) -> (2, 1) points at 45 degrees. The program itself must change, not only the turtle's initial state: affine maps do not preserve angles.
-    >>> exercise_sheared_turn(90)
-    Not yet: 90 degrees is the square's turn; the shear changes the angles, which is exactly why the turtle program has to change: the side from (1, 0) to (2, 1) points at 45 degrees.
+    >>> check_sheared_turn(45)
+    Correct: the turtle turns by 45 degrees at (1, 0). The program itself must change, not only the turtle's initial state: affine maps do not preserve angles.
+    >>> print(check_sheared_turn(90).message)
+    90 degrees is the square's turn; the shear changes the angles, which is exactly why the turtle program has to change: find the direction of the side from (1, 0) to (2, 1).
     """
     what = "the turning angle at (1, 0)"
     a, problem = read_number(answer, what, "number of degrees")
     if problem is not None:
         return problem
     r = a % 360.0
-    if min(abs(r - 45.0), 360.0 - abs(r - 45.0)) <= 0.01:
-        return correct("the turtle turns by 45 degrees at (1, 0): the side (1, 0) -> (2, 1) points at 45 degrees. "
-                       "The program itself must change, not only the turtle's initial state: affine maps do not "
-                       "preserve angles.")
-    if abs(r - 90.0) <= 0.01:
+    right = math.degrees(math.atan2(1.0, 1.0))
+
+    def near(x):
+        return min(abs(r - x), 360.0 - abs(r - x)) <= 0.01
+
+    if near(right):
+        return correct(f"the turtle turns by {fmt(right)} degrees at (1, 0). The program itself must change, not only "
+                       f"the turtle's initial state: affine maps do not preserve angles.")
+    if near(90.0):
         return wrong("90 degrees is the square's turn; the shear changes the angles, which is exactly why the turtle "
-                     "program has to change: the side from (1, 0) to (2, 1) points at 45 degrees.")
-    if abs(r - 135.0) <= 0.01:
-        return wrong("135 degrees is the interior angle of the parallelogram at (1, 0); the turtle turns by the "
-                     "exterior angle, 180 - 135.")
-    if abs(r - 315.0) <= 0.01:
+                     "program has to change: find the direction of the side from (1, 0) to (2, 1).")
+    if near(180.0 - right):
+        return wrong(f"{fmt(a)} degrees is the interior angle of the parallelogram at (1, 0); the turtle turns by the "
+                     f"exterior angle, 180 minus the interior one.")
+    if near(-right):
         return wrong("a negative TURN turns clockwise; the parallelogram is drawn counterclockwise, like the square.")
-    return wrong(f"{what} should be 45 degrees, you gave {fmt(a)}. Hint: the turtle heads along (1, 0); the next "
-                 f"side goes from (1, 0) to (2, 1).")
+    if abs(a - math.radians(right)) <= 1e-3:
+        return wrong(f"{fmt(a)} looks like radians; TURN takes degrees.")
+    return wrong(f"{what} is {off_by(r if r <= 180 else r - 360, right)} degrees. Hint: the turtle arrives heading "
+                 f"along (1, 0); it must turn to the direction of the side from (1, 0) to (2, 1).")
+
+
+def _turtle_answer() -> np.ndarray:
+    P = np.array(TURTLE_DOTS)
+    seg = np.diff(P, axis=0)
+    headings = np.degrees(np.arctan2(seg[:, 1], seg[:, 0]))
+    turns = np.diff(np.concatenate([[0.0], headings]))
+    turns = (turns + 180.0) % 360.0 - 180.0
+    return np.array([turns[0], np.hypot(*seg[0]), turns[1], np.hypot(*seg[1])])
+
+
+def check_turtle_through_dots(answer) -> Result:
+    """Exercise 6: the turtle commands ``[turn 1, forward 1, turn 2, forward 2]`` that draw the
+    polyline :data:`TURTLE_DOTS` from the first dot, heading ``(1, 0)`` (Goldman §5.1: the turtle
+    needs arc tangents and square roots to connect dots).  Turns are compared modulo 360 to 0.01
+    degree, distances to 1e-3.
+
+    >>> print(check_turtle_through_dots([36.87, 5, 126.87, 4]).message)
+    turn 1 is the arc tangent of 3/4 without its quadrant: the segment goes left (x decreases), so its heading is between 90 and 180 degrees; use atan2(dy, dx).
+    """
+    what = "the four numbers [turn 1, forward 1, turn 2, forward 2]"
+    got, problem = read_points(answer, "your commands", ask=what)
+    if problem is not None:
+        return problem
+    if got.shape != (4,):
+        return wrong(f"give four numbers [turn 1, forward 1, turn 2, forward 2]; yours has shape {got.shape}.")
+    right = _turtle_answer()
+    P = np.array(TURTLE_DOTS)
+    seg = np.diff(P, axis=0)
+    headings = np.degrees(np.arctan2(seg[:, 1], seg[:, 0]))
+
+    def angle_ok(a, b):
+        d = (a - b) % 360.0
+        return min(d, 360.0 - d) <= 0.01
+
+    turns_ok = [angle_ok(got[0], right[0]), angle_ok(got[2], right[2])]
+    dist_ok = [abs(got[1] - right[1]) <= 1e-3, abs(got[3] - right[3]) <= 1e-3]
+    if all(turns_ok) and all(dist_ok):
+        return correct("those commands draw the polyline: each TURN is an arc tangent, each FORWARD a square root. "
+                       "In CODO it is one CONNECT of the three dots.")
+    if not all(dist_ok):
+        k = 0 if not dist_ok[0] else 1
+        d = seg[k]
+        if abs(got[2 * k + 1] - (abs(d[0]) + abs(d[1]))) <= 1e-3:
+            return wrong(f"forward {k + 1} adds |dx| + |dy|; the turtle walks straight along the segment, "
+                         f"its length is sqrt(dx^2 + dy^2).")
+        if abs(got[2 * k + 1] - float(d @ d)) <= 1e-3:
+            return wrong(f"forward {k + 1} is the squared length; take the square root.")
+        return wrong(f"forward {k + 1} is {off_by(got[2 * k + 1], right[2 * k + 1])}: it is the length of the "
+                     f"segment from dot {k + 1} to dot {k + 2}.")
+    if not turns_ok[0]:
+        d = seg[0]
+        if angle_ok(got[0], math.degrees(math.atan(abs(d[1] / d[0])))):
+            return wrong("turn 1 is the arc tangent of 3/4 without its quadrant: the segment goes left (x decreases), "
+                         "so its heading is between 90 and 180 degrees; use atan2(dy, dx).")
+        if angle_ok(got[0], math.degrees(math.atan(d[1] / d[0]))):
+            return wrong("turn 1 is atan(dy/dx), which loses the quadrant: the segment goes left and up; use "
+                         "atan2(dy, dx).")
+        if abs(got[0] - math.radians(right[0])) <= 1e-3:
+            return wrong("turn 1 looks like radians; TURN takes degrees.")
+        return wrong(f"turn 1 is {off_by(0, min((got[0] - right[0]) % 360, (right[0] - got[0]) % 360))} degrees: the "
+                     f"turtle heads along (1, 0) and must turn to the direction of the first segment.")
+    if angle_ok(got[2], headings[1]):
+        return wrong("turn 2 is the heading of the second segment; TURN is relative: subtract the heading the turtle "
+                     "already has (the first segment's).")
+    if angle_ok(got[2], -right[2]):
+        return wrong("turn 2 goes the wrong way: a positive TURN is counterclockwise; the polyline bends to the left "
+                     "at the second dot.")
+    return wrong(f"turn 2 is {off_by(0, min((got[2] - right[2]) % 360, (right[2] - got[2]) % 360))} degrees: it is "
+                 f"the change of heading at the second dot, from the first segment's direction to the second's.")
+
+
+#: Wrong answers of the kinds each checker recognises (tests feed them and check the message).
+SLIPS = {
+    "check_hexagon_program": [codo.SAMPLES["regular pentagon"],
+                              "C = point(0, 0); P = point(1, 0); R = rotate(C, 60)\nREPEAT 5 [ CONNECT P, R(P); P = R(P) ]",
+                              "CONNECT point(1, 0), point(0.5, 0.87), point(-0.5, 0.87), point(-1, 0), "
+                              "point(-0.5, -0.87), point(0.5, -0.87), point(1, 0)",
+                              "P = point(0, 0)\nCONNECT P, P + P"],
+    "check_parallelogram_vertex": ["B + C - A", "A + B - C", "(A + C)/2", "C - B", "A + C"],
+    "check_expression_types": [
+        {**dict.fromkeys(TYPE_EXPRESSIONS, "point"), "Q - 2*P": "vector"},
+        {"Q - 2*P": "illegal", "P + v": "illegal", "(P + Q + R)/3": "point", "P - 2*Q + R": "vector",
+         "2*P - Q": "point", "3*v - P": "illegal", "(P - Q)/2 + R": "point", "0.5*P + 0.5*v": "illegal"},
+        {"Q - 2*P": "illegal", "P + v": "point", "(P + Q + R)/3": "point", "P - 2*Q + R": "illegal",
+         "2*P - Q": "point", "3*v - P": "illegal", "(P - Q)/2 + R": "point", "0.5*P + 0.5*v": "illegal"},
+        {"Q - 2*P": "illegal", "P + v": "point", "(P + Q + R)/3": "point", "P - 2*Q + R": "vector",
+         "2*P - Q": "point", "3*v - P": "illegal", "(P - Q)/2 + R": "point", "0.5*P + 0.5*v": "point"},
+    ],
+    "check_image_program": ["CONNECT point(0,0), point(1,0), point(1,1), point(0,1), point(0,0)",
+                            "CONNECT point(1,0), point(3,1), point(2,2), point(1,0)",
+                            "CONNECT point(1,0), point(3,1), point(3,2), point(2,2), point(1,0)",
+                            "M = affine(point(0, 0), point(1, 0), point(2, 0), point(1, 0), point(3, 1), point(2, 2))"],
+    "check_sheared_turn": [90, 135, -45, 0.7854],
+    "check_turtle_through_dots": [[36.87, 5, 126.87, 4], [-36.87, 5, 126.87, 4], [143.13, 7, 126.87, 4],
+                                  [143.13, 5, 270, 4], [143.13, 5, -126.87, 4], [143.13, 25, 126.87, 4]],
+}

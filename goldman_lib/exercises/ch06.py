@@ -1,171 +1,390 @@
-"""Exercise checkers for chapter 6, fractals from iterated function systems (Goldman §6.1-6.4).
+"""Exercise checkers for chapter 6, fractals from iterated function systems (Goldman §6.1-6.4),
+and the checker of its programming project (write the IFS of a grid fractal).
+
+Each checker recognises the usual slips (turning the wrong way, one level too many or too few,
+counting copies instead of points, the maps in reverse order, forgetting the condensation set's
+earlier copies) and names the misconception; it says how far off an answer is, never what the
+answer is.  ``None`` or ``...`` means "not answered yet".
 
 >>> print(PROBLEMS["check_fixed_point"])
-Find the fixed point of the map w(P) = P/2 + (1, 0.5), i.e. the point with w(P) = P (Goldman §6.2).
->>> check_fixed_point([2, 1])
-Correct: the fixed point of w is (2, 1).
+The map w(P) = P L + (5, 0), where L turns by 90 degrees counterclockwise and halves, (x, y) L = (-y/2, x/2), is a contraction. Find its fixed point P = w(P) as [x, y] (Goldman §6.2).
+>>> check_fixed_point([4, 2])
+Correct: the fixed point of w is (4, 2).
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from goldman_lib import affine, ifs
-from goldman_lib.exercises import (Result, check_number, correct, fmt, read_number, read_points, wrong)
+from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
+from goldman_lib.exercises.projects import Case, check_project
 from goldman_lib.fixed_point import hausdorff_distance
 
-__all__ = ["PROBLEMS", "FIXED_POINT_MAP", "COUNT_LEVEL", "TREE_LEVEL", "SQUARE_MAP", "GASKET_CORNERS",
-           "check_fixed_point", "check_gasket_count", "check_tree_branches", "check_square_image", "check_gasket_maps"]
+__all__ = ["PROBLEMS", "SLIPS", "HALF_TURN", "ITERATE_START", "ITERATE_STEPS", "CARPET_LEVEL", "FIXED_POINT_MAP",
+           "CHAOS_CORNERS", "CHAOS_START", "CHAOS_SEQUENCE", "TREE_MAPS", "TREE_LEVEL", "PROJECT_SEED",
+           "check_iterate_map", "check_carpet_points", "check_fixed_point", "check_chaos_game_steps",
+           "check_tree_branches", "check_grid_fractal_project", "grid_fractal_cases"]
 
-#: Exercise 1: w(P) = P/2 + (1, 0.5).
-FIXED_POINT_MAP = affine.scaling(0.5) @ affine.translation([1.0, 0.5])
-#: Exercise 2: points of the Sierpinski gasket's deterministic algorithm at this level, from one point.
-COUNT_LEVEL = 5
-#: Exercise 3: trunk copies of the condensation tree at this level.
-TREE_LEVEL = 4
-#: Exercise 4: the map whose image of the unit square is asked for.
-SQUARE_MAP = affine.from_parameters(angle=90, scale=(0.5, 0.5), translate=(1, 0))
-#: Exercise 5: corners of the right-angled Sierpinski gasket to build an IFS for.
-GASKET_CORNERS = np.array([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])
+#: Exercises 1 and 3: the linear map "turn by 90 degrees counterclockwise and halve", (x, y) -> (-y/2, x/2).
+HALF_TURN = affine.rotation(90) @ affine.scaling(0.5)
+#: Exercise 1: iterate HALF_TURN this many times from this point.
+ITERATE_START, ITERATE_STEPS = (8.0, 0.0), 3
+#: Exercise 2: the Sierpinski carpet's deterministic algorithm from the unit square's closed polyline.
+CARPET_LEVEL = 3
+#: Exercise 3: w(P) = P L + (5, 0) with L = HALF_TURN.
+FIXED_POINT_MAP = HALF_TURN @ affine.translation([5.0, 0.0])
+#: Exercise 4: the chaos game on the gasket with these corners; map i (1-based) halves the way to corner i.
+CHAOS_CORNERS = ((0.0, 0.0), (4.0, 0.0), (0.0, 4.0))
+CHAOS_START, CHAOS_SEQUENCE = (0.0, 0.0), (2, 3, 3, 1)
+#: Exercise 5: a tree with a trunk as condensation set and this many maps; trunk copies in A_TREE_LEVEL.
+TREE_MAPS, TREE_LEVEL = 3, 4
 
 PROBLEMS = {
-    "check_fixed_point": "Find the fixed point of the map w(P) = P/2 + (1, 0.5), i.e. the point with w(P) = P (Goldman §6.2).",
-    "check_gasket_count": (f"The deterministic algorithm starts from one point and applies the three maps of the "
-                           f"Sierpinski gasket {COUNT_LEVEL} times. How many points does it produce (Goldman §6.1)?"),
-    "check_tree_branches": (f"The fractal tree has a trunk as condensation set and two maps; A_0 = trunk and "
-                            f"A_(n+1) = trunk ∪ w_1(A_n) ∪ w_2(A_n). How many trunk copies (branches) does "
-                            f"A_{TREE_LEVEL} hold (Goldman §6.4)?"),
-    "check_square_image": ("The map M = from_parameters(angle=90, scale=(0.5, 0.5), translate=(1, 0)) scales by 1/2, "
-                           "rotates by 90 degrees and then translates by (1, 0). Give the images of the unit square's "
-                           "corners (0,0), (1,0), (1,1), (0,1), in that order (Goldman §6.1)."),
-    "check_gasket_maps": ("Give an IFS (a list of 3x3 matrices, row-vector convention, translation in the last row) "
-                          "whose attractor is the Sierpinski gasket with corners (0,0), (2,0), (0,2) (Goldman §6.3)."),
+    "check_iterate_map": (
+        f"The map w turns every point by 90 degrees counterclockwise about the origin and halves it: "
+        f"w(x, y) = (-y/2, x/2). Where is w^{ITERATE_STEPS}(P) = w(w(w(P))) for P = {fmt(ITERATE_START)}? "
+        f"Answer [x, y] (Goldman §6.1)."),
+    "check_carpet_points": (
+        f"The deterministic algorithm draws the Sierpinski carpet (8 maps) starting from the unit square as a closed "
+        f"polyline of 5 points, (0, 0), (1, 0), (1, 1), (0, 1), (0, 0). How many points does it return at level "
+        f"{CARPET_LEVEL} (no condensation set) (Goldman §6.1, §6.3)?"),
+    "check_fixed_point": (
+        "The map w(P) = P L + (5, 0), where L turns by 90 degrees counterclockwise and halves, (x, y) L = (-y/2, x/2), "
+        "is a contraction. Find its fixed point P = w(P) as [x, y] (Goldman §6.2)."),
+    "check_chaos_game_steps": (
+        f"The chaos game on the Sierpinski gasket with corners {', '.join(fmt(c) for c in CHAOS_CORNERS)}: map i "
+        f"moves a point halfway to corner i (i = 1, 2, 3). Starting at {fmt(CHAOS_START)}, the game picks the maps "
+        f"{', '.join(str(i) for i in CHAOS_SEQUENCE)}, in that order. Where is the point after these "
+        f"{len(CHAOS_SEQUENCE)} steps? Answer [x, y] (Goldman §6.3)."),
+    "check_tree_branches": (
+        f"A tree has a trunk as condensation set C and {TREE_MAPS} maps, each shrinking the tree onto a branch: "
+        f"A_0 = C and A_(n+1) = C ∪ w_1(A_n) ∪ w_2(A_n) ∪ w_3(A_n). How many copies of the trunk does "
+        f"A_{TREE_LEVEL} hold (Goldman §6.4)?"),
 }
 
 
-def check_fixed_point(answer) -> Result:
-    """Check the fixed point of ``FIXED_POINT_MAP`` (Goldman §6.2): solve ``P = P/2 + (1, 0.5)``.
+# -- exercise answers and slips ---------------------------------------------------------------------
 
-    Recognises the translation itself (one step from the origin instead of the limit).
+def _iterate(M, P, n) -> np.ndarray:
+    return ifs.iterate_map(M, [P], n)[-1, 0]
 
-    >>> check_fixed_point([1, 0.5])
-    Not yet: (1, 0.5) is w(0, 0), one step from the origin; the fixed point is the limit of the iterates: solve P = P/2 + (1, 0.5).
-    """
-    what = "the fixed point of w"
-    got, err = read_points(answer, "your point", ask=what + " as [x, y]")
-    if err is not None:
-        return err
+
+def _iterate_answers():
+    P = np.array(ITERATE_START)
+    right = _iterate(HALF_TURN, P, ITERATE_STEPS)
+    clockwise = affine.rotation(-90) @ affine.scaling(0.5)
+    slips = {
+        "turns clockwise; a positive angle turns counterclockwise: (x, y) -> (-y, x) before halving.":
+            _iterate(clockwise, P, ITERATE_STEPS),
+        "turns but does not halve: each step also shrinks the distance to the origin by half.":
+            _iterate(affine.rotation(90), P, ITERATE_STEPS),
+        "halves but does not turn: each step also turns by 90 degrees.": _iterate(affine.scaling(0.5), P, ITERATE_STEPS),
+        "is one step short: w^3 applies w three times (count the arrows P -> w(P) -> ...).":
+            _iterate(HALF_TURN, P, ITERATE_STEPS - 1),
+        "is one step too many: w^3 applies w three times.": _iterate(HALF_TURN, P, ITERATE_STEPS + 1),
+    }
+    return right, slips
+
+
+def _fixed_answers():
+    right = affine.fixed_point(FIXED_POINT_MAP)
+    t = FIXED_POINT_MAP[2, :2]
+    L = FIXED_POINT_MAP[:2, :2]
+    slips = {
+        "is w applied once to the origin, the first step of the iteration; the fixed point is its limit: solve "
+        "P = P L + t, i.e. P (I - L) = t.": t,
+        "is t (I - L); the fixed point solves P (I - L) = t, so multiply t by the INVERSE of (I - L).": t @ (np.eye(2) - L),
+        "ignores the turn: with L = I/2 the fixed point would be t / (1 - 1/2), but L also turns by 90 degrees.": 2 * t,
+        "solves the equation with the clockwise turn (the transposed L, as if points were column vectors); "
+        "(x, y) L = (-y/2, x/2).": t @ np.linalg.inv(np.eye(2) - L.T),
+    }
+    return right, slips
+
+
+def _chaos_answers():
+    C = np.array(CHAOS_CORNERS)
+
+    def play(seq, start=CHAOS_START):
+        P = np.array(start, dtype=float)
+        for i in seq:
+            P = (P + C[i - 1]) / 2
+        return P
+
+    right = play(CHAOS_SEQUENCE)
+    slips = {
+        "is the point after the maps in reverse order; the first map picked is applied first.": play(CHAOS_SEQUENCE[::-1]),
+        "is one step short: apply all the maps picked, the last one too.": play(CHAOS_SEQUENCE[:-1]),
+        "jumps to the corner; each map moves the point only HALFWAY to its corner, to the midpoint of P and the "
+        "corner.":
+            C[CHAOS_SEQUENCE[-1] - 1],
+        "averages the corners picked; each step halves the way from the CURRENT point to the corner.":
+            C[[i - 1 for i in CHAOS_SEQUENCE]].mean(axis=0),
+    }
+    return right, slips
+
+
+def _read_point(answer, what, ask) -> tuple[np.ndarray | None, Result | None]:
+    got, problem = read_points(answer, "your point", ask=ask)
+    if problem is not None:
+        return None, problem
     if got.shape != (2,):
-        return wrong(f"{what} is one point [x, y]; yours has shape {got.shape}.")
-    expected = affine.fixed_point(FIXED_POINT_MAP)
-    if np.allclose(got, expected, atol=1e-6):
-        return correct(f"{what} is {fmt(expected)}.")
-    if np.allclose(got, [1.0, 0.5], atol=1e-6):
-        return wrong(f"{fmt(got)} is w(0, 0), one step from the origin; the fixed point is the limit of the "
-                     f"iterates: solve P = P/2 + (1, 0.5).")
-    image = affine.apply(got[None], FIXED_POINT_MAP)[0]
-    return wrong(f"w{fmt(got)} = {fmt(image)}, not the same point; solve P = P/2 + (1, 0.5) for P.")
+        return None, wrong(f"{what} is one point [x, y]; yours has shape {got.shape}.")
+    return got, None
 
 
-def check_gasket_count(answer) -> Result:
-    """Check the number of points after ``COUNT_LEVEL`` levels of the gasket from one point: 3^level.
+def _check_point(answer, what, right, slips, hint) -> Result:
+    got, problem = _read_point(answer, what, f"{what} as [x, y]")
+    if problem is not None:
+        return problem
+    if np.allclose(got, right, atol=1e-6, rtol=1e-4):
+        return correct(f"{what} is {fmt(right)}.")
+    for why, value in slips.items():
+        if np.allclose(got, value, atol=1e-6, rtol=1e-4):
+            return wrong(f"your point {why}")
+    return wrong(f"{what} is {off_by(0, np.linalg.norm(got - right))} (distance). Hint: {hint}.")
 
-    >>> check_gasket_count(243)
-    Correct: the number of points is 243.
-    >>> check_gasket_count(15)
-    Not yet: 15 = 3 x 5 adds the maps; each level applies all three maps to every point, so the count multiplies by 3: 3^5.
+
+def check_iterate_map(answer) -> Result:
+    """Exercise 1: ``w^3(P)`` for the half turn ``w(x, y) = (-y/2, x/2)`` and ``P = (8, 0)``
+    (Goldman §6.1).  answer: ``[x, y]``.
+
+    >>> check_iterate_map([0, -1])
+    Correct: w^3(P) is (0, -1).
+    """
+    right, slips = _iterate_answers()
+    return _check_point(answer, f"w^{ITERATE_STEPS}(P)", right, slips,
+                        "apply w three times, one step at a time: (x, y) -> (-y/2, x/2)")
+
+
+def check_carpet_points(answer) -> Result:
+    """Exercise 2: points returned by the deterministic algorithm for the carpet at
+    ``CARPET_LEVEL`` from the 5-point square: ``5 * 8**level`` (Goldman §6.1, §6.3).
+
+    >>> check_carpet_points(5 * 8 ** 3)
+    Correct: the number of points is 2560.
+    >>> print(check_carpet_points(8 ** 3).message)
+    512 counts the copies of the square; each copy has 5 points (a closed polyline repeats its first point).
     """
     value, problem = read_number(answer, "the number of points")
     if problem is not None:
         return problem
-    if value == 3 * COUNT_LEVEL:
-        return wrong(f"{fmt(value)} = 3 x {COUNT_LEVEL} adds the maps; each level applies all three maps to every "
-                     f"point, so the count multiplies by 3: 3^{COUNT_LEVEL}.")
-    if value == sum(3 ** j for j in range(COUNT_LEVEL + 1)):
-        return wrong(f"{fmt(value)} counts every level's points together; the algorithm keeps only the last level "
-                     f"(no condensation set), 3^{COUNT_LEVEL}.")
-    return check_number(value, 3 ** COUNT_LEVEL, what="the number of points", tol=0.5,
-                        hint="each level applies each of the 3 maps to every point")
+    right = 5 * 8 ** CARPET_LEVEL
+    if value == right:
+        return correct(f"the number of points is {right}.")
+    slips = {
+        8 ** CARPET_LEVEL: "counts the copies of the square; each copy has 5 points (a closed polyline repeats "
+                           "its first point).",
+        4 * 8 ** CARPET_LEVEL: "counts 4 corners a copy; the closed polyline has 5 points (it repeats its first "
+                               "point), and every point is copied.",
+        5 * 8 * CARPET_LEVEL: "adds the maps level by level; each level applies all 8 maps to EVERY point, so the "
+                              "count multiplies by 8 each level.",
+        5 * sum(8 ** j for j in range(CARPET_LEVEL + 1)): "counts every level's points together; without a "
+                                                          "condensation set the algorithm keeps only the last level.",
+        5 * 8 ** (CARPET_LEVEL - 1): "is one level short: level 0 is the square itself, level 1 its 8 copies.",
+    }
+    if value in slips:
+        return wrong(f"{fmt(value)} {slips[value]}")
+    return wrong(f"the number of points is {off_by(value, right)}. Hint: level n holds 8^n copies of the start "
+                 f"polyline.")
+
+
+def check_fixed_point(answer) -> Result:
+    """Exercise 3: the fixed point of ``FIXED_POINT_MAP``, ``w(P) = P L + (5, 0)`` with ``L`` the
+    half turn (Goldman §6.2): solve ``P (I - L) = t``.  answer: ``[x, y]``.
+
+    >>> print(check_fixed_point([5, 0]).message)
+    your point is w applied once to the origin, the first step of the iteration; the fixed point is its limit: solve P = P L + t, i.e. P (I - L) = t.
+    """
+    right, slips = _fixed_answers()
+    got, problem = _read_point(answer, "the fixed point of w", "the fixed point of w as [x, y]")
+    if problem is not None:
+        return problem
+    if np.allclose(got, right, atol=1e-6, rtol=1e-4):
+        return correct(f"the fixed point of w is {fmt(right)}.")
+    for why, value in slips.items():
+        if np.allclose(got, value, atol=1e-6, rtol=1e-4):
+            return wrong(f"your point {why}")
+    moved = np.linalg.norm(affine.apply(got, FIXED_POINT_MAP) - got)
+    return wrong(f"w moves your point by {fmt(moved, 2)}, so it is not fixed. Hint: write P = (x, y); "
+                 f"P = w(P) gives x = -y/2 + 5 and y = x/2, two equations for x and y.")
+
+
+def check_chaos_game_steps(answer) -> Result:
+    """Exercise 4: the chaos game by hand on the gasket :data:`CHAOS_CORNERS` with the maps
+    :data:`CHAOS_SEQUENCE` (Goldman §6.3).  answer: ``[x, y]``.
+
+    >>> check_chaos_game_steps([0.25, 1.5])
+    Correct: the point after the 4 steps is (0.25, 1.5).
+    """
+    right, slips = _chaos_answers()
+    return _check_point(answer, f"the point after the {len(CHAOS_SEQUENCE)} steps", right, slips,
+                        "each step replaces the point P by the midpoint of P and the corner of the map picked")
 
 
 def check_tree_branches(answer) -> Result:
-    """Check the number of trunk copies in ``A_TREE_LEVEL`` of the tree: 1 + 2 + ... + 2^level.
+    """Exercise 5: trunk copies in ``A_TREE_LEVEL`` of a tree with ``TREE_MAPS`` maps and a trunk as
+    condensation set: ``1 + 3 + ... + 3**level`` (Goldman §6.4).
 
-    >>> check_tree_branches(31)
-    Correct: the number of branches is 31.
-    >>> check_tree_branches(16)
-    Not yet: 16 = 2^4 counts only the newest, smallest branches; the condensation set keeps every earlier level: 1 + 2 + 4 + ... + 2^4.
+    >>> check_tree_branches(121)
+    Correct: the number of trunks is 121.
+    >>> print(check_tree_branches(81).message)
+    81 counts only the newest, smallest trunks (3^4); the condensation set keeps a copy of every earlier level too.
     """
-    value, problem = read_number(answer, "the number of branches")
+    value, problem = read_number(answer, "the number of trunks")
     if problem is not None:
         return problem
-    if value == 2 ** TREE_LEVEL:
-        return wrong(f"{fmt(value)} = 2^{TREE_LEVEL} counts only the newest, smallest branches; the condensation set "
-                     f"keeps every earlier level: 1 + 2 + 4 + ... + 2^{TREE_LEVEL}.")
-    if value == 2 ** (TREE_LEVEL + 1) - 2 or value == 2 ** TREE_LEVEL - 1:
-        return wrong(f"{fmt(value)} is off by one level: A_0 is the trunk alone (1 branch) and A_{TREE_LEVEL} adds "
-                     f"levels up to 2^{TREE_LEVEL}.")
-    return check_number(value, 2 ** (TREE_LEVEL + 1) - 1, what="the number of branches", tol=0.5,
-                        hint="level j adds 2^j copies of the trunk")
+    k, n = TREE_MAPS, TREE_LEVEL
+
+    def total(level):
+        return sum(k ** j for j in range(level + 1))
+
+    right = total(n)
+    if value == right:
+        return correct(f"the number of trunks is {right}.")
+    slips = {
+        k ** n: f"counts only the newest, smallest trunks ({k}^{n}); the condensation set keeps a copy of every "
+                f"earlier level too.",
+        k ** (n + 1): f"is {k}^{n + 1}: the trunks do not multiply like the points of a fractal without condensation; "
+                      f"add the copies level by level.",
+        total(n - 1): "is one level short: A_0 is the trunk alone and each level adds a new generation of smaller "
+                      "trunks.",
+        total(n + 1): "is one level too many: A_0 is the trunk alone (one trunk).",
+        2 ** (n + 1) - 1: "is the count for a tree with 2 maps; this tree has 3 maps, so each generation has 3 times "
+                          "as many trunks as the one before.",
+    }
+    if value in slips:
+        return wrong(f"{fmt(value)} {slips[value]}")
+    return wrong(f"the number of trunks is {off_by(value, right)}. Hint: generation j adds {k}^j trunks.")
 
 
-def check_square_image(answer) -> Result:
-    """Check the images of the unit square's corners under ``SQUARE_MAP`` (Goldman §6.1).
+# -- the programming project: the IFS of a grid fractal -----------------------------------------------
 
-    Recognises the rotation by -90 degrees (clockwise) and the translation applied before the rotation.
+#: The seed of the project's generated cases.
+PROJECT_SEED = 6
+_BOX = [(0, 0), (2, 0), (1, 1), (0, 2), (2, 2)]
+_CARPET = [(i, j) for i in range(3) for j in range(3) if (i, j) != (1, 1)]
+_ELL = [(0, 0), (1, 0), (2, 0), (0, 1)]
 
-    >>> check_square_image([[1, 0], [1, 0.5], [0.5, 0.5], [0.5, 0]])
-    Correct: the four image corners match.
+
+def grid_fractal_cases() -> list[Case]:
+    """The project's cases: the box fractal, the carpet, an uneven "L" (asymmetric in the
+    diagonal, so it tells (i, j) from (j, i)), squares away from the origin and of other sizes, and the degenerate patterns (one cell:
+    the attractor is a point; all nine cells: the whole square); then random squares and patterns
+    from :data:`PROJECT_SEED`."""
+    rng = np.random.default_rng(PROJECT_SEED)
+
+    def case(corner, side, cells, kind):
+        corner = tuple(float(c) for c in corner)
+        cells = [tuple(int(v) for v in c) for c in cells]
+        return Case(f"corner {fmt(corner)}, side {fmt(side)}, cells {cells}", (corner, float(side), cells), kind=kind)
+
+    cases = [case((0, 0), 1, _BOX, "the box fractal on the unit square"),
+             case((2, 1), 3, _CARPET, "the carpet away from the origin"),
+             case((0, 0), 1, _ELL, "an asymmetric pattern"),
+             case((-1.5, 2), 0.75, [(2, 1), (0, 1), (1, 2), (0, 0)], "an asymmetric pattern"),
+             case((3, -2), 2, [(1, 2)], "degenerate: one cell (the attractor is a point)"),
+             case((-4, -4), 9, [(i, j) for i in range(3) for j in range(3)], "degenerate: all nine cells"),
+             case((0.5, 0.25), 1e-3, _ELL[::-1], "a tiny square")]
+    all_cells = [(i, j) for i in range(3) for j in range(3)]
+    for _ in range(5):
+        k = int(rng.integers(2, 9))
+        pick = sorted(rng.choice(9, size=k, replace=False).tolist())
+        corner = np.round(rng.uniform(-5, 5, size=2), 2)
+        side = round(float(rng.uniform(0.5, 4.0)), 2)
+        cases.append(case(corner, side, [all_cells[p] for p in pick], "random squares and patterns"))
+    return cases
+
+
+def _reference(corner, side, cells):
+    return list(ifs.grid_fractal(cells, corner=corner, side=side).maps)
+
+
+def _level(k: int) -> int:
+    """The deterministic level compared: as deep as about 2000 points allow."""
+    return 1 if k == 1 else min(10, int(math.log(2000) / math.log(k)))
+
+
+def _compare_ifs(got, expected, case) -> str | None:
+    corner, side, cells = case.args
+    arr = got.maps if isinstance(got, ifs.IFS) else np.asarray(got, dtype=float)
+    exp = np.asarray(expected, dtype=float)
+    if arr.ndim != 3 or arr.shape[1:] != (3, 3):
+        return (f"it should be a list of 3x3 matrices, one per kept cell; it has shape {arr.shape}"
+                + (" (a list of 2x2 linear parts? the translation needs the 3x3 matrix)" if arr.shape[1:] == (2, 2)
+                   else ""))
+    if len(arr) != len(exp):
+        return f"it has {len(arr)} maps; {len(exp)} cells are kept, and each needs its own map"
+    if not np.all(np.isfinite(arr)):
+        return "it contains NaN or infinite entries"
+    for i, M in enumerate(arr):
+        if not np.allclose(M[:, 2], [0, 0, 1], atol=1e-9):
+            return (f"map {i} has last column {fmt(M[:, 2])}; in the row-vector convention the last column is "
+                    f"(0, 0, 1) and the translation is the last row (is it the column-vector matrix, transposed?)")
+    factors = np.linalg.svd(arr[:, :2, :2], compute_uv=False)[:, 0]
+    if np.any(factors >= 1):
+        i = int(np.argmax(factors >= 1))
+        return (f"map {i} stretches distances by up to {fmt(factors[i], 3)}; every map of an IFS must shrink "
+                f"(factor below 1), and these should shrink the square by 1/3")
+    level = _level(len(exp))
+    tol = 3.0 * side * 3.0 ** -level
+    mine = ifs.deterministic(ifs.IFS(arr), level)
+    target = ifs.deterministic(ifs.IFS(exp), level)
+    h = hausdorff_distance(mine, target)
+    if h <= tol:
+        return None
+    swapped = ifs.deterministic(ifs.grid_fractal([(j, i) for i, j in cells], corner=corner, side=side), level)
+    if hausdorff_distance(mine, swapped) <= tol:
+        return ("its attractor is the fractal mirrored in the diagonal: cell (i, j) is column i (x) and row j (y), "
+                "so its map translates by (i, j) * side/3, not (j, i) * side/3")
+    about_origin = ifs.deterministic(ifs.grid_fractal(cells, corner=(0.0, 0.0), side=side), level)
+    if hausdorff_distance(mine, about_origin) <= tol:
+        return ("its attractor sits on the square with corner (0, 0): the maps must scale about the square's corner "
+                f"{fmt(corner)} (or translate by the corner's share, corner * 2/3, too)")
+    shrink = affine.scaling(1.0 / 3.0, center=corner)
+    translate_first = ifs.deterministic(ifs.IFS([affine.translation(np.array([i, j]) * side / 3.0) @ shrink
+                                                 for i, j in cells]), level)
+    if hausdorff_distance(mine, translate_first) <= tol:
+        return ("its maps translate first and then scale, so the translation shrinks by 1/3 too: with row vectors "
+                "the map applied first is the LEFT factor, scaling @ translation")
+    from goldman_lib.fixed_point import directed_hausdorff
+    far = directed_hausdorff(mine, target)
+    if far > tol:
+        d = np.min(np.linalg.norm(mine[:, None, :] - target[None, :: max(1, len(target) // 500), :], axis=2), axis=1)
+        p = mine[int(np.argmax(d))]
+        return (f"its attractor is {fmt(h, 2)} from the fractal (Hausdorff distance, level {level}; up to "
+                f"{fmt(tol, 2)} is drawing error): your point {fmt(p)} is {fmt(far, 2)} from the fractal")
+    return (f"its attractor misses part of the fractal: it is {fmt(h, 2)} from it (Hausdorff distance, level "
+            f"{level}; up to {fmt(tol, 2)} is drawing error): check that every kept cell gets its own map")
+
+
+def check_grid_fractal_project(function) -> Result:
+    """The programming project: ``function(corner, side, cells)`` returns the IFS of the grid fractal
+    of :func:`goldman_lib.ifs.grid_fractal` as a list of 3x3 matrices (row-vector convention, one
+    per kept cell).  Checked on :func:`grid_fractal_cases`: the shape, the number of maps, the last
+    column ``(0, 0, 1)``, that each map is a contraction, and that the attractor (the deterministic
+    algorithm's points at a fixed level) is within drawing error of the target's (Hausdorff
+    distance).  Any maps with that attractor are right, in any order.
+
+    >>> def mine(corner, side, cells):
+    ...     return [affine.scaling(1 / 3, center=corner) @ affine.translation([i * side / 3, j * side / 3])
+    ...             for i, j in cells]
+    >>> check_grid_fractal_project(mine)
+    Correct: the grid-fractal IFS passes all 12 cases, including a tiny square, an asymmetric pattern, degenerate: all nine cells, degenerate: one cell (the attractor is a point), random squares and patterns, the box fractal on the unit square, the carpet away from the origin.
     """
-    what = "the four image corners"
-    got, err = read_points(answer, what)
-    if err is not None:
-        return err
-    corners = ifs.UNIT_SQUARE[:4]
-    expected = affine.apply(corners, SQUARE_MAP)
-    if got.shape != (4, 2):
-        return wrong(f"{what} should be four points [x, y]; yours have shape {got.shape}.")
-    if np.allclose(got, expected, atol=1e-6):
-        return correct(f"{what} match.")
-    clockwise = affine.apply(corners, affine.from_parameters(angle=-90, scale=(0.5, 0.5), translate=(1, 0)))
-    if np.allclose(got, clockwise, atol=1e-6):
-        return wrong("these corners are turned clockwise; a positive angle turns counterclockwise: (1, 0) -> (0, 1).")
-    early = affine.apply(corners, affine.compose(affine.scaling(0.5), affine.translation([1, 0]), affine.rotation(90)))
-    if np.allclose(got, early, atol=1e-6):
-        return wrong("you translated before rotating; the translation comes last, after the scaling and rotation.")
-    k = int(np.argmax(np.abs(got - expected).max(axis=1)))
-    return wrong(f"corner {k} should be {fmt(expected[k])}, you gave {fmt(got[k])}: scale by 1/2, turn 90 degrees "
-                 f"counterclockwise about the origin, then add (1, 0).")
+    return check_project(function, grid_fractal_cases(), reference=_reference, compare=_compare_ifs,
+                         what="the grid-fractal IFS",
+                         hint="the map for cell (i, j) scales by 1/3 about the square's corner, then translates by "
+                              "(i, j) * side/3; with row vectors the map applied first is the left factor")
 
 
-def check_gasket_maps(answer) -> Result:
-    """Check an IFS for the gasket with corners ``GASKET_CORNERS`` by its attractor (Goldman §6.3):
-    any maps whose attractor is that gasket are right (in any order, with any symmetries).
-
-    >>> from goldman_lib import affine
-    >>> check_gasket_maps([affine.scaling(0.5, center=c) for c in GASKET_CORNERS])
-    Correct: your IFS draws the gasket with corners (0, 0), (2, 0), (0, 2).
-    """
-    what = "your IFS"
-    if answer is None or answer is Ellipsis:
-        from goldman_lib.exercises import unanswered
-        return unanswered("a list of three 3x3 matrices")
-    try:
-        s = ifs.IFS(answer)
-    except (TypeError, ValueError) as exc:
-        return wrong(f"{what} should be a list of 3x3 affine matrices (last column 0, 0, 1): {exc}")
-    if not s.is_contractive():
-        return wrong(f"{what} has a map that does not shrink (contraction factors {fmt(s.contraction_factors(), 3)}); "
-                     f"the maps of the gasket scale by 1/2.")
-    target = ifs.IFS([affine.scaling(0.5, center=c) for c in GASKET_CORNERS])
-    A = ifs.deterministic(target, 7)
-    B = ifs.chaos_game(s, 6000, rng=0)
-    d = hausdorff_distance(A, B)
-    corners = "(0, 0), (2, 0), (0, 2)"
-    if d <= 0.05:
-        return correct(f"{what} draws the gasket with corners {corners}.")
-    if len(s) == 3 and np.allclose(s.fixed_points(), [[0, 0], [1, 0], [0, 1]], atol=1e-6):
-        return wrong("your maps scale about (0,0), (1,0), (0,1): that is the gasket of the unit triangle; "
-                     "scale by 1/2 about the corners (2, 0) and (0, 2) instead.")
-    return wrong(f"the attractor of {what} is {fmt(d, 2)} (Hausdorff distance) from the gasket with corners {corners}; "
-                 f"use three maps that scale by 1/2 about the three corners.")
+#: Wrong answers of the kinds each checker recognises (tests feed them and check the message).
+SLIPS = {
+    "check_iterate_map": [v.tolist() for v in _iterate_answers()[1].values()],
+    "check_carpet_points": [8 ** 3, 4 * 8 ** 3, 5 * 8 * 3, 5 * (1 + 8 + 64 + 512), 5 * 64],
+    "check_fixed_point": [v.tolist() for v in _fixed_answers()[1].values()],
+    "check_chaos_game_steps": [v.tolist() for v in _chaos_answers()[1].values()],
+    "check_tree_branches": [81, 243, 40, 364, 31],
+}
