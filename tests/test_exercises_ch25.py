@@ -9,10 +9,10 @@ from goldman_lib.exercises import Result
 from goldman_lib.exercises import ch25
 
 # -- hand-worked answers ---------------------------------------------------------------------------
-# (0,4),(4,8),(8,0),(12,4) at t = 1/4 (each step 3/4 P_j + 1/4 P_j+1):
-#   level 1 (1,5),(5,6),(9,1); level 2 (2,5.25),(6,4.75); level 3 (3,5.125)
-LEFT = [[0, 4], [1, 5], [2, 5.25], [3, 5.125]]
-RIGHT = [[3, 5.125], [6, 4.75], [9, 1], [12, 4]]
+# (0,4),(4,8),(8,0),(12,4) at t = 3/4 (each step 1/4 P_j + 3/4 P_j+1):
+#   level 1 (3,7),(7,2),(11,3); level 2 (6,3.25),(10,2.75); level 3 (9,2.875)
+LEFT = [[0, 4], [3, 7], [6, 3.25], [9, 2.875]]
+RIGHT = [[9, 2.875], [10, 2.75], [11, 3], [12, 4]]
 # C(0.7) on the right piece of a split at 0.4: s = (0.7 - 0.4) / 0.6
 PIECE_S = 0.5
 # chord points L1 = (2,0), L2 = (4,0): |(1,1)| = sqrt 2, |(-1,-2)| = sqrt 5
@@ -41,7 +41,7 @@ CHECKERS = [
 
 
 def test_problem_constants_are_what_the_hand_answers_assume():
-    assert ch25.SUBDIVIDE_CTRL.tolist() == [[0, 4], [4, 8], [8, 0], [12, 4]] and ch25.SUBDIVIDE_T == 0.25
+    assert ch25.SUBDIVIDE_CTRL.tolist() == [[0, 4], [4, 8], [8, 0], [12, 4]] and ch25.SUBDIVIDE_T == 0.75
     assert (ch25.PIECE_SPLIT_T, ch25.PIECE_T) == (0.4, 0.7)
     assert ch25.FLATNESS_CTRL.tolist() == [[0, 0], [3, 1], [3, -2], [6, 0]]
     assert ch25.PATCH_NET.tolist() == [[[0, 0, 0], [0, 2, 4], [0, 4, 0]], [[4, 0, 0], [4, 2, 2], [4, 4, 2]]]
@@ -71,9 +71,9 @@ def test_hand_decimals_are_accepted():
 @pytest.mark.parametrize("answer,reason", [
     (RIGHT[::-1], "reverse order"),
     (LEFT, "that is the left piece"),
-    ([[1, 5], [5, 6], [9, 1], [12, 4]], "level 1 of the pyramid"),
-    ([[3, 5.125], [6, 4.75], [9, 1]], "four points"),
-    ([[3, 5.125], [6, 4.75], [9, 1.5], [12, 4]], "point 2"),
+    ([[3, 7], [7, 2], [11, 3], [12, 4]], "level 1 of the pyramid"),
+    ([[9, 2.875], [10, 2.75], [11, 3]], "four points"),
+    ([[9, 2.875], [10, 2.75], [11, 3.5], [12, 4]], "point 2"),
 ])
 def test_subdivision_wrong_answers_say_why(answer, reason):
     r = ch25.check_subdivision_right(answer)
@@ -81,9 +81,9 @@ def test_subdivision_wrong_answers_say_why(answer, reason):
 
 
 def test_the_split_at_one_minus_t_is_what_the_slip_assumes():
-    # (0,4),(4,8),(8,0),(12,4) at 3/4: level 1 (3,7),(7,2),(11,3); level 2 (6,3.25),(10,2.75); level 3 (9,2.875)
-    r = ch25.check_subdivision_right([[9, 2.875], [10, 2.75], [11, 3], [12, 4]])
-    assert "split at t = 0.75" in r.message
+    # (0,4),(4,8),(8,0),(12,4) at 1/4: level 1 (1,5),(5,6),(9,1); level 2 (2,5.25),(6,4.75); level 3 (3,5.125)
+    r = ch25.check_subdivision_right([[3, 5.125], [6, 4.75], [9, 1], [12, 4]])
+    assert "split at t = 0.25" in r.message
 
 
 @pytest.mark.parametrize("answer,reason", [

@@ -28,9 +28,9 @@ __all__ = ["PROBLEMS", "SLIPS", "SUBDIVIDE_CTRL", "SUBDIVIDE_T", "PIECE_SPLIT_T"
            "check_box_pairs", "check_crossing_bound", "check_join_order",
            "subdivision_project_cases", "check_subdivision_project"]
 
-#: Exercise 1 (§25.2): the cubic split at t = 1/4; the right piece is asked for.
+#: Exercise 1 (§25.2): the cubic split at t = 3/4; the right piece is asked for.
 SUBDIVIDE_CTRL = np.array([[0.0, 4.0], [4.0, 8.0], [8.0, 0.0], [12.0, 4.0]])
-SUBDIVIDE_T = 0.25
+SUBDIVIDE_T = 0.75
 #: Exercise 2 (§25.2): split at PIECE_SPLIT_T; the original parameter PIECE_T lies on the right piece.
 PIECE_SPLIT_T, PIECE_T = 0.4, 0.7
 #: Exercise 3 (§25.3): a bent cubic whose flatness bound is asked for.
@@ -92,9 +92,9 @@ def check_subdivision_right(answer) -> Result:
     answer: (4, 2).  Recognises the right piece in reverse order (read down the right edge), the
     left piece, the split at 1 - t (t and 1 - t exchanged) and the first level of the pyramid.
 
-    >>> check_subdivision_right([[3, 5.125], [6, 4.75], [9, 1], [12, 4]])
+    >>> check_subdivision_right([[9, 2.875], [10, 2.75], [11, 3], [12, 4]])
     Correct: the right piece is the right edge of the de Casteljau pyramid, read from the apex C(t) up to P3.
-    >>> check_subdivision_right([[12, 4], [9, 1], [6, 4.75], [3, 5.125]])
+    >>> check_subdivision_right([[12, 4], [11, 3], [10, 2.75], [9, 2.875]])
     Not yet: these are the right points in reverse order: the right piece starts at the apex C(t) and ends at P3 = C(1).
     """
     what = "the right piece's control points"
@@ -344,8 +344,8 @@ def check_join_order(answer) -> Result:
 
 
 SLIPS = {
-    "check_subdivision_right": [[[12, 4], [9, 1], [6, 4.75], [3, 5.125]], [[0, 4], [1, 5], [2, 5.25], [3, 5.125]],
-                                bezier.subdivide(SUBDIVIDE_CTRL, 0.75)[1].tolist(), [[3, 5.125], [6, 4.75], [9, 1]]],
+    "check_subdivision_right": [[[12, 4], [11, 3], [10, 2.75], [9, 2.875]], [[0, 4], [3, 7], [6, 3.25], [9, 2.875]],
+                                [[3, 5.125], [6, 4.75], [9, 1], [12, 4]], [[9, 2.875], [10, 2.75], [11, 3]]],
     "check_piece_parameter": [0.3, 0.75, 0.82, 1.75],
     "check_flatness": [2.0, 2 ** 0.5, 2 ** 0.5 + 5 ** 0.5],
     "check_patch_split": [
