@@ -211,6 +211,9 @@ def test_project_reports_a_crash_with_the_learners_line():
 def test_project_wrong_shapes_and_unanswered():
     r = ch25.check_subdivision_project(lambda ctrl, t: (ctrl, ctrl[:-1]))
     assert "right polygon has shape" in r.message
+    r = ch25.check_subdivision_project(lambda ctrl, t: subdivide_by_hand(ctrl, t)[0])
+    assert "two control polygons, (left, right), each" in r.message
+    assert ch25.check_subdivision_project(lambda ctrl, t: np.stack(subdivide_by_hand(ctrl, t))).correct
 
     def starter(ctrl, t):
         """Not written yet."""

@@ -395,12 +395,15 @@ def subdivision_project_cases() -> list[Case]:
 def _compare_split(got, expected, case) -> str | None:
     P, t = case.args
     left, right = (np.asarray(x, dtype=float) for x in expected)
-    if not isinstance(got, (tuple, list)) or len(got) != 2:
+    if not isinstance(got, (tuple, list, np.ndarray)) or len(got) != 2:
         return "it should return two control polygons, (left, right)"
     try:
         gl, gr = (np.asarray(x, dtype=float) for x in got)
     except (TypeError, ValueError):
         return "the two polygons should be arrays of numbers"
+    if gl.ndim != 2 or gr.ndim != 2:
+        return ("it should return two control polygons, (left, right), each an (n+1, d) array of points; "
+                "yours are not two arrays of points")
     for name, g, e in (("left", gl, left), ("right", gr, right)):
         if g.shape != e.shape:
             return (f"your {name} polygon has shape {g.shape}; it should have shape {e.shape}, as many points as "
