@@ -1,12 +1,16 @@
-"""Exercise checkers for chapter 25, Bezier subdivision (Goldman §25.2-25.5).
+"""Exercise checkers for chapter 25, Bezier subdivision (Goldman §25.2-25.5), and the checker of its
+programming project (de Casteljau subdivision of a curve at t).
 
 Each exercise's data are module constants, so the notebook prints the problem from here and the
-checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name.
+checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
+``SLIPS`` the wrong answers of the kinds each checker recognises.  The data differ from the
+chapter's worked examples (its cubic (0, 0), (1, 2.5), (3, 2.5), (4, 0.5), the quartic WAVY and the
+patches of §25.3) and from chapter 24's exercises (the one drill of smooth joins lives there).
 
->>> print(PROBLEMS["check_reparametrised_parameter"])
-The cubic is subdivided at t = 0.25 and the right piece is parametrised over [0, 1] again. Which parameter t of the original curve does the parameter s = 0.5 of the right piece correspond to (Goldman §25.2)?
->>> check_reparametrised_parameter(0.625)
-Correct: s = 0.5 of the right piece is t = 0.625 of the original curve.
+>>> print(PROBLEMS["check_piece_parameter"])
+A cubic C is subdivided at t = 0.4, and the right piece R is parametrised over [0, 1] again. The point C(0.7) lies on R: at which parameter s of R (Goldman §25.2)?
+>>> check_piece_parameter(0.5)
+Correct: C(0.7) is R(0.5).
 """
 
 from __future__ import annotations
@@ -14,192 +18,431 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bezier
-from goldman_lib.exercises import (fmt_points, Result, check_number, check_points, correct, fmt, read_number, read_points,
+from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, off_by, read_number, read_points,
                                    wrong)
+from goldman_lib.exercises.projects import Case, check_project
 
-__all__ = ["PROBLEMS", "SUBDIVIDE_CTRL", "REPARAM_T", "REPARAM_S", "FLATNESS_CTRL", "CROSSING_CTRL",
-           "CROSSING_LINE_Y", "C2_CTRL", "check_subdivision_left", "check_reparametrised_parameter",
-           "check_flatness", "check_crossing_bound", "check_c2_continuation"]
+__all__ = ["PROBLEMS", "SLIPS", "SUBDIVIDE_CTRL", "SUBDIVIDE_T", "PIECE_SPLIT_T", "PIECE_T", "FLATNESS_CTRL",
+           "PATCH_NET", "PATCH_V", "BOX_A", "BOX_B", "CROSSING_CTRL", "CROSSING_LINE_Y", "ORDER_P", "ORDER_R",
+           "check_subdivision_right", "check_piece_parameter", "check_flatness", "check_patch_split",
+           "check_box_pairs", "check_crossing_bound", "check_join_order",
+           "subdivision_project_cases", "check_subdivision_project"]
 
-#: Exercise 1: the cubic to subdivide at t = 1/2 by hand.
-SUBDIVIDE_CTRL = np.array([[0.0, 0.0], [2.0, 4.0], [6.0, 4.0], [8.0, 0.0]])
-#: Exercise 2: the split parameter and the parameter of the right piece.
-REPARAM_T, REPARAM_S = 0.25, 0.5
-#: Exercise 3: a straight but unevenly parametrised quadratic.
-FLATNESS_CTRL = np.array([[0.0, 0.0], [3.0, 0.0], [4.0, 0.0]])
-#: Exercise 4: the cubic and the horizontal line y = CROSSING_LINE_Y.
-CROSSING_CTRL = np.array([[0.0, 0.0], [1.0, 3.0], [2.0, -3.0], [3.0, 1.0]])
+#: Exercise 1 (§25.2): the cubic split at t = 3/4; the right piece is asked for.
+SUBDIVIDE_CTRL = np.array([[0.0, 4.0], [4.0, 8.0], [8.0, 0.0], [12.0, 4.0]])
+SUBDIVIDE_T = 0.75
+#: Exercise 2 (§25.2): split at PIECE_SPLIT_T; the original parameter PIECE_T lies on the right piece.
+PIECE_SPLIT_T, PIECE_T = 0.4, 0.7
+#: Exercise 3 (§25.3): a bent cubic whose flatness bound is asked for.
+FLATNESS_CTRL = np.array([[0.0, 0.0], [3.0, 1.0], [3.0, -2.0], [6.0, 0.0]])
+#: Exercise 4 (§25.3.2): a patch of degree (1, 2) (row index i with u, column index j with v),
+#: split at v = PATCH_V.
+PATCH_NET = np.array([[[0.0, 0.0, 0.0], [0.0, 2.0, 4.0], [0.0, 4.0, 0.0]],
+                      [[4.0, 0.0, 0.0], [4.0, 2.0, 2.0], [4.0, 4.0, 2.0]]])
+PATCH_V = 0.5
+#: Exercise 5 (§25.3.1): a parabola and a segment, each halved once for the bounding-box test.
+BOX_A = np.array([[0.0, 0.0], [2.0, 4.0], [4.0, 0.0]])
+BOX_B = np.array([[0.5, 1.5], [4.5, 1.5]])
+#: Exercise 6 (§25.4): a quartic and the horizontal line y = CROSSING_LINE_Y.
+CROSSING_CTRL = np.array([[0.0, 0.0], [1.0, 3.0], [2.0, -1.0], [3.0, 1.0], [4.0, 2.0]])
 CROSSING_LINE_Y = 0.5
-#: Exercise 5: the cubic that a second cubic continues with C2 continuity.
-C2_CTRL = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 2.0]])
+#: Exercise 7 (§25.5): two cubics over parameter intervals of equal length; the order of the join.
+ORDER_P = np.array([[0.0, 0.0], [2.0, 2.0], [4.0, 2.0], [6.0, 0.0]])
+ORDER_R = np.array([[6.0, 0.0], [8.0, -2.0], [10.0, -6.0], [11.0, -8.0]])
+
+
+def _net_text(net) -> str:
+    return "; ".join(f"row {i}: " + fmt_points(row) for i, row in enumerate(net))
 
 
 PROBLEMS = {
-    "check_subdivision_left": (
-        f"Subdivide the cubic with control points {fmt_points(SUBDIVIDE_CTRL)} at t = 1/2 by the de Casteljau algorithm: "
-        f"give the four control points of the left piece (the curve over [0, 1/2]) (Goldman §25.2)."),
-    "check_reparametrised_parameter": (
-        f"The cubic is subdivided at t = {fmt(REPARAM_T)} and the right piece is parametrised over [0, 1] again. "
-        f"Which parameter t of the original curve does the parameter s = {fmt(REPARAM_S)} of the right piece "
-        f"correspond to (Goldman §25.2)?"),
+    "check_subdivision_right": (
+        f"Subdivide the cubic with control points {fmt_points(SUBDIVIDE_CTRL)} at t = {fmt(SUBDIVIDE_T)} by the de "
+        f"Casteljau algorithm: give the four control points of the right piece, the curve over [{fmt(SUBDIVIDE_T)}, 1], "
+        f"in order from C({fmt(SUBDIVIDE_T)}) to C(1) (Goldman §25.2)."),
+    "check_piece_parameter": (
+        f"A cubic C is subdivided at t = {fmt(PIECE_SPLIT_T)}, and the right piece R is parametrised over [0, 1] "
+        f"again. The point C({fmt(PIECE_T)}) lies on R: at which parameter s of R (Goldman §25.2)?"),
     "check_flatness": (
-        f"The quadratic with control points {fmt_points(FLATNESS_CTRL)} is a straight segment. What is its flatness "
-        f"max_k |P_k - ((1 - k/n) P_0 + (k/n) P_n)|, the bound used to stop subdividing (Goldman §25.3)?"),
+        f"What is the flatness max_k |P_k - ((1 - k/n) P_0 + (k/n) P_n)| of the cubic with control points "
+        f"{fmt_points(FLATNESS_CTRL)}, the bound on its distance from its chord that decides whether to subdivide "
+        f"further (Goldman §25.3)? Four decimals are enough."),
+    "check_patch_split": (
+        f"The patch P(u, v) = sum_i sum_j B_i^1(u) B_j^2(v) P_ij has the control net {_net_text(PATCH_NET)} (the row "
+        f"index i goes with u, the column index j with v). Subdivide it at v = {fmt(PATCH_V)} and give the control "
+        f"net of the piece over 0 <= v <= {fmt(PATCH_V)}, as two rows of three points [x, y, z] (Goldman §25.3.2)."),
+    "check_box_pairs": (
+        f"Intersection by subdivision: the parabola with control points {fmt_points(BOX_A)} and the segment from "
+        f"{fmt(BOX_B[0])} to {fmt(BOX_B[1])} are each split once at t = 1/2, giving 4 pairs (half of the parabola, "
+        f"half of the segment). How many pairs survive the test that the bounding boxes of their control points "
+        f"overlap (Goldman §25.3.1)?"),
     "check_crossing_bound": (
         f"At most how many times can the line y = {fmt(CROSSING_LINE_Y)} cross the Bezier curve with control "
         f"points {fmt_points(CROSSING_CTRL)}? Give the bound the control polygon guarantees (Goldman §25.4)."),
-    "check_c2_continuation": (
-        f"A second cubic Q continues the cubic with control points {fmt_points(C2_CTRL)} over a parameter interval of "
-        f"the same length. Give Q0, Q1, Q2 so that the join is C2 (Goldman §25.5)."),
+    "check_join_order": (
+        f"The cubics P with control points {fmt_points(ORDER_P)} and R with control points {fmt_points(ORDER_R)} run "
+        f"over parameter intervals of equal length. Give the largest k for which they meet with C^k continuity, by "
+        f"comparing R with the control points of P's own polynomial continued past its end (Goldman §25.5)."),
 }
 
 
-def check_subdivision_left(answer) -> Result:
-    """Check the left piece of ``SUBDIVIDE_CTRL`` subdivided at 1/2 (Goldman §25.2).
+def check_subdivision_right(answer) -> Result:
+    """Check the right piece of ``SUBDIVIDE_CTRL`` split at ``SUBDIVIDE_T`` (Goldman §25.2).
 
-    answer: (4, 2).  Recognises the right piece, the left piece in reverse, and the first level
-    of the pyramid taken for the answer.
+    answer: (4, 2).  Recognises the right piece in reverse order (read down the right edge), the
+    left piece, the split at 1 - t (t and 1 - t exchanged) and the first level of the pyramid.
 
-    >>> check_subdivision_left([[0, 0], [1, 2], [2.5, 3], [4, 3]])
-    Correct: the left piece is the left edge of the de Casteljau pyramid: (0, 0), (1, 2), (2.5, 3), (4, 3).
-    >>> check_subdivision_left([[4, 3], [5.5, 3], [7, 2], [8, 0]])
-    Not yet: that is the right piece (the curve over [1/2, 1]), read up the right edge of the pyramid; the left piece starts at P0.
+    >>> check_subdivision_right([[9, 2.875], [10, 2.75], [11, 3], [12, 4]])
+    Correct: the right piece is the right edge of the de Casteljau pyramid, read from the apex C(t) up to P3.
+    >>> check_subdivision_right([[12, 4], [11, 3], [10, 2.75], [9, 2.875]])
+    Not yet: these are the right points in reverse order: the right piece starts at the apex C(t) and ends at P3 = C(1).
     """
-    what = "the left piece's control points"
-    got, err = read_points(answer, what)
+    what = "the right piece's control points"
+    got, err = read_points(answer, what, ask="the right piece's four control points as [[x0, y0], ..., [x3, y3]]")
     if err is not None:
         return err
-    left, right = bezier.subdivide(SUBDIVIDE_CTRL, 0.5)
-    if got.shape != left.shape:
-        return wrong(f"{what} should be four points, shape {left.shape} (a piece of a cubic is a cubic); "
-                     f"yours has shape {got.shape}.")
-    if np.allclose(got, left, atol=1e-6):
-        return correct(f"the left piece is the left edge of the de Casteljau pyramid: {fmt_points(left)}.")
-    if np.allclose(got, right, atol=1e-6):
-        return wrong("that is the right piece (the curve over [1/2, 1]), read up the right edge of the pyramid; "
-                     "the left piece starts at P0.")
-    if np.allclose(got, left[::-1], atol=1e-6):
-        return wrong("these are the right points in reverse order: the left piece starts at P0 = C(0) and ends at "
-                     "C(1/2).")
-    level1 = bezier.de_casteljau_steps(SUBDIVIDE_CTRL, 0.5)[1]
-    if np.allclose(got[1:], level1, atol=1e-6):
-        return wrong("you took the midpoints of the control polygon (level 1 of the pyramid); the left piece takes "
-                     "the FIRST point of every level: P0, P0^1, P0^2, P0^3.")
-    return check_points(got, left, what=what, hint="take the first point of each level of the pyramid at t = 1/2")
+    t = SUBDIVIDE_T
+    left, right = bezier.subdivide(SUBDIVIDE_CTRL, t)
+    if got.shape != right.shape:
+        return wrong(f"{what} should be four points [x, y] (a piece of a cubic is a cubic); your answer has "
+                     f"{len(got) if got.ndim else 'one'} entries.")
+    if np.allclose(got, right, atol=1e-4):
+        return correct("the right piece is the right edge of the de Casteljau pyramid, read from the apex C(t) up to P3.")
+    if np.allclose(got, right[::-1], atol=1e-4):
+        return wrong("these are the right points in reverse order: the right piece starts at the apex C(t) and ends "
+                     "at P3 = C(1).")
+    if np.allclose(got, left, atol=1e-4) or np.allclose(got, left[::-1], atol=1e-4):
+        return wrong("that is the left piece (the curve over [0, t]), the left edge of the pyramid; the right piece "
+                     "is its right edge, the LAST point of every level.")
+    swapped = bezier.subdivide(SUBDIVIDE_CTRL, 1 - t)[1]
+    if np.allclose(got, swapped, atol=1e-4) or np.allclose(got, swapped[::-1], atol=1e-4):
+        return wrong(f"that is the split at t = {fmt(1 - t)}: each level takes (1-t) P_j + t P_(j+1), a fraction t of "
+                     f"the way from P_j to P_(j+1), not a fraction 1 - t.")
+    level1 = bezier.de_casteljau_steps(SUBDIVIDE_CTRL, t)[1]
+    if np.allclose(got[:3], level1, atol=1e-4) or np.allclose(got[1:], level1, atol=1e-4):
+        return wrong("you took the points of level 1 of the pyramid; the right piece takes the LAST point of every "
+                     "level, from the apex up to P3.")
+    return check_points(got, right, what=what, tol=1e-4,
+                        hint="the k-th point is the last point of level 3 - k of the pyramid")
 
 
-def check_reparametrised_parameter(answer) -> Result:
-    """Check the original parameter of ``s = REPARAM_S`` on the right piece of a split at ``REPARAM_T`` (Goldman §25.2).
+def check_piece_parameter(answer) -> Result:
+    """Check the parameter s of the right piece of a split at ``PIECE_SPLIT_T`` that gives C(``PIECE_T``) (Goldman §25.2).
 
-    Recognises the left piece's formula ``t s``.
+    Recognises the shift without the division by the piece's length, the division by the left
+    piece's length, the forward map t + (1 - t) s applied instead of its inverse, and the left
+    piece's formula t / split.
 
-    >>> check_reparametrised_parameter(0.125)
-    Not yet: t s = 0.125 is the formula of the LEFT piece, which covers [0, t]; the right piece covers [t, 1]: t + (1 - t) s.
+    >>> check_piece_parameter(0.3)
+    Not yet: you shifted by the split parameter but did not rescale: R(s) = C(t0 + (1 - t0) s) stretches [0, 1] over an interval of length 1 - t0, so divide by it.
     """
-    t, s = REPARAM_T, REPARAM_S
-    expected = t + (1 - t) * s
-    value, err = read_number(answer, "the parameter")
+    t0, t = PIECE_SPLIT_T, PIECE_T
+    expected = (t - t0) / (1 - t0)
+    value, err = read_number(answer, "the parameter s")
     if err is not None:
         return err
-    if abs(value - expected) <= 1e-9:
-        return correct(f"s = {fmt(s)} of the right piece is t = {fmt(expected)} of the original curve.")
-    if abs(value - t * s) <= 1e-9:
-        return wrong(f"t s = {fmt(t * s)} is the formula of the LEFT piece, which covers [0, t]; the right piece "
-                     f"covers [t, 1]: t + (1 - t) s.")
-    return check_number(value, expected, what="the parameter", tol=1e-9,
-                        hint="the right piece maps [0, 1] onto [t, 1], so s goes to t + (1 - t) s")
+    if abs(value - expected) <= 1e-4:
+        return correct(f"C({fmt(t)}) is R({fmt(expected)}).")
+    if abs(value - (t - t0)) <= 1e-4:
+        return wrong("you shifted by the split parameter but did not rescale: R(s) = C(t0 + (1 - t0) s) stretches "
+                     "[0, 1] over an interval of length 1 - t0, so divide by it.")
+    if abs(value - (t - t0) / t0) <= 1e-4:
+        return wrong("you divided by the length of the LEFT piece's interval [0, t0]; R covers [t0, 1], whose length "
+                     "is 1 - t0.")
+    if abs(value - (t0 + (1 - t0) * t)) <= 1e-4:
+        return wrong("you applied the map s -> t0 + (1 - t0) s to the original parameter; here the original parameter "
+                     "is given, so solve t = t0 + (1 - t0) s for s.")
+    if abs(value - t / t0) <= 1e-4:
+        return wrong("t / t0 is the parameter of the LEFT piece, which covers [0, t0]; the point lies beyond the "
+                     "split, on the right piece.")
+    return wrong(f"s is {off_by(value, expected)}. Solve t = t0 + (1 - t0) s for s.")
 
 
 def check_flatness(answer) -> Result:
-    """Check the flatness of the straight, unevenly parametrised ``FLATNESS_CTRL`` (Goldman §25.3).
+    """Check the flatness (even spacing) of ``FLATNESS_CTRL`` (Goldman §25.3).  Tolerance 1e-3.
 
-    Recognises 0 (straightness alone) and explains why the spacing matters.
+    Recognises the distance to the chord line (not to the evenly spaced chord points), the
+    smaller of the two distances (max vs min) and the sum of the distances.
 
-    >>> check_flatness(1.0)
-    Correct: the flatness is 1: P1 = (3, 0) is 1 away from the evenly spaced point (2, 0).
-    >>> check_flatness(0)
-    Not yet: the control points are collinear, so the polygon is straight (distance 0 from the chord), but they are not evenly spaced: P1 = (3, 0) should be at (2, 0) for the curve to run along the chord at constant speed. The flatness measures |P1 - (P0 + P2)/2|.
+    >>> check_flatness(5 ** 0.5)
+    Correct: the flatness is 2.236, the distance of P2 from the chord point L2.
+    >>> check_flatness(2)
+    Not yet: that is the largest distance of a control point from the chord LINE; the flatness compares P_k with the evenly spaced chord points L_k = (1 - k/n) P0 + (k/n) Pn, which also measures the uneven spacing along the chord.
     """
     P = FLATNESS_CTRL
     expected = bezier.flatness(P)
     value, err = read_number(answer, "the flatness")
     if err is not None:
         return err
-    mid = (P[0] + P[-1]) / 2
-    if abs(value - expected) <= 1e-9:
-        return correct(f"the flatness is {fmt(expected)}: P1 = {fmt(P[1])} is {fmt(expected)} away from the evenly "
-                       f"spaced point {fmt(mid)}.")
-    if abs(value) <= 1e-9:
-        return wrong(f"the control points are collinear, so the polygon is straight (distance 0 from the chord), "
-                     f"but they are not evenly spaced: P1 = {fmt(P[1])} should be at {fmt(mid)} for the curve to run "
-                     f"along the chord at constant speed. The flatness measures |P1 - (P0 + P2)/2|.")
-    return check_number(value, expected, what="the flatness", tol=1e-9,
-                        hint="compare P1 with the midpoint of P0 and P2")
+    n = len(P) - 1
+    w = (np.arange(n + 1) / n)[:, None]
+    dist = np.linalg.norm(P - ((1 - w) * P[0] + w * P[-1]), axis=1)
+    if abs(value - expected) <= 1e-3:
+        k = int(np.argmax(dist))
+        return correct(f"the flatness is {fmt(expected)}, the distance of P{k} from the chord point L{k}.")
+    if abs(value - bezier.flatness(P, even=False)) <= 1e-3:
+        return wrong("that is the largest distance of a control point from the chord LINE; the flatness compares P_k "
+                     "with the evenly spaced chord points L_k = (1 - k/n) P0 + (k/n) Pn, which also measures the "
+                     "uneven spacing along the chord.")
+    inner = dist[1:-1]
+    if abs(value - inner.min()) <= 1e-3:
+        return wrong("that is the SMALLER of the two distances |P1 - L1| and |P2 - L2|; the bound is the largest.")
+    if abs(value - inner.sum()) <= 1e-3:
+        return wrong("you added the distances; the bound is the largest of them (every C(t) - chord(t) is a convex "
+                     "combination of the P_k - L_k).")
+    return wrong(f"the flatness is {off_by(value, expected)}. Compute L_k = (1 - k/3) P0 + (k/3) P3 and take the largest "
+                 f"|P_k - L_k|.")
+
+
+def check_patch_split(answer) -> Result:
+    """Check the net of ``PATCH_NET`` over 0 <= v <= ``PATCH_V`` (Goldman §25.3.2).
+
+    answer: (2, 3, 3).  Recognises the split taken in u (along the columns) instead of v, the
+    other piece (v >= PATCH_V), rows reversed, and a wrong shape.
+
+    >>> check_patch_split([[[0, 0, 0], [0, 1, 2], [0, 2, 2]], [[4, 0, 0], [4, 1, 1], [4, 2, 1.5]]])
+    Correct: the net matches: each row (a quadratic in v) is subdivided by de Casteljau, and the rows stay rows.
+    """
+    what = "the sub-net"
+    got, err = read_points(answer, what, ask="the sub-net as two rows of three points [x, y, z]")
+    if err is not None:
+        return err
+    # split in v only (u = 1 leaves the u-direction whole): every row, a curve in v, is subdivided
+    pieces = bezier.subdivide_patch(PATCH_NET, 1.0, PATCH_V)
+    lo_v, hi_v = pieces[0, 0], pieces[0, 1]
+    expected = lo_v
+    if got.shape != expected.shape:
+        return wrong(f"{what} should be two rows of three points [x, y, z], shape (2, 3, 3): subdividing in v keeps "
+                     f"the degrees; your answer has shape {got.shape}.")
+    if np.allclose(got, expected, atol=1e-4):
+        return correct("the net matches: each row (a quadratic in v) is subdivided by de Casteljau, and the rows "
+                       "stay rows.")
+    if np.allclose(got, hi_v, atol=1e-4) or np.allclose(got, hi_v[:, ::-1], atol=1e-4):
+        return wrong(f"that is the other piece, v >= {fmt(PATCH_V)}: the piece over [0, v] keeps the first point of "
+                     f"every level of each row's pyramid.")
+    if np.allclose(got, lo_v[:, ::-1], atol=1e-4):
+        return wrong("each row is in reverse order: the piece's row j = 0 point is the original P_i0, where v = 0.")
+    col_lo = bezier.subdivide_patch(PATCH_NET, 0.5, 1.0)[0, 0]
+    if np.allclose(got, col_lo, atol=1e-4):
+        return wrong("you split in u, along the columns: v goes with the column index j, so subdivide each ROW "
+                     "(P_i0, P_i1, P_i2) as a quadratic in v.")
+    bad = np.flatnonzero(np.abs(got - expected).reshape(-1, 3).max(axis=1) > 1e-4)
+    k = int(bad[0])
+    i, j = divmod(k, 3)
+    dist = float(np.linalg.norm(got[i, j] - expected[i, j]))
+    return wrong(f"point [{i}][{j}] of {what} is {fmt(dist, 2)} from where it should be ({bad.size} of 6 points are "
+                 f"off). Hint: run de Casteljau at v on each row and keep the first point of every level.")
+
+
+def _box_pairs() -> tuple[int, int]:
+    """(pairs whose control-point boxes overlap, actual crossings) after one split of each curve."""
+    halves_a = bezier.subdivide(BOX_A, 0.5)
+    halves_b = bezier.subdivide(BOX_B, 0.5)
+    count = 0
+    for pa in halves_a:
+        for pb in halves_b:
+            lo = np.maximum(pa.min(axis=0), pb.min(axis=0))
+            hi = np.minimum(pa.max(axis=0), pb.max(axis=0))
+            count += bool(np.all(lo <= hi))
+    return count, len(bezier.intersect_curves(BOX_A, BOX_B))
+
+
+def check_box_pairs(answer) -> Result:
+    """Check how many of the four pairs of halves of ``BOX_A`` and ``BOX_B`` keep overlapping boxes (Goldman §25.3.1).
+
+    Recognises 4 (every pair kept), the number of actual intersections, and 1 (only the pairs
+    that really meet counted, or one half of each curve).
+
+    >>> check_box_pairs(3)
+    Correct: 3 of the 4 pairs keep overlapping boxes; the curve pieces of one of them do not meet at all, and further splitting discards it.
+    >>> check_box_pairs(4)
+    Not yet: not every pair survives: compare the x-ranges of the control points of each half of the parabola with those of each half of the segment.
+    """
+    expected, crossings = _box_pairs()
+    value, err = read_number(answer, "the number of pairs", "whole number")
+    if err is not None:
+        return err
+    if value == expected:
+        return correct(f"{expected} of the 4 pairs keep overlapping boxes; the curve pieces of one of them do not meet "
+                       f"at all, and further splitting discards it.")
+    if value == 4:
+        return wrong("not every pair survives: compare the x-ranges of the control points of each half of the parabola "
+                     "with those of each half of the segment.")
+    if value == crossings:
+        return wrong("that counts the intersections of the curves; the box test is coarser: it keeps every pair whose "
+                     "boxes overlap, even when the pieces inside do not meet.")
+    if value < 0 or value > 4 or value != int(value):
+        return wrong("the answer is a whole number of pairs between 0 and 4.")
+    return wrong("that is not the number of overlapping pairs: write down the box [xmin, xmax] x [ymin, ymax] of each "
+                 "half's control points, then test the 4 pairs; two boxes overlap when both their x- and y-ranges do.")
 
 
 def check_crossing_bound(answer) -> Result:
-    """Check the variation-diminishing bound for ``CROSSING_CTRL`` and the line y = ``CROSSING_LINE_Y`` (Goldman §25.4).
+    """Check the variation-diminishing bound for ``CROSSING_CTRL`` and y = ``CROSSING_LINE_Y`` (Goldman §25.4).
 
-    Recognises the number of control points (or of legs) given instead of the crossings.
+    Recognises the number of control points, the degree (the bound for any polynomial curve of
+    that degree) and the number of times the curve itself crosses the line.
 
     >>> check_crossing_bound(3)
-    Correct: the control polygon crosses y = 0.5 three times, so the curve crosses it at most 3 times (here it does 3 times).
-    >>> check_crossing_bound(4)
-    Not yet: 4 is the number of control points; the bound is the number of times the POLYGON crosses the line: count the sign changes of y - 0.5 along P0, ..., P3.
+    Correct: the control polygon crosses y = 0.5 three times, so the curve crosses it at most 3 times (here it does once).
+    >>> check_crossing_bound(5)
+    Not yet: 5 is the number of control points; the bound is the number of times the POLYGON crosses the line: count the sign changes of y - 0.5 along P0, ..., P4.
     """
-    P = CROSSING_CTRL
-    y = CROSSING_LINE_Y
+    P, y = CROSSING_CTRL, CROSSING_LINE_Y
     expected = bezier.variation_count(P, [0.0, y], [0.0, 1.0])
     actual = bezier.curve_crossings(P, [0.0, y], [0.0, 1.0])
     value, err = read_number(answer, "the bound", "whole number")
     if err is not None:
         return err
+    words = {1: "once", 2: "twice", 3: "three times"}
     if value == expected:
-        words = {1: "once", 2: "twice", 3: "three times"}.get(expected, f"{expected} times")
-        return correct(f"the control polygon crosses y = {fmt(y)} {words}, so the curve crosses it at most "
-                       f"{expected} times (here it does {actual} times).")
-    if value == len(P):
-        return wrong(f"{len(P)} is the number of control points; the bound is the number of times the POLYGON "
-                     f"crosses the line: count the sign changes of y - {fmt(y)} along P0, ..., P{len(P) - 1}.")
-    if value == len(P) - 1:
-        return wrong(f"{len(P) - 1} is the degree (the most a cubic can cross any line); the variation diminishing "
-                     f"property gives a sharper bound: the number of crossings of the control polygon.")
-    return wrong(f"the bound should be {expected}, you gave {fmt(value)}: count how often consecutive control points "
-                 f"lie on opposite sides of y = {fmt(y)}.")
+        return correct(f"the control polygon crosses y = {fmt(y)} {words.get(expected, f'{expected} times')}, so the "
+                       f"curve crosses it at most {expected} times (here it does {words.get(actual, f'{actual} times')}).")
+    n = len(P) - 1
+    if value == n + 1:
+        return wrong(f"{n + 1} is the number of control points; the bound is the number of times the POLYGON crosses "
+                     f"the line: count the sign changes of y - {fmt(y)} along P0, ..., P{n}.")
+    if value == n:
+        return wrong(f"{n} is the degree, the bound for every curve of degree {n}; the variation diminishing property "
+                     f"gives a sharper one for this curve: the number of crossings of its control polygon.")
+    if value == actual:
+        return wrong("that is how often the curve itself crosses the line (you may have plotted it); the question asks "
+                     "for the bound read off the control polygon without drawing the curve, which may be larger.")
+    return wrong(f"the bound is {off_by(value, expected)}: count how often consecutive control points lie on opposite "
+                 f"sides of y = {fmt(y)}.")
 
 
-def check_c2_continuation(answer) -> Result:
-    """Check Q0, Q1, Q2 of a cubic continuing ``C2_CTRL`` with C2 continuity (Goldman §25.5).
+def check_join_order(answer) -> Result:
+    """Check the order of continuity of the join of ``ORDER_P`` and ``ORDER_R`` (Goldman §25.5).
 
-    answer: (3, 2).  Says which order of continuity the answer does reach (C0, C1) and recognises
-    Q2 taken as the reflection of P1 through P3.
+    Recognises the order found by comparing tangents only (1), the degree (3) and answers that
+    deny the curves meet.
 
-    >>> check_c2_continuation([[4, 2], [5, 1], [5, -2]])
-    Correct: Q0, Q1, Q2 are the first three control points of the curve's own continuation, so the join is C2.
-    >>> check_c2_continuation([[4, 2], [5, 1], [7, 2]])
-    Not yet: the join is C1 but not C2: Q2 should be (5, -2). Reflecting P1 through P3 is not the rule; the C2 rule is Q2 = P1 - 4 P2 + 4 P3 (continue the de Casteljau construction past t = 1).
+    >>> check_join_order(2)
+    Correct: R0, R1, R2 are the first three control points of P's continuation and R3 is not, so the join is C2 but not C3.
+    >>> check_join_order(3)
+    Not yet: C3 would need all four control points of R to be those of P's continuation, and then R would be P's own polynomial; compare R3 with -P0 + 6 P1 - 12 P2 + 8 P3.
     """
-    what = "Q0, Q1, Q2"
-    got, err = read_points(answer, what, ask=what + " as [[x0, y0], [x1, y1], [x2, y2]]")
+    expected = bezier.join_order(ORDER_P, ORDER_R)
+    value, err = read_number(answer, "k", "whole number")
     if err is not None:
         return err
-    if got.shape != (3, 2):
-        return wrong(f"{what} should be three points, shape (3, 2); yours has shape {got.shape}.")
-    P = C2_CTRL
-    cont = bezier.smooth_continuation(P, 1.0)
-    trial = cont.copy()
-    trial[:3] = got
-    order = bezier.join_order(P, trial)
-    if order >= 2:
-        return correct("Q0, Q1, Q2 are the first three control points of the curve's own continuation, so the join "
-                       "is C2.")
-    if order < 0:
-        return wrong(f"the curves do not even meet: Q0 should be P3 = {fmt(P[-1])}.")
-    if order == 0:
-        return wrong(f"the curves meet (C0) but the tangents differ: Q1 should be 2 P3 - P2 = {fmt(cont[1])}.")
-    reflect = 2 * P[-1] - P[1]
-    extra = ""
-    if np.allclose(got[2], reflect, atol=1e-6):
-        extra = " Reflecting P1 through P3 is not the rule;"
-    return wrong(f"the join is C1 but not C2: Q2 should be {fmt(cont[2])}.{extra} the C2 rule is "
-                 f"Q2 = P1 - 4 P2 + 4 P3 (continue the de Casteljau construction past t = 1).")
+    if value == expected:
+        return correct("R0, R1, R2 are the first three control points of P's continuation and R3 is not, so the join "
+                       "is C2 but not C3.")
+    if value == 3:
+        return wrong("C3 would need all four control points of R to be those of P's continuation, and then R would be "
+                     "P's own polynomial; compare R3 with -P0 + 6 P1 - 12 P2 + 8 P3.")
+    if value == 1:
+        return wrong("the tangents agree (R1 = 2 P3 - P2), but look one step further: compare R2 with "
+                     "P1 - 4 P2 + 4 P3, the next control point of P's continuation.")
+    if value in (0, -1):
+        return wrong("the curves do meet (R0 = P3) and more: continue P past its end by extrapolating subdivision and "
+                     "count how many of R's control points agree with the continuation.")
+    return wrong("k is a whole number between 0 and the degree 3: the join is C^k when R0, ..., Rk are the first "
+                 "k + 1 control points of P's continuation.")
+
+
+SLIPS = {
+    "check_subdivision_right": [[[12, 4], [11, 3], [10, 2.75], [9, 2.875]], [[0, 4], [3, 7], [6, 3.25], [9, 2.875]],
+                                [[3, 5.125], [6, 4.75], [9, 1], [12, 4]], [[9, 2.875], [10, 2.75], [11, 3]]],
+    "check_piece_parameter": [0.3, 0.75, 0.82, 1.75],
+    "check_flatness": [2.0, 2 ** 0.5, 2 ** 0.5 + 5 ** 0.5],
+    "check_patch_split": [
+        [[[0, 2, 2], [0, 3, 2], [0, 4, 0]], [[4, 2, 1.5], [4, 3, 2], [4, 4, 2]]],
+        [[[0, 0, 0], [0, 2, 4], [0, 4, 0]], [[2, 0, 0], [2, 2, 3], [2, 4, 1]]],
+        [[[0, 2, 2], [0, 1, 2], [0, 0, 0]], [[4, 2, 1.5], [4, 1, 1], [4, 0, 0]]],
+    ],
+    "check_box_pairs": [4, 2],
+    "check_crossing_bound": [5, 4, 1],
+    "check_join_order": [3, 1, 0],
+}
+
+
+# -- the programming project: de Casteljau subdivision ---------------------------------------------
+
+_DEGREE_WORDS = {1: "segment", 2: "quadratic", 3: "cubic", 4: "quartic", 5: "quintic"}
+
+
+def _label(P: np.ndarray, t: float) -> str:
+    return f"the {len(P[0])}D {_DEGREE_WORDS.get(len(P) - 1, f'degree-{len(P) - 1} curve')} {fmt_points(P, 3)} at t = {fmt(t)}"
+
+
+def subdivision_project_cases() -> list[Case]:
+    """The cases of :func:`check_subdivision_project`: degrees 1 to 5 in 2D and 3D with random
+    control points and parameters (a fixed seed), then degenerate ones: all control points equal,
+    t = 0, t = 1, collinear unevenly spaced points, a repeated control point."""
+    rng = np.random.default_rng(2025)
+    cases = []
+    for d in (2, 3):
+        for n in range(1, 6):
+            P = np.round(rng.uniform(-5, 5, size=(n + 1, d)), 2)
+            t = float(np.round(rng.uniform(0.1, 0.9), 2))
+            cases.append(Case(_label(P, t), (P, t), kind=f"random {d}D"))
+    P = np.tile([1.5, -2.0], (4, 1))
+    cases.append(Case(_label(P, 0.3), (P, 0.3), kind="all control points equal"))
+    P = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 1.0]])
+    cases.append(Case(_label(P, 0.0), (P, 0.0), kind="t = 0"))
+    P = np.array([[0.0, 0.0, 0.0], [1.0, 2.0, 1.0], [3.0, 1.0, -1.0], [4.0, 0.0, 2.0], [5.0, 1.0, 0.0]])
+    cases.append(Case(_label(P, 1.0), (P, 1.0), kind="t = 1"))
+    P = np.array([[0.0, 0.0], [2.7, 0.9], [3.0, 1.0], [6.0, 2.0]])
+    cases.append(Case(_label(P, 0.6), (P, 0.6), kind="collinear points"))
+    P = np.array([[0.0, 0.0, 0.0], [2.0, 1.0, 0.0], [2.0, 1.0, 0.0], [4.0, 0.0, 3.0]])
+    cases.append(Case(_label(P, 0.35), (P, 0.35), kind="a repeated control point"))
+    return cases
+
+
+def _compare_split(got, expected, case) -> str | None:
+    P, t = case.args
+    left, right = (np.asarray(x, dtype=float) for x in expected)
+    if not isinstance(got, (tuple, list, np.ndarray)) or len(got) != 2:
+        return "it should return two control polygons, (left, right)"
+    try:
+        gl, gr = (np.asarray(x, dtype=float) for x in got)
+    except (TypeError, ValueError):
+        return "the two polygons should be arrays of numbers"
+    if gl.ndim != 2 or gr.ndim != 2:
+        return ("it should return two control polygons, (left, right), each an (n+1, d) array of points; "
+                "yours are not two arrays of points")
+    for name, g, e in (("left", gl, left), ("right", gr, right)):
+        if g.shape != e.shape:
+            return (f"your {name} polygon has shape {g.shape}; it should have shape {e.shape}, as many points as "
+                    f"the curve has control points")
+        if not np.all(np.isfinite(g)):
+            return f"your {name} polygon contains NaN or infinite values"
+    tol = 1e-9 * max(1.0, float(np.abs(P).max()))
+    if np.allclose(gl, left, atol=tol) and np.allclose(gr, right, atol=tol):
+        return None
+    if np.allclose(gl, left, atol=tol) and np.allclose(gr, right[::-1], atol=tol):
+        return ("your right polygon is in reverse order: it should start at C(t), the apex of the pyramid, and end "
+                "at the last control point")
+    if np.allclose(gl, right, atol=tol) and np.allclose(gr, left, atol=tol):
+        return "the two polygons are exchanged: the left one (the curve over [0, t]) starts at the first control point"
+    other = bezier.subdivide(P, 1.0 - t)
+    if np.allclose(gl, other[0], atol=tol) and np.allclose(gr, other[1], atol=tol):
+        return (f"these are the polygons of the split at 1 - t = {fmt(1 - t)}: each level should take "
+                f"(1 - t) P_j + t P_(j+1), a fraction t of the way from P_j to P_(j+1)")
+    for name, g, e in (("left", gl, left), ("right", gr, right)):
+        err = np.linalg.norm(g - e, axis=1)
+        bad = np.flatnonzero(err > tol)
+        if bad.size:
+            k = int(bad[0])
+            return (f"your {name} polygon's point {k} is {fmt(err[k], 2)} from where it should be, {fmt(e[k])} "
+                    f"({bad.size} of {len(e)} points are off)")
+    return None
+
+
+def check_subdivision_project(function) -> Result:
+    """Run the learner's ``function(ctrl, t) -> (left, right)`` on :func:`subdivision_project_cases` and
+    compare with :func:`goldman_lib.bezier.subdivide` (Goldman §25.2).
+
+    Says which case fails first and how: polygons of the wrong shape, the right polygon reversed,
+    the two exchanged, t and 1 - t exchanged, or the first point that is off and by how much.
+
+    >>> check_subdivision_project(bezier.subdivide)
+    Correct: de Casteljau subdivision passes all 15 cases, including a repeated control point, all control points equal, collinear points, random 2D, random 3D, t = 0, t = 1.
+    """
+    return check_project(function, subdivision_project_cases(), reference=bezier.subdivide, compare=_compare_split,
+                         what="de Casteljau subdivision",
+                         hint="the left polygon is the first point of every level of the pyramid, the right polygon "
+                              "the last point of every level, from the apex to P_n")
