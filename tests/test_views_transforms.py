@@ -61,3 +61,32 @@ def test_projection_view_lands_on_the_plane_and_reports_the_eye_on_the_plane():
     assert np.allclose(r["image"], np.c_[V[:, 0], np.full(24, -2.0), V[:, 2]])
     r = view.set_values(kind="perspective", ey=-2.0)
     assert view.last_error is None and "eye must not lie on the plane" in r["status"]
+
+
+def test_composition_view_applies_a_then_b_and_shows_the_product():
+    view = tv.composition_view()
+    r = view.set_values(first="translate by (t, 0, 0)", second="rotate about the x axis", t=1.0, angle=90.0)
+    V = tv.F_VERTICES
+    # (x, y, z) + (1, 0, 0), then 90 degrees about x: (x + 1, -z, y); translation along x commutes with it
+    assert np.allclose(r["image"], np.c_[V[:, 0] + 1, -V[:, 2], V[:, 1]]) and "commute" in r["status"]
+    r = view.set_values(first="scale by s along z about the origin", second="translate by (t, 0, 0)", s=2.0, t=0.5)
+    assert np.allclose(r["image"], np.c_[V[:, 0] + 0.5, V[:, 1], 2 * V[:, 2]])
+    assert np.allclose(r["matrix"][3], [0.5, 0, 0, 1]) and np.allclose(np.diag(r["matrix"]), [1, 1, 2, 1])
+    r = view.set_values(first="translate by (t, 0, 0)", second="scale by s along z about the origin")
+    assert "commute" in r["status"]
+    r = view.set_values(first="translate by (t, 0, 0)", second="mirror in the plane x = m", t=1.0, m=1.0)
+    # x -> x + 1 -> 2 - (x + 1) = 1 - x; the other order: x -> 2 - x -> 3 - x
+    assert np.allclose(r["image"][:, 0], 1 - V[:, 0]) and np.allclose(r["other"][:, 0], 3 - V[:, 0])
+    assert "A B" in view.children[1].children[0].children[2].value
+
+
+def test_perspective_matrix_view_shows_the_homogeneous_coordinates():
+    view = tv.perspective_matrix_view()
+    r = view.set_values(ex=0.0, ey=-4.0, ez=0.0, plane_y=-2.0, tilt=0.0, corner=8)
+    V = tv.F_VERTICES
+    t = 2.0 / (V[:, 1] + 4.0)
+    assert np.allclose(r["image"], [0, -4, 0] + t[:, None] * (V - [0, -4, 0]))
+    assert np.allclose(r["corner"], [V[tv.FRONT[8]], r["image"][tv.FRONT[8]]])
+    assert "to < 1e-9" in r["status"] and "[P 1] M = (" in r["status"]
+    r = view.set_values(ey=-2.0)
+    assert view.last_error is None and "eye must not lie on the plane" in r["status"]
