@@ -26,7 +26,7 @@ import numpy as np
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite
 
 __all__ = ["translation", "rotation", "mirror", "scaling", "nonuniform_scaling", "orthogonal_projection",
-           "perspective", "apply", "compose", "translate", "rotate", "reflect", "scale", "scale_along",
+           "perspective", "apply", "homogeneous", "apply_to_vectors", "compose", "translate", "rotate", "reflect", "scale", "scale_along",
            "project_orthogonal", "project_perspective"]
 
 
@@ -311,3 +311,40 @@ def apply(points, M) -> np.ndarray:
         k = int(np.flatnonzero(np.abs(w).ravel() <= 1e-12 * scale_.ravel())[0])
         raise ValueError(f"points[{k}] is sent to infinity by M (its homogeneous coordinate is 0)")
     return h[..., :3] / w[..., None]
+
+
+def homogeneous(points, M) -> np.ndarray:
+    """The homogeneous coordinates ``[P 1] @ M`` of the images of points, before the divide
+    (Goldman §13.1, §13.5): the last coordinate is the weight ``w`` that :func:`apply` divides by.
+
+    points: (..., 3).  M: (4, 4).  Returns (..., 4).
+
+    >>> homogeneous([[2, 4, 2]], perspective([0, 0, 0], [0, 0, 1], [0, 0, 1])).tolist()
+    [[2.0, 4.0, 2.0, 2.0]]
+    """
+    P = _points(points)
+    A = check_finite(as_float_array(M, "M"), "M")
+    if A.shape != (4, 4):
+        raise ValueError(f"M must be a 4x4 matrix; got shape {A.shape}")
+    return P @ A[:3] + A[3]
+
+
+def apply_to_vectors(vectors, M) -> np.ndarray:
+    """Apply an affine 4x4 matrix to vectors, ``[v 0] @ M`` (Goldman §13.1): a vector has
+    homogeneous coordinate 0, so the translation row does not act on it and only the upper-left
+    3x3 block does.  Raises ValueError if M is not affine (its last column must be (0, 0, 0, 1):
+    a projective map sends some vectors to points, so "the image of a vector" has no meaning).
+
+    vectors: (..., 3).  M: (4, 4).  Returns (..., 3).
+
+    >>> apply_to_vectors([[1, 0, 0]], translation([5, 5, 5])).tolist()
+    [[1.0, 0.0, 0.0]]
+    """
+    v = as_points(vectors, "vectors", ndim=None, dim=3)
+    A = check_finite(as_float_array(M, "M"), "M")
+    if A.shape != (4, 4):
+        raise ValueError(f"M must be a 4x4 matrix; got shape {A.shape}")
+    if not np.allclose(A[:, 3], [0, 0, 0, 1], atol=1e-12):
+        raise ValueError("M must be affine (last column (0, 0, 0, 1)) to act on vectors; got last column "
+                         f"{A[:, 3].tolist()}")
+    return v @ A[:3, :3]

@@ -81,3 +81,20 @@ def test_bad_input_names_the_parameter():
         tf.apply([[1, 1, 0]], tf.perspective([0, 0, 0], [0, 0, 1], [0, 0, 1]))
     with pytest.raises(ValueError, match="M must be a 4x4 matrix"):
         tf.apply([[1, 1, 0]], np.eye(3))
+
+
+def test_homogeneous_coordinates_before_the_divide_and_vectors_ignore_translation():
+    # perspective from the origin onto z = 2 (c = 2): [x y z 1] M = (2x, 2y, 2z, z), worked by hand
+    M = tf.perspective([0, 0, 0], [0, 0, 2], [0, 0, 1])
+    assert tf.homogeneous([[3, 6, 4]], M).tolist() == [[6, 12, 8, 4]]
+    assert tf.apply([[3, 6, 4]], M).tolist() == [[1.5, 3, 2]]
+    # a vector is not moved by a translation; a rotation turns it as it turns points about the origin
+    T = tf.compose(tf.rotation([0, 0, 1], 90), tf.translation([5, 0, 0]))
+    assert np.allclose(tf.apply_to_vectors([[1, 0, 0]], T), [[0, 1, 0]])
+    assert np.allclose(tf.apply([[1, 0, 0]], T), [[5, 1, 0]])
+    # vector image = difference of point images (any affine map)
+    A = tf.compose(tf.mirror([1, 2, 0], [1, 1, 1]), tf.nonuniform_scaling(2, [0, 1, 1], [1, 0, 0]))
+    P, R = np.array([[1.0, 2, 3]]), np.array([[-1.0, 0.5, 2]])
+    assert np.allclose(tf.apply_to_vectors(P - R, A), tf.apply(P, A) - tf.apply(R, A))
+    with pytest.raises(ValueError, match="M must be affine"):
+        tf.apply_to_vectors([[1, 0, 0]], M)

@@ -1,0 +1,161 @@
+"""Tests of the chapter-13 exercise checkers and of the programming-project checker.  Right answers
+are worked by hand from the problem constants (so a bug in goldman_lib.transforms cannot make a
+checker accept a wrong answer)."""
+
+import numpy as np
+import pytest
+
+from goldman_lib.exercises import Result
+from goldman_lib.exercises import ch13
+
+# 90 degrees about y: rows are the images of e1, e2, e3: w × e1 = (0, 0, -1), e2, w × e3 = (1, 0, 0)
+BLOCK = [[0, 0, -1], [0, 1, 0], [1, 0, 0]]
+# Q - Q L with Q = (1, 0, 2): Q L = 1 (0, 0, -1) + 2 (1, 0, 0) = (2, 0, -1)
+ROW = [-1, 0, 3]
+# n = (1, 1, 0)/√2: I - 2 nᵀn swaps x and y with a minus sign; 2 (Q·n) n = 2 (2/√2)(1, 1, 0)/√2 = (2, 2, 0)
+MIRROR = [[0, -1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [2, 2, 0, 1]]
+# T R: block of R (x -> y, y -> -x), last row (1, 2, 0) R = (0, 1, 0) + 2 (-1, 0, 0) = (-2, 1, 0)
+COMPOSITE = [[0, 1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [-2, 1, 0, 1]]
+# the line from (0, 0, 5) through (2, 4, 3) meets z = 0 at t = 5/2: (5, 10, 0)
+PERSPECTIVE = [5, 10, 0]
+# (1, 2, 3) L = (0, 1, 0) + 2 (-1, 0, 0) + 3 (0, 0, 1) = (-2, 1, 3); the point adds (2, -1, 3)
+POINT_AND_VECTOR = [[0, 0, 6], [-2, 1, 3]]
+
+CHECKERS = [
+    (ch13.check_rotation_block, BLOCK),
+    (ch13.check_translation_row, ROW),
+    (ch13.check_mirror_matrix, MIRROR),
+    (ch13.check_composite_matrix, COMPOSITE),
+    (ch13.check_perspective_image, PERSPECTIVE),
+    (ch13.check_point_and_vector, POINT_AND_VECTOR),
+]
+IDS = [c.__name__ for c, _ in CHECKERS]
+
+
+def test_problem_constants_are_what_the_hand_answers_assume():
+    assert ch13.ROT_AXIS.tolist() == [0, 1, 0] and ch13.ROT_ANGLE == 90 and ch13.ROT_POINT.tolist() == [1, 0, 2]
+    assert ch13.MIRROR_PLANE_POINT.tolist() == [2, 0, 0] and ch13.MIRROR_NORMAL.tolist() == [1, 1, 0]
+    assert ch13.COMPOSE_SHIFT.tolist() == [1, 2, 0] and ch13.COMPOSE_ANGLE == 90
+    assert (ch13.PERSP_EYE.tolist(), ch13.PERSP_PLANE_POINT.tolist(), ch13.PERSP_NORMAL.tolist(),
+            ch13.PERSP_POINT.tolist()) == ([0, 0, 5], [0, 0, 0], [0, 0, 1], [2, 4, 3])
+    assert ch13.AFFINE_COORDS.tolist() == [1, 2, 3]
+    # the printed perspective matrix: c = (Q - E)·N = -5; c I + NᵀE; N; -(Q·N) E = 0; -E·N = -5
+    assert "[[-5, 0, 0, 0], [0, -5, 0, 0], [0, 0, 0, 1], [0, 0, 0, -5]]" in ch13.PROBLEMS["check_perspective_image"]
+
+
+@pytest.mark.parametrize("checker,answer", CHECKERS, ids=IDS)
+def test_right_answer_is_correct(checker, answer):
+    r = checker(answer)
+    assert isinstance(r, Result) and r.correct and r.answered, r
+
+
+def test_rotation_slips():
+    assert "column convention" in ch13.check_rotation_block(np.array(BLOCK).T.tolist()).message
+    assert "another coordinate axis" in ch13.check_rotation_block([[1, 0, 0], [0, 0, 1], [0, -1, 0]]).message
+    m = lambda a: ch13.check_translation_row(a).message  # noqa: E731
+    assert "sign is wrong" in m([1, 0, -3])
+    assert "through the origin" in m([0, 0, 0])
+    assert "not ±Q" in m([1, 0, 2]) and "not ±Q" in m([-1, 0, -2])
+    assert "transposed block" in m([3, 0, 1])
+
+
+def test_mirror_slips():
+    m = lambda a: ch13.check_mirror_matrix(a).message  # noqa: E731
+    assert "column convention" in m(np.array(MIRROR).T.tolist())
+    assert "orthogonal projection" in m([[0.5, -0.5, 0, 0], [-0.5, 0.5, 0, 0], [0, 0, 1, 0], [1, 1, 0, 1]])
+    assert "length √2" in m([[-1, -2, 0, 0], [-2, -1, 0, 0], [0, 0, 1, 0], [4, 4, 0, 1]])
+    assert "wrong sign" in m([[0, -1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [-2, -2, 0, 1]])
+    assert "through the origin" in m([[0, -1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
+
+
+def test_composition_slips():
+    m = lambda a: ch13.check_composite_matrix(a).message  # noqa: E731
+    assert "first rotate, then translate" in m([[0, 1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [1, 2, 0, 1]])
+    assert "column convention" in m(np.array(COMPOSITE).T.tolist())
+    assert "clockwise" in m([[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0], [2, -1, 0, 1]])
+
+
+def test_perspective_and_vector_slips():
+    m = lambda a: ch13.check_perspective_image(a).message  # noqa: E731
+    assert "dividing them by the fourth" in m([-10, -20, 0])
+    assert "by w itself" in m([-5, -10, 0])
+    assert "transpose" in m([2, 4, -0.2])
+    v = lambda a: ch13.check_point_and_vector(a).message  # noqa: E731
+    assert "vector was translated" in v([[0, 0, 6], [0, 0, 6]])
+    assert "point was not translated" in v([[-2, 1, 3], [-2, 1, 3]])
+    assert "swapped" in v([[-2, 1, 3], [0, 0, 6]])
+    assert "block L still acts" in v([[0, 0, 6], [1, 2, 3]])
+    assert "column convention" in v([[4, -2, 6], [2, -1, 3]])
+
+
+# -- the programming project --------------------------------------------------------------------------
+
+def hand_perspective(eye, plane_point, normal):
+    """The matrix of §13.5 written out by hand: [[c I + NᵀE, Nᵀ], [-(Q·N) E, -E·N]], c = (Q - E)·N."""
+    E, Q, N = (np.asarray(x, dtype=float) for x in (eye, plane_point, normal))
+    c = (Q - E) @ N
+    M = np.zeros((4, 4))
+    M[:3, :3] = c * np.eye(3) + np.outer(N, E)
+    M[:3, 3] = N
+    M[3, :3] = -(Q @ N) * E
+    M[3, 3] = -(E @ N)
+    return M
+
+
+def test_project_accepts_a_correct_function_and_any_nonzero_multiple():
+    r = ch13.check_perspective_matrix_project(hand_perspective)
+    assert r.correct, r
+    assert "an unnormalised normal" in r.message and "the eye far away" in r.message
+    assert ch13.check_perspective_matrix_project(lambda e, q, n: -2.5 * hand_perspective(e, q, n)).correct
+
+
+def test_project_names_a_transposed_matrix():
+    r = ch13.check_perspective_matrix_project(lambda e, q, n: hand_perspective(e, q, n).T)
+    assert not r.correct and r.answered
+    assert r.message.startswith("case 1 of 9 (eye ")
+    assert "goes to" in r.message and "expected" in r.message and "transposed (the column convention)" in r.message
+
+
+def test_project_names_the_unnormalised_normal_case():
+    def mixed(eye, plane_point, normal):
+        E, Q, N = (np.asarray(x, dtype=float) for x in (eye, plane_point, normal))
+        n = N / np.linalg.norm(N)
+        M = hand_perspective(E, Q, n)
+        M[:3, :3] = ((Q - E) @ N) * np.eye(3) + np.outer(n, E)   # c with the raw N, the rest with the unit n
+        return M
+
+    r = ch13.check_perspective_matrix_project(mixed)
+    assert not r.correct and r.message.startswith("case 5 of 9 (eye (1, -2, 6), plane through (0.5, 0, 1) with "
+                                                  "normal (0, 0, 3.7))")
+    assert "not a unit vector" in r.message
+
+
+def test_project_names_an_affine_matrix():
+    def affine(eye, plane_point, normal):
+        M = hand_perspective(eye, plane_point, normal)
+        M[:, 3] = [0, 0, 0, 1]
+        return M
+
+    r = ch13.check_perspective_matrix_project(affine)
+    assert not r.correct and "last column is (0, 0, 0, w)" in r.message
+
+
+def test_project_reports_a_crash_with_the_learners_line():
+    def broken(eye, plane_point, normal):
+        M = np.zeros((4, 4))
+        M[:3, 3] = np.append(normal, 1.0)
+        return M
+
+    r = ch13.check_perspective_matrix_project(broken)
+    assert not r.correct and "your function raised ValueError" in r.message
+    assert "M[:3, 3] = np.append(normal, 1.0)" in r.message
+
+
+def test_project_unanswered_and_wrong_shape():
+    def starter(eye, plane_point, normal):
+        """Return the matrix."""
+        ...
+
+    assert not ch13.check_perspective_matrix_project(starter).answered
+    r = ch13.check_perspective_matrix_project(lambda e, q, n: np.eye(3))
+    assert not r.correct and "a 4x4 matrix is expected" in r.message
