@@ -33,8 +33,9 @@ import numpy as np
 
 from goldman_lib.validation import as_float_array, check_finite
 
-__all__ = ["Point", "Vector", "affine_combination", "dot", "cross", "det", "length", "angle_between",
-           "dot_from_lengths", "cross_from_geometry", "cross_associator"]
+__all__ = ["Point", "Vector", "affine_combination", "combination_kind", "weighted_sum_from_origin", "dot", "cross",
+           "det", "det_cofactor_terms", "length", "angle_between", "dot_from_lengths", "cross_from_geometry",
+           "cross_associator"]
 
 
 def _coords(x, name: str) -> np.ndarray:
@@ -229,6 +230,55 @@ def affine_combination(points, weights) -> Point:
     return Point(base[..., 0, :] + np.einsum("k,...kd->...d", w, pts - base))
 
 
+def combination_kind(weights, tol: float = 1e-9) -> str:
+    """What the formal sum ``Σ w_i P_i`` of points is (Goldman §9.3, Appendix B): ``"point"`` when
+    the weights sum to 1 (an affine combination), ``"vector"`` when they sum to 0 (for instance
+    ``P - Q``), ``"undefined"`` otherwise (the result would depend on the origin).
+
+    weights: (k,) finite numbers; tol: how close to 1 or 0 the sum must be.
+
+    >>> combination_kind([2, -1]), combination_kind([1, -1]), combination_kind([1, 1])
+    ('point', 'vector', 'undefined')
+    """
+    w = check_finite(as_float_array(weights, "weights"), "weights")
+    if w.ndim != 1 or w.size == 0:
+        raise ValueError(f"weights must be a non-empty 1D sequence; got shape {w.shape}")
+    total = float(w.sum())
+    if abs(total - 1) <= tol:
+        return "point"
+    if abs(total) <= tol:
+        return "vector"
+    return "undefined"
+
+
+def weighted_sum_from_origin(points, weights, origin) -> np.ndarray:
+    """The location ``O + Σ w_i (P_i - O)``: what the coordinate sum ``Σ w_i P_i`` means when the
+    coordinates are measured from the origin ``O`` (Goldman §9.3).  Its location does not depend on
+    ``O`` exactly when the weights sum to 1 (then it is the affine combination); otherwise it moves
+    by ``(1 - Σ w_i)`` times the move of the origin.
+
+    points: (k, d).  weights: (k,).  origin: (d,) or (m, d) for several origins at once.  Returns
+    the location(s), shape (d,) or (m, d), as coordinates in the original frame.
+
+    >>> weighted_sum_from_origin([[0, 0], [4, 0]], [1, 1], [0, 0]).tolist()
+    [4.0, 0.0]
+    >>> weighted_sum_from_origin([[0, 0], [4, 0]], [1, 1], [1, 2]).tolist()   # moved with the origin
+    [3.0, -2.0]
+    >>> weighted_sum_from_origin([[0, 0], [4, 0]], [0.5, 0.5], [1, 2]).tolist()  # the midpoint, always
+    [2.0, 0.0]
+    """
+    pts = _coords(points, "points")
+    w = check_finite(as_float_array(weights, "weights"), "weights")
+    O = _coords(origin, "origin")
+    if pts.ndim != 2:
+        raise ValueError(f"points must have shape (k, d); got shape {pts.shape}")
+    if w.shape != (pts.shape[0],):
+        raise ValueError(f"weights must have one entry per point: {pts.shape[0]} points, weights of shape {w.shape}")
+    if O.shape[-1] != pts.shape[-1] or O.ndim > 2:
+        raise ValueError(f"origin must have shape ({pts.shape[-1]},) or (m, {pts.shape[-1]}); got shape {O.shape}")
+    return O + np.einsum("k,...kd->...d", w, pts - O[..., None, :])
+
+
 def dot(u, v):
     """The dot product ``Σ u_i v_i`` in rectangular coordinates (Goldman §10.2), vectorised over
     leading axes.  Points are refused: the dot product is defined for vectors.
@@ -268,6 +318,21 @@ def det(u, v, w):
     """
     c = cross(u, v)
     return dot(c, _vector3(w, "w"))
+
+
+def det_cofactor_terms(u, v, w) -> np.ndarray:
+    """The three terms of the cofactor expansion of ``det(u, v, w)`` along its first row (Goldman §10.3),
+    rows u, v, w: ``u1 (v2 w3 - v3 w2)``, ``-u2 (v1 w3 - v3 w1)``, ``u3 (v1 w2 - v2 w1)``.  Their sum is
+    :func:`det`.  Vectorised over leading axes; returns shape (..., 3).
+
+    >>> det_cofactor_terms([1, 2, 3], [0, 1, 4], [5, 6, 0]).tolist()
+    [-24.0, 40.0, -15.0]
+    """
+    a, b, c = _vector3(u, "u"), _vector3(v, "v"), _vector3(w, "w")
+    a, b, c = np.broadcast_arrays(a, b, c)
+    return np.stack([a[..., 0] * (b[..., 1] * c[..., 2] - b[..., 2] * c[..., 1]),
+                     -a[..., 1] * (b[..., 0] * c[..., 2] - b[..., 2] * c[..., 0]),
+                     a[..., 2] * (b[..., 0] * c[..., 1] - b[..., 1] * c[..., 0])], axis=-1)
 
 
 def length(v):

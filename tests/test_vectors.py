@@ -86,3 +86,39 @@ def test_angles_and_lengths_by_hand():
         vc.angle_between([0, 0, 0], [1, 0, 0])
     with pytest.raises(TypeError, match="a point has no length"):
         vc.length(Point([1, 1]))
+
+
+def test_combination_kind_by_the_sum_of_the_weights():
+    assert vc.combination_kind([0.5, 0.5]) == "point"       # the midpoint
+    assert vc.combination_kind([2, -1]) == "point"          # 2P - Q = P + (P - Q)
+    assert vc.combination_kind([1, -1]) == "vector"         # P - Q
+    assert vc.combination_kind([3, -2, -1]) == "vector"
+    assert vc.combination_kind([1, 1]) == "undefined"       # P + Q
+    with pytest.raises(ValueError, match="weights must be a non-empty 1D"):
+        vc.combination_kind([])
+
+
+def test_weighted_sum_from_origin_moves_with_the_origin_unless_affine():
+    pts = np.array([[0.0, 0.0], [4.0, 0.0], [0.0, 2.0]])
+    # by hand: weights (1, 1, 1) from the origin (1, 1): (1, 1) + (-1, -1) + (3, -1) + (-1, 1) = (2, 0)
+    assert vc.weighted_sum_from_origin(pts, [1, 1, 1], [1, 1]).tolist() == [2.0, 0.0]
+    # from (0, 0) the same weights give the coordinate sum (4, 2): the location moved
+    assert vc.weighted_sum_from_origin(pts, [1, 1, 1], [0, 0]).tolist() == [4.0, 2.0]
+    # weights (0.5, 0.25, 0.25) sum to 1: (1, 0.5) from every origin
+    origins = np.array([[0.0, 0.0], [1.0, 1.0], [-7.0, 3.5]])
+    assert np.allclose(vc.weighted_sum_from_origin(pts, [0.5, 0.25, 0.25], origins), [[1.0, 0.5]] * 3)
+    # in general the location moves by (1 - sum w) times the move of the origin
+    w = np.array([0.7, 0.9, -0.1])
+    a, b = vc.weighted_sum_from_origin(pts, w, origins[:2])
+    assert np.allclose(b - a, (1 - w.sum()) * (origins[1] - origins[0]))
+    with pytest.raises(ValueError, match="one entry per point"):
+        vc.weighted_sum_from_origin(pts, [1, 0], [0, 0])
+
+
+def test_det_cofactor_terms_by_hand_and_against_numpy():
+    # rows (2, 1, 3), (1, -1, 2), (4, 0, 1): 2(-1 - 0) - 1(1 - 8) + 3(0 + 4) = -2 + 7 + 12 = 17
+    terms = vc.det_cofactor_terms([2, 1, 3], [1, -1, 2], [4, 0, 1])
+    assert terms.tolist() == [-2.0, 7.0, 12.0]
+    rng = np.random.default_rng(11)
+    u, v, w = rng.normal(size=(3, 20, 3))
+    assert np.allclose(vc.det_cofactor_terms(u, v, w).sum(-1), np.linalg.det(np.stack([u, v, w], axis=-2)))
