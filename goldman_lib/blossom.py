@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_int, as_parameter, as_points
+from goldman_lib.validation import as_float, as_int, as_parameter, as_points, finite_result
 
 __all__ = ["blossom", "blossom_steps", "control_points_on_interval", "subdivide_by_blossom",
            "homogeneous_blossom", "derivative_by_blossom", "monomial_to_bezier", "bezier_to_monomial"]
@@ -47,7 +47,7 @@ def _ctrl(ctrl, name: str = "ctrl") -> np.ndarray:
 def _args(args, n: int, name: str = "args") -> np.ndarray:
     u = as_parameter(args, name)
     if u.ndim == 0 or u.shape[-1] != n:
-        raise ValueError(f"{name} must have shape (..., n) with n = {n} (the degree) arguments in the last axis; "
+        raise ValueError(f"{name} must have shape (..., n) with n = {n} (the degree of ctrl) arguments in the last axis; "
                          f"got shape {u.shape}")
     return u
 
@@ -81,7 +81,8 @@ def blossom(ctrl, args) -> np.ndarray:
     n = P.shape[0] - 1
     U = _args(args, n)
     lead = U.shape[:-1]
-    return _blossom_levels(P, U.reshape(math.prod(lead), n)).reshape(lead + (P.shape[1],))
+    out = _blossom_levels(P, U.reshape(math.prod(lead), n)).reshape(lead + (P.shape[1],))
+    return finite_result(out, "args", None)
 
 
 def blossom_steps(ctrl, args) -> list[np.ndarray]:
@@ -106,7 +107,7 @@ def blossom_steps(ctrl, args) -> list[np.ndarray]:
     cur = P
     for u in U:
         cur = (1.0 - u) * cur[:-1] + u * cur[1:]
-        levels.append(cur)
+        levels.append(finite_result(cur, "args", None))
     return levels
 
 
@@ -118,7 +119,8 @@ def control_points_on_interval(ctrl, a, b) -> np.ndarray:
     extrapolation; with a > b the curve is traversed backwards.
 
     ctrl: (n+1, d).  a, b: finite scalars.  Returns (n+1, d).
-    Raises ValueError for a bad ctrl or a non-scalar, non-finite a or b.
+    Raises ValueError for a bad ctrl, a non-scalar, non-finite a or b, or an interval so far from
+    [0, 1] that the control points overflow float64.
 
     >>> control_points_on_interval([[0, 0], [1, 2], [2, 0]], 0.0, 0.5).tolist()
     [[0.0, 0.0], [0.5, 1.0], [1.0, 1.0]]
@@ -129,7 +131,8 @@ def control_points_on_interval(ctrl, a, b) -> np.ndarray:
     b = as_float(b, "b")
     k = np.arange(n + 1)
     U = np.where(np.arange(n)[None, :] < (n - k)[:, None], a, b)   # row k: a^(n-k) b^k
-    return _blossom_levels(P, U.reshape(n + 1, n))
+    far = "a" if abs(a) >= abs(b) else "b"
+    return finite_result(_blossom_levels(P, U.reshape(n + 1, n)), far, a if far == "a" else b)
 
 
 def subdivide_by_blossom(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
@@ -146,7 +149,14 @@ def subdivide_by_blossom(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     [[1.0, 1.0], [1.5, 1.0], [2.0, 0.0]]
     """
     t = as_float(t, "t")
-    return control_points_on_interval(ctrl, 0.0, t), control_points_on_interval(ctrl, t, 1.0)
+    P = _ctrl(ctrl)
+    n = P.shape[0] - 1
+    k = np.arange(n + 1)
+    halves = []
+    for a, b in ((0.0, t), (t, 1.0)):
+        U = np.where(np.arange(n)[None, :] < (n - k)[:, None], a, b)
+        halves.append(finite_result(_blossom_levels(P, U.reshape(n + 1, n)), "t", t))
+    return halves[0], halves[1]
 
 
 def homogeneous_blossom(ctrl, args) -> np.ndarray:
@@ -172,7 +182,8 @@ def homogeneous_blossom(ctrl, args) -> np.ndarray:
     n = P.shape[0] - 1
     A = as_parameter(args, "args")
     if A.ndim < 2 or A.shape[-2:] != (n, 2):
-        raise ValueError(f"args must have shape (..., {n}, 2): n = {n} pairs (t, w); got shape {A.shape}")
+        raise ValueError(f"args must have shape (..., {n}, 2): n = {n} (the degree of ctrl) pairs (t, w); "
+                         f"got shape {A.shape}")
     lead = A.shape[:-2]
     A = A.reshape(math.prod(lead), n, 2)
     M = np.concatenate([P, np.ones((n + 1, 1))], axis=1)           # mass points (P_k, 1)
@@ -181,7 +192,7 @@ def homogeneous_blossom(ctrl, args) -> np.ndarray:
         t = A[:, r, 0, None, None]
         w = A[:, r, 1, None, None]
         cur = (w - t) * cur[:, :-1] + t * cur[:, 1:]
-    return cur[:, 0].reshape(lead + (P.shape[1] + 1,))
+    return finite_result(cur[:, 0].reshape(lead + (P.shape[1] + 1,)), "args", None)
 
 
 def derivative_by_blossom(ctrl, t, order=1) -> np.ndarray:
@@ -209,8 +220,11 @@ def derivative_by_blossom(ctrl, t, order=1) -> np.ndarray:
     A[:, : n - order, 0] = tf[:, None]
     A[:, : n - order, 1] = 1.0
     A[:, n - order:, 0] = 1.0                 # delta = (1, 0)
-    value = homogeneous_blossom(P, A)[:, :d] * float(math.perm(n, order))
-    return value.reshape(t.shape + (d,))
+    try:
+        value = homogeneous_blossom(P, A)[:, :d] * float(math.perm(n, order))
+    except ValueError:
+        value = np.full((tf.shape[0], d), np.inf)
+    return finite_result(value.reshape(t.shape + (d,)), "t", t)
 
 
 def _coeff_array(x, name: str) -> tuple[np.ndarray, bool]:
