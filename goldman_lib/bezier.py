@@ -390,7 +390,8 @@ def smooth_join(ctrl, continuity="C1", ratio=1.0, degree=None) -> np.ndarray:
     m = n if degree is None else as_int(degree, "degree", minimum=0)
     need = {"C0": 1, "G1": 2, "C1": 2, "C2": 3}[continuity]
     if m + 1 < need:
-        raise ValueError(f"degree must be >= {need - 1} for a {continuity} join (the next curve needs "
+        what = "degree must be" if degree is not None else "ctrl must have degree (the next curve's by default)"
+        raise ValueError(f"{what} >= {need - 1} for a {continuity} join (the next curve needs "
                          f"{need} constrained control points); got {m}")
     Q0 = P[-1]
     if continuity == "C0":

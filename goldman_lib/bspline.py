@@ -657,7 +657,10 @@ def spline_to_bspline(pieces, breaks, continuity):
     if np.any(np.diff(br) <= 0):
         i = int(np.flatnonzero(np.diff(br) <= 0)[0]) + 1
         raise ValueError(f"breaks must be strictly increasing; breaks[{i}]={_fmt(br[i])} <= breaks[{i - 1}]={_fmt(br[i - 1])}")
-    cont = np.asarray(continuity)
+    try:
+        cont = np.asarray(continuity)
+    except ValueError:
+        raise TypeError(f"continuity must be an int or a sequence of ints; got {continuity!r}") from None
     if cont.ndim == 0:
         cont = np.full(max(L - 1, 0), cont)
     cont = np.asarray([as_int(c, "continuity", minimum=-1, maximum=p - 1) for c in cont.reshape(-1)], dtype=int)
@@ -855,7 +858,12 @@ def nurbs_curve(ctrl, weights, knots, degree, u) -> np.ndarray:
     u = _check_u(u, t, p)
     flat = u.reshape(-1)
     h = _evaluate(H, t, p, flat)
-    return (h[:, :-1] / h[:, -1:]).reshape(u.shape + (P.shape[1],))
+    with np.errstate(all="ignore"):
+        out = (h[:, :-1] / h[:, -1:]).reshape(u.shape + (P.shape[1],))
+    return finite_result(out, "weights", why=_WEIGHTS_TOO_WIDE)
+
+
+_WEIGHTS_TOO_WIDE = "are too large (or too far apart) for float64 times the control points"
 
 
 def _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v):
@@ -880,7 +888,8 @@ def nurbs_surface(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> 
     """
     H, tu, tv, pu, pv = _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v)
     h = surface_de_boor(H, tu, tv, pu, pv, u, v)
-    return h[..., :-1] / h[..., -1:]
+    with np.errstate(all="ignore"):
+        return finite_result(h[..., :-1] / h[..., -1:], "weights", why=_WEIGHTS_TOO_WIDE)
 
 
 def nurbs_surface_grid(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> np.ndarray:
@@ -895,7 +904,8 @@ def nurbs_surface_grid(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v
     """
     H, tu, tv, pu, pv = _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v)
     h = surface_grid(H, tu, tv, pu, pv, u, v)
-    return h[..., :-1] / h[..., -1:]
+    with np.errstate(all="ignore"):
+        return finite_result(h[..., :-1] / h[..., -1:], "weights", why=_WEIGHTS_TOO_WIDE)
 
 
 _QUARTER = np.array([0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0])

@@ -574,7 +574,11 @@ def box_spline_split_and_average(points, multiplicities=(2, 2, 2), levels: int =
     [[0.0, 0.0, 1.0, 1.0], [0.0, 0.0, 1.0, 1.0], [2.0, 2.0, 3.0, 3.0], [2.0, 2.0, 3.0, 3.0]]
     """
     P = as_points(points, "points", ndim=3)
-    if isinstance(multiplicities, (str, bytes)) or not hasattr(multiplicities, "__len__") or np.ndim(multiplicities) != 1:
+    try:
+        flat = np.ndim(multiplicities) == 1
+    except ValueError:   # a ragged sequence
+        flat = False
+    if isinstance(multiplicities, (str, bytes)) or not hasattr(multiplicities, "__len__") or not flat:
         raise TypeError(f"multiplicities must be a sequence (r, s, t) of three integers; got {multiplicities!r}")
     if len(multiplicities) != 3:
         raise ValueError(f"multiplicities must be (r, s, t) for the directions (1,0), (0,1), (1,1); got {multiplicities!r}")
