@@ -135,6 +135,7 @@ def _falling(n: int, r: int) -> int:
 # §24.2 de Casteljau
 # --------------------------------------------------------------------------------------------
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def de_casteljau(ctrl, t) -> np.ndarray:
     """Evaluate a Bezier curve by the de Casteljau algorithm (Goldman §24.2).
 
@@ -159,6 +160,7 @@ def de_casteljau(ctrl, t) -> np.ndarray:
     return finite_result(_curve_points(P, t), "t", t)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def de_casteljau_steps(ctrl, t) -> list[np.ndarray]:
     """Every level of the de Casteljau algorithm at one parameter (Goldman §24.2).
 
@@ -190,6 +192,7 @@ def de_casteljau_steps(ctrl, t) -> list[np.ndarray]:
 # §24.3 Bernstein basis
 # --------------------------------------------------------------------------------------------
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def bernstein(n, t) -> np.ndarray:
     """The Bernstein basis functions ``B_k^n(t) = C(n, k) t^k (1-t)^(n-k)``, k = 0..n (Goldman §24.3).
 
@@ -223,6 +226,7 @@ def _bernstein_cost(n: int, count: int) -> int:
     return per * max(count, 1)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def bernstein_evaluate(ctrl, t) -> np.ndarray:
     """Evaluate a Bezier curve from its Bernstein form ``sum_k B_k^n(t) P_k`` (Goldman §24.3).
 
@@ -284,6 +288,7 @@ def hodograph(ctrl) -> np.ndarray:
     return n * np.diff(P, axis=0)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def derivative(ctrl, t, order=1) -> np.ndarray:
     """The ``order``-th derivative of a Bezier curve at ``t`` (Goldman §24.5).
 
@@ -319,7 +324,7 @@ def elevate_degree(ctrl, times=1) -> np.ndarray:
 
     ctrl: (n+1, d).  times: int >= 0, within the work budget: the coordinates computed over all
     elevations, ``d * (times (n+1) + times (times+1) / 2)``, at most
-    :data:`~goldman_lib.validation.MAX_ITEMS` (times <= 4467 for a planar cubic).
+    :data:`~goldman_lib.validation.MAX_ITEMS` (times <= 3157 for a planar cubic).
     Returns (n+1+times, d).
     Raises TypeError if times is not an integer, ValueError if times < 0, times is over the budget
     or ctrl is bad.
@@ -351,6 +356,7 @@ def elevate_degree(ctrl, times=1) -> np.ndarray:
 _CONTINUITIES = ("C0", "G1", "C1", "C2")
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def smooth_join(ctrl, continuity="C1", ratio=1.0, degree=None) -> np.ndarray:
     """The leading control points a following curve needs to join ``ctrl`` smoothly (Goldman §24.5.1).
 
@@ -406,7 +412,10 @@ def smooth_join(ctrl, continuity="C1", ratio=1.0, degree=None) -> np.ndarray:
     if continuity == "C1":
         return finite_result(np.stack([Q0, Q1]), "ratio", ratio)
     second = P[-1] - 2 * P[-2] + P[-3] if n >= 2 else np.zeros_like(Q0)
-    Q2 = 2 * Q1 - Q0 + (n * (n - 1)) / (m * (m - 1)) * ratio ** 2 * second
+    try:
+        Q2 = 2 * Q1 - Q0 + (n * (n - 1)) / (m * (m - 1)) * ratio ** 2 * second
+    except OverflowError:
+        raise ValueError(f"ratio is too large in magnitude: the result overflows float64 at ratio = {ratio:g}") from None
     return finite_result(np.stack([Q0, Q1, Q2]), "ratio", ratio)
 
 
@@ -450,7 +459,7 @@ def join_continuity(a, b, tol=1e-9, ratio=1.0) -> dict[str, bool]:
     na, nb = np.linalg.norm(da), np.linalg.norm(db)
     g1 = c0 and na > tol * scale and nb > tol * scale and bool(np.linalg.norm(da / na - db / nb) <= tol * size1)
     dda, ddb = deriv(A, 2, True), deriv(B, 2, False)
-    c2 = c1 and close(ddb, ratio ** 2 * dda, size1 ** 2 * max(1.0, ratio))
+    c2 = c1 and close(ddb, ratio * ratio * dda, size1 ** 2 * max(1.0, ratio))
     return {"C0": c0, "G1": g1, "C1": c1, "C2": c2}
 
 
@@ -906,6 +915,7 @@ def _split(P: np.ndarray, t, axis: int = 0) -> tuple[np.ndarray, np.ndarray]:
     return np.moveaxis(left, 0, axis), np.moveaxis(right, 0, axis)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     """Split a Bezier curve at ``t`` into two Bezier curves by the de Casteljau algorithm (Goldman §25.2).
 
@@ -1584,6 +1594,7 @@ def subdivision_variation_counts(ctrl, line_point, line_normal, max_depth=8, tol
 
 # -- §25.5 smooth joins ----------------------------------------------------------------------
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def smooth_continuation(ctrl, ratio=1.0) -> np.ndarray:
     """The control points of a Bezier curve's own polynomial continued past its end (Goldman §25.5).
 

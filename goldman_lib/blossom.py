@@ -61,6 +61,7 @@ def _blossom_levels(P: np.ndarray, U: np.ndarray) -> np.ndarray:
     return cur[:, 0]
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def blossom(ctrl, args) -> np.ndarray:
     """The blossom ``p(u_1, ..., u_n)`` of a Bezier curve, by the de Casteljau algorithm with a different parameter at each level (Goldman §26.2).
 
@@ -85,6 +86,7 @@ def blossom(ctrl, args) -> np.ndarray:
     return finite_result(out, "args", None)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def blossom_steps(ctrl, args) -> list[np.ndarray]:
     """Every level of the blossom's de Casteljau-like pyramid for one set of arguments (Goldman §26.3).
 
@@ -111,6 +113,7 @@ def blossom_steps(ctrl, args) -> list[np.ndarray]:
     return levels
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def control_points_on_interval(ctrl, a, b) -> np.ndarray:
     """The Bezier control points of the same curve over the interval ``[a, b]``: ``p(a^(n-k), b^k)`` (Goldman §26.3).
 
@@ -135,6 +138,7 @@ def control_points_on_interval(ctrl, a, b) -> np.ndarray:
     return finite_result(_blossom_levels(P, U.reshape(n + 1, n)), far, a if far == "a" else b)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def subdivide_by_blossom(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     """Split a Bezier curve at ``t`` from its blossom: ``p(0^(n-k), t^k)`` and ``p(t^(n-k), 1^k)`` (Goldman §26.3).
 
@@ -159,6 +163,7 @@ def subdivide_by_blossom(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     return halves[0], halves[1]
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def homogeneous_blossom(ctrl, args) -> np.ndarray:
     """The homogeneous blossom ``p((t_1, w_1), ..., (t_n, w_n))`` of a Bezier curve (Goldman §26.4).
 
@@ -195,6 +200,7 @@ def homogeneous_blossom(ctrl, args) -> np.ndarray:
     return finite_result(cur[:, 0].reshape(lead + (P.shape[1] + 1,)), "args", None)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def derivative_by_blossom(ctrl, t, order=1) -> np.ndarray:
     """The ``order``-th derivative of a Bezier curve from its homogeneous blossom (Goldman §26.4).
 

@@ -837,6 +837,7 @@ def _weights(weights, shape, name="weights") -> np.ndarray:
     return w
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def nurbs_curve(ctrl, weights, knots, degree, u) -> np.ndarray:
     """Evaluate a NURBS curve ``sum w_k N_k(u) P_k / sum w_k N_k(u)`` (Goldman §27.9).
 
@@ -873,6 +874,7 @@ def _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v):
     return H, tu, tv, pu, pv
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def nurbs_surface(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> np.ndarray:
     """Evaluate a NURBS surface at parameter pairs (u, v) (Goldman §27.9).
 
@@ -892,6 +894,7 @@ def nurbs_surface(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> 
         return finite_result(h[..., :-1] / h[..., -1:], "weights", why=_WEIGHTS_TOO_WIDE)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def nurbs_surface_grid(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> np.ndarray:
     """Evaluate a NURBS surface on the grid u x v (Goldman §27.9); the fast path of :func:`nurbs_surface`.
 

@@ -404,7 +404,7 @@ def lane_riesenfeld(ctrl, degree, levels=1, closed=False) -> np.ndarray:
 
     ctrl: (n+1, d).  degree: p >= 0.  levels: int >= 0 within the work budget: the coordinates
     computed, ``(p + 1) d`` times the refined point count, at most
-    :data:`~goldman_lib.validation.MAX_ITEMS` (levels <= 18 for a planar cubic of 4 points).
+    :data:`~goldman_lib.validation.MAX_ITEMS` (levels <= 20 for a planar cubic of 4 points).
     closed: a closed (periodic)
     curve, the polygon wrapping around, or an open one with uniform knots (the default).
     Returns the refined polygon: open, ``2 m - p`` points from m per level (the knots of

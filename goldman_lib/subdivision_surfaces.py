@@ -519,7 +519,7 @@ def split_and_average(ctrl, degree: int, levels: int = 1, closed: bool = False) 
     closed (periodic): then every level doubles the number of points; else each averaging drops
     one point (the ends of an open polygon lose support), giving ``2 n - degree`` points a level.
     The work budget: ``(degree + 1) d`` times the refined point count at most
-    :data:`~goldman_lib.validation.MAX_ITEMS` coordinates computed (levels <= 18 for a planar
+    :data:`~goldman_lib.validation.MAX_ITEMS` coordinates computed (levels <= 19 for a planar
     cubic of 5 points).
     Raises ValueError if an open polygon becomes too short or degree or levels is over the budget.
 

@@ -43,6 +43,8 @@ def check_finite(arr: np.ndarray, name: str) -> np.ndarray:
     ...
     ValueError: t must be finite; t[1] is inf
     """
+    if not isinstance(arr, np.ndarray) or arr.dtype.kind not in "fiub":
+        arr = as_float_array(arr, name)
     bad = ~np.isfinite(arr)
     if bad.any():
         flat = int(np.flatnonzero(bad)[0])
@@ -63,7 +65,7 @@ def as_float_array(x, name: str) -> np.ndarray:
     ...
     TypeError: t must be real; complex numbers are not points or parameters here
     """
-    if isinstance(x, (str, bytes)):
+    if isinstance(x, (str, bytes)) or x is None:
         raise TypeError(f"{name} must be numeric, not {type(x).__name__}")
     if isinstance(x, (complex, np.complexfloating)) or (isinstance(x, np.ndarray) and np.iscomplexobj(x)):
         raise TypeError(f"{name} must be real; complex numbers are not points or parameters here")
@@ -262,7 +264,7 @@ def finite_result(result, name: str, value=None, *, why: str = "is too large in 
     ...
     ValueError: t is too large in magnitude: the result overflows float64 at t = 1e+150
     """
-    arr = np.asarray(result)
+    arr = result if isinstance(result, np.ndarray) else as_float_array(result, name)
     if arr.dtype.kind not in "fc" or np.all(np.isfinite(arr)):
         return result
     where = ""
