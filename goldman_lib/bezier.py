@@ -34,7 +34,8 @@ import math
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_int, as_parameter, as_points
+from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points,
+                                     finite_result, within_budget)
 
 __all__ = [
     "de_casteljau", "de_casteljau_steps", "bernstein", "bernstein_evaluate",
@@ -134,6 +135,7 @@ def _falling(n: int, r: int) -> int:
 # §24.2 de Casteljau
 # --------------------------------------------------------------------------------------------
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def de_casteljau(ctrl, t) -> np.ndarray:
     """Evaluate a Bezier curve by the de Casteljau algorithm (Goldman §24.2).
 
@@ -144,7 +146,8 @@ def de_casteljau(ctrl, t) -> np.ndarray:
     ctrl: (n+1, d) control points, any degree n >= 0 and any dimension d >= 1.
     t: scalar or array of any shape; values outside [0, 1] extrapolate the polynomial curve.
     Returns ``t.shape + (d,)``.
-    Raises ValueError if ctrl is not (n+1, d) with n+1 >= 1, or if ctrl or t holds NaN/inf;
+    Raises ValueError if ctrl is not (n+1, d) with n+1 >= 1, if ctrl or t holds NaN/inf, or if t is
+    so far outside [0, 1] that the point overflows float64 (about ``|t|**n * |P|`` > 1e308);
     TypeError if either is not numeric.
 
     >>> de_casteljau([[0, 0], [1, 2], [2, 0]], 0.5)
@@ -154,9 +157,10 @@ def de_casteljau(ctrl, t) -> np.ndarray:
     """
     P = _ctrl(ctrl)
     t = as_parameter(t, "t")
-    return _curve_points(P, t)
+    return finite_result(_curve_points(P, t), "t", t)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def de_casteljau_steps(ctrl, t) -> list[np.ndarray]:
     """Every level of the de Casteljau algorithm at one parameter (Goldman §24.2).
 
@@ -180,7 +184,7 @@ def de_casteljau_steps(ctrl, t) -> list[np.ndarray]:
     cur = P
     while cur.shape[0] > 1:
         cur = (1.0 - t) * cur[:-1] + t * cur[1:]
-        levels.append(cur)
+        levels.append(finite_result(cur, "t", t))
     return levels
 
 
@@ -188,6 +192,7 @@ def de_casteljau_steps(ctrl, t) -> list[np.ndarray]:
 # §24.3 Bernstein basis
 # --------------------------------------------------------------------------------------------
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def bernstein(n, t) -> np.ndarray:
     """The Bernstein basis functions ``B_k^n(t) = C(n, k) t^k (1-t)^(n-k)``, k = 0..n (Goldman §24.3).
 
@@ -195,21 +200,33 @@ def bernstein(n, t) -> np.ndarray:
     t = 1, no cancellation on [0, 1]); above degree 1000 the binomials overflow and the
     recurrence ``B_k^n = (1-t) B_k^{n-1} + t B_{k-1}^{n-1}`` is used instead.
 
-    n: the degree, an int >= 0.  t: scalar or array of any shape (outside [0, 1] allowed).
+    n: the degree, an int >= 0, within the work budget: ``(n+1) * t.size`` values (``(n+1)**2 *
+    t.size / 2`` operations above degree 1000) at most :data:`~goldman_lib.validation.MAX_ITEMS`,
+    so n <= 4471 for one parameter.  t: scalar or array of any shape (outside [0, 1] allowed).
     Returns ``t.shape + (n+1,)``.
-    Raises TypeError if n is not an integer, ValueError if n < 0 or t is not finite.
+    Raises TypeError if n is not an integer, ValueError if n < 0, n is over the budget, t is not
+    finite, or t is so far outside [0, 1] that a value overflows float64.
 
     >>> bernstein(2, 0.5)
     array([0.25, 0.5 , 0.25])
     >>> float(bernstein(4, 0.5)[2])
     0.375
     """
-    n = as_int(n, "n", minimum=0)
     t = as_parameter(t, "t")
+    n = within_budget(n, "n", cost=lambda v: _bernstein_cost(v, t.size), what=f"the Bernstein basis at {t.size} parameter(s)",
+                      unit="values computed")
     rows = _bernstein_rows(n, t.reshape(-1))
-    return np.ascontiguousarray(rows.T).reshape(t.shape + (n + 1,))
+    return finite_result(np.ascontiguousarray(rows.T).reshape(t.shape + (n + 1,)), "t", t)
 
 
+def _bernstein_cost(n: int, count: int) -> int:
+    """Values :func:`_bernstein_rows` computes: the (n+1) x count table, or the recurrence's
+    (n+1)^2/2 per parameter above the power-form degree."""
+    per = n + 1 if n <= _POWER_FORM_MAX_DEGREE else (n + 1) ** 2 // 2
+    return per * max(count, 1)
+
+
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def bernstein_evaluate(ctrl, t) -> np.ndarray:
     """Evaluate a Bezier curve from its Bernstein form ``sum_k B_k^n(t) P_k`` (Goldman §24.3).
 
@@ -245,7 +262,7 @@ def bernstein_evaluate(ctrl, t) -> np.ndarray:
             out *= s
             tpow *= tf
         out += np.multiply(P[n][:, None], tpow, out=buf)
-    return out.T.reshape(t.shape + (d,))
+    return finite_result(out.T.reshape(t.shape + (d,)), "t", t)
 
 
 # --------------------------------------------------------------------------------------------
@@ -271,6 +288,7 @@ def hodograph(ctrl) -> np.ndarray:
     return n * np.diff(P, axis=0)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def derivative(ctrl, t, order=1) -> np.ndarray:
     """The ``order``-th derivative of a Bezier curve at ``t`` (Goldman §24.5).
 
@@ -295,7 +313,7 @@ def derivative(ctrl, t, order=1) -> np.ndarray:
     if order > n:
         return np.zeros(t.shape + (P.shape[1],))
     D = np.diff(P, n=order, axis=0) * float(_falling(n, order)) if order else P
-    return _curve_points(D, t)
+    return finite_result(_curve_points(D, t), "t", t)
 
 
 def elevate_degree(ctrl, times=1) -> np.ndarray:
@@ -304,8 +322,12 @@ def elevate_degree(ctrl, times=1) -> np.ndarray:
     One elevation: ``Q_0 = P_0``, ``Q_k = k/(n+1) P_{k-1} + (1 - k/(n+1)) P_k``, ``Q_{n+1} = P_n``.
     The new control polygon lies closer to the curve; repeated elevation converges to it.
 
-    ctrl: (n+1, d).  times: int >= 0.  Returns (n+1+times, d).
-    Raises TypeError if times is not an integer, ValueError if times < 0 or ctrl is bad.
+    ctrl: (n+1, d).  times: int >= 0, within the work budget: the coordinates computed over all
+    elevations, ``d * (times (n+1) + times (times+1) / 2)``, at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` (times <= 3157 for a planar cubic).
+    Returns (n+1+times, d).
+    Raises TypeError if times is not an integer, ValueError if times < 0, times is over the budget
+    or ctrl is bad.
 
     >>> elevate_degree([[0, 0], [1, 2], [2, 0]])
     array([[0.        , 0.        ],
@@ -314,7 +336,9 @@ def elevate_degree(ctrl, times=1) -> np.ndarray:
            [2.        , 0.        ]])
     """
     P = _ctrl(ctrl)
-    times = as_int(times, "times", minimum=0)
+    n1, d = P.shape
+    times = within_budget(times, "times", cost=lambda v: d * (v * n1 + v * (v + 1) // 2),
+                          what=f"elevating a degree-{n1 - 1} curve", unit="coordinates computed")
     for _ in range(times):
         n1 = P.shape[0]  # n + 1
         a = (np.arange(1, n1) / n1)[:, None]
@@ -332,6 +356,7 @@ def elevate_degree(ctrl, times=1) -> np.ndarray:
 _CONTINUITIES = ("C0", "G1", "C1", "C2")
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def smooth_join(ctrl, continuity="C1", ratio=1.0, degree=None) -> np.ndarray:
     """The leading control points a following curve needs to join ``ctrl`` smoothly (Goldman §24.5.1).
 
@@ -371,7 +396,8 @@ def smooth_join(ctrl, continuity="C1", ratio=1.0, degree=None) -> np.ndarray:
     m = n if degree is None else as_int(degree, "degree", minimum=0)
     need = {"C0": 1, "G1": 2, "C1": 2, "C2": 3}[continuity]
     if m + 1 < need:
-        raise ValueError(f"degree must be >= {need - 1} for a {continuity} join (the next curve needs "
+        what = "degree must be" if degree is not None else "ctrl must have degree (the next curve's by default)"
+        raise ValueError(f"{what} >= {need - 1} for a {continuity} join (the next curve needs "
                          f"{need} constrained control points); got {m}")
     Q0 = P[-1]
     if continuity == "C0":
@@ -381,13 +407,16 @@ def smooth_join(ctrl, continuity="C1", ratio=1.0, degree=None) -> np.ndarray:
         if not np.any(lead):
             raise ValueError("ctrl must have distinct last two control points for a G1 join; "
                              "P[n] == P[n-1] leaves the end tangent direction undefined")
-        return np.stack([Q0, Q0 + ratio * lead])
+        return finite_result(np.stack([Q0, Q0 + ratio * lead]), "ratio", ratio)
     Q1 = Q0 + (n / m) * ratio * lead
     if continuity == "C1":
-        return np.stack([Q0, Q1])
+        return finite_result(np.stack([Q0, Q1]), "ratio", ratio)
     second = P[-1] - 2 * P[-2] + P[-3] if n >= 2 else np.zeros_like(Q0)
-    Q2 = 2 * Q1 - Q0 + (n * (n - 1)) / (m * (m - 1)) * ratio ** 2 * second
-    return np.stack([Q0, Q1, Q2])
+    try:
+        Q2 = 2 * Q1 - Q0 + (n * (n - 1)) / (m * (m - 1)) * ratio ** 2 * second
+    except OverflowError:
+        raise ValueError(f"ratio is too large in magnitude: the result overflows float64 at ratio = {ratio:g}") from None
+    return finite_result(np.stack([Q0, Q1, Q2]), "ratio", ratio)
 
 
 def join_continuity(a, b, tol=1e-9, ratio=1.0) -> dict[str, bool]:
@@ -430,7 +459,7 @@ def join_continuity(a, b, tol=1e-9, ratio=1.0) -> dict[str, bool]:
     na, nb = np.linalg.norm(da), np.linalg.norm(db)
     g1 = c0 and na > tol * scale and nb > tol * scale and bool(np.linalg.norm(da / na - db / nb) <= tol * size1)
     dda, ddb = deriv(A, 2, True), deriv(B, 2, False)
-    c2 = c1 and close(ddb, ratio ** 2 * dda, size1 ** 2 * max(1.0, ratio))
+    c2 = c1 and close(ddb, ratio * ratio * dda, size1 ** 2 * max(1.0, ratio))
     return {"C0": c0, "G1": g1, "C1": c1, "C2": c2}
 
 
@@ -439,6 +468,11 @@ def join_continuity(a, b, tol=1e-9, ratio=1.0) -> dict[str, bool]:
 # --------------------------------------------------------------------------------------------
 
 def _signed_distances(points, line_point, line_normal, d):
+    for name, value in (("line_point", line_point), ("line_normal", line_normal)):
+        shape = as_float_array(value, name).shape
+        if len(shape) == 1 and shape != (d,):
+            raise ValueError(f"{name} must hold {d}-dimensional points (last axis of length {d}), as ctrl does; "
+                             f"got shape {shape}")
     p = as_points(line_point, "line_point", ndim=1, dim=d)
     nrm = as_points(line_normal, "line_normal", ndim=1, dim=d)
     if not np.any(nrm):
@@ -479,7 +513,8 @@ def curve_crossings(ctrl, line_point, line_normal, samples=1001, tol=1e-12) -> i
     distance are counted (points within ``tol`` skipped).  Sampling can only miss crossings, so
     this is a lower bound on the true count, and it equals it once samples resolve the curve.
 
-    ctrl: (n+1, d).  line_point, line_normal: (d,).  samples: int >= 2.  tol: float >= 0.
+    ctrl: (n+1, d).  line_point, line_normal: (d,).  samples: int >= 2, at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` / d curve points (the work budget).  tol: float >= 0.
     Returns an int.
     Raises ValueError for bad shapes, non-finite values, a zero normal, or samples < 2.
 
@@ -487,7 +522,8 @@ def curve_crossings(ctrl, line_point, line_normal, samples=1001, tol=1e-12) -> i
     2
     """
     P = _ctrl(ctrl)
-    samples = as_int(samples, "samples", minimum=2)
+    samples = within_budget(samples, "samples", cost=lambda v: v * P.shape[1], what="the sampled curve",
+                            unit="coordinates", minimum=2)
     tol = as_float(tol, "tol")
     pts = _curve_points(P, np.linspace(0.0, 1.0, samples))
     return _sign_changes(_signed_distances(pts, line_point, line_normal, P.shape[1]), tol)
@@ -678,14 +714,18 @@ def patch_evaluate_grid(ctrl, u, v) -> np.ndarray:
 def patch_grid(ctrl, nu=21, nv=21) -> np.ndarray:
     """Evaluate a Bezier patch on an evenly spaced nu x nv grid over [0, 1]^2 (Goldman §24.6).
 
-    ctrl: (m+1, n+1, d).  nu, nv: ints >= 2.  Returns (nu, nv, d), ready for a mesh.
-    Raises TypeError/ValueError for non-integer or too small nu, nv, and for a bad net.
+    ctrl: (m+1, n+1, d).  nu, nv: ints >= 2, with nu * nv * d at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` coordinates (the work budget).  Returns (nu, nv, d),
+    ready for a mesh.
+    Raises TypeError/ValueError for non-integer, too small or over-budget nu, nv, and for a bad net.
 
     >>> patch_grid([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], 2, 2)[:, :, 2].tolist()
     [[0.0, 0.0], [0.0, 1.0]]
     """
-    nu = as_int(nu, "nu", minimum=2)
-    nv = as_int(nv, "nv", minimum=2)
+    d = _net(ctrl).shape[-1]
+    nu = within_budget(nu, "nu", cost=lambda k: k * 2 * d, what="the patch grid", unit="coordinates", minimum=2)
+    nv = within_budget(nv, "nv", cost=lambda k: nu * k * d, what=f"the patch grid with nu = {nu}",
+                       unit="coordinates", minimum=2)
     return patch_evaluate_grid(ctrl, np.linspace(0.0, 1.0, nu), np.linspace(0.0, 1.0, nv))
 
 
@@ -875,6 +915,7 @@ def _split(P: np.ndarray, t, axis: int = 0) -> tuple[np.ndarray, np.ndarray]:
     return np.moveaxis(left, 0, axis), np.moveaxis(right, 0, axis)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     """Split a Bezier curve at ``t`` into two Bezier curves by the de Casteljau algorithm (Goldman §25.2).
 
@@ -897,7 +938,8 @@ def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     t = as_parameter(t, "t")
     if t.ndim != 0:
         raise ValueError(f"t must be a scalar for subdivide; got shape {t.shape}")
-    return _split(P, float(t))
+    left, right = _split(P, float(t))
+    return finite_result(left, "t", t), finite_result(right, "t", t)
 
 
 def subdivide_uniform(ctrl, depth) -> np.ndarray:
@@ -907,15 +949,19 @@ def subdivide_uniform(ctrl, depth) -> np.ndarray:
     polygons converge to the curve (the distance shrinks by about 4 with each level), which is
     the basis of rendering by subdivision and of the proof of variation diminishing.
 
-    ctrl: (n+1, d).  depth: int, 0 <= depth <= 20.
+    ctrl: (n+1, d).  depth: int >= 0 within the work budget: the ``2**depth * (n+1) * d``
+    coordinates of the result at most :data:`~goldman_lib.validation.MAX_ITEMS` (depth <= 20 for
+    a planar cubic).
     Returns (2**depth, n+1, d).
-    Raises TypeError if depth is not an integer, ValueError if it is out of range or ctrl is bad.
+    Raises TypeError if depth is not an integer, ValueError if it is negative or over the budget,
+    or ctrl is bad.
 
     >>> subdivide_uniform([[0, 0], [1, 2], [2, 0]], 1)[1].tolist()
     [[1.0, 1.0], [1.5, 1.0], [2.0, 0.0]]
     """
     P = _ctrl(ctrl)
-    depth = as_int(depth, "depth", minimum=0, maximum=20)
+    depth = within_budget(depth, "depth", cost=lambda v: 2 ** v * P.size, what="the subdivided curve",
+                          unit="coordinates")
     pieces = P[None]
     for _ in range(depth):
         left, right = _split(pieces, 0.5, axis=1)
@@ -1548,6 +1594,7 @@ def subdivision_variation_counts(ctrl, line_point, line_normal, max_depth=8, tol
 
 # -- §25.5 smooth joins ----------------------------------------------------------------------
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def smooth_continuation(ctrl, ratio=1.0) -> np.ndarray:
     """The control points of a Bezier curve's own polynomial continued past its end (Goldman §25.5).
 
@@ -1560,14 +1607,15 @@ def smooth_continuation(ctrl, ratio=1.0) -> np.ndarray:
 
     ctrl: (n+1, d).  ratio: positive float, (next interval length) / (this one).
     Returns (n+1, d).
-    Raises ValueError for ratio <= 0 and as :func:`subdivide`.
+    Raises ValueError for ratio <= 0, a ratio so large that the points overflow float64, and as
+    :func:`subdivide`.
 
     >>> smooth_continuation([[0, 0], [1, 2], [2, 0]]).tolist()
     [[2.0, 0.0], [3.0, -2.0], [4.0, -8.0]]
     """
     P = _ctrl(ctrl)
     ratio = as_float(ratio, "ratio", positive=True)
-    return _split(P[::-1], -ratio)[0]
+    return finite_result(_split(P[::-1], -ratio)[0], "ratio", ratio)
 
 
 def join_order(a, b, ratio=1.0, tol=1e-9) -> int:

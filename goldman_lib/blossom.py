@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_int, as_parameter, as_points
+from goldman_lib.validation import as_float, as_int, as_parameter, as_points, finite_result
 
 __all__ = ["blossom", "blossom_steps", "control_points_on_interval", "subdivide_by_blossom",
            "homogeneous_blossom", "derivative_by_blossom", "monomial_to_bezier", "bezier_to_monomial"]
@@ -47,7 +47,7 @@ def _ctrl(ctrl, name: str = "ctrl") -> np.ndarray:
 def _args(args, n: int, name: str = "args") -> np.ndarray:
     u = as_parameter(args, name)
     if u.ndim == 0 or u.shape[-1] != n:
-        raise ValueError(f"{name} must have shape (..., n) with n = {n} (the degree) arguments in the last axis; "
+        raise ValueError(f"{name} must have shape (..., n) with n = {n} (the degree of ctrl) arguments in the last axis; "
                          f"got shape {u.shape}")
     return u
 
@@ -61,6 +61,7 @@ def _blossom_levels(P: np.ndarray, U: np.ndarray) -> np.ndarray:
     return cur[:, 0]
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def blossom(ctrl, args) -> np.ndarray:
     """The blossom ``p(u_1, ..., u_n)`` of a Bezier curve, by the de Casteljau algorithm with a different parameter at each level (Goldman §26.2).
 
@@ -81,9 +82,11 @@ def blossom(ctrl, args) -> np.ndarray:
     n = P.shape[0] - 1
     U = _args(args, n)
     lead = U.shape[:-1]
-    return _blossom_levels(P, U.reshape(math.prod(lead), n)).reshape(lead + (P.shape[1],))
+    out = _blossom_levels(P, U.reshape(math.prod(lead), n)).reshape(lead + (P.shape[1],))
+    return finite_result(out, "args", None)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def blossom_steps(ctrl, args) -> list[np.ndarray]:
     """Every level of the blossom's de Casteljau-like pyramid for one set of arguments (Goldman §26.3).
 
@@ -106,10 +109,11 @@ def blossom_steps(ctrl, args) -> list[np.ndarray]:
     cur = P
     for u in U:
         cur = (1.0 - u) * cur[:-1] + u * cur[1:]
-        levels.append(cur)
+        levels.append(finite_result(cur, "args", None))
     return levels
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def control_points_on_interval(ctrl, a, b) -> np.ndarray:
     """The Bezier control points of the same curve over the interval ``[a, b]``: ``p(a^(n-k), b^k)`` (Goldman §26.3).
 
@@ -118,7 +122,8 @@ def control_points_on_interval(ctrl, a, b) -> np.ndarray:
     extrapolation; with a > b the curve is traversed backwards.
 
     ctrl: (n+1, d).  a, b: finite scalars.  Returns (n+1, d).
-    Raises ValueError for a bad ctrl or a non-scalar, non-finite a or b.
+    Raises ValueError for a bad ctrl, a non-scalar, non-finite a or b, or an interval so far from
+    [0, 1] that the control points overflow float64.
 
     >>> control_points_on_interval([[0, 0], [1, 2], [2, 0]], 0.0, 0.5).tolist()
     [[0.0, 0.0], [0.5, 1.0], [1.0, 1.0]]
@@ -129,9 +134,11 @@ def control_points_on_interval(ctrl, a, b) -> np.ndarray:
     b = as_float(b, "b")
     k = np.arange(n + 1)
     U = np.where(np.arange(n)[None, :] < (n - k)[:, None], a, b)   # row k: a^(n-k) b^k
-    return _blossom_levels(P, U.reshape(n + 1, n))
+    far = "a" if abs(a) >= abs(b) else "b"
+    return finite_result(_blossom_levels(P, U.reshape(n + 1, n)), far, a if far == "a" else b)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def subdivide_by_blossom(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     """Split a Bezier curve at ``t`` from its blossom: ``p(0^(n-k), t^k)`` and ``p(t^(n-k), 1^k)`` (Goldman §26.3).
 
@@ -146,9 +153,17 @@ def subdivide_by_blossom(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     [[1.0, 1.0], [1.5, 1.0], [2.0, 0.0]]
     """
     t = as_float(t, "t")
-    return control_points_on_interval(ctrl, 0.0, t), control_points_on_interval(ctrl, t, 1.0)
+    P = _ctrl(ctrl)
+    n = P.shape[0] - 1
+    k = np.arange(n + 1)
+    halves = []
+    for a, b in ((0.0, t), (t, 1.0)):
+        U = np.where(np.arange(n)[None, :] < (n - k)[:, None], a, b)
+        halves.append(finite_result(_blossom_levels(P, U.reshape(n + 1, n)), "t", t))
+    return halves[0], halves[1]
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def homogeneous_blossom(ctrl, args) -> np.ndarray:
     """The homogeneous blossom ``p((t_1, w_1), ..., (t_n, w_n))`` of a Bezier curve (Goldman §26.4).
 
@@ -172,7 +187,8 @@ def homogeneous_blossom(ctrl, args) -> np.ndarray:
     n = P.shape[0] - 1
     A = as_parameter(args, "args")
     if A.ndim < 2 or A.shape[-2:] != (n, 2):
-        raise ValueError(f"args must have shape (..., {n}, 2): n = {n} pairs (t, w); got shape {A.shape}")
+        raise ValueError(f"args must have shape (..., {n}, 2): n = {n} (the degree of ctrl) pairs (t, w); "
+                         f"got shape {A.shape}")
     lead = A.shape[:-2]
     A = A.reshape(math.prod(lead), n, 2)
     M = np.concatenate([P, np.ones((n + 1, 1))], axis=1)           # mass points (P_k, 1)
@@ -181,9 +197,10 @@ def homogeneous_blossom(ctrl, args) -> np.ndarray:
         t = A[:, r, 0, None, None]
         w = A[:, r, 1, None, None]
         cur = (w - t) * cur[:, :-1] + t * cur[:, 1:]
-    return cur[:, 0].reshape(lead + (P.shape[1] + 1,))
+    return finite_result(cur[:, 0].reshape(lead + (P.shape[1] + 1,)), "args", None)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def derivative_by_blossom(ctrl, t, order=1) -> np.ndarray:
     """The ``order``-th derivative of a Bezier curve from its homogeneous blossom (Goldman §26.4).
 
@@ -209,8 +226,11 @@ def derivative_by_blossom(ctrl, t, order=1) -> np.ndarray:
     A[:, : n - order, 0] = tf[:, None]
     A[:, : n - order, 1] = 1.0
     A[:, n - order:, 0] = 1.0                 # delta = (1, 0)
-    value = homogeneous_blossom(P, A)[:, :d] * float(math.perm(n, order))
-    return value.reshape(t.shape + (d,))
+    try:
+        value = homogeneous_blossom(P, A)[:, :d] * float(math.perm(n, order))
+    except ValueError:
+        value = np.full((tf.shape[0], d), np.inf)
+    return finite_result(value.reshape(t.shape + (d,)), "t", t)
 
 
 def _coeff_array(x, name: str) -> tuple[np.ndarray, bool]:

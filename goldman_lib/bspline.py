@@ -35,7 +35,8 @@ import math
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_float_array, as_int, as_parameter, as_points, check_finite
+from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points, check_finite,
+                                     finite_result, within_budget)
 
 __all__ = [
     "check_knots", "clamped_knots", "uniform_knots", "find_span", "multiplicity", "domain",
@@ -58,7 +59,8 @@ def _fmt(x: float) -> str:
     return f"{float(x):.6g}"
 
 
-def check_knots(knots, degree, n_ctrl=None, name: str = "knots") -> np.ndarray:
+def check_knots(knots, degree, n_ctrl=None, name: str = "knots", *, degree_name: str = "degree",
+                count_name: str = "n_ctrl") -> np.ndarray:
     """Validate a knot vector for a B-spline of ``degree`` and return it as a float array (Goldman §27.2).
 
     The rules, each with its own message: ``knots`` is a finite 1-D array; it is non-decreasing;
@@ -67,7 +69,8 @@ def check_knots(knots, degree, n_ctrl=None, name: str = "knots") -> np.ndarray:
     control point per basis function); and the domain ``[t_p, t_{n+1}]`` is not a single point.
 
     knots: (n+p+2,) numbers.  degree: int >= 0.  n_ctrl: number of control points or None.
-    name: the parameter name used in messages.  Returns a new (n+p+2,) float array.
+    name: the parameter name used in messages (degree_name: the degree's; count_name: what n_ctrl
+    counts, e.g. ``"len(ctrl)"``).  Returns a new (n+p+2,) float array.
     Raises TypeError for non-numeric input or a non-integer degree, ValueError naming the rule.
 
     >>> check_knots([0, 0, 0, 1, 1, 1], 2, 3).tolist()
@@ -77,7 +80,7 @@ def check_knots(knots, degree, n_ctrl=None, name: str = "knots") -> np.ndarray:
     ...
     ValueError: knots must be non-decreasing; knots[3]=0.2 < knots[2]=0.5
     """
-    degree = as_int(degree, "degree", minimum=0)
+    degree = as_int(degree, degree_name, minimum=0)
     t = np.array(as_float_array(knots, name))  # a copy: the caller's array is never aliased
     if t.ndim != 1:
         raise ValueError(f"{name} must be a 1-D array of knots; got shape {t.shape}")
@@ -92,17 +95,20 @@ def check_knots(knots, degree, n_ctrl=None, name: str = "knots") -> np.ndarray:
         big = np.flatnonzero(counts > degree + 1)
         if big.size:
             s = int(starts[big[0]])
-            raise ValueError(f"{name} may repeat a knot at most degree+1 = {degree + 1} times; "
+            raise ValueError(f"{name} may repeat a knot at most {degree_name}+1 = {degree + 1} times; "
                              f"{name}[{s}]={_fmt(t[s])} appears {int(counts[big[0]])} times")
     if n_ctrl is not None:
-        n_ctrl = as_int(n_ctrl, "n_ctrl", minimum=1)
+        n_ctrl = as_int(n_ctrl, count_name, minimum=1)
+        count = count_name
         if t.size != n_ctrl + degree + 1:
-            raise ValueError(f"{name} must have length n_ctrl + degree + 1 = {n_ctrl} + {degree} + 1 = "
+            raise ValueError(f"{name} must have length {count} + {degree_name} + 1 = {n_ctrl} + {degree} + 1 = "
                              f"{n_ctrl + degree + 1}; got {t.size}")
         if n_ctrl < degree + 1:
-            raise ValueError(f"a B-spline of degree {degree} needs at least degree+1 = {degree + 1} control points; got {n_ctrl}")
+            raise ValueError(f"a B-spline of {degree_name} {degree} needs at least {degree_name}+1 = {degree + 1} "
+                             f"control points; {count} is {n_ctrl}")
     elif t.size < 2 * (degree + 1):
-        raise ValueError(f"{name} must have at least 2*(degree+1) = {2 * (degree + 1)} knots for degree {degree}; got {t.size}")
+        raise ValueError(f"{name} must have at least 2*({degree_name}+1) = {2 * (degree + 1)} knots for "
+                         f"{degree_name} {degree}; got {t.size}")
     n = t.size - degree - 2
     if not t[degree] < t[n + 1]:
         raise ValueError(f"{name} must give a non-empty domain; {name}[{degree}]={_fmt(t[degree])} "
@@ -114,7 +120,8 @@ def clamped_knots(n_ctrl, degree, interior=None) -> np.ndarray:
     """A clamped (open) knot vector on [0, 1]: ``degree + 1`` zeros, the interior knots, ``degree + 1`` ones (Goldman §27.7).
 
     The curve of a clamped knot vector starts at ``P_0`` and ends at ``P_n``, like a Bezier curve.
-    n_ctrl: number of control points, >= degree + 1.  degree: int >= 0.  interior: the
+    n_ctrl: number of control points, >= degree + 1, with ``n_ctrl + degree + 1`` knots at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` (the work budget).  degree: int >= 0.  interior: the
     ``n_ctrl - degree - 1`` interior knots in [0, 1] (non-decreasing), or None for equally spaced ones.
     Returns (n_ctrl + degree + 1,).
     Raises ValueError if n_ctrl < degree + 1, the interior has the wrong length, lies outside
@@ -123,8 +130,9 @@ def clamped_knots(n_ctrl, degree, interior=None) -> np.ndarray:
     >>> clamped_knots(5, 2).tolist()
     [0.0, 0.0, 0.0, 0.3333333333333333, 0.6666666666666666, 1.0, 1.0, 1.0]
     """
-    degree = as_int(degree, "degree", minimum=0)
-    n_ctrl = as_int(n_ctrl, "n_ctrl", minimum=1)
+    degree = within_budget(degree, "degree", cost=lambda v: 2 * v + 2, what="the knot vector", unit="knots")
+    n_ctrl = within_budget(n_ctrl, "n_ctrl", cost=lambda v: v + degree + 1, what="the knot vector", unit="knots",
+                           minimum=1)
     if n_ctrl < degree + 1:
         raise ValueError(f"n_ctrl must be at least degree+1 = {degree + 1} for a clamped knot vector; got {n_ctrl}")
     m = n_ctrl - degree - 1
@@ -141,15 +149,17 @@ def clamped_knots(n_ctrl, degree, interior=None) -> np.ndarray:
 def uniform_knots(n_ctrl, degree) -> np.ndarray:
     """A uniform (floating) knot vector: ``n_ctrl + degree + 1`` equally spaced knots, scaled so the domain ``[t_p, t_{n+1}]`` is [0, 1] (Goldman §27.7).
 
-    n_ctrl: number of control points, >= degree + 1.  degree: int >= 0.  Returns
+    n_ctrl: number of control points, >= degree + 1, with ``n_ctrl + degree + 1`` knots at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` (the work budget).  degree: int >= 0.  Returns
     ``(k - degree) / (n_ctrl - degree)`` for k = 0 .. n_ctrl + degree.
     Raises ValueError if n_ctrl < degree + 1.
 
     >>> uniform_knots(4, 2).tolist()
     [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0]
     """
-    degree = as_int(degree, "degree", minimum=0)
-    n_ctrl = as_int(n_ctrl, "n_ctrl", minimum=1)
+    degree = within_budget(degree, "degree", cost=lambda v: 2 * v + 2, what="the knot vector", unit="knots")
+    n_ctrl = within_budget(n_ctrl, "n_ctrl", cost=lambda v: v + degree + 1, what="the knot vector", unit="knots",
+                           minimum=1)
     if n_ctrl < degree + 1:
         raise ValueError(f"n_ctrl must be at least degree+1 = {degree + 1}; got {n_ctrl}")
     return (np.arange(n_ctrl + degree + 1, dtype=float) - degree) / (n_ctrl - degree)
@@ -172,8 +182,11 @@ def multiplicity(knots, value, tol: float = 0.0) -> int:
     >>> multiplicity([0, 0, 0, 0.5, 0.5, 1, 1, 1], 0.5)
     2
     """
-    t = np.asarray(knots, dtype=float)
+    t = check_finite(as_float_array(knots, "knots"), "knots")
     value = as_float(value, "value")
+    tol = as_float(tol, "tol")
+    if tol < 0:
+        raise ValueError(f"tol must be >= 0; got {tol}")
     return int(np.count_nonzero(np.abs(t - value) <= tol))
 
 
@@ -234,7 +247,7 @@ def find_span(knots, degree, u, side: str = "right"):
 def _curve_args(ctrl, knots, degree, cname="ctrl"):
     p = as_int(degree, "degree", minimum=0)
     P = as_points(ctrl, cname, ndim=2)
-    t = check_knots(knots, p, P.shape[0])
+    t = check_knots(knots, p, P.shape[0], count_name=f"len({cname})")
     return P, t, p
 
 
@@ -644,7 +657,10 @@ def spline_to_bspline(pieces, breaks, continuity):
     if np.any(np.diff(br) <= 0):
         i = int(np.flatnonzero(np.diff(br) <= 0)[0]) + 1
         raise ValueError(f"breaks must be strictly increasing; breaks[{i}]={_fmt(br[i])} <= breaks[{i - 1}]={_fmt(br[i - 1])}")
-    cont = np.asarray(continuity)
+    try:
+        cont = np.asarray(continuity)
+    except ValueError:
+        raise TypeError(f"continuity must be an int or a sequence of ints; got {continuity!r}") from None
     if cont.ndim == 0:
         cont = np.full(max(L - 1, 0), cont)
     cont = np.asarray([as_int(c, "continuity", minimum=-1, maximum=p - 1) for c in cont.reshape(-1)], dtype=int)
@@ -735,8 +751,8 @@ def _surface_args(ctrl, knots_u, knots_v, degree_u, degree_v, cname="ctrl"):
     P = as_points(ctrl, cname, ndim=3)
     pu = as_int(degree_u, "degree_u", minimum=0)
     pv = as_int(degree_v, "degree_v", minimum=0)
-    tu = check_knots(knots_u, pu, P.shape[0], "knots_u")
-    tv = check_knots(knots_v, pv, P.shape[1], "knots_v")
+    tu = check_knots(knots_u, pu, P.shape[0], "knots_u", degree_name="degree_u", count_name=f"{cname}.shape[0]")
+    tv = check_knots(knots_v, pv, P.shape[1], "knots_v", degree_name="degree_v", count_name=f"{cname}.shape[1]")
     return P, tu, tv, pu, pv
 
 
@@ -821,6 +837,7 @@ def _weights(weights, shape, name="weights") -> np.ndarray:
     return w
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def nurbs_curve(ctrl, weights, knots, degree, u) -> np.ndarray:
     """Evaluate a NURBS curve ``sum w_k N_k(u) P_k / sum w_k N_k(u)`` (Goldman §27.9).
 
@@ -842,7 +859,12 @@ def nurbs_curve(ctrl, weights, knots, degree, u) -> np.ndarray:
     u = _check_u(u, t, p)
     flat = u.reshape(-1)
     h = _evaluate(H, t, p, flat)
-    return (h[:, :-1] / h[:, -1:]).reshape(u.shape + (P.shape[1],))
+    with np.errstate(all="ignore"):
+        out = (h[:, :-1] / h[:, -1:]).reshape(u.shape + (P.shape[1],))
+    return finite_result(out, "weights", why=_WEIGHTS_TOO_WIDE)
+
+
+_WEIGHTS_TOO_WIDE = "are too large (or too far apart) for float64 times the control points"
 
 
 def _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v):
@@ -852,6 +874,7 @@ def _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v):
     return H, tu, tv, pu, pv
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def nurbs_surface(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> np.ndarray:
     """Evaluate a NURBS surface at parameter pairs (u, v) (Goldman §27.9).
 
@@ -867,9 +890,11 @@ def nurbs_surface(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> 
     """
     H, tu, tv, pu, pv = _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v)
     h = surface_de_boor(H, tu, tv, pu, pv, u, v)
-    return h[..., :-1] / h[..., -1:]
+    with np.errstate(all="ignore"):
+        return finite_result(h[..., :-1] / h[..., -1:], "weights", why=_WEIGHTS_TOO_WIDE)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def nurbs_surface_grid(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v) -> np.ndarray:
     """Evaluate a NURBS surface on the grid u x v (Goldman §27.9); the fast path of :func:`nurbs_surface`.
 
@@ -882,7 +907,8 @@ def nurbs_surface_grid(ctrl, weights, knots_u, knots_v, degree_u, degree_v, u, v
     """
     H, tu, tv, pu, pv = _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v)
     h = surface_grid(H, tu, tv, pu, pv, u, v)
-    return h[..., :-1] / h[..., -1:]
+    with np.errstate(all="ignore"):
+        return finite_result(h[..., :-1] / h[..., -1:], "weights", why=_WEIGHTS_TOO_WIDE)
 
 
 _QUARTER = np.array([0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0])

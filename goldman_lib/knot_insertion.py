@@ -36,7 +36,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bezier, bspline
-from goldman_lib.validation import as_float, as_int, as_parameter, as_points
+from goldman_lib.validation import as_float, as_int, as_parameter, as_points, within_budget
 
 __all__ = [
     "boehm_insert", "boehm_steps", "oslo", "oslo_steps", "to_piecewise_bezier",
@@ -55,8 +55,14 @@ def _curve(ctrl, knots, degree, cname="ctrl", kname="knots"):
     """Validate a B-spline curve: (P (n+1, d), t (n+p+2,), p)."""
     p = as_int(degree, "degree", minimum=0)
     P = as_points(ctrl, cname, ndim=2)
-    t = bspline.check_knots(knots, p, P.shape[0], name=kname)
+    t = bspline.check_knots(knots, p, P.shape[0], name=kname, count_name=f"len({cname})")
     return P, t, p
+
+
+def _refined_count(m: int, p: int, levels: int, closed: bool = False) -> int:
+    """Control points after ``levels`` midpoint refinements of m points of degree p:
+    ``2 m - p`` per level open (``2^L (m - p) + p``), ``2 m`` closed."""
+    return 2 ** levels * m if closed else 2 ** levels * (m - p) + p
 
 
 def _fmt(x: float) -> str:
@@ -332,18 +338,20 @@ def variation_diminishing(ctrl, knots, degree, line_point, line_normal, samples=
 
     ctrl: (n+1, 2) (or any dimension: a hyperplane then).  knots, degree: the curve.
     line_point, line_normal: (d,), the normal nonzero.  samples: curve samples used to count its
-    crossings (a lower bound that is exact once the samples resolve the curve).
+    crossings (a lower bound that is exact once the samples resolve the curve), at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` / d (the work budget).
     Returns ``(polygon_crossings, curve_crossings)``.
-    Raises ValueError for a bad curve, bad line, or samples < 2.
+    Raises ValueError for a bad curve, bad line, samples < 2 or over the budget.
 
     >>> variation_diminishing([[0, 1], [1, -1], [2, 1], [3, -1]], [0, 0, 0, 1, 2, 2, 2], 2, [0, 0], [0, 1])
     (3, 3)
     """
     P, t, p = _curve(ctrl, knots, degree)
-    samples = as_int(samples, "samples", minimum=2)
+    samples = within_budget(samples, "samples", cost=lambda v: v * P.shape[1], what="the sampled curve",
+                            unit="coordinates", minimum=2)
+    poly = bezier.variation_count(P, line_point, line_normal)
     lo, hi = t[p], t[t.size - p - 1]
     pts = bspline.de_boor(P, t, p, np.linspace(lo, hi, samples))
-    poly = bezier.variation_count(P, line_point, line_normal)
     # crossings of the sampled curve: sign changes of the signed distances
     nrm = np.asarray(line_normal, dtype=float)
     s = (pts - np.asarray(line_point, dtype=float)) @ nrm
@@ -369,17 +377,21 @@ def _lr_level(P: np.ndarray, p: int, closed: bool) -> list[np.ndarray]:
     return rounds
 
 
-def _lr_args(ctrl, degree, levels, closed):
-    p = as_int(degree, "degree", minimum=0)
+def _lr_args(ctrl, degree, levels, closed, rounds=1):
     P = as_points(ctrl, "ctrl", ndim=2)
-    levels = as_int(levels, "levels", minimum=0, maximum=20)
     if not isinstance(closed, (bool, np.bool_)):
         raise TypeError(f"closed must be True or False; got {closed!r}")
-    if not closed and P.shape[0] < p + 1:
+    m, d = P.shape
+    p = as_int(degree, "degree", minimum=0)
+    if not closed and m < p + 1:
         raise ValueError(f"ctrl must hold at least degree+1 = {p + 1} points for an open curve of degree {p}; "
-                         f"got {P.shape[0]}")
-    if P.shape[0] * 2 ** levels > 5_000_000:
-        raise ValueError(f"levels={levels} would make {P.shape[0] * 2 ** levels} control points; use fewer levels")
+                         f"got {m}")
+    # each level averages p times a polygon of about twice the points: (p + 1) * 2 m * d coordinates
+    p = within_budget(p, "degree", cost=lambda v: (v + 1) * 2 * m * d, what="one Lane-Riesenfeld level",
+                      unit="coordinates computed")
+    levels = within_budget(levels, "levels", cost=lambda v: _refined_count(m, p, v, closed) * d * rounds * (p + 1),
+                           what="the refined polygon" if rounds == 1 else "the refined polygons of every round",
+                           unit="coordinates computed")
     return P, p, levels, bool(closed)
 
 
@@ -390,12 +402,15 @@ def lane_riesenfeld(ctrl, degree, levels=1, closed=False) -> np.ndarray:
     inserts the midpoint of every knot interval of a uniform knot vector.  Degree 2 gives Chaikin's
     corner cutting (3/4, 1/4), degree 3 the cubic rule (1/8, 6/8, 1/8) and (1/2, 1/2).
 
-    ctrl: (n+1, d).  degree: p >= 0.  levels: int in [0, 20].  closed: a closed (periodic)
+    ctrl: (n+1, d).  degree: p >= 0.  levels: int >= 0 within the work budget: the coordinates
+    computed, ``(p + 1) d`` times the refined point count, at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` (levels <= 20 for a planar cubic of 4 points).
+    closed: a closed (periodic)
     curve, the polygon wrapping around, or an open one with uniform knots (the default).
     Returns the refined polygon: open, ``2 m - p`` points from m per level (the knots of
     :func:`lane_riesenfeld_knots`); closed, ``2^levels (n+1)`` points, new point i belonging to
     the uniform B-spline that starts at parameter ``(i + p) / 2`` when the old point i starts at i.
-    Raises ValueError for too few points for an open curve or an output that would be huge.
+    Raises ValueError for too few points for an open curve or levels over the budget.
 
     >>> lane_riesenfeld([[0, 0], [4, 0], [4, 4]], 2, 1).tolist()
     [[1.0, 0.0], [3.0, 0.0], [4.0, 1.0], [4.0, 3.0]]
@@ -417,7 +432,7 @@ def lane_riesenfeld_steps(ctrl, degree, levels=1, closed=False) -> list[list[np.
     >>> [len(r) for r in lane_riesenfeld_steps([[0, 0], [4, 0], [4, 4]], 2, 1)[0]]
     [6, 5, 4]
     """
-    P, p, levels, closed = _lr_args(ctrl, degree, levels, closed)
+    P, p, levels, closed = _lr_args(ctrl, degree, levels, closed, rounds=2)
     out = []
     for _ in range(levels):
         rounds = _lr_level(P, p, closed)
@@ -433,15 +448,20 @@ def lane_riesenfeld_knots(n_ctrl, degree, levels=1) -> np.ndarray:
     each level halves the spacing and drops ``p`` points, so the refined knots start at
     ``p (1 - 2^-levels)`` with spacing ``2^-levels``, over the same domain.
 
-    n_ctrl: n+1 >= degree+1.  degree: p.  levels: int >= 0.  Returns the knot vector.
-    Raises ValueError for n_ctrl < degree + 1.
+    n_ctrl: n+1 >= degree+1.  degree: p.  levels: int >= 0.  The knot vector, ``2^levels (n_ctrl -
+    p) + 2p + 1`` knots, is at most :data:`~goldman_lib.validation.MAX_ITEMS` long (the work budget).
+    Returns the knot vector.
+    Raises ValueError for n_ctrl < degree + 1 or a knot vector over the budget.
 
     >>> lane_riesenfeld_knots(3, 2, 1).tolist()
     [1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0]
     """
-    p = as_int(degree, "degree", minimum=0)
-    n_ctrl = as_int(n_ctrl, "n_ctrl", minimum=p + 1)
-    levels = as_int(levels, "levels", minimum=0, maximum=20)
+    p = within_budget(degree, "degree", cost=lambda v: 2 * v + 2, what="the knot vector", unit="knots")
+    n_ctrl = within_budget(n_ctrl, "n_ctrl", cost=lambda v: v + p + 1, what="the knot vector", unit="knots")
+    if n_ctrl < p + 1:
+        raise ValueError(f"n_ctrl must be >= degree+1 = {p + 1}; got {n_ctrl}")
+    levels = within_budget(levels, "levels", cost=lambda v: _refined_count(n_ctrl, p, v) + p + 1,
+                           what="the refined knot vector", unit="knots")
     m = n_ctrl
     for _ in range(levels):
         m = 2 * m - p
@@ -457,12 +477,15 @@ def midpoint_knots(knots) -> np.ndarray:
     """The knot vector with the midpoint of every knot interval inserted, ``t_0, s_0, t_1, s_1, ...``
     (``s_j = (t_j + t_{j+1}) / 2``), the knots behind one level of subdivision (Goldman §28.4).
 
-    knots: (N,) non-decreasing.  Returns (2N - 1,).
+    knots: (N,) non-decreasing, N >= 1.  Returns (2N - 1,).
+    Raises ValueError for no knots or a non-finite knot, TypeError for non-numbers.
 
     >>> midpoint_knots([0, 1, 3]).tolist()
     [0.0, 0.5, 1.0, 2.0, 3.0]
     """
     t = as_parameter(knots, "knots").reshape(-1)
+    if t.size == 0:
+        raise ValueError("knots must hold at least one knot; got an empty knot vector")
     u = np.empty(2 * t.size - 1)
     u[0::2] = t
     u[1::2] = 0.5 * (t[:-1] + t[1:])
@@ -555,7 +578,8 @@ def schaefer(ctrl, knots, degree, levels=1):
     :func:`lane_riesenfeld`.
 
     ctrl: (n+1, d).  knots: (n+p+2,) with simple interior knots (clamped ends allowed).
-    degree: p.  levels: int in [0, 20].
+    degree: p.  levels: int >= 0 within the work budget: ``(p + 1) d`` times the refined point
+    count at most :data:`~goldman_lib.validation.MAX_ITEMS` coordinates computed.
     Returns ``(new_ctrl, new_knots)``: ``2 m - p`` points from m per level.
     Raises ValueError for a bad curve or repeated interior knots.
 
@@ -566,10 +590,10 @@ def schaefer(ctrl, knots, degree, levels=1):
     [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]
     """
     P, t, p = _curve(ctrl, knots, degree)
-    levels = as_int(levels, "levels", minimum=0, maximum=20)
+    m, d = P.shape
+    levels = within_budget(levels, "levels", cost=lambda v: _refined_count(m, p, v) * d * (p + 1),
+                           what="the refined polygon", unit="coordinates computed")
     _schaefer_check(t, p)
-    if P.shape[0] * 2 ** levels > 5_000_000:
-        raise ValueError(f"levels={levels} would make about {P.shape[0] * 2 ** levels} control points; use fewer levels")
     for _ in range(levels):
         rounds, t = _schaefer_level(P, t, p)
         P = rounds[-1]
@@ -638,9 +662,11 @@ def convergence_study(ctrl, knots, degree, levels=6) -> dict:
     halving the knot spacing divides the distance by about 4 (it is O(h^2), h the largest knot
     interval), so the distances fall like ``4^-level``.
 
-    ctrl, knots, degree (>= 1): the curve (as :func:`schaefer`).  levels: int in [1, 12].
+    ctrl, knots, degree (>= 1): the curve (as :func:`schaefer`).  levels: int in [1, 12], and
+    within the work budget of :func:`schaefer`.
     Returns ``{"levels": (L+1,), "distance": (L+1,), "ratio": (L,) distance[l-1] / distance[l],
-    "points": [number of control points per level]}``.
+    "points": [number of control points per level]}``; a ratio is 0 where the distance is already
+    0 (a polygon on its curve, nothing left to converge).
     Raises ValueError as :func:`schaefer`.
 
     >>> study = convergence_study([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, 3)
@@ -651,6 +677,9 @@ def convergence_study(ctrl, knots, degree, levels=6) -> dict:
     if p < 1:
         raise ValueError("degree must be >= 1 for a convergence study")
     levels = as_int(levels, "levels", minimum=1, maximum=12)
+    m, d = P.shape
+    levels = within_budget(levels, "levels", cost=lambda v: _refined_count(m, p, v) * d * (p + 1),
+                           what="the refined polygon", unit="coordinates computed", minimum=1)
     _schaefer_check(t, p)
     dist = [control_polygon_distance(P, t, p)]
     counts = [P.shape[0]]
@@ -661,7 +690,7 @@ def convergence_study(ctrl, knots, degree, levels=6) -> dict:
         counts.append(P.shape[0])
     d = np.array(dist)
     with np.errstate(divide="ignore", invalid="ignore"):
-        ratio = np.where(d[1:] > 0, d[:-1] / np.where(d[1:] > 0, d[1:], 1.0), np.inf)
+        ratio = np.where(d[1:] > 0, d[:-1] / np.where(d[1:] > 0, d[1:], 1.0), 0.0)
     return {"levels": np.arange(levels + 1), "distance": d, "ratio": ratio, "points": counts}
 
 

@@ -33,7 +33,8 @@ import math
 import numpy as np
 
 from goldman_lib import ifs
-from goldman_lib.validation import as_float, as_int, as_points, check_finite, within_budget
+from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points, as_tolerance,
+                                     check_finite, finite_result, within_budget)
 
 __all__ = ["bezier_subdivision_matrices", "bspline_subdivision_matrices", "check_rows_sum_to_one",
            "lift_control_points", "curve_ifs", "contraction_factors", "attractor", "curve_as_attractor", "normal_curve",
@@ -42,6 +43,17 @@ __all__ = ["bezier_subdivision_matrices", "bspline_subdivision_matrices", "check
 
 #: The most points :func:`attractor` will produce.
 MAX_POINTS = 2_000_000
+#: The highest degree of the matrices and normal curves: above it (about 1029) the binomial
+#: coefficients C(n, k) overflow float64.
+MAX_DEGREE = 1000
+
+
+def _degree(n, name: str = "n", minimum: int = 0) -> int:
+    n = as_int(n, name, minimum=minimum)
+    if n > MAX_DEGREE:
+        raise ValueError(f"{name} must be <= {MAX_DEGREE}: the binomial coefficients C({name}, k) of higher degrees "
+                         f"overflow float64 (and the work grows like {name}^2); got {n}")
+    return n
 
 
 # --------------------------------------------------------------------------------------------
@@ -56,24 +68,36 @@ def bezier_subdivision_matrices(n: int, t: float = 0.5) -> tuple[np.ndarray, np.
     ``R[i, j] = B_{j-i}^{n-i}(t)`` (its right edge).  Both are ``(n+1, n+1)``, lower and upper
     triangular, with rows summing to one.
 
-    n: degree >= 0.  t: the split parameter (default 1/2), any finite number.
-    Raises TypeError/ValueError for a non-integer or negative n, or a non-finite t.
+    n: degree, 0 <= n <= :data:`MAX_DEGREE` (1000: beyond it the binomial coefficients overflow
+    float64).  t: the split parameter (default 1/2), any finite number.
+    Raises TypeError/ValueError for a non-integer, negative or too large n, a non-finite t, or a t
+    so far from [0, 1] that an entry overflows float64.
 
     >>> L, R = bezier_subdivision_matrices(1)
     >>> L.tolist(), R.tolist()
     ([[1.0, 0.0], [0.5, 0.5]], [[0.5, 0.5], [0.0, 1.0]])
     """
-    n = as_int(n, "n", minimum=0)
+    n = _degree(n)
     t = as_float(t, "t")
+    try:
+        # the same products as comb(i, j) * t**j * (1-t)**(i-j) entry by entry, one row at a time
+        tp = np.array([t ** j for j in range(n + 1)])
+        sp = np.array([(1 - t) ** j for j in range(n + 1)])
+    except OverflowError:
+        raise ValueError(f"t is too large in magnitude: the matrix entries overflow float64 at t = {t:g}") from None
+    rows = [np.ones(1)]
+    pascal = [1]
+    for i in range(1, n + 1):
+        pascal = [1] + [a + b for a, b in zip(pascal, pascal[1:])] + [1]
+        rows.append(np.array(pascal, dtype=float))
     L = np.zeros((n + 1, n + 1))
     R = np.zeros((n + 1, n + 1))
-    for i in range(n + 1):
-        for j in range(i + 1):
-            L[i, j] = math.comb(i, j) * t ** j * (1 - t) ** (i - j)
-        for j in range(i, n + 1):
-            k, m = j - i, n - i
-            R[i, j] = math.comb(m, k) * t ** k * (1 - t) ** (m - k)
-    return L, R
+    with np.errstate(all="ignore"):
+        for i in range(n + 1):
+            L[i, :i + 1] = rows[i] * tp[:i + 1] * sp[i::-1]
+            m = n - i
+            R[i, i:] = rows[m] * tp[:m + 1] * sp[m::-1]
+    return finite_result(L, "t", t), finite_result(R, "t", t)
 
 
 def bspline_subdivision_matrices(n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -85,19 +109,22 @@ def bspline_subdivision_matrices(n: int) -> tuple[np.ndarray, np.ndarray]:
     ``L[j, i] = m[2i - j + 1]`` and ``R[j, i] = m[2i - j]``.  For the cubic,
     ``8 L = [[4,4,0,0], [1,6,1,0], [0,4,4,0], [0,1,6,1]]``.
 
+    n: degree, 0 <= n <= :data:`MAX_DEGREE`.
+
     >>> L, R = bspline_subdivision_matrices(2)
     >>> (L * 4).tolist()
     [[3.0, 1.0, 0.0], [1.0, 3.0, 0.0], [0.0, 3.0, 1.0]]
     """
-    n = as_int(n, "n", minimum=0)
+    n = _degree(n)
     mask = np.array([math.comb(n + 1, k) for k in range(n + 2)], dtype=float) / 2 ** n
+    padded = np.concatenate([mask, [0.0]])            # index -1 and n+2.. read the 0.0
+    i = np.arange(n + 1)[None, :]
+    j = np.arange(n + 1)[:, None]
 
     def m(k):
-        return mask[k] if 0 <= k <= n + 1 else 0.0
+        return padded[np.where((k >= 0) & (k <= n + 1), k, n + 2)]
 
-    L = np.array([[m(2 * i - j + 1) for i in range(n + 1)] for j in range(n + 1)])
-    R = np.array([[m(2 * i - j) for i in range(n + 1)] for j in range(n + 1)])
-    return L, R
+    return m(2 * i - j + 1), m(2 * i - j)
 
 
 def check_rows_sum_to_one(M, name: str = "M", tol: float = 1e-9) -> np.ndarray:
@@ -110,7 +137,8 @@ def check_rows_sum_to_one(M, name: str = "M", tol: float = 1e-9) -> np.ndarray:
     ...
     ValueError: the rows of L must sum to 1 (affine combinations); row 1 sums to 0.9
     """
-    A = check_finite(np.asarray(M, dtype=float), name)
+    A = check_finite(as_float_array(M, name), name)
+    tol = as_tolerance(tol)
     if A.ndim != 2 or A.shape[0] != A.shape[1]:
         raise ValueError(f"{name} must be a square matrix; got shape {A.shape}")
     sums = A.sum(axis=1)
@@ -161,7 +189,7 @@ def lift_control_points(ctrl) -> np.ndarray:
 
 
 def _square(ctrl) -> np.ndarray:
-    P = np.asarray(ctrl, dtype=float)
+    P = check_finite(as_float_array(ctrl, "ctrl"), "ctrl")
     if P.ndim == 2 and P.shape[0] == P.shape[1] and np.allclose(P[:, -1], 1.0):
         if abs(np.linalg.det(P)) < 1e-12:
             raise ValueError("the lifted control points must form an invertible matrix")
@@ -230,28 +258,32 @@ def attractor(maps, levels: int, start) -> np.ndarray:
     maps: ``(k, D+1, D+1)`` affine maps on homogeneous row vectors.  start: ``(m, D+1)``
     homogeneous points (last coordinate 1) or ``(m, D)`` points.  Returns ``(m k^levels, D)``
     points in blocks of m, the copies of a polyline in order (block ``i_L ... i_1`` in base k is
-    ``start @ M_{i_1} @ ... @ M_{i_L}``).  Raises ValueError beyond :data:`MAX_POINTS` points.
+    ``start @ M_{i_1} @ ... @ M_{i_L}``).  levels: int >= 0 with ``m k^levels`` at most
+    :data:`MAX_POINTS` points (the work budget); raises ValueError beyond it.
 
     >>> maps, P = curve_ifs([[0, 0], [1, 2], [2, 0]])
     >>> attractor(maps, 1, P[[0, -1]])[:, :2].tolist()
     [[0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]]
     """
-    M = check_finite(np.asarray(maps, dtype=float), "maps")
-    if M.ndim != 3 or M.shape[1] != M.shape[2]:
-        raise ValueError(f"maps must be a stack of square matrices (k, D+1, D+1); got shape {M.shape}")
-    levels = as_int(levels, "levels", minimum=0)
+    M = check_finite(as_float_array(maps, "maps"), "maps")
+    if M.ndim != 3 or M.shape[1] != M.shape[2] or M.shape[0] < 1 or M.shape[1] < 2:
+        raise ValueError(f"maps must be a stack of at least one square matrix (k, D+1, D+1); got shape {M.shape}")
     X = as_points(start, "start", ndim=2)
     D1 = M.shape[1]
     if X.shape[1] == D1 - 1:
         X = np.column_stack([X, np.ones(len(X))])
     if X.shape[1] != D1:
         raise ValueError(f"start must hold points with {D1 - 1} coordinates (or {D1} homogeneous); got shape {X.shape}")
-    total = len(X) * len(M) ** levels
-    if total > MAX_POINTS:
-        raise ValueError(f"levels={levels} would make {total:,} points; at most {MAX_POINTS:,}")
+    levels = within_budget(levels, "levels", cost=lambda v: len(X) * len(M) ** v, what="the attractor",
+                           unit="points", limit=MAX_POINTS)
     for _ in range(levels):
         X = np.matmul(X[None], M).reshape(-1, D1)
-    return X[:, :-1] / X[:, -1:]
+    with np.errstate(all="ignore"):
+        out = X[:, :-1] / X[:, -1:]
+    if not np.all(np.isfinite(out)):
+        raise ValueError("maps must keep the points finite (affine maps, last column (0, ..., 0, 1)); "
+                         f"after {levels} levels a point overflows or has homogeneous coordinate 0")
+    return out
 
 
 def curve_as_attractor(ctrl, levels: int = 8, kind: str = "bezier") -> np.ndarray:
@@ -274,10 +306,12 @@ def normal_curve_control_points(n: int) -> np.ndarray:
     """The control points of the normal curve of degree n: the origin and the unit points
     ``e_1, ..., e_n`` of R^n, ``(n+1, n)`` (Goldman §29.3).
 
+    n: 1 <= n <= :data:`MAX_DEGREE`.
+
     >>> normal_curve_control_points(2).tolist()
     [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
     """
-    n = as_int(n, "n", minimum=1)
+    n = _degree(n, minimum=1)
     return np.vstack([np.zeros(n), np.eye(n)])
 
 
@@ -287,17 +321,24 @@ def normal_curve(n: int, t) -> np.ndarray:
     The Bezier curve whose control points are the vertices of the standard simplex; its IFS is
     ``{L, R}`` itself (in the homogeneous coordinates of the simplex), and every degree-n Bezier
     curve with control points P is its affine image ``C(t) = P_0 + sum_k N_k(t) (P_k - P_0)``.
-    Returns ``t.shape + (n,)``.
+    n: 1 <= n <= :data:`MAX_DEGREE`, with ``n * t.size`` values at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` (the work budget).  t: finite, scalar or array.
+    Returns ``t.shape + (n,)``.  Raises ValueError for a t so far from [0, 1] that a value
+    overflows float64.
 
     >>> normal_curve(2, 0.5).tolist()
     [0.5, 0.25]
     """
-    n = as_int(n, "n", minimum=1)
-    t = check_finite(np.asarray(t, dtype=float), "t")
+    t = as_parameter(t, "t")
+    n = _degree(n, minimum=1)
+    n = within_budget(n, "n", cost=lambda v: v * max(t.size, 1), what=f"the normal curve at {t.size} parameter(s)",
+                      unit="values", minimum=1)
     k = np.arange(1, n + 1)
     binom = np.array([math.comb(n, int(j)) for j in k], dtype=float)
     tt = t[..., None]
-    return binom * tt ** k * (1 - tt) ** (n - k)
+    with np.errstate(all="ignore"):
+        out = binom * tt ** k * (1 - tt) ** (n - k)
+    return finite_result(out, "t", t)
 
 
 # --------------------------------------------------------------------------------------------
@@ -355,7 +396,10 @@ def control_point_ifs(ctrl, matrices, name: str = "") -> ifs.IFS:
     P0 = as_points(ctrl, "ctrl", ndim=2, dim=2)
     if len(P0) != 3:
         raise ValueError(f"ctrl must hold 3 control points for 3x3 maps of the plane; got {len(P0)}")
-    mats = [check_rows_sum_to_one(M, f"matrices[{k}]") for k, M in enumerate(np.asarray(matrices, dtype=float))]
+    stack = check_finite(as_float_array(matrices, "matrices"), "matrices")
+    if stack.ndim != 3 or stack.shape[0] < 1:
+        raise ValueError(f"matrices must be a stack (k, 3, 3) of at least one matrix; got shape {stack.shape}")
+    mats = [check_rows_sum_to_one(M, f"matrices[{k}]") for k, M in enumerate(stack)]
     for k, M in enumerate(mats):
         if M.shape != (3, 3):
             raise ValueError(f"matrices[{k}] must be 3x3; got shape {M.shape}")

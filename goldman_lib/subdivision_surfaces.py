@@ -39,7 +39,7 @@ from functools import cached_property
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_int, as_points, within_budget
+from goldman_lib.validation import MAX_ITEMS, as_float, as_int, as_points, within_budget
 
 __all__ = [
     "Mesh", "cube", "tetrahedron", "octahedron", "prism", "quad_star", "quad_grid", "triangle_grid",
@@ -97,7 +97,8 @@ class Mesh:
         self._set(V, corners, sizes)
         used = np.bincount(corners, minlength=nv)
         if (used == 0).any():
-            raise ValueError(f"every vertex must belong to a face; vertex {int(np.flatnonzero(used == 0)[0])} belongs to none")
+            raise ValueError(f"faces must use every vertex (every vertex must belong to a face); "
+                             f"vertex {int(np.flatnonzero(used == 0)[0])} belongs to none")
         nxt = self._next
         same = corners == corners[nxt]
         if same.any():
@@ -110,7 +111,7 @@ class Mesh:
         counts = np.bincount(self._corner_edge, minlength=len(self.edges))
         if (counts > 2).any():
             e = int(np.flatnonzero(counts > 2)[0])
-            raise ValueError(f"every edge must belong to at most two faces (a manifold mesh); edge "
+            raise ValueError(f"faces must form a manifold mesh: every edge belongs to at most two faces; edge "
                              f"{tuple(self.edges[e].tolist())} belongs to {int(counts[e])}")
         if check_orientation:
             directed = corners.astype(np.int64) * nv + corners[nxt]
@@ -301,6 +302,12 @@ class Mesh:
 
 def _read_faces(faces):
     """Flat corners and face sizes from an (F, k) array or a list of sequences."""
+    if isinstance(faces, (str, bytes)) or not hasattr(faces, "__len__") or (
+            isinstance(faces, np.ndarray) and faces.ndim == 0):
+        raise TypeError(f"faces must be an (F, k) integer array or a list of index lists; got {type(faces).__name__}")
+    if not isinstance(faces, np.ndarray) and any(isinstance(f, (str, bytes)) or not hasattr(f, "__len__") and np.ndim(f) != 0
+                                                 for f in faces):
+        raise TypeError("faces must be an (F, k) integer array or a list of index lists")
     if isinstance(faces, np.ndarray) and faces.ndim == 2 or (
             not isinstance(faces, np.ndarray) and len(faces) and all(np.ndim(f) == 1 for f in faces)
             and len({len(f) for f in faces}) == 1):
@@ -317,8 +324,11 @@ def _read_faces(faces):
     sizes = np.array([len(np.atleast_1d(r)) for r in rows], dtype=np.int64)
     if (sizes < 3).any():
         k = int(np.flatnonzero(sizes < 3)[0])
-        raise ValueError(f"every face must have at least 3 vertices; face {k} has {int(sizes[k])}")
-    flat = np.concatenate([np.atleast_1d(np.asarray(r)) for r in rows])
+        raise ValueError(f"faces must have at least 3 vertices; face {k} has {int(sizes[k])}")
+    try:
+        flat = np.concatenate([np.atleast_1d(np.asarray(r)) for r in rows])
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"faces must hold integer vertex indices ({exc})") from None
     if flat.dtype.kind not in "iu":
         if flat.dtype.kind == "f" and np.all(np.isfinite(flat)) and np.all(flat == np.round(flat)):
             flat = flat.astype(np.int64)
@@ -369,10 +379,13 @@ def prism(n: int = 5, height: float = 1.5) -> Mesh:
     One level of the quadrilateral scheme turns each cap into n quadrilaterals around a vertex
     of valence n (an extraordinary vertex when n != 4).
 
+    n: the sides of the caps, >= 3, with the 2n vertices' coordinates at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` (the work budget).
+
     >>> prism(5).face_sizes.tolist()
     [5, 5, 4, 4, 4, 4, 4]
     """
-    n = as_int(n, "n", minimum=3)
+    n = within_budget(n, "n", cost=lambda v: 6 * v, what="the prism", unit="vertex coordinates", minimum=3)
     height = as_float(height, "height", positive=True)
     ang = 2 * np.pi * np.arange(n) / n
     ring = np.stack([np.cos(ang), np.sin(ang)], axis=1)
@@ -391,12 +404,18 @@ def quad_star(valence: int = 5, rings: int = 2, height: float = 0.8) -> Mesh:
     neighbouring spokes; every vertex other than the centre (and the boundary) has valence 4.
     The mesh is lifted into a bump of the given height, highest at the centre.
 
+    valence >= 3 and rings >= 1, with the ``valence rings^2 + ...`` vertices at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` / 3 (the mesh is built in Python loops: a second or
+    so at the limit of about 10^6 vertices is not reached by the chapter's stars).
+
     >>> m = quad_star(5)
     >>> int(m.valences[0]), m.n_faces, m.euler_characteristic()
     (5, 20, 1)
     """
-    n = as_int(valence, "valence", minimum=3)
-    r = as_int(rings, "rings", minimum=1)
+    n = within_budget(valence, "valence", cost=lambda v: 3 * v * 2, what="the star", unit="vertex coordinates",
+                      minimum=3)
+    r = within_budget(rings, "rings", cost=lambda v: 3 * n * (v + 1) ** 2, what=f"the star of valence {n}",
+                      unit="vertex coordinates", limit=MAX_ITEMS // 10, minimum=1)
     height = as_float(height, "height")
     ang = 2 * np.pi * np.arange(n) / n
     spokes = np.stack([np.cos(ang), np.sin(ang)], axis=1) / r
@@ -501,7 +520,10 @@ def split_and_average(ctrl, degree: int, levels: int = 1, closed: bool = False) 
     ctrl: (n, d) control points.  degree: >= 0.  levels: >= 0.  closed: treat the polygon as
     closed (periodic): then every level doubles the number of points; else each averaging drops
     one point (the ends of an open polygon lose support), giving ``2 n - degree`` points a level.
-    Raises ValueError if an open polygon becomes too short.
+    The work budget: ``(degree + 1) d`` times the refined point count at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` coordinates computed (levels <= 19 for a planar
+    cubic of 5 points).
+    Raises ValueError if an open polygon becomes too short or degree or levels is over the budget.
 
     >>> split_and_average([[0.0], [8.0]], degree=1).ravel().tolist()
     [0.0, 4.0, 8.0]
@@ -509,8 +531,17 @@ def split_and_average(ctrl, degree: int, levels: int = 1, closed: bool = False) 
     [[1.0, 0.0], [3.0, 0.0]]
     """
     P = as_points(ctrl, "ctrl", ndim=2)
-    degree = as_int(degree, "degree", minimum=0)
-    levels = as_int(levels, "levels", minimum=0)
+    if not isinstance(closed, (bool, np.bool_)):
+        raise TypeError(f"closed must be True or False; got {closed!r}")
+    m, d = P.shape
+    degree = within_budget(degree, "degree", cost=lambda v: (v + 1) * 2 * m * d, what="one level",
+                           unit="coordinates computed")
+
+    def count(v):   # points after v levels (an open polygon that runs out raises below)
+        return 2 ** v * m if closed else max(2 ** v * (m - degree) + degree, 2 ** v)
+
+    levels = within_budget(levels, "levels", cost=lambda v: count(v) * d * (degree + 1), what="the refined polygon",
+                           unit="coordinates computed")
     for _ in range(levels):
         P = np.repeat(P, 2, axis=0)
         for _ in range(degree):
@@ -535,7 +566,8 @@ def box_spline_split_and_average(points, multiplicities=(2, 2, 2), levels: int =
     quartic box spline; ``(1, 1, 1)`` the piecewise-linear hat function.
 
     points: (m, n, d) control net.  multiplicities: (r, s, t) with r, s >= 1, t >= 0.
-    levels: >= 0.  Returns the refined net (every averaging trims one row or column: the
+    levels: >= 0, with the ``4^levels m n d`` coordinates of the split net at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` (the work budget).  Returns the refined net (every averaging trims one row or column: the
     boundary points that need data from outside the net are dropped).
     Raises ValueError for a multiplicity out of range or a net too small to average.
 
@@ -544,12 +576,19 @@ def box_spline_split_and_average(points, multiplicities=(2, 2, 2), levels: int =
     [[0.0, 0.0, 1.0, 1.0], [0.0, 0.0, 1.0, 1.0], [2.0, 2.0, 3.0, 3.0], [2.0, 2.0, 3.0, 3.0]]
     """
     P = as_points(points, "points", ndim=3)
+    try:
+        flat = np.ndim(multiplicities) == 1
+    except ValueError:   # a ragged sequence
+        flat = False
+    if isinstance(multiplicities, (str, bytes)) or not hasattr(multiplicities, "__len__") or not flat:
+        raise TypeError(f"multiplicities must be a sequence (r, s, t) of three integers; got {multiplicities!r}")
     if len(multiplicities) != 3:
         raise ValueError(f"multiplicities must be (r, s, t) for the directions (1,0), (0,1), (1,1); got {multiplicities!r}")
     r = as_int(multiplicities[0], "multiplicities[0]", minimum=1)
     s = as_int(multiplicities[1], "multiplicities[1]", minimum=1)
     t = as_int(multiplicities[2], "multiplicities[2]", minimum=0)
-    levels = as_int(levels, "levels", minimum=0)
+    levels = within_budget(levels, "levels", cost=lambda v: 4 ** v * P.size, what="the split net",
+                           unit="coordinates")
     for _ in range(levels):
         P = np.repeat(np.repeat(P, 2, axis=0), 2, axis=1)
         for (a, b), times in (((1, 0), r - 1), ((0, 1), s - 1), ((1, 1), t)):
@@ -682,9 +721,11 @@ def centroid_averaging(mesh: Mesh, levels: int = 1, scheme: str | None = None,
     one level is one level of the three-direction quartic box spline.  Needs a triangle mesh.
 
     scheme None picks ``"triangle"`` for a triangle mesh and ``"quad"`` otherwise.
-    levels: >= 0.  Returns a new Mesh (the input is unchanged).
-    Raises TypeError if mesh is not a Mesh; ValueError for an unknown scheme, a negative level, or
-    the triangle scheme on a mesh with non-triangular faces.
+    levels: >= 0, within the work budget: each level multiplies the face corners by 4, and
+    ``4^levels`` times the corners of the mesh is at most :data:`~goldman_lib.validation.MAX_ITEMS`
+    / 4 (levels <= 8 for the cube, 24 corners).  Returns a new Mesh (the input is unchanged).
+    Raises TypeError if mesh is not a Mesh; ValueError for an unknown scheme, a negative level, a
+    level over the budget, or the triangle scheme on a mesh with non-triangular faces.
 
     >>> m = centroid_averaging(cube(), 2)
     >>> m.n_faces, m.euler_characteristic()
@@ -693,7 +734,9 @@ def centroid_averaging(mesh: Mesh, levels: int = 1, scheme: str | None = None,
     32
     """
     mesh = _check_mesh(mesh)
-    levels = as_int(levels, "levels", minimum=0)
+    corners = int(mesh._corners.size)
+    levels = within_budget(levels, "levels", cost=lambda v: 4 ** v * corners, what="the subdivided mesh",
+                           unit="face corners", limit=MAX_ITEMS // 4)
     if scheme is None:
         scheme = "triangle" if mesh.is_triangle else "quad"
     if scheme not in ("quad", "triangle"):
@@ -727,7 +770,7 @@ def quad_vertex_stencil(valence: int) -> tuple[float, float, float]:
     >>> quad_vertex_stencil(4)
     (0.5625, 0.09375, 0.015625)
     """
-    n = as_int(valence, "valence", minimum=3)
+    n = within_budget(valence, "valence", cost=lambda v: v, what="the stencil", unit="neighbours", minimum=3)
     return 9 / 16, 3 / (8 * n), 1 / (16 * n)
 
 
@@ -752,7 +795,7 @@ def quad_face_stencil(sides: int = 4) -> float:
     >>> quad_face_stencil()
     0.25
     """
-    k = as_int(sides, "sides", minimum=3)
+    k = within_budget(sides, "sides", cost=lambda v: v, what="the stencil", unit="vertices", minimum=3)
     return 1 / k
 
 
@@ -767,7 +810,7 @@ def triangle_vertex_stencil(valence: int, self_weight: float = BOX_SPLINE_SELF_W
     >>> triangle_vertex_stencil(6)
     (0.625, 0.0625)
     """
-    n = as_int(valence, "valence", minimum=3)
+    n = within_budget(valence, "valence", cost=lambda v: v, what="the stencil", unit="neighbours", minimum=3)
     w = _self_weight(self_weight)
     return w + (1 - w) / 2, (1 - w) / (2 * n)
 

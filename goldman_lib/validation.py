@@ -20,7 +20,7 @@ import numbers
 import numpy as np
 
 __all__ = ["as_points", "as_parameter", "as_int", "as_float", "as_float_array", "check_finite", "within_budget",
-           "largest_within", "MAX_ITEMS", "MAX_ITERATIONS", "as_tolerance"]
+           "largest_within", "MAX_ITEMS", "MAX_ITERATIONS", "as_tolerance", "finite_result"]
 
 #: The most points, segments, triangles or matrix entries one call may produce or allocate: about
 #: 160 MB of float64 pairs, a second or two of numpy work on a 2-core machine.  Every level, count,
@@ -43,6 +43,8 @@ def check_finite(arr: np.ndarray, name: str) -> np.ndarray:
     ...
     ValueError: t must be finite; t[1] is inf
     """
+    if not isinstance(arr, np.ndarray) or arr.dtype.kind not in "fiub":
+        arr = as_float_array(arr, name)
     bad = ~np.isfinite(arr)
     if bad.any():
         flat = int(np.flatnonzero(bad)[0])
@@ -63,7 +65,7 @@ def as_float_array(x, name: str) -> np.ndarray:
     ...
     TypeError: t must be real; complex numbers are not points or parameters here
     """
-    if isinstance(x, (str, bytes)):
+    if isinstance(x, (str, bytes)) or x is None:
         raise TypeError(f"{name} must be numeric, not {type(x).__name__}")
     if isinstance(x, (complex, np.complexfloating)) or (isinstance(x, np.ndarray) and np.iscomplexobj(x)):
         raise TypeError(f"{name} must be real; complex numbers are not points or parameters here")
@@ -245,3 +247,33 @@ def as_tolerance(tol, name: str = "tol") -> float:
     ValueError: tol must be finite; got nan
     """
     return as_float(tol, name, positive=True)
+
+
+def finite_result(result, name: str, value=None, *, why: str = "is too large in magnitude") -> np.ndarray:
+    """``result`` if every entry is finite; otherwise a ``ValueError`` saying which input made the
+    result overflow float64 (a parameter far outside its domain, a huge ratio), so that no NaN or
+    infinity leaves the library silently.
+
+    name: the parameter to blame.  value: its value (a scalar, or an array whose shape leads the
+    result's shape, so the first offending entry can be named).
+
+    >>> finite_result(np.array([1.0, 2.0]), "t", 0.5)
+    array([1., 2.])
+    >>> finite_result(np.array([np.inf, np.nan]), "t", 1e150)
+    Traceback (most recent call last):
+    ...
+    ValueError: t is too large in magnitude: the result overflows float64 at t = 1e+150
+    """
+    arr = result if isinstance(result, np.ndarray) else as_float_array(result, name)
+    if arr.dtype.kind not in "fc" or np.all(np.isfinite(arr)):
+        return result
+    where = ""
+    if value is not None:
+        val = np.asarray(value)
+        if val.ndim == 0:
+            where = f" at {name} = {val.item():g}" if val.dtype.kind in "fiu" else ""
+        elif arr.ndim >= val.ndim and arr.shape[:val.ndim] == val.shape:
+            flat = int(np.flatnonzero(~np.isfinite(arr))[0])
+            idx = np.unravel_index(flat, arr.shape)[:val.ndim]
+            where = f" at {name}[{', '.join(str(int(i)) for i in idx)}] = {val[idx]:g}"
+    raise ValueError(f"{name} {why}: the result overflows float64{where}")

@@ -579,8 +579,8 @@ def test_oslo_needs_a_refinement():
 def test_lane_riesenfeld_rules():
     with pytest.raises(ValueError, match="at least degree\\+1"):
         ki.lane_riesenfeld([[0, 0], [1, 1]], 3, 1)
-    with pytest.raises(ValueError, match="levels must be <= 20"):
-        ki.lane_riesenfeld([[0, 0], [1, 1]], 1, 21)
+    with pytest.raises(ValueError, match="levels must be <= 21"):
+        ki.lane_riesenfeld([[0, 0], [1, 1]], 1, 30)
     with pytest.raises(TypeError, match="closed must be True or False"):
         ki.lane_riesenfeld([[0, 0], [1, 1]], 1, 1, closed="yes")
     with pytest.raises(ValueError, match="ctrl must be finite"):

@@ -181,7 +181,7 @@ def test_bad_input_rules():
         sm.control_point_ifs([[0, 0], [1, 2], [2, 0]], [np.eye(3), 0.9 * np.eye(3)])
     with pytest.raises(ValueError, match="3 control points"):
         sm.control_point_ifs([[0, 0], [1, 2], [2, 0], [3, 1]], sm.fractal_matrices())
-    with pytest.raises(ValueError, match="would make"):
+    with pytest.raises(ValueError, match="levels must be <= "):
         sm.attractor(sm.curve_ifs([[0, 0], [1, 2], [2, 0]])[0], 40, [[0, 0]])
 
 

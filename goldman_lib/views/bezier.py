@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bezier
-from goldman_lib.validation import as_int, as_points
+from goldman_lib.validation import as_int, as_points, within_budget
 from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.three import SceneView, grid_triangles
@@ -56,7 +56,8 @@ def plot_control_polygon(ctrl, ax=None, labels: bool = True, color=None, **kwarg
 def plot_curve(ctrl, ax=None, samples: int = 200, color=None, **kwargs):
     """Draw the Bezier curve of ``ctrl`` (Goldman §24.2) sampled at ``samples`` parameters; returns the line."""
     ctrl = as_points(ctrl, "ctrl", dim=2)
-    samples = as_int(samples, "samples", minimum=2)
+    samples = within_budget(samples, "samples", cost=lambda v: 2 * v, what="the sampled curve",
+                            unit="coordinates", minimum=2)
     ax = style.get_axes(ax)
     pts = bezier.de_casteljau(ctrl, np.linspace(0.0, 1.0, samples))
     (line,) = ax.plot(pts[:, 0], pts[:, 1], color=color or style.PALETTE["curve"], linewidth=2.2, **kwargs)
@@ -79,6 +80,8 @@ def plot_construction(ctrl, t: float, ax=None):
 def plot_bernstein(n: int, ax=None, samples: int = 200):
     """Draw the Bernstein basis functions ``B_k^n`` on [0, 1] (Goldman §24.3); returns the lines."""
     n = as_int(n, "n", minimum=0)
+    samples = within_budget(samples, "samples", cost=lambda v: v, what="the sampled basis", unit="parameters",
+                            minimum=2)
     ax = style.get_axes(ax, equal=False)
     t = np.linspace(0.0, 1.0, samples)
     values = bezier.bernstein(n, t)

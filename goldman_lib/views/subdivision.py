@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bezier
-from goldman_lib.validation import as_int, as_points
+from goldman_lib.validation import as_float, as_int, as_points
 from goldman_lib.views import style
 from goldman_lib.views.bezier import DEFAULT_CUBIC, plot_control_polygon, plot_curve
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
@@ -142,6 +142,7 @@ def subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_dep
     ax.set_title("de Casteljau subdivision", fontsize=10)
 
     def update(depth, t):
+        depth = as_int(depth, "depth", minimum=0, maximum=max_depth)
         polys = _split_recursively(ctrl, depth, t)
         pieces.set_segments(list(polys))
         pieces.set_color([(style.LEVELS[0], style.LEVELS[3])[k % 2] for k in range(len(polys))])
@@ -196,6 +197,7 @@ def adaptive_rendering_view(ctrl=WAVY, digits: int = 2) -> InteractiveView:
     cache: dict[int, int] = {}
 
     def update(digits):
+        digits = as_int(digits, "digits", minimum=1, maximum=4)
         tol = 10.0 ** (-digits)
         t, pts = bezier.render_by_subdivision(ctrl, tol)
         poly.set_data(pts[:, 0], pts[:, 1])
@@ -247,6 +249,10 @@ def intersection_view(case: str = "two cubics, three crossings", level: int = 3,
     frame(a0, b0)
 
     def update(case, level, shift):
+        if case not in INTERSECTION_EXAMPLES:
+            raise ValueError(f"case must be one of {', '.join(INTERSECTION_EXAMPLES)}; got {case!r}")
+        level = as_int(level, "level", minimum=0, maximum=max_level)
+        shift = as_float(shift, "shift")
         a, b = INTERSECTION_EXAMPLES[case]
         if case != shown[0]:
             frame(a, b)
@@ -308,6 +314,7 @@ def patch_rendering_view(ctrl=DEFAULT_PATCH_25, digits: int = 1) -> InteractiveV
     ax_dom.set_yticks([0, 0.5, 1])
 
     def update(digits):
+        digits = as_int(digits, "digits", minimum=0, maximum=2)
         tol = 10.0 ** (-digits)
         corners, dom = bezier.render_patch_by_subdivision(net, tol)
         domains.set_verts(_domain_vertices(dom))
@@ -415,7 +422,11 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
     nothing = {"sub-nets": nets0[:0], "domains": np.zeros((0, 4))}
 
     def update(mode, level, height):
-        nets, doms, gap = levels[int(level)]
+        if mode not in modes:
+            raise ValueError(f"mode must be one of {', '.join(modes)}; got {mode!r}")
+        level = as_int(level, "level", minimum=0, maximum=4)
+        height = as_float(height, "height")
+        nets, doms, gap = levels[level]
         if mode == "sub-nets":
             shown, shown_doms = nets, doms
             scene.replace_mesh("second patch", np.repeat(nowhere, 3, axis=0), [[0, 1, 2]])

@@ -12,7 +12,8 @@ import numpy as np
 
 from goldman_lib import ifs
 from goldman_lib import subdivision_matrices as sm
-from goldman_lib.validation import as_int, as_points
+from goldman_lib.validation import (as_float, as_float_array, as_int, as_points, check_finite, finite_result,
+                                     within_budget)
 from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
@@ -30,15 +31,20 @@ def barycentric_attractor(matrices, levels: int, start_rows=(0, -1)) -> np.ndarr
     points themselves) mapped by ``x -> x @ M_k``, ``levels`` times (Goldman §29.4).
 
     Needs no inverse, so it also works for collinear control points: the attractor for control
-    points P is ``barycentric_attractor(...) @ P``.  Returns ``(len(start_rows) k^levels, n+1)``.
+    points P is ``barycentric_attractor(...) @ P``.  Returns ``(len(start_rows) k^levels, n+1)``,
+    at most :data:`goldman_lib.subdivision_matrices.MAX_POINTS` rows (the work budget).
 
     >>> L, R = sm.bezier_subdivision_matrices(2)
     >>> (barycentric_attractor([L, R], 1) @ np.array([[0, 0], [1, 2], [2, 0]])).tolist()
     [[0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]]
     """
-    M = np.asarray(matrices, dtype=float)
+    M = check_finite(as_float_array(matrices, "matrices"), "matrices")
+    if M.ndim != 3 or M.shape[1] != M.shape[2] or len(M) < 1:
+        raise ValueError(f"matrices must be a stack (k, n+1, n+1) of square matrices; got shape {M.shape}")
     X = np.eye(M.shape[1])[list(start_rows)]
-    for _ in range(as_int(levels, "levels", minimum=0)):
+    levels = within_budget(levels, "levels", cost=lambda v: len(X) * len(M) ** v, what="the attractor",
+                           unit="points", limit=sm.MAX_POINTS)
+    for _ in range(levels):
         X = np.matmul(X[None], M).reshape(-1, M.shape[1])
     return X
 
@@ -132,7 +138,8 @@ def fractal_editor(ctrl=DEFAULT_TRIANGLE, middle: float = -0.3, levels: int = 10
         controls[f"y{k}"] = float_slider(f"y{k}", float(y), ymin, ymax, 0.1)
 
     def update(middle, levels, **coords):
-        P = np.array([[coords[f"x{k}"], coords[f"y{k}"]] for k in range(3)], dtype=float)
+        P = np.array([[as_float(coords[f"x{k}"], f"x{k}"), as_float(coords[f"y{k}"], f"y{k}")] for k in range(3)])
+        middle = as_float(middle, "middle")
         levels = as_int(levels, "levels", minimum=0, maximum=16)
         mats = sm.fractal_matrices(middle)
         try:
@@ -142,6 +149,7 @@ def fractal_editor(ctrl=DEFAULT_TRIANGLE, middle: float = -0.3, levels: int = 10
         except ValueError:
             pts = barycentric_attractor(mats, levels) @ P
             how = "control points collinear (no P^-1): drawn from barycentric coordinates"
+        finite_result(pts, "middle", middle, why="is too far from [-1, 1]")
         u = (1 - middle) / 2
         J = u * P[0] + middle * P[1] + u * P[2]
         polygon.set_data(P[:, 0], P[:, 1])

@@ -22,7 +22,7 @@ import io
 
 import numpy as np
 
-from goldman_lib.validation import as_points
+from goldman_lib.validation import as_points, within_budget
 
 __all__ = ["SceneView", "grid_triangles", "vertex_normals"]
 
@@ -31,9 +31,16 @@ def grid_triangles(rows: int, cols: int) -> np.ndarray:
     """Triangle indices ``(2*(rows-1)*(cols-1), 3)`` of a ``rows x cols`` grid of vertices stored
     row by row (as ``grid.reshape(-1, 3)`` stores them).
 
+    rows, cols >= 2, with the ``6 (rows-1)(cols-1)`` indices at most
+    :data:`~goldman_lib.validation.MAX_ITEMS` (the work budget).
+
     >>> grid_triangles(2, 2).tolist()
     [[0, 2, 1], [1, 2, 3]]
     """
+    rows = within_budget(rows, "rows", cost=lambda v: 6 * (v - 1), what="the triangle grid", unit="indices",
+                         minimum=2)
+    cols = within_budget(cols, "cols", cost=lambda v: 6 * (rows - 1) * (v - 1), what="the triangle grid",
+                         unit="indices", minimum=2)
     r, c = np.meshgrid(np.arange(rows - 1), np.arange(cols - 1), indexing="ij")
     a = (r * cols + c).ravel()
     b, d, e = a + 1, a + cols, a + cols + 1

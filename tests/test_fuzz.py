@@ -1,0 +1,527 @@
+"""Every input gets bounded work and a clear answer: a fuzz test over every public function of
+``goldman_lib`` (the views and the exercise checkers have their own sweeps).
+
+Functions are found by discovery, as the widget sweeps find widget factories: each module of the
+package (walked with :mod:`pkgutil`), each name in its ``__all__`` (or, without one, each name not
+starting with ``_`` and defined there), functions and the constructors of classes that check their
+input (exceptions and plain result records -- NamedTuples and dataclasses without
+``__post_init__`` -- are left out: they hold what the library computed, they read no input).
+
+Each function needs one *valid example call*.  The examples are found by running the modules'
+doctests with every public function wrapped in a recorder (the first call a doctest makes is the
+example); :data:`EXTRA_EXAMPLES` adds the few that no doctest calls.  A public function without an
+example fails :func:`test_every_public_function_has_a_valid_example`, so a new module of Parts II
+and III adds a doctest (or an entry here) and is then fuzzed like the rest.
+
+Then every parameter, in turn, gets a battery of bad values (NaN, +-inf, +-1e308, 10**12, 0, -1, an
+empty list, a ragged list, a complex number, a string, None, and, for an array, a NaN inside,
+all-equal points, a single point, wrong shapes and complex entries) with the other parameters at the
+example's values.  Each call runs in a worker subprocess with a wall-clock limit of
+:data:`TIME_LIMIT` seconds and a memory limit (``RLIMIT_AS``, :data:`MEMORY_LIMIT` bytes more than
+the parent uses) and must either return a finite result (no NaN or infinity anywhere in what it
+returns) or raise ``ValueError``/``TypeError`` whose message names the parameter (a
+library-specific subclass of ``ValueError``, such as the languages' syntax errors, passes as is).
+
+:data:`PROBES` are the adversarial probe of the issue "Every input gets bounded work and a clear
+answer", kept as explicit regression examples.
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import doctest
+import functools
+import importlib
+import inspect
+import math
+import multiprocessing
+import os
+import pkgutil
+import re
+import resource
+import sys
+import time
+from multiprocessing.connection import wait
+
+import numpy as np
+import pytest
+
+import goldman_lib
+
+TIME_LIMIT = float(os.environ.get("GOLDMAN_FUZZ_TIME_LIMIT", "1.0"))
+MEMORY_LIMIT = 2 * 1024 ** 3
+WORKERS = max(1, min(4, os.cpu_count() or 1))
+SKIP_PACKAGES = ("goldman_lib.views", "goldman_lib.exercises")
+
+
+# -- discovery -----------------------------------------------------------------------------------
+def _modules():
+    found = []
+    for info in pkgutil.walk_packages(goldman_lib.__path__, "goldman_lib."):
+        if info.name.startswith(SKIP_PACKAGES):
+            continue
+        found.append(importlib.import_module(info.name))
+    return found
+
+
+def _is_record(cls) -> bool:
+    """Exceptions and plain result records: their constructors read no learner input."""
+    if issubclass(cls, BaseException):
+        return True
+    if issubclass(cls, tuple) and hasattr(cls, "_fields"):
+        return True
+    return dataclasses.is_dataclass(cls) and not hasattr(cls, "__post_init__")
+
+
+def _public(module) -> dict:
+    names = getattr(module, "__all__", None)
+    if names is None:
+        names = [k for k, v in vars(module).items() if not k.startswith("_")
+                 and (inspect.isfunction(v) or inspect.isclass(v)) and v.__module__ == module.__name__]
+    out = {}
+    for name in names:
+        obj = getattr(module, name)
+        if inspect.isfunction(obj) or (inspect.isclass(obj) and not _is_record(obj)):
+            out[f"{module.__name__[len('goldman_lib.'):]}.{name}"] = obj
+    return out
+
+
+def _skipped_records(modules) -> list[str]:
+    out = []
+    for module in modules:
+        for name in getattr(module, "__all__", []):
+            obj = getattr(module, name)
+            if inspect.isclass(obj) and _is_record(obj):
+                out.append(f"{module.__name__[len('goldman_lib.'):]}.{name}")
+    return out
+
+
+def _record_examples(modules, functions) -> dict:
+    """The first call of each public function in its module's doctests: ``{key: (args, kwargs)}``."""
+    found = {}
+    for module in modules:
+        short = module.__name__[len("goldman_lib."):]
+        globs = dict(vars(module))
+
+        def wrap(key, fn):
+            @functools.wraps(fn)
+            def recorder(*args, **kwargs):
+                try:
+                    snapshot = copy.deepcopy((args, kwargs))
+                except Exception:  # noqa: BLE001 - an argument that cannot be copied is no example
+                    snapshot = None
+                result = fn(*args, **kwargs)
+                if snapshot is not None:
+                    found.setdefault(key, snapshot)
+                return result
+            return recorder
+
+        for key, fn in functions.items():
+            if key.startswith(short + ".") and inspect.isfunction(fn):
+                globs[key.split(".", 1)[1]] = wrap(key, fn)
+        for test in doctest.DocTestFinder().find(module, globs=globs):
+            test.globs = dict(globs)
+            doctest.DocTestRunner(verbose=False).run(test, out=lambda s: None)
+    return found
+
+
+def _extra_examples() -> dict:
+    """Valid example calls of the public functions and classes that no doctest calls."""
+    from goldman_lib import ifs, subdivision_surfaces
+
+    cubic = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
+    net = [[[i, j, (i * j) % 2] for j in range(3)] for i in range(3)]
+    knots = [0, 0, 0, 0, 1, 2, 2, 2, 2]
+    polygon = [[0, 0], [1, 2], [2, 2], [3, 0], [4, 1]]
+    return {
+        "bezier.BezierCurve": ((cubic,), {}),
+        "bezier.BezierPatch": ((net,), {}),
+        "bspline.BSplineCurve": ((polygon, knots, 3), {}),
+        "bspline.NURBSCurve": ((polygon, [1, 2, 1, 2, 1], knots, 3), {}),
+        "subdivision_matrices.check_rows_sum_to_one": ((np.array([[0.5, 0.5], [0.0, 1.0]]),), {}),
+        "validation.as_float": ((1.5, "step"), {}),
+        "validation.check_finite": ((np.array([1.0, 2.0]), "t"), {}),
+        "subdivision_surfaces.Mesh": ((subdivision_surfaces.cube().vertices, subdivision_surfaces.cube().faces), {}),
+        "ifs.IFS": ((ifs.sierpinski().maps,), {}),
+        "fractals.RecursiveTurtleProgram": (("F", "F"), {}),
+        "turtle.Turtle": (((0, 0), (1, 0)), {}),
+    }
+
+
+MODULES = _modules()
+FUNCTIONS: dict = {}
+for _m in MODULES:
+    FUNCTIONS.update(_public(_m))
+EXAMPLES = _record_examples(MODULES, FUNCTIONS)
+for _key, _example in _extra_examples().items():
+    if _key in FUNCTIONS:
+        EXAMPLES.setdefault(_key, _example)
+
+
+def _bound(key):
+    """The example as ``{parameter: value}`` (defaults filled in) and the fuzzable parameters."""
+    fn = FUNCTIONS[key]
+    args, kwargs = EXAMPLES[key]
+    sig = inspect.signature(fn)
+    bound = sig.bind(*args, **kwargs)
+    bound.apply_defaults()
+    params = [p.name for p in sig.parameters.values()
+              if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD) and p.name != "self"
+              and p.name not in CONFIGURATION.get(key, ())]
+    return bound, params
+
+
+#: Parameters that configure a check rather than carry input: the library passes them literal
+#: constants (``as_int(n, "n", minimum=0)``), so a bad value there is a programming error in the
+#: library, not a learner's input; they are not fuzzed.  The helpers' value parameters are.
+CONFIGURATION = {
+    "validation.as_points": {"ndim", "dim", "min_count"},
+    "validation.as_parameter": {"low", "high"},
+    "validation.as_int": {"minimum", "maximum"},
+    "validation.as_float": {"positive", "nonzero"},
+    "validation.largest_within": {"cost", "limit", "start"},
+    "validation.within_budget": {"cost", "what", "unit", "limit", "minimum"},
+    "validation.finite_result": {"why"},
+}
+#: Functions whose result may hold NaN or infinity by contract (what the docstring says).
+NONFINITE_BY_CONTRACT = {
+    "validation.as_float_array": "it converts only; finiteness is check_finite's job (its docstring)",
+}
+
+
+# -- the battery of bad values ---------------------------------------------------------------------
+GENERIC = [("nan", math.nan), ("inf", math.inf), ("-inf", -math.inf), ("1e308", 1e308), ("-1e308", -1e308),
+           ("10**12", 10 ** 12), ("0", 0), ("-1", -1), ("[]", []), ("ragged", [[0.0, 0.0], [1.0]]),
+           ("complex", 1 + 2j), ("string", "x"), ("None", None)]
+
+
+def _as_array(value):
+    if isinstance(value, (str, bytes)) or value is None or np.isscalar(value):
+        return None
+    if not isinstance(value, (np.ndarray, list, tuple)):
+        return None
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        return None
+    return arr if arr.ndim >= 1 and arr.size > 0 else None
+
+
+def battery(value) -> list[tuple[str, object]]:
+    """Bad values for a parameter whose valid value is ``value``."""
+    out = list(GENERIC)
+    arr = _as_array(value)
+    if arr is not None:
+        nan_inside = arr.copy()
+        nan_inside.flat[-1] = math.nan
+        out.append(("nan inside", nan_inside))
+        out.append(("all equal", np.repeat(arr[:1], arr.shape[0], axis=0)))
+        out.append(("one item", arr[:1].copy()))
+        if arr.ndim >= 2:
+            out.append(("flattened", arr.reshape(-1)))
+            if arr.shape[-1] > 1:
+                out.append(("dropped coordinate", arr[..., :-1].copy()))
+        else:
+            out.append(("extra axis", arr[:, None].copy()))
+        out.append(("extra coordinate", np.concatenate([arr[..., None], arr[..., None]], axis=-1)))
+        out.append(("complex entries", arr + 1j))
+    vertices = getattr(value, "vertices", None)
+    if hasattr(value, "with_vertices") and isinstance(vertices, np.ndarray):
+        try:
+            out.append(("all-equal vertices", value.with_vertices(np.zeros_like(vertices))))
+        except (TypeError, ValueError):
+            pass
+    return out
+
+
+# -- what counts as a clear answer --------------------------------------------------------------------
+def _nonfinite(result, depth=0, seen=None) -> str | None:
+    """Where ``result`` holds a NaN or an infinity, or None."""
+    seen = set() if seen is None else seen
+    if depth > 4 or id(result) in seen:
+        return None
+    if isinstance(result, (bool, str, bytes, int)) or result is None:
+        return None
+    if isinstance(result, (float, complex, np.number)):
+        return None if np.isfinite(result) else repr(result)
+    if isinstance(result, np.ndarray):
+        if result.dtype.kind in "fc" and not np.all(np.isfinite(result)):
+            return f"array of shape {result.shape} with non-finite entries"
+        if result.dtype.kind == "O":
+            return _nonfinite(list(result.flat[:1000]), depth + 1, seen)
+        return None
+    seen.add(id(result))
+    if isinstance(result, dict):
+        items = list(result.values())
+    elif isinstance(result, (list, tuple, set, frozenset)):
+        items = list(result)[:10000]
+    elif inspect.isroutine(result) or inspect.ismodule(result) or inspect.isclass(result):
+        return None
+    elif hasattr(result, "__dict__") and type(result).__module__.startswith("goldman_lib"):
+        items = list(vars(result).values())
+    else:
+        return None
+    for item in items:
+        where = _nonfinite(item, depth + 1, seen)
+        if where:
+            return where
+    return None
+
+
+def _names(message: str, param: str) -> bool:
+    return re.search(rf"(?<![A-Za-z0-9_]){re.escape(param)}(?![A-Za-z0-9_])", message) is not None
+
+
+def judge(call, param: str | None, alias: str | None = None, finite: bool = True):
+    """Run ``call()``; return ``"ok"`` or what was wrong.  The message must name ``param`` (or
+    ``alias``: the validation helpers name the caller's parameter, which they are given as
+    ``name``).  ``finite``: whether a returned NaN or infinity is a failure."""
+    try:
+        result = call()
+    except (ValueError, TypeError) as exc:
+        if isinstance(exc, ValueError) and type(exc).__module__.startswith("goldman_lib"):
+            return "ok"
+        if param is None or _names(str(exc), param) or (alias and _names(str(exc), alias)):
+            return "ok"
+        return f"message does not name {param!r}: {type(exc).__name__}: {str(exc)[:200]}"
+    except BaseException as exc:  # noqa: BLE001 - any other exception is the finding
+        return f"raised {type(exc).__name__}: {str(exc)[:200]}"
+    where = _nonfinite(result) if finite else None
+    return "ok" if where is None else f"returned a non-finite result ({where})"
+
+
+# -- the tasks ------------------------------------------------------------------------------------------
+def _call_with(key, param, value):
+    bound, _ = _bound(key)
+    arguments = copy.deepcopy(dict(bound.arguments))
+    fn = FUNCTIONS[key]
+    sig = inspect.signature(fn)
+    arguments[param] = value
+    args, kwargs = [], {}
+    for p in sig.parameters.values():
+        if p.name not in arguments:
+            continue
+        if p.kind == p.VAR_POSITIONAL:
+            args.extend(arguments[p.name])
+        elif p.kind == p.VAR_KEYWORD:
+            kwargs.update(arguments[p.name])
+        elif p.kind == p.KEYWORD_ONLY:
+            kwargs[p.name] = arguments[p.name]
+        else:
+            args.append(arguments[p.name])
+    return fn(*args, **kwargs)
+
+
+def _probe_cases():
+    """The issue's adversarial probe, kept: ``(label, call, parameter the message must name)``."""
+    from goldman_lib import (bezier, blossom, bspline, codo, fractals, ifs, knot_insertion,
+                             subdivision_matrices, subdivision_surfaces, turtle)
+    C = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
+    polygon = [[0, 0], [1, 2], [2, 2], [3, 0], [4, 1]]
+    knots = [0, 0, 0, 0, 1, 2, 2, 2, 2]
+    return [
+        ("subdivision_surfaces.centroid_averaging(cube(), 12)",
+         lambda: subdivision_surfaces.centroid_averaging(subdivision_surfaces.cube(), 12), "levels"),
+        ("subdivision_surfaces.split_and_average(C, 3, 40)",
+         lambda: subdivision_surfaces.split_and_average(C, 3, 40), "levels"),
+        ("subdivision_matrices.bezier_subdivision_matrices(1000)",
+         lambda: subdivision_matrices.bezier_subdivision_matrices(1000), "n"),
+        ("subdivision_matrices.bezier_subdivision_matrices(10**12)",
+         lambda: subdivision_matrices.bezier_subdivision_matrices(10 ** 12), "n"),
+        ("bezier.elevate_degree(C, 10**5)", lambda: bezier.elevate_degree(C, 10 ** 5), "times"),
+        ("bezier.elevate_degree(C, 10**12)", lambda: bezier.elevate_degree(C, 10 ** 12), "times"),
+        ("bezier.bernstein(10**6, 0.5)", lambda: bezier.bernstein(10 ** 6, 0.5), "n"),
+        ("bezier.bernstein(10**12, 0.5)", lambda: bezier.bernstein(10 ** 12, 0.5), "n"),
+        ("bezier.de_casteljau(C, 1e150)", lambda: bezier.de_casteljau(C, 1e150), "t"),
+        ("bezier.bernstein_evaluate(C, 1e150)", lambda: bezier.bernstein_evaluate(C, 1e150), "t"),
+        ("bezier.derivative(C, 1e150)", lambda: bezier.derivative(C, 1e150), "t"),
+        ("blossom.blossom(C, [1e150, 1e150, 1e150])", lambda: blossom.blossom(C, [1e150] * 3), "args"),
+        ("subdivision_matrices.normal_curve(3, 1e150)", lambda: subdivision_matrices.normal_curve(3, 1e150), "t"),
+        ("bezier.render_by_subdivision(C, tol=nan)",
+         lambda: bezier.render_by_subdivision(C, tol=math.nan), "tol"),
+        ("knot_insertion.midpoint_knots([])", lambda: knot_insertion.midpoint_knots([]), "knots"),
+        ("knot_insertion.lane_riesenfeld(C, 3, 10**12)",
+         lambda: knot_insertion.lane_riesenfeld(C, 3, 10 ** 12), "levels"),
+        ("knot_insertion.schaefer(polygon, knots, 3, 40)",
+         lambda: knot_insertion.schaefer(polygon, knots, 3, 40), "levels"),
+        ("bspline.de_boor(polygon, knots, 3, 1e300)", lambda: bspline.de_boor(polygon, knots, 3, 1e300), "u"),
+        # Part I (the issue's probe of turtle, fractals, codo and ifs)
+        ("fractals.koch_curve(10**6)", lambda: fractals.koch_curve(10 ** 6), "level"),
+        ("ifs.deterministic(ifs.sierpinski(), 10**12)",
+         lambda: ifs.deterministic(ifs.sierpinski(), 10 ** 12), "levels"),
+        ("codo.run('REPEAT 20000 [ REPEAT 20000 [ ] ]')",
+         lambda: codo.run("REPEAT 20000 [ REPEAT 20000 [ ] ]"), None),
+        ("turtle.circle(1e308)", lambda: turtle.circle(1e308), "radius"),
+    ]
+
+
+PROBES = _probe_cases()
+
+
+def _tasks() -> list[tuple[str, str, object]]:
+    """``(module, label, call, param, alias, finite)`` for every public function, parameter and bad value."""
+    tasks = []
+    for key in sorted(EXAMPLES):
+        if key not in FUNCTIONS:
+            continue
+        bound, params = _bound(key)
+        alias = bound.arguments.get("name")
+        alias = alias if isinstance(alias, str) and alias else None
+        finite = key not in NONFINITE_BY_CONTRACT
+        for param in params:
+            for label, value in battery(bound.arguments.get(param)):
+                call = functools.partial(_call_with, key, param, value)
+                tasks.append((key.split(".")[0], f"{key}({param}={label})", call, param,
+                              alias if param != "name" else None, finite))
+    for label, call, param in PROBES:
+        tasks.append(("probe", label, call, param, None, True))
+    return tasks
+
+
+TASKS = _tasks()
+
+
+# -- the worker pool ------------------------------------------------------------------------------------
+def _worker(conn, memory_limit):
+    import warnings
+
+    warnings.simplefilter("ignore")
+    soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    limit = memory_limit if hard == resource.RLIM_INFINITY else min(memory_limit, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
+    devnull = open(os.devnull, "w")
+    sys.stdout = devnull
+    while True:
+        index = conn.recv()
+        if index is None:
+            return
+        _, _, call, param, alias, finite = TASKS[index]
+        conn.send((index, judge(call, param, alias, finite)))
+
+
+def _vm_size() -> int:
+    try:
+        with open("/proc/self/status") as fh:
+            for line in fh:
+                if line.startswith("VmSize:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    return 0
+
+
+def run_tasks(indices, time_limit=TIME_LIMIT, workers=WORKERS) -> dict[int, str]:
+    """Run ``TASKS[i]`` for ``i`` in ``indices`` in worker subprocesses; ``{i: outcome}``."""
+    ctx = multiprocessing.get_context("fork")
+    memory_limit = _vm_size() + MEMORY_LIMIT
+    pending = list(indices)[::-1]
+    outcomes: dict[int, str] = {}
+    slots = []  # [process, conn, index or None, deadline]
+
+    def spawn():
+        parent, child = ctx.Pipe()
+        proc = ctx.Process(target=_worker, args=(child, memory_limit), daemon=True)
+        proc.start()
+        child.close()
+        return [proc, parent, None, None]
+
+    def assign(slot):
+        if pending:
+            slot[2] = pending.pop()
+            slot[3] = time.monotonic() + time_limit
+            slot[1].send(slot[2])
+
+    for _ in range(min(workers, len(pending))):
+        slot = spawn()
+        slots.append(slot)
+        assign(slot)
+    while any(s[2] is not None for s in slots):
+        busy = [s for s in slots if s[2] is not None]
+        timeout = max(0.0, min(s[3] for s in busy) - time.monotonic())
+        ready = wait([s[1] for s in busy], timeout=timeout)
+        for slot in busy:
+            if slot[1] in ready:
+                try:
+                    index, outcome = slot[1].recv()
+                except (EOFError, OSError):
+                    index, outcome = slot[2], "the worker died (out of memory or a crash)"
+                    slot[0].join(1)
+                    slot[:] = spawn()
+                outcomes[index] = outcome
+                slot[2] = None
+                assign(slot)
+            elif time.monotonic() > slot[3]:
+                outcomes[slot[2]] = f"took longer than {time_limit:g} s"
+                slot[0].kill()
+                slot[0].join(1)
+                slot[1].close()
+                slot[:] = spawn()
+                assign(slot)
+    for slot in slots:
+        try:
+            slot[1].send(None)
+        except OSError:
+            pass
+        slot[0].join(1)
+        if slot[0].is_alive():
+            slot[0].kill()
+    return outcomes
+
+
+@functools.lru_cache(maxsize=None)
+def fuzz_results():
+    """Every task once (timeouts retried once alone, so a loaded machine does not fail a call)."""
+    start = time.monotonic()
+    outcomes = run_tasks(range(len(TASKS)))
+    slow = [i for i, o in outcomes.items() if o.startswith("took longer")]
+    if slow:
+        outcomes.update(run_tasks(slow, workers=1 if len(slow) < 20 else WORKERS))
+    return outcomes, time.monotonic() - start
+
+
+def _failures(group: str) -> list[str]:
+    outcomes, _ = fuzz_results()
+    return [f"{TASKS[i][1]}: {o}" for i, o in sorted(outcomes.items()) if TASKS[i][0] == group and o != "ok"]
+
+
+# -- the tests ------------------------------------------------------------------------------------------
+def test_every_public_function_has_a_valid_example():
+    """A public function without an example call is not fuzzed: add a doctest or an EXTRA_EXAMPLES row."""
+    missing = sorted(set(FUNCTIONS) - set(EXAMPLES))
+    assert not missing, f"public functions without a valid example call: {missing}"
+    broken = []
+    for key in sorted(FUNCTIONS):
+        try:
+            _bound(key)
+        except TypeError as exc:
+            broken.append(f"{key}: {exc}")
+    assert not broken, broken
+
+
+def test_discovery_finds_every_part():
+    groups = {key.split(".")[0] for key in FUNCTIONS}
+    assert {"bezier", "bspline", "knot_insertion", "subdivision_surfaces", "turtle", "fractals", "ifs"} <= groups
+    assert len(FUNCTIONS) > 200
+
+
+@pytest.mark.parametrize("group", sorted({t[0] for t in TASKS} - {"probe"}))
+def test_fuzz(group):
+    """Bad values for each parameter of the module's public functions: finite result or a clear error."""
+    failures = _failures(group)
+    assert not failures, f"{len(failures)} unclear answers:\n" + "\n".join(failures)
+
+
+def test_issue_probes():
+    """The issue's adversarial probe: bounded work and a message naming the parameter."""
+    failures = _failures("probe")
+    assert not failures, "\n".join(failures)
+
+
+def test_summary(capsys):
+    outcomes, seconds = fuzz_results()
+    fuzzed = {TASKS[i][1].split("(")[0] for i in outcomes if TASKS[i][0] != "probe"}
+    with capsys.disabled():
+        print(f"\nfuzz: {len(fuzzed)} public functions, {len(outcomes)} calls "
+              f"({len(PROBES)} probes), {seconds:.1f} s; records left out: {_skipped_records(MODULES)}")
+    assert len(outcomes) == len(TASKS)
