@@ -605,7 +605,7 @@ def base_case_gaps(program, other_base, levels: int) -> np.ndarray:
     value)``).  levels: >= 0, with the Hausdorff distances of levels ``0..levels`` comparing at
     most :data:`goldman_lib.fixed_point.MAX_PAIRS` vertex pairs in all (two base cases draw
     different pictures, so the quadratic comparison is the expected cost; the C-curve with a box
-    base reaches level 10, the Koch curve level 5), checked before anything is drawn.
+    base reaches level 11, the Koch curve level 5), checked before anything is drawn.
     Returns ``(levels + 1,)``.  Raises ValueError if the two base cases change the
     turtle's state differently (then the bodies make different IFS) or one draws nothing.
 
