@@ -220,13 +220,20 @@ def _size(level: int, k: int, m: int, c: int) -> int:
     return m * k ** level + c * sum(k ** j for j in range(level)) if k > 1 else m + c * level
 
 
+def _work(level: int, k: int, m: int, c: int) -> int:
+    """Points computed by all of levels 1..level, ``sum(_size(j) for j in 1..level)``, in closed form."""
+    if k == 1:
+        return m * level + c * level * (level + 1) // 2
+    geo = (k ** (level + 1) - k) // (k - 1)          # k + k^2 + ... + k^level
+    return m * geo + c * (geo - level) // (k - 1)     # sum_j (k^j - 1)/(k - 1)
+
+
 def _levels(levels, k: int, m: int, c: int) -> int:
     """``levels`` checked against the points of the result (MAX_POINTS) and of all the levels on
     the way (MAX_ITEMS), before anything is computed."""
     levels = within_budget(levels, "levels", cost=lambda v: _size(v, k, m, c), what="the deterministic algorithm",
                            limit=MAX_POINTS)
-    return within_budget(levels, "levels", cost=lambda v: sum(_size(j, k, m, c) for j in range(1, v + 1))
-                         if v <= MAX_ITERATIONS else MAX_ITEMS + 1,
+    return within_budget(levels, "levels", cost=lambda v: _work(v, k, m, c) if v <= MAX_ITERATIONS else MAX_ITEMS + 1,
                          what="the deterministic algorithm (all levels together)", unit="points computed")
 
 
