@@ -28,7 +28,7 @@ import math
 import numpy as np
 
 from .angles import cos_sin_degrees
-from .validation import as_float, as_points, check_finite
+from .validation import as_float, as_float_array, as_points, as_tolerance, check_finite
 
 __all__ = [
     "identity", "translation", "rotation", "scaling", "directional_scaling", "shear", "similarity",
@@ -51,12 +51,31 @@ def _matrix(L, t=(0.0, 0.0)) -> np.ndarray:
     return M
 
 
+def _finite(M: np.ndarray, names: str) -> np.ndarray:
+    """``M`` if every entry is finite; otherwise a ValueError saying which inputs overflowed it."""
+    if not np.all(np.isfinite(M)):
+        raise ValueError(f"{names} too large: the result overflows a float (entries became infinite or "
+                         f"undefined); use smaller values")
+    return M
+
+
+def _factor(factor, name: str) -> np.ndarray:
+    f = as_float_array(factor, name)
+    if f.ndim == 0:
+        f = np.array([f, f])
+    if f.shape != (2,):
+        raise ValueError(f"{name} must be a number or a pair (sx, sy); got shape {f.shape}")
+    return check_finite(f, name)
+
+
 def _about(M: np.ndarray, center) -> np.ndarray:
     """Conjugate ``M`` by the translation taking ``center`` to the origin (a map about a point)."""
     if center is None:
         return M
     c = _point(center, "center")
-    return translation(-c) @ M @ translation(c)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = translation(-c) @ M @ translation(c)
+    return _finite(out, "center or the map's parameters are")
 
 
 def as_affine(M, name: str = "M") -> np.ndarray:
@@ -73,9 +92,9 @@ def as_affine(M, name: str = "M") -> np.ndarray:
     ValueError: M must have last column (0, 0, 1) (row-vector convention: the translation is the last row); got column [2. 3. 1.]
     """
     try:
-        arr = np.array(M, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be a 3x3 numeric matrix; got {type(M).__name__}") from exc
+        arr = as_float_array(M, name).copy()
+    except TypeError as exc:
+        raise TypeError(f"{name} must be a 3x3 numeric matrix of real numbers; got {type(M).__name__} ({exc})") from None
     if arr.ndim < 2 or arr.shape[-2:] != (3, 3):
         raise ValueError(f"{name} must have shape (3, 3) (or a stack (k, 3, 3)); got shape {arr.shape}")
     check_finite(arr, name)
@@ -135,13 +154,7 @@ def scaling(factor, center=None) -> np.ndarray:
     >>> apply([[1, 1]], scaling([2, 3]))
     array([[2., 3.]])
     """
-    f = np.array(factor, dtype=float)
-    if f.ndim == 0:
-        f = np.array([f, f])
-    if f.shape != (2,):
-        raise ValueError(f"factor must be a number or a pair (sx, sy); got shape {f.shape}")
-    check_finite(f, "factor")
-    return _about(_matrix(np.diag(f)), center)
+    return _about(_matrix(np.diag(_factor(factor, "factor"))), center)
 
 
 def directional_scaling(factor, direction, center=None) -> np.ndarray:
@@ -161,7 +174,9 @@ def directional_scaling(factor, direction, center=None) -> np.ndarray:
     if n == 0:
         raise ValueError("direction must be a nonzero vector; got (0, 0)")
     w = w / n
-    return _about(_matrix(np.eye(2) + (s - 1.0) * np.outer(w, w)), center)
+    with np.errstate(over="ignore", invalid="ignore"):
+        L = _finite(np.eye(2) + (s - 1.0) * np.outer(w, w), "factor is")
+    return _about(_matrix(L), center)
 
 
 def shear(k, center=None) -> np.ndarray:
@@ -183,7 +198,9 @@ def similarity(scale, angle, translate=(0.0, 0.0), *, reflect: bool = False) -> 
     M = scaling(as_float(scale, "scale"))
     if reflect:
         M = M @ scaling([1.0, -1.0])
-    return M @ rotation(angle) @ translation(translate)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = M @ rotation(angle) @ translation(translate)
+    return _finite(out, "scale or translate is")
 
 
 def from_parameters(angle=0.0, scale=(1.0, 1.0), shear=0.0, translate=(0.0, 0.0)) -> np.ndarray:
@@ -199,7 +216,10 @@ def from_parameters(angle=0.0, scale=(1.0, 1.0), shear=0.0, translate=(0.0, 0.0)
     True
     """
     H = _matrix([[1.0, 0.0], [as_float(shear, "shear"), 1.0]])
-    return scaling(scale) @ H @ rotation(angle) @ translation(translate)
+    S = _matrix(np.diag(_factor(scale, "scale")))
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = S @ H @ rotation(angle) @ translation(translate)
+    return _finite(out, "scale, shear or translate is")
 
 
 def to_parameters(M) -> dict:
@@ -221,7 +241,10 @@ def to_parameters(M) -> dict:
     R = np.array([[c, s], [-s, c]])
     v = L[1] @ R.T
     sy = float(v[1])
-    h = float(v[0] / sy) if sy != 0 else 0.0
+    with np.errstate(over="ignore"):
+        h = float(v[0] / sy) if sy != 0 else 0.0
+    if not math.isfinite(h):
+        raise ValueError("M is too close to singular: its shear parameter overflows a float")
     return {"angle": angle, "scale": (float(sx), sy), "shear": h,
             "translate": (float(M[2, 0]), float(M[2, 1]))}
 
@@ -247,8 +270,10 @@ def affine_from_point_and_vectors(point, vectors, image_point, image_vectors) ->
     det = V[0, 0] * V[1, 1] - V[0, 1] * V[1, 0]
     if abs(det) <= 1e-12 * max(1.0, float(np.abs(V).max()) ** 2):
         raise ValueError(f"vectors must be linearly independent; {V[0]} and {V[1]} are parallel")
-    L = np.linalg.solve(V, W)
-    return _matrix(L, Q - P @ L)
+    with np.errstate(over="ignore", invalid="ignore"):
+        L = np.linalg.solve(V, W)
+        out = _matrix(L, Q - P @ L)
+    return _finite(out, "the points or vectors are")
 
 
 def affine_from_points(src, dst) -> np.ndarray:
@@ -273,9 +298,10 @@ def affine_from_points(src, dst) -> np.ndarray:
     if abs(area2) <= 1e-12 * scale:
         raise ValueError(f"src points must not be collinear; {A.tolist()} lie on one line")
     H = np.column_stack([A, np.ones(3)])
-    M = np.linalg.solve(H, np.column_stack([B, np.ones(3)]))
+    with np.errstate(over="ignore", invalid="ignore"):
+        M = np.linalg.solve(H, np.column_stack([B, np.ones(3)]))
     M[:, 2] = (0.0, 0.0, 1.0)
-    return M
+    return _finite(M, "src or dst is")
 
 
 def apply(points, M) -> np.ndarray:
@@ -289,7 +315,9 @@ def apply(points, M) -> np.ndarray:
     """
     P = as_points(points, "points", ndim=None, dim=2)
     M = as_affine(M)
-    return P @ M[:2, :2] + M[2, :2]
+    with np.errstate(over="ignore", invalid="ignore"):
+        Q = P @ M[:2, :2] + M[2, :2]
+    return _finite(Q, "points or M is")
 
 
 def apply_vectors(vectors, M) -> np.ndarray:
@@ -299,7 +327,10 @@ def apply_vectors(vectors, M) -> np.ndarray:
     array([[1., 0.]])
     """
     V = as_points(vectors, "vectors", ndim=None, dim=2)
-    return V @ as_affine(M)[:2, :2]
+    M = as_affine(M)
+    with np.errstate(over="ignore", invalid="ignore"):
+        W = V @ M[:2, :2]
+    return _finite(W, "vectors or M is")
 
 
 def compose(*maps) -> np.ndarray:
@@ -311,7 +342,9 @@ def compose(*maps) -> np.ndarray:
     """
     out = np.eye(3)
     for i, M in enumerate(maps):
-        out = out @ as_affine(M, f"maps[{i}]")
+        with np.errstate(over="ignore", invalid="ignore"):
+            out = out @ as_affine(M, f"maps[{i}]")
+        _finite(out, f"maps (up to maps[{i}]) are")
     return out
 
 
@@ -325,9 +358,10 @@ def inverse(M) -> np.ndarray:
     det = np.linalg.det(M[:2, :2])
     if abs(det) < 1e-14:
         raise ValueError(f"M must be invertible; its linear part has determinant {det:.3g}")
-    out = np.linalg.inv(M)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = np.linalg.inv(M)
     out[:, 2] = (0.0, 0.0, 1.0)
-    return out
+    return _finite(out, "M is too close to singular or")
 
 
 def linear_part(M) -> np.ndarray:
@@ -362,7 +396,9 @@ def fixed_point(M) -> np.ndarray:
     A = np.eye(2) - M[:2, :2]
     if abs(np.linalg.det(A)) < 1e-14:
         raise ValueError("M must have a unique fixed point; I - L is singular (1 is an eigenvalue of its linear part)")
-    return np.linalg.solve(A.T, M[2, :2])
+    with np.errstate(over="ignore", invalid="ignore"):
+        P = np.linalg.solve(A.T, M[2, :2])
+    return _finite(P, "M is too close to having no fixed point, or its translation is")
 
 
 def is_conformal(M, tol: float = 1e-9) -> bool:
@@ -372,8 +408,10 @@ def is_conformal(M, tol: float = 1e-9) -> bool:
     >>> is_conformal(similarity(0.5, 30, [1, 2])), is_conformal(scaling([1, 2]))
     (True, False)
     """
+    tol = as_tolerance(tol)
     L = as_affine(M)[:2, :2]
-    G = L @ L.T
+    with np.errstate(over="ignore", invalid="ignore"):
+        G = _finite(L @ L.T, "M is")
     return bool(abs(G[0, 1]) <= tol * max(1.0, abs(G[0, 0])) and abs(G[0, 0] - G[1, 1]) <= tol * max(1.0, abs(G[0, 0])))
 
 
@@ -436,14 +474,17 @@ def affine_combination(points, weights, *, tol: float = 1e-9) -> np.ndarray:
     >>> affine_combination([[0, 0], [2, 4]], [0.5, 0.5])
     array([1., 2.])
     """
+    tol = as_tolerance(tol)
     P = as_points(points, "points", dim=2)
-    c = np.asarray(as_points(np.reshape(np.asarray(weights, dtype=float), (-1, 1)), "weights", dim=1))[:, 0]
+    c = as_points(np.reshape(as_float_array(weights, "weights"), (-1, 1)), "weights", dim=1)[:, 0]
     if c.shape[0] != P.shape[0]:
         raise ValueError(f"weights must hold one weight per point; got {c.shape[0]} weights for {P.shape[0]} points")
     total = float(c.sum())
     if abs(total - 1.0) > tol:
         raise ValueError(f"weights must sum to 1 for an affine combination of points; they sum to {total:.6g}")
-    return c @ P
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = c @ P
+    return _finite(out, "points or weights are")
 
 
 def barycentric_coordinates(points, triangle) -> np.ndarray:
@@ -465,10 +506,12 @@ def barycentric_coordinates(points, triangle) -> np.ndarray:
     area2 = u[0] * v[1] - u[1] * v[0]
     if abs(area2) <= 1e-12 * max(1.0, float(np.abs(T - T[0]).max()) ** 2):
         raise ValueError(f"triangle must not be collinear; {T.tolist()} lie on one line")
-    d = P - T[0]
-    b = (d[..., 0] * v[1] - d[..., 1] * v[0]) / area2
-    c = (u[0] * d[..., 1] - u[1] * d[..., 0]) / area2
-    return np.stack([1.0 - b - c, b, c], axis=-1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        d = P - T[0]
+        b = (d[..., 0] * v[1] - d[..., 1] * v[0]) / area2
+        c = (u[0] * d[..., 1] - u[1] * d[..., 0]) / area2
+        out = np.stack([1.0 - b - c, b, c], axis=-1)
+    return _finite(out, "points or triangle are")
 
 
 def commute(M, N, tol: float = 1e-9) -> bool:
@@ -480,8 +523,11 @@ def commute(M, N, tol: float = 1e-9) -> bool:
     >>> commute(rotation(30, [1, 2]), rotation(50, [1, 2])), commute(rotation(30), translation([1, 0]))
     (True, False)
     """
+    tol = as_tolerance(tol)
     A, B = as_affine(M, "M"), as_affine(N, "N")
-    return bool(np.allclose(A @ B, B @ A, atol=tol, rtol=0))
+    with np.errstate(over="ignore", invalid="ignore"):
+        AB, BA = _finite(A @ B, "M or N is"), _finite(B @ A, "M or N is")
+    return bool(np.allclose(AB, BA, atol=tol, rtol=0))
 
 
 def is_rigid(M, tol: float = 1e-9) -> bool:
@@ -490,5 +536,8 @@ def is_rigid(M, tol: float = 1e-9) -> bool:
     >>> is_rigid(rotation(30, [1, 2]) @ translation([3, 0])), is_rigid(scaling(2))
     (True, False)
     """
+    tol = as_tolerance(tol)
     L = as_affine(M)[:2, :2]
-    return bool(np.allclose(L @ L.T, np.eye(2), atol=tol, rtol=0))
+    with np.errstate(over="ignore", invalid="ignore"):
+        G = _finite(L @ L.T, "M is")
+    return bool(np.allclose(G, np.eye(2), atol=tol, rtol=0))

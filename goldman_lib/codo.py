@@ -63,16 +63,29 @@ import numpy as np
 
 from goldman_lib import affine, turtle
 from goldman_lib.angles import cos_sin_degrees
-from goldman_lib.validation import as_points
+from goldman_lib.validation import MAX_ITEMS, MAX_ITERATIONS, as_int, as_points
 
 __all__ = ["CodoError", "CodoSyntaxError", "CodoTypeError", "CodoRuntimeError", "Point", "Vector", "Figure",
            "Drawing", "parse", "execute", "run", "SAMPLES", "KEYWORDS", "BUILTINS", "MAX_STEPS", "MAX_POINTS",
+           "MAX_NESTING", "MAX_WORK", "MAX_LENGTH",
            "turtle_program_through", "TurtleFit", "closest_turtle_state", "turtle_image_gap", "vertices"]
 
 #: The most statements one program may execute (REPEATs counted out).
 MAX_STEPS = 20_000
 #: The most points a program may draw or hold in one figure.
 MAX_POINTS = 200_000
+#: The deepest nesting the parser accepts: of REPEAT blocks, parentheses, unary signs and calls
+#: together, and of the expression tree (``1 + 1 + ... + 1`` with 51 terms is 50 deep).  Deeper
+#: programs are a :class:`CodoSyntaxError` at the token that goes too deep, never a RecursionError.
+MAX_NESTING = 50
+#: The most figure points one program may move (maps applied to figures, figures joined, drawn):
+#: :data:`goldman_lib.validation.MAX_ITEMS`.
+MAX_WORK = MAX_ITEMS
+#: The longest program text :func:`parse` reads: 50,000 characters, a thousand lines or so (about
+#: half a second of parsing; a program that draws more repeats its statements with REPEAT).
+MAX_LENGTH = 50_000
+#: How many characters of a token a message quotes.
+_QUOTE = 60
 #: The statement keywords (case-insensitive).
 KEYWORDS = ("CONNECT", "DRAW", "REPEAT")
 _TOL = 1e-9
@@ -90,9 +103,21 @@ class CodoError(ValueError):
     """
 
     def __init__(self, message: str, line: int, column: int, token: str):
-        where = "at end of program" if token == "" else f"at {token!r}"
+        where = "at end of program" if token == "" else f"at {_quote(token)}"
         super().__init__(f"line {line}, column {column}, {where}: {message}")
         self.line, self.column, self.token = line, column, token
+
+
+def _short(text: str) -> str:
+    """A token as written, at most about 60 characters of it."""
+    return text if len(text) <= _QUOTE else text[:_QUOTE] + "..."
+
+
+def _quote(text: str) -> str:
+    """``repr`` of a token, at most about 60 characters of it."""
+    if len(text) <= _QUOTE:
+        return repr(text)
+    return repr(text[:_QUOTE]) + f"... ({len(text):,} characters)"
 
 
 class CodoSyntaxError(CodoError):
@@ -214,6 +239,7 @@ class Node(NamedTuple):
     end: int
     args: tuple = ()
     value: float = 0.0
+    depth: int = 1
 
 
 class Statement(NamedTuple):
@@ -241,6 +267,22 @@ class _Parser:
         self.text = text
         self.toks = _tokens(text)
         self.i = 0
+        self.nesting = 0
+
+    def enter(self, tok: Token | None = None):
+        """One level deeper (a REPEAT block, a parenthesis, a sign, a call): at most MAX_NESTING."""
+        self.nesting += 1
+        if self.nesting > MAX_NESTING:
+            self.fail(f"the program is nested more than {MAX_NESTING} deep (REPEAT blocks, parentheses, signs and "
+                      f"calls inside one another); split it into several statements", tok)
+
+    def node(self, kind: str, tok: Token, start: int, end: int, args: tuple, **kw) -> Node:
+        """An expression node whose tree is at most MAX_NESTING deep (evaluation recurses along it)."""
+        depth = 1 + max((a.depth for a in args), default=0)
+        if depth > MAX_NESTING:
+            self.fail(f"this expression is nested more than {MAX_NESTING} deep (operations inside one another); "
+                      f"split it into several assignments", tok)
+        return Node(kind, tok, start, end, args, depth=depth, **kw)
 
     # -- helpers -------------------------------------------------------------------------------
     @property
@@ -260,7 +302,7 @@ class _Parser:
             return "end of line" if tok.text == "\n" else "';'"
         if tok.kind == "number":
             return f"the number {tok.text}"
-        return repr(tok.text)
+        return _quote(tok.text)
 
     def expect(self, text: str, what: str) -> Token:
         tok = self.tok
@@ -322,17 +364,19 @@ class _Parser:
             if not (opener.kind == "op" and opener.text == "["):
                 self.fail(f"expected '[' after REPEAT {self.text[count.start:count.end]}, found {self.found(opener)}")
             self.i += 1
+            self.enter(tok)
             body = self.block(top=False, opener=tok)
+            self.nesting -= 1
             self.i += 1   # the ']'
             return Statement("repeat", tok, args=(count,), body=body)
         nxt = self.toks[self.i + 1]
         if not (nxt.kind == "op" and nxt.text == "="):
-            close = difflib.get_close_matches(word, KEYWORDS, n=1, cutoff=0.6)
+            close = difflib.get_close_matches(word, KEYWORDS, n=1, cutoff=0.6) if len(word) <= 20 else []
             hint = f" (did you mean {close[0]}?)" if close else ""
             self.fail(f"expected '=' after the name {tok.text} (or a statement: CONNECT, DRAW, REPEAT), "
                       f"found {self.found(nxt)}{hint}", nxt if not close else tok)
         if tok.text.lower() in BUILTINS:
-            self.fail(f"cannot assign to {tok.text!r}: it is a built-in function; choose another name", tok)
+            self.fail(f"cannot assign to {_quote(tok.text)}: it is a built-in function; choose another name", tok)
         self.i += 2
         return Statement("assign", tok, target=tok.text, args=(self.expr(),))
 
@@ -343,7 +387,7 @@ class _Parser:
             op = self.tok
             self.i += 1
             right = self.term()
-            left = Node("binop", op, left.start, right.end, (left, right))
+            left = self.node("binop", op, left.start, right.end, (left, right))
         return left
 
     def term(self) -> Node:
@@ -352,17 +396,19 @@ class _Parser:
             op = self.tok
             self.i += 1
             right = self.unary()
-            left = Node("binop", op, left.start, right.end, (left, right))
+            left = self.node("binop", op, left.start, right.end, (left, right))
         return left
 
     def unary(self) -> Node:
         tok = self.tok
         if tok.kind == "op" and tok.text in "+-":
             self.i += 1
+            self.enter(tok)
             operand = self.unary()
+            self.nesting -= 1
             if tok.text == "+":
                 return operand._replace(start=tok.offset)
-            return Node("neg", tok, tok.offset, operand.end, (operand,))
+            return self.node("neg", tok, tok.offset, operand.end, (operand,))
         return self.postfix()
 
     def postfix(self) -> Node:
@@ -370,11 +416,18 @@ class _Parser:
         while self.tok.kind == "op" and self.tok.text == "(":
             open_tok = self.tok
             args, end = self.arguments()
-            node = Node("apply", open_tok, node.start, end, (node, *args))
+            node = self.node("apply", open_tok, node.start, end, (node, *args))
         return node
 
     def arguments(self) -> tuple[list, int]:
         open_tok = self.expect("(", "'('")
+        self.enter(open_tok)
+        try:
+            return self._arguments(open_tok)
+        finally:
+            self.nesting -= 1
+
+    def _arguments(self, open_tok: Token) -> tuple[list, int]:
         args = []
         if self.tok.kind == "op" and self.tok.text == ")":
             self.i += 1
@@ -414,11 +467,13 @@ class _Parser:
                 if not (self.tok.kind == "op" and self.tok.text == "("):
                     self.fail(f"expected '(' after the function {tok.text}, found {self.found(self.tok)}")
                 args, end = self.arguments()
-                return Node("call", tok, tok.offset, end, tuple(args))
+                return self.node("call", tok, tok.offset, end, tuple(args))
             return Node("name", tok, tok.offset, tok.offset + len(tok.text))
         if tok.kind == "op" and tok.text == "(":
             self.i += 1
+            self.enter(tok)
             inner = self.expr()
+            self.nesting -= 1
             close = self.tok
             if not (close.kind == "op" and close.text == ")"):
                 if close.kind == "op" and close.text == ",":
@@ -434,8 +489,8 @@ def parse(program: str) -> Program:
     """Parse a CODO program into its statements (Goldman §5.2.1).
 
     program: the program text (see the module docstring for the language).  Returns a
-    :class:`Program`.  Raises TypeError if ``program`` is not a string and
-    :class:`CodoSyntaxError` naming the line, column and token where parsing failed.
+    :class:`Program`.  Raises TypeError if ``program`` is not a string, ValueError if it is longer
+    than :data:`MAX_LENGTH` characters, and :class:`CodoSyntaxError` naming the line, column and token where parsing failed.
 
     >>> len(parse("P = point(0, 0)\\nREPEAT 3 [ P = P + vector(1, 0) ]").statements)
     2
@@ -446,6 +501,9 @@ def parse(program: str) -> Program:
     """
     if not isinstance(program, str):
         raise TypeError(f"program must be a string of CODO statements; got {type(program).__name__}")
+    if len(program) > MAX_LENGTH:
+        raise ValueError(f"program must be at most {MAX_LENGTH:,} characters long (about half a second of "
+                         f"parsing); got {len(program):,} characters: use REPEAT instead of writing statements out")
     return _Parser(program).program()
 
 
@@ -477,6 +535,31 @@ class _Interpreter:
         self.steps = 0
         self.max_steps = max_steps
         self.repeats: list[Token] = []
+        self.rounds = 0      # rounds of REPEATs with an empty body: steps too, though no statement runs
+        self.work = 0        # figure points moved (maps applied to figures, figures joined, drawn)
+
+    def count_step(self, tok: Token, rounds: int = 0):
+        """One more statement (or ``rounds`` more rounds of an empty loop) against ``max_steps``."""
+        if rounds:
+            self.rounds += rounds
+        else:
+            self.steps += 1
+        if self.steps + self.rounds > self.max_steps:
+            if self.repeats:
+                where = self.repeats[0]
+                line, col = _position(self.text, where.offset)
+                self.fail(f"this program runs more than {self.max_steps:,} statements (the REPEAT at line {line}, "
+                          f"column {col} is the outermost loop; a round of an empty loop counts as a statement); "
+                          f"use fewer repetitions so the drawing stays quick", where)
+            self.fail(f"this program runs more than {self.max_steps:,} statements (the limit max_steps); "
+                      f"write a shorter program", tok)
+
+    def touch(self, points: int, tok: Token):
+        """Count figure points moved against :data:`MAX_WORK`."""
+        self.work += points
+        if self.work > MAX_WORK:
+            self.fail(f"this program moves more than {MAX_WORK:,} figure points in all (maps applied to figures, "
+                      f"figures joined or drawn); use smaller figures or fewer repetitions", tok)
 
     def fail(self, message: str, tok: Token, cls=CodoRuntimeError):
         line, col = _position(self.text, tok.offset)
@@ -489,13 +572,7 @@ class _Interpreter:
     # -- statements ----------------------------------------------------------------------------
     def run(self, statements):
         for st in statements:
-            self.steps += 1
-            if self.steps > self.max_steps:
-                where = self.repeats[0] if self.repeats else st.tok
-                line, col = _position(self.text, where.offset)
-                self.fail(f"this program runs more than {self.max_steps:,} statements (the REPEAT at line {line}, "
-                          f"column {col} is the outermost loop); use fewer repetitions so the drawing stays quick",
-                          where)
+            self.count_step(st.tok)
             kind = st.kind
             if kind == "assign":
                 self.env[st.target] = self.settle(self.eval(st.args[0]), st.args[0])
@@ -516,11 +593,15 @@ class _Interpreter:
                 if n > self.max_steps:
                     self.fail(f"REPEAT {n:g} is more than the limit of {self.max_steps:,} statements", st.tok)
                 self.repeats.append(st.tok)
-                for _ in range(int(n)):
-                    self.run(st.body)
+                if not st.body:
+                    self.count_step(st.tok, rounds=int(n))
+                else:
+                    for _ in range(int(n)):
+                        self.run(st.body)
                 self.repeats.pop()
 
     def add(self, polylines, tok):
+        self.touch(sum(len(p) for p in polylines), tok)
         for p in polylines:
             self.points += len(p)
         if self.points > MAX_POINTS:
@@ -572,12 +653,13 @@ class _Interpreter:
                 v = self.env[node.tok.text]
             except KeyError:
                 names = list(self.env)
-                close = difflib.get_close_matches(node.tok.text, names, n=1, cutoff=0.6)
+                word = node.tok.text
+                close = difflib.get_close_matches(word, names, n=1, cutoff=0.6) if len(word) <= 40 else []
                 if not close:
-                    close = [k for k in names if k.lower() == node.tok.text.lower()]
-                hint = f" (did you mean {close[0]}?)" if close else ""
-                self.fail(f"the name {node.tok.text} has no value yet; give it one first "
-                          f"({node.tok.text} = ...){hint}", node.tok)
+                    close = [k for k in names if k.lower() == word.lower()]
+                hint = f" (did you mean {_short(close[0])}?)" if close else ""
+                self.fail(f"the name {_short(word)} has no value yet; give it one first "
+                          f"({_short(word)} = ...){hint}", node.tok)
             return _Mass(v.x, v.y, v.w) if isinstance(v, _Mass) else v
         if kind == "binop":
             return self.binop(node)
@@ -628,6 +710,7 @@ class _Interpreter:
         if op == "+" and isinstance(a, Figure) and isinstance(b, Figure):
             if sum(len(p) for p in a.polylines + b.polylines) > MAX_POINTS:
                 self.fail(f"the figure {self.snippet(node)} would hold more than {MAX_POINTS:,} points", node.tok)
+            self.touch(sum(len(p) for p in a.polylines + b.polylines), node.tok)
             return Figure(a.polylines + b.polylines)
         da, db = _describe(a), _describe(b)
         verb = {"+": "add", "-": "subtract", "*": "multiply", "/": "divide"}[op]
@@ -740,9 +823,10 @@ class _Interpreter:
     def apply(self, node: Node):
         target, *args = node.args
         if target.kind == "name" and target.tok.text not in self.env:
-            close = difflib.get_close_matches(target.tok.text.lower(), BUILTINS, n=1, cutoff=0.6)
+            close = (difflib.get_close_matches(target.tok.text.lower(), BUILTINS, n=1, cutoff=0.6)
+                     if len(target.tok.text) <= 40 else [])
             if close:
-                self.fail(f"there is no function {target.tok.text} (did you mean {close[0]}?)", target.tok)
+                self.fail(f"there is no function {_short(target.tok.text)} (did you mean {close[0]}?)", target.tok)
         M = self.settle(self.eval(target), target)
         if not isinstance(M, np.ndarray):
             self.fail(f"{self.snippet(target)} is {_describe(M)}, not a map: only maps can be applied, as in "
@@ -755,6 +839,7 @@ class _Interpreter:
             (a, b, _), (c, d, _), (e, f, _) = M.tolist()
             return _Mass(x.x * a + x.y * c + x.w * e, x.x * b + x.y * d + x.w * f, x.w)
         if isinstance(x, Figure):
+            self.touch(sum(len(p) for p in x.polylines), node.tok)
             with np.errstate(over="ignore", invalid="ignore"):   # overflow is reported by settle
                 return Figure(tuple(p @ M[:2, :2] + M[2, :2] for p in x.polylines))
         self.fail(f"a map applies to a point, a vector or a figure; {self.snippet(args[0])} is {_describe(x)}",
@@ -771,7 +856,10 @@ def execute(program, *, max_steps: int = MAX_STEPS) -> Drawing:
     """Run a CODO program; return its drawing and its variables (Goldman §5.2).
 
     program: program text or a parsed :class:`Program`.  max_steps: the most statements it may
-    execute.  Returns a :class:`Drawing`.  Raises TypeError for a program that is not a string,
+    execute (each round of a REPEAT with an empty body counts as one), an int from 0 to
+    :data:`goldman_lib.validation.MAX_ITERATIONS` (1,000,000: about a minute of interpreting).
+    A program may also move at most :data:`MAX_WORK` figure points and nest at most
+    :data:`MAX_NESTING` deep.  Returns a :class:`Drawing`.  Raises TypeError for a program that is not a string,
     :class:`CodoSyntaxError`, :class:`CodoTypeError` or :class:`CodoRuntimeError` (all
     ValueErrors) naming the line, column and token.
 
@@ -784,7 +872,10 @@ def execute(program, *, max_steps: int = MAX_STEPS) -> Drawing:
     goldman_lib.codo.CodoTypeError: line 2, column 7, at '+': P + P is neither a point nor a vector: its weights add up to 2. Adding points or scaling a point is legal only in an affine combination whose weights sum to 1 (a point, e.g. (P + Q)/2 or 0.25*P + 0.75*Q) or 0 (a vector, e.g. P - Q)
     """
     prog = program if isinstance(program, Program) else parse(program)
-    interp = _Interpreter(prog, int(max_steps))
+    if not isinstance(program, (str, Program)):
+        raise TypeError(f"program must be a string of CODO statements or a parsed Program; got {type(program).__name__}")
+    max_steps = as_int(max_steps, "max_steps", minimum=0, maximum=MAX_ITERATIONS)
+    interp = _Interpreter(prog, max_steps)
     interp.run(prog.statements)
     return Drawing(interp.lines, {k: _public(v) for k, v in interp.env.items()}, interp.steps)
 

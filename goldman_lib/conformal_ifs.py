@@ -64,9 +64,9 @@ import numpy as np
 
 from goldman_lib import affine
 from goldman_lib import ifs as ifs_module
-from goldman_lib.fixed_point import hausdorff_distance
+from goldman_lib.fixed_point import MAX_PAIRS, hausdorff_distance
 from goldman_lib.fractals import RECURSE, RecursiveTurtleProgram
-from goldman_lib.validation import as_float, as_int, as_points
+from goldman_lib.validation import MAX_ITEMS, as_float, as_int, as_points, as_tolerance, within_budget
 
 __all__ = [
     "STANDARD_POINT", "STANDARD_DIRECTION", "state_map", "initial_state_map", "state_after",
@@ -243,8 +243,9 @@ def segment_set(polylines, decimals: int = 9) -> np.ndarray:
     >>> segment_set([[[1, 0], [0, 0]], [[0, 0], [1, 0], [1, 0]]]).tolist()
     [[0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 1.0, 0.0]]
     """
+    decimals = as_int(decimals, "decimals", minimum=-300, maximum=300)
     segs = []
-    for i, p in enumerate(polylines):
+    for i, p in enumerate(_as_strokes(polylines, "polylines")):
         p = as_points(p, f"polylines[{i}]", dim=2)
         if len(p) >= 2:
             segs.append(np.concatenate([p[:-1], p[1:]], axis=1))
@@ -266,6 +267,7 @@ def same_drawing(first, second, tol: float = 1e-9) -> bool:
     >>> same_drawing([[[0, 0], [1, 0], [1, 1]]], [[[1, 1], [1, 0]], [[0, 0], [1, 0]]])
     True
     """
+    tol = as_tolerance(tol)
     a, b = segment_set(first), segment_set(second)
     a, b = np.unique(a, axis=0), np.unique(b, axis=0)
     if a.shape != b.shape:
@@ -273,8 +275,10 @@ def same_drawing(first, second, tol: float = 1e-9) -> bool:
     return bool(a.size == 0 or np.abs(a - b).max() <= tol * max(1.0, float(np.abs(a).max())))
 
 
-def _vertices(polylines) -> np.ndarray:
-    pts = [np.asarray(p, dtype=float) for p in polylines if len(p)]
+def _vertices(polylines, name: str = "polylines") -> np.ndarray:
+    if isinstance(polylines, (list, tuple)) and len(polylines) == 0:
+        return np.zeros((0, 2))
+    pts = _as_strokes(polylines, name)
     return np.concatenate(pts) if pts else np.zeros((0, 2))
 
 
@@ -327,16 +331,27 @@ def drawing_distance(first, second) -> float:
     the distance is computed from those partners, found by hashing grid cells in linear time (an
     upper bound, exact for coinciding sets); otherwise by
     :func:`goldman_lib.fixed_point.hausdorff_distance`, whose cost grows with the product of the
-    two sizes -- too slow for a slider at level 6 and above.  Raises ValueError if a drawing is empty.
+    two sizes -- too slow for a slider at level 6 and above; it is refused (ValueError naming
+    ``first`` and ``second``) when ``len(first vertices) * len(second vertices)`` exceeds
+    :data:`goldman_lib.fixed_point.MAX_PAIRS`.  Raises ValueError if a drawing is empty.
 
     >>> drawing_distance([[[0, 0], [1, 0]]], [[[0, 0], [1, 0.5]]])
     0.5
     """
-    A, B = _vertices(first), _vertices(second)
+    A, B = _vertices(first, "first"), _vertices(second, "second")
     if len(A) == 0 or len(B) == 0:
         raise ValueError("both drawings must draw something to have a Hausdorff distance")
     matched = _matched_distance(A, B)
-    return matched if matched is not None else hausdorff_distance(A, B)
+    if matched is not None:
+        return matched
+    _check_pairs(len(A), len(B))
+    return hausdorff_distance(A, B)
+
+
+def _check_pairs(m: int, n: int, what: str = "first and second differ, so") -> None:
+    if m * n > MAX_PAIRS:
+        raise ValueError(f"{what} their Hausdorff distance compares every vertex of one with every vertex of the other: "
+                         f"{m:,} * {n:,} = {m * n:,} pairs, over the limit of {MAX_PAIRS:,}; use lower levels")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -383,7 +398,8 @@ class TurtleIFS:
         >>> len(rons_algorithm(fractals.sierpinski_gasket_program()).polylines(2))
         9
         """
-        level = as_int(level, "level", minimum=0)
+        level = _drawing_level(level, len(self.maps), [len(b) for b in self.base],
+                               [len(c) for c in self.condensation], len(self.placements))
         G = ifs_polylines(self.maps, level, self.base, self.condensation)
         if len(self.placements) == 1 and np.array_equal(self.placements[0], np.eye(3)):
             return list(self.frame) + G
@@ -404,7 +420,8 @@ def ifs_polylines(maps, level: int, start, condensation=()) -> list[np.ndarray]:
     maps: an :class:`goldman_lib.ifs.IFS` (its own condensation set is ignored here) or a list
     of 3x3 maps.  start, condensation: lists of ``(m, 2)`` strokes.  Each stroke's copies come
     from :func:`goldman_lib.ifs.deterministic` with that stroke as start set.  Raises ValueError
-    if the drawing would exceed :data:`goldman_lib.ifs.MAX_POINTS` points.
+    naming ``level`` if the drawing would exceed :data:`goldman_lib.ifs.MAX_POINTS` points or
+    :data:`goldman_lib.validation.MAX_ITERATIONS` strokes (checked before anything is drawn).
 
     >>> ifs_polylines(ifs_module.cantor(), 1, [[[0, 0], [1, 0]]])[1].tolist()
     [[0.6666666666666667, 0.0], [1.0, 0.0]]
@@ -413,7 +430,9 @@ def ifs_polylines(maps, level: int, start, condensation=()) -> list[np.ndarray]:
     if M.ndim == 2:
         M = M[None]
     system = ifs_module.IFS(M)
-    level = as_int(level, "level", minimum=0)
+    start = _as_strokes(start, "start")
+    condensation = _as_strokes(condensation, "condensation")
+    level = _drawing_level(level, len(M), [len(s) for s in start], [len(c) for c in condensation])
     out = []
     for j, s in enumerate(start):
         s = as_points(s, f"start[{j}]", dim=2)
@@ -423,6 +442,28 @@ def ifs_polylines(maps, level: int, start, condensation=()) -> list[np.ndarray]:
         for lev in range(level):
             out.extend(ifs_module.deterministic(system, lev, start=c).reshape(-1, len(c), 2))
     return out
+
+
+def _drawing_size(level: int, k: int, starts: list, conds: list) -> tuple[int, int]:
+    """(points, strokes) of :func:`ifs_polylines` at ``level``."""
+    copies = k ** level
+    below = sum(k ** j for j in range(level)) if k > 1 else level
+    return (copies * sum(starts) + below * sum(conds), copies * len(starts) + below * len(conds))
+
+
+def _drawing_level(level, k: int, starts: list, conds: list, placements: int = 1) -> int:
+    """A level whose drawing has at most MAX_POINTS points and MAX_ITERATIONS strokes."""
+    from goldman_lib.validation import MAX_ITERATIONS
+
+    far = 10 ** 12
+
+    def cost(v, i):
+        return placements * _drawing_size(v, k, starts, conds)[i] if v <= 4096 else far
+
+    level = within_budget(level, "level", cost=lambda v: cost(v, 0), what="the drawing",
+                          limit=ifs_module.MAX_POINTS)
+    return within_budget(level, "level", cost=lambda v: cost(v, 1), what="the drawing", unit="strokes",
+                         limit=MAX_ITERATIONS)
 
 
 def _mirror_candidates(base_pos: _Walk, base_neg: _Walk) -> list[np.ndarray]:
@@ -561,7 +602,11 @@ def base_case_gaps(program, other_base, levels: int) -> np.ndarray:
     The two programs have the same IFS (same body), so level ``n`` of each is ``W^n`` of its base
     drawing (plus the same condensation copies), and the distances shrink at least like
     ``s^n`` (:func:`contraction_ratio`).  other_base: a base case (sequence of ``(command,
-    value)``).  Returns ``(levels + 1,)``.  Raises ValueError if the two base cases change the
+    value)``).  levels: >= 0, with the Hausdorff distances of levels ``0..levels`` comparing at
+    most :data:`goldman_lib.fixed_point.MAX_PAIRS` vertex pairs in all (two base cases draw
+    different pictures, so the quadratic comparison is the expected cost; the C-curve with a box
+    base reaches level 11, the Koch curve level 5), checked before anything is drawn.
+    Returns ``(levels + 1,)``.  Raises ValueError if the two base cases change the
     turtle's state differently (then the bodies make different IFS) or one draws nothing.
 
     >>> from goldman_lib import fractals
@@ -572,12 +617,20 @@ def base_case_gaps(program, other_base, levels: int) -> np.ndarray:
     """
     if not isinstance(program, RecursiveTurtleProgram):
         raise TypeError(f"program must be a goldman_lib.fractals.RecursiveTurtleProgram; got {type(program).__name__}")
-    levels = as_int(levels, "levels", minimum=0)
     other = program.with_base(other_base)
     a, b = rons_algorithm(program), rons_algorithm(other)
     if a.maps.shape != b.maps.shape or not _close(a.maps, b.maps, 1e-8):
         raise ValueError("the two base cases change the turtle's state differently, so the two programs "
                          "have different IFS; give a base case that ends in the same state")
+
+    def vertices(conv, n):
+        if n > 4096:
+            return 10 ** 12
+        pts, _ = _drawing_size(n, len(conv.maps), [len(s) for s in conv.base], [len(c) for c in conv.condensation])
+        return len(conv.placements) * pts + sum(len(f) for f in conv.frame)
+
+    levels = within_budget(levels, "levels", cost=lambda v: sum(vertices(a, n) * vertices(b, n) for n in range(v + 1)),
+                           what="the Hausdorff distances", unit="vertex pairs", limit=MAX_PAIRS)
     return np.array([drawing_distance(a.polylines(n), b.polylines(n)) for n in range(levels + 1)])
 
 
@@ -911,6 +964,7 @@ def bump_of(system, tol: float = 1e-9) -> tuple[np.ndarray, tuple]:
     ([[0.0, 0.0], [0.5, 0.5], [1.0, 0.0]], (1,))
     """
     maps = _maps_of(system)
+    tol = as_tolerance(tol)
     pts = [np.zeros(2)]
     rev = []
     for i, Mi in enumerate(maps):

@@ -31,9 +31,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import affine
-from .validation import as_float, as_int, as_points, check_finite
+from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, as_tolerance, check_finite,
+                         within_budget)
 
-__all__ = ["Convergence", "ConvergenceError", "fixed_point_iteration", "newton", "newton_steps", "jacobi",
+__all__ = ["MAX_PAIRS", "Convergence", "ConvergenceError", "fixed_point_iteration", "newton", "newton_steps", "jacobi",
            "gauss_seidel", "is_diagonally_dominant", "contraction_factor", "hausdorff_distance",
            "directed_hausdorff", "fractal_theorem", "FractalTheorem"]
 
@@ -71,12 +72,31 @@ class ConvergenceError(ArithmeticError):
         self.report = report
 
 
+def as_float_array_x0(x0) -> np.ndarray:
+    from .validation import as_float_array
+    return as_float_array(x0, "x0").copy()
+
+
 def _finish(report: Convergence, full_output: bool):
     if full_output:
         return report.x, report
     if not report.converged:
         raise ConvergenceError(f"{report.method} did not converge: {report.message}", report)
     return report.x
+
+
+#: The most point pairs one (directed) Hausdorff distance may compare, ``len(A) * len(B)``: five
+#: times :data:`goldman_lib.validation.MAX_ITEMS`, a few seconds of numpy work.
+MAX_PAIRS = 5 * MAX_ITEMS
+
+
+def _iterations(max_iter, size: int = 1) -> int:
+    """``max_iter``: at most MAX_ITERATIONS steps, and the history it keeps (``max_iter + 1``
+    iterates of ``size`` numbers) at most MAX_ITEMS numbers."""
+    max_iter = within_budget(max_iter, "max_iter", cost=lambda v: v, what="the iteration", unit="iterations",
+                             limit=MAX_ITERATIONS, minimum=1)
+    return within_budget(max_iter, "max_iter", cost=lambda v: (v + 1) * max(size, 1),
+                         what="the history of iterates", unit="numbers", minimum=1)
 
 
 def _callable(f, name: str):
@@ -93,17 +113,18 @@ def fixed_point_iteration(F, x0, *, tol: float = 1e-12, max_iter: int = 1000, fu
     ``|x_{n+1} - x_n| <= tol * max(1, |x_{n+1}|)`` (max norm).  Returns the fixed point (float or
     array), or ``(x, Convergence)`` with ``full_output``.  Raises ConvergenceError if the
     iterates diverge (become non-finite) or do not settle in ``max_iter`` steps (unless
-    ``full_output``); ValueError for a non-finite start.
+    ``full_output``); ValueError for a non-finite start.  max_iter: 1 to
+    :data:`goldman_lib.validation.MAX_ITERATIONS`, and ``(max_iter + 1) * x0.size`` (the history
+    kept) at most :data:`goldman_lib.validation.MAX_ITEMS`.  tol: finite and positive.
 
     >>> round(fixed_point_iteration(math.cos, 1.0), 10)   # the solution of cos x = x
     0.7390851332
     """
     F = _callable(F, "F")
     scalar = np.ndim(x0) == 0
-    x = np.array(x0, dtype=float)
-    check_finite(x, "x0")
-    tol = as_float(tol, "tol", positive=True)
-    max_iter = as_int(max_iter, "max_iter", minimum=1)
+    x = check_finite(as_float_array_x0(x0), "x0")
+    tol = as_tolerance(tol)
+    max_iter = _iterations(max_iter, x.size)
     history, residuals = [x.copy()], []
     reason, message = "max iterations", f"no fixed point within {max_iter} iterations"
     with np.errstate(all="ignore"):
@@ -154,6 +175,7 @@ def newton(f, df, x0, *, tol: float = 1e-12, max_iter: int = 50, full_output: bo
 def newton_steps(f, df, x0, *, tol: float = 1e-12, max_iter: int = 50) -> Convergence:
     """The full :class:`Convergence` report of Newton's method (Goldman §7.3.1); never raises
     for a failing iteration (see :func:`newton`).  ``history`` holds ``x_0, x_1, ...``.
+    max_iter: 1 to :data:`goldman_lib.validation.MAX_ITERATIONS`; tol finite and positive.
 
     >>> rep = newton_steps(lambda x: x * x - 2, lambda x: 2 * x, 0.0)
     >>> rep.reason, rep.iterations
@@ -161,8 +183,8 @@ def newton_steps(f, df, x0, *, tol: float = 1e-12, max_iter: int = 50) -> Conver
     """
     f, df = _callable(f, "f"), _callable(df, "df")
     x = as_float(x0, "x0")
-    tol = as_float(tol, "tol", positive=True)
-    max_iter = as_int(max_iter, "max_iter", minimum=1)
+    tol = as_tolerance(tol)
+    max_iter = _iterations(max_iter)
     history, residuals = [x], []
     reason, message = "max iterations", f"no root within {max_iter} iterations"
     for _ in range(max_iter + 1):
@@ -224,9 +246,10 @@ def _cycle(history, tol) -> int:
 
 
 def _linear_system(A, b, x0):
-    A = np.array(A, dtype=float) if not isinstance(A, str) else None
-    if A is None or A.ndim != 2 or A.shape[0] != A.shape[1] or A.shape[0] == 0:
-        raise ValueError(f"A must be a square matrix (n, n); got shape {None if A is None else A.shape}")
+    from .validation import as_float_array
+    A = as_float_array(A, "A")
+    if A.ndim != 2 or A.shape[0] != A.shape[1] or A.shape[0] == 0:
+        raise ValueError(f"A must be a square matrix (n, n); got shape {A.shape}")
     check_finite(A, "A")
     n = len(A)
     b = as_points(b, "b", ndim=1)
@@ -251,7 +274,8 @@ def is_diagonally_dominant(A) -> bool:
     >>> is_diagonally_dominant([[4, 1], [2, 5]]), is_diagonally_dominant([[1, 2], [3, 4]])
     (True, False)
     """
-    A = np.abs(np.array(A, dtype=float))
+    from .validation import as_float_array
+    A = np.abs(check_finite(as_float_array(A, "A"), "A"))
     if A.ndim != 2 or A.shape[0] != A.shape[1]:
         raise ValueError(f"A must be a square matrix (n, n); got shape {A.shape}")
     d = np.diag(A)
@@ -260,8 +284,8 @@ def is_diagonally_dominant(A) -> bool:
 
 def _relax(A, b, x0, tol, max_iter, full_output, method):
     A, b, x = _linear_system(A, b, x0)
-    tol = as_float(tol, "tol", positive=True)
-    max_iter = as_int(max_iter, "max_iter", minimum=1)
+    tol = as_tolerance(tol)
+    max_iter = _iterations(max_iter, len(b))
     d = np.diag(A)
     R = A - np.diag(d)
     scale_A = float(np.abs(A).sum(axis=1).max())
@@ -318,7 +342,9 @@ def jacobi(A, b, x0=None, *, tol: float = 1e-15, max_iter: int = 10_000, full_ou
 
     A: (n, n) with a nonzero diagonal.  b: (n,).  x0: (n,) start (default zeros).  Converged when
     ``||b - A x||_inf <= tol (||A||_inf ||x||_inf + ||b||_inf)`` (the default is near machine
-    precision).  Returns ``x`` (n,), or ``(x, Convergence)`` with ``full_output``.
+    precision).  max_iter: 1 to :data:`goldman_lib.validation.MAX_ITERATIONS`, with the history
+    kept, ``(max_iter + 1) n`` numbers, at most :data:`goldman_lib.validation.MAX_ITEMS`.  tol:
+    finite and positive.  Returns ``x`` (n,), or ``(x, Convergence)`` with ``full_output``.
     Raises ValueError for a non-square ``A``, a zero diagonal entry or a mismatched ``b``;
     ConvergenceError if the iteration diverges or runs out of iterations (with a
     RuntimeWarning if ``A`` is not diagonally dominant).
@@ -356,7 +382,8 @@ def contraction_factor(M) -> float | np.ndarray:
     >>> round(contraction_factor([[1.0, 0.0], [1.0, 1.0]]), 6)   # a shear stretches by the golden ratio
     1.618034
     """
-    arr = np.array(M, dtype=float)
+    from .validation import as_float_array
+    arr = as_float_array(M, "M")
     if arr.ndim >= 2 and arr.shape[-2:] == (3, 3):
         arr = affine.as_affine(arr, "M")[..., :2, :2]
     elif arr.ndim < 2 or arr.shape[-2:] != (2, 2):
@@ -367,11 +394,13 @@ def contraction_factor(M) -> float | np.ndarray:
 
 
 _CHUNK = 2048
+#: The most distances one chunk of :func:`_nearest_sq` holds (16 MB of floats).
+_CHUNK_ITEMS = 2 ** 21
 
 
 def _nearest_sq(A: np.ndarray, B: np.ndarray) -> np.ndarray:
     """For each row of A, the squared distance to the nearest row of B (chunked, so memory
-    stays at ``_CHUNK * len(B)`` floats).
+    stays at ``min(_CHUNK * len(B), _CHUNK_ITEMS)`` floats or so).
 
     The expansion ``|a|^2 - 2 a.b + |b|^2`` is fast but loses digits when ``a`` is close to ``b``;
     so it only picks the candidates (within its rounding error of the minimum), whose distances
@@ -380,8 +409,9 @@ def _nearest_sq(A: np.ndarray, B: np.ndarray) -> np.ndarray:
     out = np.empty(len(A))
     b2 = np.einsum("ij,ij->i", B, B)
     eps = 8 * np.finfo(float).eps
-    for start in range(0, len(A), _CHUNK):
-        a = A[start:start + _CHUNK]
+    chunk = max(1, min(_CHUNK, _CHUNK_ITEMS // max(len(B), 1)))
+    for start in range(0, len(A), chunk):
+        a = A[start:start + chunk]
         a2 = np.einsum("ij,ij->i", a, a)
         d2 = a2[:, None] - 2.0 * (a @ B.T) + b2[None, :]
         band = d2.min(axis=1) + eps * (a2 + b2.max()) + 1e-300
@@ -390,21 +420,34 @@ def _nearest_sq(A: np.ndarray, B: np.ndarray) -> np.ndarray:
         exact = np.einsum("ij,ij->i", diff, diff)
         best = np.full(len(a), np.inf)
         np.minimum.at(best, rows, exact)
-        out[start:start + _CHUNK] = best
+        out[start:start + chunk] = best
     return out
+
+
+def _point_sets(A, B) -> tuple[np.ndarray, np.ndarray]:
+    """Two finite point sets of one dimension whose pairs are at most MAX_PAIRS."""
+    A = as_points(A, "A")
+    B = as_points(B, "B")
+    if A.shape[1] != B.shape[1]:
+        raise ValueError(f"A and B must hold points of the same dimension; A has {A.shape[1]}-dimensional points "
+                         f"(shape {A.shape}), B has {B.shape[1]}-dimensional points (shape {B.shape})")
+    if len(A) * len(B) > MAX_PAIRS:
+        raise ValueError(f"A and B are too large: their Hausdorff distance compares len(A) * len(B) = "
+                         f"{len(A):,} * {len(B):,} = {len(A) * len(B):,} pairs of points, over the limit of "
+                         f"{MAX_PAIRS:,}; use fewer points")
+    return A, B
 
 
 def directed_hausdorff(A, B) -> float:
     """The directed Hausdorff distance ``max over a in A of min over b in B of |a - b|`` (Goldman §7.3.3).
 
-    A: (n, d) points.  B: (m, d) points, same d.  Raises ValueError for empty sets or mismatched
-    dimensions.
+    A: (n, d) points.  B: (m, d) points, same d, with ``n m`` at most :data:`MAX_PAIRS`.  Raises
+    ValueError for empty sets, mismatched dimensions or too many pairs.
 
     >>> directed_hausdorff([[0, 0], [1, 0]], [[0, 0]])
     1.0
     """
-    A = as_points(A, "A")
-    B = as_points(B, "B", dim=A.shape[1])
+    A, B = _point_sets(A, B)
     return float(np.sqrt(_nearest_sq(A, B).max()))
 
 
@@ -416,14 +459,14 @@ def hausdorff_distance(A, B) -> float:
     says an IFS of contractions is a contraction in this metric, so its iterates converge to one
     attractor from any start.
 
-    A: (n, d) points.  B: (m, d) points, same d.  Cost O(n m) time, O(2048 m) memory.
-    Raises ValueError for empty sets or mismatched dimensions.
+    A: (n, d) points.  B: (m, d) points, same d.  Cost O(n m) time, O(min(2048 m, 2**21)) memory;
+    ``n m`` at most :data:`MAX_PAIRS`.  Raises ValueError for empty sets, mismatched dimensions
+    or too many pairs.
 
     >>> hausdorff_distance([[0, 0], [1, 0]], [[0, 0], [0, 3]])
     3.0
     """
-    A = as_points(A, "A")
-    B = as_points(B, "B", dim=A.shape[1])
+    A, B = _point_sets(A, B)
     return float(np.sqrt(max(_nearest_sq(A, B).max(), _nearest_sq(B, A).max())))
 
 
@@ -459,7 +502,8 @@ def fractal_theorem(system, start, levels: int, *, attractor_points: int = 6000)
     ``s`` the largest contraction factor of the maps.
 
     system: an :class:`~goldman_lib.ifs.IFS` of contractions.  start: ``(m, 2)`` points sampling
-    ``A_0``.  levels: how many iterates (the last has ``k**levels * m`` points, at most 200,000).
+    ``A_0``.  levels: how many iterates, at most 40 (the last has ``k**levels * m`` points, at most
+    200,000).  attractor_points: 1 to :data:`goldman_lib.ifs.MAX_POINTS`.
     The attractor is sampled by the deterministic algorithm from a fixed point with about
     ``attractor_points`` points; that sample is within ``s^L diam(A)`` of ``A`` (stored as
     ``attractor_error``).  Raises ValueError if a map is not a contraction or the sets grow too big.
@@ -473,14 +517,14 @@ def fractal_theorem(system, start, levels: int, *, attractor_points: int = 6000)
 
     s = _ifs.as_ifs(system)
     A0 = as_points(start, "start", dim=2)
-    levels = as_int(levels, "levels", minimum=0, maximum=40)
+    k = len(s)
+    levels = within_budget(levels, "levels", cost=lambda v: len(A0) * k ** v if v <= 40 else 10 ** 9,
+                           what="the last iterate W^levels(start)", limit=200_000)
+    attractor_points = as_int(attractor_points, "attractor_points", minimum=1, maximum=_ifs.MAX_POINTS)
     factors = s.contraction_factors()
     if np.any(factors >= 1.0):
         i = int(np.argmax(factors))
         raise ValueError(f"every map must be a contraction for the fractal theorem; map {i} has factor {factors[i]:.3g} >= 1")
-    k = len(s)
-    if len(A0) * k ** levels > 200_000:
-        raise ValueError(f"levels={levels} would make {len(A0) * k ** levels:,} points; at most 200,000")
     plain = _ifs.IFS(s.maps, s.probabilities, s.condensation, s.name)
     L = max(1, int(math.log(max(attractor_points, 2)) / math.log(k))) if k > 1 else 1
     A = _ifs.deterministic(plain, L)

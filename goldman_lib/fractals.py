@@ -52,10 +52,11 @@ import numpy as np
 from goldman_lib import turtle
 from goldman_lib.turtle import FORWARD, MOVE, RESIZE, TURN, MAX_COMMANDS
 from goldman_lib.angles import cos_sin_degrees
-from goldman_lib.validation import as_float, as_int, as_points
+from goldman_lib.validation import (MAX_ITEMS, as_float, as_int, as_points, as_tolerance, largest_within,
+                                    within_budget)
 
 __all__ = [
-    "RECURSE", "RecursiveTurtleProgram",
+    "RECURSE", "MAX_LEVEL", "RecursiveTurtleProgram",
     "koch_curve_program", "koch_snowflake_program", "sierpinski_gasket_program",
     "sierpinski_carpet_program", "polygon_gasket_program", "c_curve_program", "dragon_program",
     "quadratic_koch_program", "quadratic_koch",
@@ -70,6 +71,11 @@ __all__ = [
 
 #: The name of the recursive call in a program's ``body``.
 RECURSE = "RECURSE"
+#: The highest level any recursive turtle program is run, counted or measured at: a program
+#: whose command count does not grow (one RECURSE) still does work per level, and 200 levels
+#: is far past any visible difference.  Programs that grow are bounded much lower by the
+#: command budget :data:`goldman_lib.turtle.MAX_COMMANDS` (the Koch curve at level 8).
+MAX_LEVEL = 200
 _CODES = {name: code for code, name in enumerate(turtle.COMMANDS)}
 
 
@@ -104,7 +110,7 @@ def _as_commands(seq, name: str, *, allow_recurse: bool) -> tuple:
         if cmd not in _CODES:
             raise ValueError(f"{name}[{i}]: unknown command {cmd!r}; use FORWARD, MOVE, TURN, RESIZE "
                              f"or RECURSE")
-        value = as_float(value, f"{name}[{i}] value")
+        value = turtle._value(value, f"{name}[{i}] value")
         if cmd == "RESIZE" and value == 0:
             raise ValueError(f"{name}[{i}]: RESIZE 0 would shrink the turtle's step to nothing")
         out.append((cmd, value))
@@ -163,11 +169,12 @@ class RecursiveTurtleProgram:
     # -- sizes ---------------------------------------------------------------------------------
     def count(self, level: int) -> int:
         """How many turtle commands level ``level`` executes (an exact int; nothing is built).
+        level: 0 <= level <= :data:`MAX_LEVEL`.
 
         >>> koch_curve_program().count(8)
         174761
         """
-        level = as_int(level, "level", minimum=0)
+        level = _level(level)
         sizes = self._sizes(level)
         return sizes[-1]
 
@@ -188,11 +195,10 @@ class RecursiveTurtleProgram:
         >>> koch_curve_program().max_level()
         8
         """
-        max_commands = as_int(max_commands, "max_commands", minimum=1)
-        level = 0
-        while level < 200 and self._sizes(level + 1)[-1] <= max_commands:
-            level += 1
-        return level
+        max_commands = as_int(max_commands, "max_commands", minimum=1, maximum=MAX_ITEMS)
+        best = largest_within(lambda v: self._sizes(v)[-1] if v <= MAX_LEVEL else max_commands + 1,
+                              max_commands)
+        return max(best, 0)
 
     # -- expansion -----------------------------------------------------------------------------
     def expand(self, level: int, *, max_commands: int = MAX_COMMANDS) -> tuple[np.ndarray, np.ndarray]:
@@ -202,7 +208,9 @@ class RecursiveTurtleProgram:
         level: int >= 0.  Returns ``(codes, values)``, two ``(m,)`` arrays (int8 codes of
         FORWARD/MOVE/TURN/RESIZE, float values).  Each level is built from the one below by
         concatenating numpy arrays.  Raises ValueError if the drawing would execute more than
-        ``max_commands`` commands, naming the highest level that fits.
+        ``max_commands`` commands (default :data:`goldman_lib.turtle.MAX_COMMANDS`, at most
+        :data:`goldman_lib.validation.MAX_ITEMS`), naming the highest level that fits
+        (:meth:`max_level`; never above :data:`MAX_LEVEL`).
 
         >>> codes, values = koch_curve_program().expand(1)
         >>> codes.tolist()
@@ -213,13 +221,21 @@ class RecursiveTurtleProgram:
         ValueError: level 9 of the Koch curve would execute 699,049 turtle commands, more than the limit of 200,000; the highest level that fits is 8
         """
         level = as_int(level, "level", minimum=0)
-        max_commands = as_int(max_commands, "max_commands", minimum=1)
-        total = self._sizes(level)[-1]
-        if total > max_commands:
+        max_commands = as_int(max_commands, "max_commands", minimum=1, maximum=MAX_ITEMS)
+        highest = self.max_level(max_commands)
+        if level > highest:
             label = f"the {self.name}" if self.name else "this program"
-            raise ValueError(f"level {level} of {label} would execute {total:,} turtle commands, more than "
-                             f"the limit of {max_commands:,}; the highest level that fits is "
-                             f"{self.max_level(max_commands)}")
+            over = highest + 1
+            if over > MAX_LEVEL:
+                raise ValueError(f"level must be <= {MAX_LEVEL} (the highest level any recursive program is run "
+                                 f"at); got {level}")
+            total = self._sizes(over)[-1]
+            if level == over:
+                raise ValueError(f"level {level} of {label} would execute {total:,} turtle commands, more than "
+                                 f"the limit of {max_commands:,}; the highest level that fits is {highest}")
+            raise ValueError(f"level {level} of {label} would execute far more than {max_commands:,} turtle "
+                             f"commands, the limit (level {over} already executes {total:,}); the highest "
+                             f"level that fits is {highest}")
         pos = _flat(self.base, 1.0)
         neg = _flat(self.base, -1.0) if self._mirrored else pos
         body_pos = [(c, v) for c, v in self.body]
@@ -324,6 +340,38 @@ class RecursiveTurtleProgram:
 # ---------------------------------------------------------------------------------------------
 # The programs of §2.3
 # ---------------------------------------------------------------------------------------------
+
+def _level(level, name: str = "level") -> int:
+    """A level for counting and measuring: an int in [0, MAX_LEVEL]."""
+    level = as_int(level, name, minimum=0)
+    if level > MAX_LEVEL:
+        raise ValueError(f"{name} must be <= {MAX_LEVEL} (the highest level any recursive program is run, "
+                         f"counted or measured at); got {level}")
+    return level
+
+
+def _levels(program: RecursiveTurtleProgram, levels) -> list[int]:
+    """A list of levels, each drawable and all together at most MAX_ITEMS commands."""
+    if isinstance(levels, (str, bytes)):
+        raise TypeError(f"levels must be an int or a sequence of ints; got {type(levels).__name__}")
+    arr = np.atleast_1d(np.asarray(levels, dtype=object))
+    if arr.ndim != 1 or arr.size == 0:
+        raise ValueError(f"levels must be an int or a non-empty 1-D sequence of ints; got shape {arr.shape}")
+    if arr.size > MAX_LEVEL + 1:
+        raise ValueError(f"levels must hold at most {MAX_LEVEL + 1} entries; got {arr.size}")
+    highest = program.max_level()
+    out = []
+    for i, n in enumerate(arr):
+        n = as_int(n, f"levels[{i}]", minimum=0)
+        if n > highest:
+            program.expand(n)   # raises, naming the level that fits
+        out.append(n)
+    total = sum(program.count(n) for n in out)
+    if total > MAX_ITEMS:
+        raise ValueError(f"levels would draw {total:,} turtle commands in all, over the limit of {MAX_ITEMS:,}; "
+                         f"ask for fewer levels")
+    return out
+
 
 def _cmds(*pairs):
     return tuple((c, None if c == RECURSE else float(v)) for c, v in pairs)
@@ -491,8 +539,9 @@ def tree_program(angle: float = 30.0, scale: float = 0.6) -> RecursiveTurtleProg
     scale = as_float(scale, "scale")
     if not 0 < angle < 180:
         raise ValueError(f"angle must lie in (0, 180) degrees; got {angle}")
-    if not 0 < scale < 1:
-        raise ValueError(f"scale must lie in (0, 1); got {scale}")
+    if not 1 / turtle.MAX_VALUE <= scale < 1:
+        raise ValueError(f"scale must lie in [1e-06, 1) (its inverse is a RESIZE factor, at most "
+                         f"{turtle.MAX_VALUE:g}); got {scale}")
     body = _cmds(("FORWARD", 1), ("TURN", angle), ("RESIZE", scale), _R, ("RESIZE", 1 / scale),
                  ("TURN", -2 * angle), ("RESIZE", scale), _R, ("RESIZE", 1 / scale), ("TURN", angle),
                  ("MOVE", -1))
@@ -514,8 +563,9 @@ def bush_program(angle: float = 25.0, scale: float = 0.5) -> RecursiveTurtleProg
     scale = as_float(scale, "scale")
     if not 0 < angle < 180:
         raise ValueError(f"angle must lie in (0, 180) degrees; got {angle}")
-    if not 0 < scale < 1:
-        raise ValueError(f"scale must lie in (0, 1); got {scale}")
+    if not 1 / turtle.MAX_VALUE <= scale < 1:
+        raise ValueError(f"scale must lie in [1e-06, 1) (its inverse is a RESIZE factor, at most "
+                         f"{turtle.MAX_VALUE:g}); got {scale}")
     inv = 1 / scale
     body = _cmds(("FORWARD", 0.5), ("TURN", angle), ("RESIZE", scale), _R, ("RESIZE", inv),
                  ("TURN", -angle), ("FORWARD", 0.5), ("TURN", -angle), ("RESIZE", scale), _R,
@@ -541,6 +591,10 @@ PROGRAMS = {
 def koch_curve(level: int) -> list[np.ndarray]:
     """The strokes of the Koch curve at ``level`` from (0, 0) to (1, 0) (Goldman §2.3).
 
+    level: 0 <= level <= 8, the highest level whose drawing runs at most
+    :data:`goldman_lib.turtle.MAX_COMMANDS` (200,000) turtle commands; beyond it a ValueError
+    names the level that fits (:meth:`RecursiveTurtleProgram.max_level`).
+
     >>> koch_curve(1)[0][2].round(6)
     array([0.5     , 0.288675])
     """
@@ -549,6 +603,10 @@ def koch_curve(level: int) -> list[np.ndarray]:
 
 def koch_snowflake(level: int) -> list[np.ndarray]:
     """The strokes of the Koch snowflake at ``level`` (Goldman §2.3).
+
+    level: 0 <= level <= 7, the highest level whose drawing runs at most
+    :data:`goldman_lib.turtle.MAX_COMMANDS` (200,000) turtle commands; beyond it a ValueError
+    names the level that fits (:meth:`RecursiveTurtleProgram.max_level`).
 
     >>> turtle.closes(koch_snowflake(3)[0])
     True
@@ -559,6 +617,10 @@ def koch_snowflake(level: int) -> list[np.ndarray]:
 def sierpinski_gasket(level: int) -> list[np.ndarray]:
     """The 3**level triangles of the Sierpinski gasket at ``level`` (Goldman §2.3).
 
+    level: 0 <= level <= 8, the highest level whose drawing runs at most
+    :data:`goldman_lib.turtle.MAX_COMMANDS` (200,000) turtle commands; beyond it a ValueError
+    names the level that fits (:meth:`RecursiveTurtleProgram.max_level`).
+
     >>> len(sierpinski_gasket(4))
     81
     """
@@ -567,6 +629,10 @@ def sierpinski_gasket(level: int) -> list[np.ndarray]:
 
 def sierpinski_carpet(level: int) -> list[np.ndarray]:
     """The 8**level squares of the Sierpinski carpet at ``level`` (Goldman §2.3).
+
+    level: 0 <= level <= 4, the highest level whose drawing runs at most
+    :data:`goldman_lib.turtle.MAX_COMMANDS` (200,000) turtle commands; beyond it a ValueError
+    names the level that fits (:meth:`RecursiveTurtleProgram.max_level`).
 
     >>> len(sierpinski_carpet(1))
     8
@@ -577,6 +643,10 @@ def sierpinski_carpet(level: int) -> list[np.ndarray]:
 def polygon_gasket(level: int, sides: int = 5) -> list[np.ndarray]:
     """The sides**level polygons of the n-gon gasket at ``level`` (Goldman §2.3).
 
+    level: 0 <= level <= 5 for 5 or 6 sides (lower for more sides), the highest level whose drawing runs at most
+    :data:`goldman_lib.turtle.MAX_COMMANDS` (200,000) turtle commands; beyond it a ValueError
+    names the level that fits (:meth:`RecursiveTurtleProgram.max_level`).
+
     >>> len(polygon_gasket(2, 5))
     25
     """
@@ -585,6 +655,10 @@ def polygon_gasket(level: int, sides: int = 5) -> list[np.ndarray]:
 
 def c_curve(level: int) -> list[np.ndarray]:
     """The C-curve at ``level`` from (0, 0) to (1, 0): one stroke of 2**level segments (Goldman §2.3).
+
+    level: 0 <= level <= 15, the highest level whose drawing runs at most
+    :data:`goldman_lib.turtle.MAX_COMMANDS` (200,000) turtle commands; beyond it a ValueError
+    names the level that fits (:meth:`RecursiveTurtleProgram.max_level`).
 
     >>> len(c_curve(10)[0])
     1025
@@ -604,6 +678,10 @@ def quadratic_koch(level: int) -> list[np.ndarray]:
 def dragon(level: int) -> list[np.ndarray]:
     """The Heighway dragon at ``level`` from (0, 0) to (1, 0): 2**level segments (Goldman §2.3).
 
+    level: 0 <= level <= 15, the highest level whose drawing runs at most
+    :data:`goldman_lib.turtle.MAX_COMMANDS` (200,000) turtle commands; beyond it a ValueError
+    names the level that fits (:meth:`RecursiveTurtleProgram.max_level`).
+
     >>> len(dragon(10)[0])
     1025
     """
@@ -613,6 +691,10 @@ def dragon(level: int) -> list[np.ndarray]:
 def tree(level: int, angle: float = 30.0, scale: float = 0.6) -> list[np.ndarray]:
     """The fractal tree at ``level``, growing along +x from (0, 0) (Goldman §2.3).
 
+    level: 0 <= level <= 14, the highest level whose drawing runs at most
+    :data:`goldman_lib.turtle.MAX_COMMANDS` (200,000) turtle commands; beyond it a ValueError
+    names the level that fits (:meth:`RecursiveTurtleProgram.max_level`).
+
     >>> len(tree(4))
     16
     """
@@ -621,6 +703,10 @@ def tree(level: int, angle: float = 30.0, scale: float = 0.6) -> list[np.ndarray
 
 def bush(level: int, angle: float = 25.0, scale: float = 0.5) -> list[np.ndarray]:
     """The fractal bush at ``level``, growing along +x from (0, 0) (Goldman §2.3).
+
+    level: 0 <= level <= 9, the highest level whose drawing runs at most
+    :data:`goldman_lib.turtle.MAX_COMMANDS` (200,000) turtle commands; beyond it a ValueError
+    names the level that fits (:meth:`RecursiveTurtleProgram.max_level`).
 
     >>> len(bush(1))
     3
@@ -725,7 +811,7 @@ def loop_analysis(program, *, tol: float = 1e-9) -> Loop:
     >>> loop_analysis("FORWARD 1 TURN 360").kind
     'drift'
     """
-    tol = as_float(tol, "tol")
+    tol = as_tolerance(tol)
     T, S, d = state_change(program)
     c_, s_ = cos_sin_degrees(np.array([T]))
     rot = complex(c_[0], s_[0]) * S
@@ -756,16 +842,16 @@ def repeat_closes(program, k: int, *, tol: float = 1e-9) -> bool:
     (position and heading within ``tol``) -- the direct numerical check of the looping lemmas
     (Goldman §2.2).
 
-    program: text, a parsed Program or ``(command, value)`` pairs.  k >= 1.
+    program: text, a parsed Program or ``(command, value)`` pairs.  k >= 1, with ``k`` times the
+    program's commands at most :data:`goldman_lib.turtle.MAX_COMMANDS`.  tol > 0.
 
     >>> repeat_closes("FORWARD 1 TURN 144", 5), repeat_closes("FORWARD 1 TURN 144", 4)
     (True, False)
     """
-    k = as_int(k, "k", minimum=1)
-    tol = as_float(tol, "tol")
+    tol = as_tolerance(tol)
     codes, values = _flat_program(program)
-    if codes.size * k > MAX_COMMANDS:
-        raise ValueError(f"REPEAT {k} of {codes.size} commands is more than {MAX_COMMANDS:,} commands")
+    k = within_budget(k, "k", cost=lambda v: v * codes.size, what=f"REPEAT k of {codes.size} commands",
+                      unit="commands", limit=MAX_COMMANDS, minimum=1)
     t = turtle.trace_arrays(np.tile(codes, k), np.tile(values, k), np.zeros(2), np.array([1.0, 0.0]))
     return bool(np.hypot(*t.point) <= tol and np.hypot(*(t.direction - [1.0, 0.0])) <= tol)
 
@@ -844,7 +930,10 @@ def _net_scales(program: RecursiveTurtleProgram, level: int) -> list[float]:
     f = float(np.prod(plain)) if plain else 1.0
     nets = [float(np.prod([v for c, v in program.base if c == "RESIZE"])) if program.base else 1.0]
     for _ in range(level):
-        nets.append(f * nets[-1] ** calls)
+        try:
+            nets.append(f * nets[-1] ** calls)
+        except OverflowError:
+            nets.append(math.inf)
     return nets
 
 
@@ -904,15 +993,22 @@ def ink_length(program, level: int, *, step: float = 1.0) -> float:
     recursion ``L_n = (FORWARD length of the body) + sum_i s_i L_{n-1}`` without drawing anything
     (Goldman §3.2: the Koch curve's length ``(4/3)**n`` grows without bound).
 
-    program: a :class:`RecursiveTurtleProgram`; level >= 0; step: ``|w|`` at the start, > 0.
-    Counts overlapping strokes as often as they are drawn.
+    program: a :class:`RecursiveTurtleProgram`; 0 <= level <= :data:`MAX_LEVEL`; step: ``|w|`` at
+    the start, > 0.  Counts overlapping strokes as often as they are drawn.  Raises ValueError
+    naming ``level`` if the length overflows a float (a length that grows like ``(4/3)**n``
+    does beyond level 2,466, so the bound :data:`MAX_LEVEL` keeps it finite for the book's fractals).
 
     >>> round(ink_length(koch_curve_program(), 3), 12), round((4 / 3) ** 3, 12)
     (2.37037037037, 2.37037037037)
     """
     program = _as_program(program)
-    level = as_int(level, "level", minimum=0)
+    level = _level(level)
     step = as_float(step, "step", positive=True)
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _ink_length(program, level, step)
+
+
+def _ink_length(program, level: int, step: float) -> float:
     nets = _net_scales(program, level)
 
     def run(cmds, sub_len, sub_net):
@@ -930,7 +1026,11 @@ def ink_length(program, level: int, *, step: float = 1.0) -> float:
     L = run(program.base, 0.0, 1.0)
     for n in range(1, level + 1):
         L = run(program.body, L, nets[n - 1])
-    return step * run(program.start, L, nets[level])
+    L = step * run(program.start, L, nets[level])
+    if not math.isfinite(L):
+        raise ValueError(f"level {level} is too high for this program: its ink length overflows a float "
+                         f"(the strokes or RESIZE factors grow too fast); use a lower level")
+    return L
 
 
 def chord_angles(polyline, anchor: int, offsets) -> np.ndarray:
@@ -987,7 +1087,9 @@ def headings_at(program, t: float, levels) -> np.ndarray:
 
     For a smooth limit curve these headings would converge (to the tangent's direction); for
     the Koch curve they keep jumping by multiples of 60 degrees.  program: a
-    :class:`RecursiveTurtleProgram` that draws one stroke; t in [0, 1); levels: ints >= 0.
+    :class:`RecursiveTurtleProgram` that draws one stroke; t in [0, 1); levels: ints >= 0, each
+    at most the program's :meth:`~RecursiveTurtleProgram.max_level`, and all of them together
+    drawing at most :data:`goldman_lib.validation.MAX_ITEMS` turtle commands.
 
     >>> headings_at(koch_curve_program(), 0.4, [0, 1, 2, 3, 4]).round(6) + 0.0
     array([ 0., 60.,  0., 60.,  0.])
@@ -996,9 +1098,10 @@ def headings_at(program, t: float, levels) -> np.ndarray:
     t = as_float(t, "t")
     if not 0 <= t < 1:
         raise ValueError(f"t must lie in [0, 1); got {t}")
+    levels = _levels(program, levels)
     out = []
-    for n in np.atleast_1d(levels):
-        polys = program.polylines(as_int(n, "levels entry", minimum=0))
+    for n in levels:
+        polys = program.polylines(n)
         if len(polys) != 1:
             raise ValueError(f"headings_at needs a program that draws one stroke; level {int(n)} draws {len(polys)}")
         seg = np.diff(polys[0], axis=0)
@@ -1045,13 +1148,19 @@ def points_on(polylines, per_segment: int = 4) -> np.ndarray:
     each segment, so the Hausdorff distance between two drawings is measured between the
     curves, not only their corners (Goldman §3.4).
 
-    polylines: a ``(k, 2)`` array or a list of them.  per_segment >= 1.  Returns ``(m, 2)``.
+    polylines: a ``(k, 2)`` array or a non-empty list of them.  per_segment >= 1, with the result's
+    ``m`` points at most :data:`goldman_lib.validation.MAX_ITEMS`.  Returns ``(m, 2)``.
 
     >>> points_on([np.array([[0, 0], [1, 0]])], 4)[:, 0]
     array([0.  , 0.25, 0.5 , 0.75, 1.  ])
     """
     per_segment = as_int(per_segment, "per_segment", minimum=1)
     polys = turtle.as_polylines(polylines)
+    if not polys:
+        raise ValueError("polylines must hold at least one polyline; got an empty list")
+    segments, ends = sum(len(p) - 1 for p in polys), len(polys)
+    per_segment = within_budget(per_segment, "per_segment", cost=lambda v: v * segments + ends,
+                                what="the points", minimum=1)
     t = np.arange(per_segment) / per_segment
     parts = []
     for p in polys:
@@ -1079,7 +1188,9 @@ def base_case_distances(program, bases, levels, *, per_segment: int = 2) -> np.n
 
     program = _as_program(program)
     per_segment = as_int(per_segment, "per_segment", minimum=1)
-    levels = [as_int(n, "levels entry", minimum=0) for n in np.atleast_1d(levels)]
+    levels = _levels(program, levels)
+    if isinstance(bases, (str, bytes)) or not hasattr(bases, "__len__"):
+        raise TypeError(f"bases must be a list of base cases; got {type(bases).__name__}")
     others = [program.with_base(b) for b in bases]
     out = np.zeros((len(others), len(levels)))
     for j, n in enumerate(levels):

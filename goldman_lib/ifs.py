@@ -36,7 +36,7 @@ import math
 import numpy as np
 
 from . import affine
-from .validation import as_int, as_points, check_finite
+from .validation import MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, check_finite, within_budget
 
 __all__ = ["IFS", "deterministic", "chaos_game", "chaos_game_with_maps", "map_images", "set_map", "iterate_map", "UNIT_SQUARE", "MAX_POINTS", "STANDARD",
            "sierpinski", "koch", "barnsley_fern", "dragon", "c_curve", "tree", "sierpinski_carpet", "cantor",
@@ -88,11 +88,17 @@ class IFS:
     def _probabilities(self, probabilities) -> np.ndarray:
         k = len(self.maps)
         if probabilities is None:
-            area = np.abs(np.linalg.det(self.maps[:, :2, :2]))
+            with np.errstate(over="ignore", invalid="ignore"):
+                area = np.abs(np.linalg.det(self.maps[:, :2, :2]))
+            if not np.all(np.isfinite(area)):
+                i = int(np.flatnonzero(~np.isfinite(area))[0])
+                raise ValueError(f"maps[{i}] is too large: its area factor |det L| overflows a float (an IFS map "
+                                 f"should shrink the plane)")
             top = area.max()
             w = np.maximum(area, 0.01 * top) if top > 0 else np.ones(k)
         else:
-            w = np.array(probabilities, dtype=float).reshape(-1)
+            from .validation import as_float_array
+            w = as_float_array(probabilities, "probabilities").reshape(-1)
             if w.shape != (k,):
                 raise ValueError(f"probabilities must have one entry per map ({k}); got {w.size}")
             check_finite(w, "probabilities")
@@ -174,7 +180,11 @@ def deterministic(system, levels, start=None) -> np.ndarray:
     in base k, so the copies of a curve's pieces come in order along the curve).  With a condensation set ``C`` (§6.4) it is ``A_levels`` where ``A_0 = start`` (or
     ``C``) and ``A_{n+1} = C ∪ W(A_n)``, with ``C``'s copies again in blocks of ``len(C)``.
 
-    Raises ValueError if the result would exceed :data:`MAX_POINTS` points.
+    Raises ValueError naming ``levels`` if the result would exceed :data:`MAX_POINTS` points or
+    the points computed on the way (all levels) :data:`goldman_lib.validation.MAX_ITEMS` (so
+    ``levels <= 14`` for the Sierpinski gasket from one point, ``<= 22`` with two maps, and at most
+    :data:`goldman_lib.validation.MAX_ITERATIONS` for one map), and naming ``system`` if the points
+    overflow (the maps expand).
 
     >>> deterministic(IFS([affine.scaling(0.5), affine.scaling(0.5, center=[1, 0])]), 2, start=[[0, 0], [1, 0]])
     array([[0.  , 0.  ],
@@ -187,26 +197,45 @@ def deterministic(system, levels, start=None) -> np.ndarray:
            [1.  , 0.  ]])
     """
     s = as_ifs(system)
-    levels = as_int(levels, "levels", minimum=0)
     C = s.condensation
     if start is None:
         pts = C if C is not None else s.fixed_points()[:1]
     else:
         pts = as_points(start, "start", dim=2)
-    k = len(s)
-    if C is None:
-        total = len(pts) * k ** levels
-    else:
-        total = len(pts) * k ** levels + len(C) * sum(k ** j for j in range(levels))
-    if total > MAX_POINTS:
-        raise ValueError(f"levels={levels} would make {total:,} points; at most {MAX_POINTS:,} "
-                         f"(use fewer levels or a smaller start set)")
+    levels = _levels(levels, len(s), len(pts), 0 if C is None else len(C))
     L, t = s.linear_parts, s.translations
-    for _ in range(levels):
-        pts = _apply_all(pts, L, t)
-        if C is not None:
-            pts = np.concatenate([C, pts])
+    with np.errstate(over="ignore", invalid="ignore"):
+        for level in range(levels):
+            pts = _apply_all(pts, L, t)
+            if C is not None:
+                pts = np.concatenate([C, pts])
+            if not np.isfinite(pts).all():
+                raise ValueError(f"system: the points overflow at level {level + 1} (the maps expand the plane; an "
+                                 f"IFS's maps should be contractions)")
     return pts
+
+
+def _size(level: int, k: int, m: int, c: int) -> int:
+    """Points of level ``level`` of the deterministic algorithm: ``m k^level`` plus the copies of
+    a condensation set of ``c`` points."""
+    return m * k ** level + c * sum(k ** j for j in range(level)) if k > 1 else m + c * level
+
+
+def _work(level: int, k: int, m: int, c: int) -> int:
+    """Points computed by all of levels 1..level, ``sum(_size(j) for j in 1..level)``, in closed form."""
+    if k == 1:
+        return m * level + c * level * (level + 1) // 2
+    geo = (k ** (level + 1) - k) // (k - 1)          # k + k^2 + ... + k^level
+    return m * geo + c * (geo - level) // (k - 1)     # sum_j (k^j - 1)/(k - 1)
+
+
+def _levels(levels, k: int, m: int, c: int) -> int:
+    """``levels`` checked against the points of the result (MAX_POINTS) and of all the levels on
+    the way (MAX_ITEMS), before anything is computed."""
+    levels = within_budget(levels, "levels", cost=lambda v: _size(v, k, m, c), what="the deterministic algorithm",
+                           limit=MAX_POINTS)
+    return within_budget(levels, "levels", cost=lambda v: _work(v, k, m, c) if v <= MAX_ITERATIONS else MAX_ITEMS + 1,
+                         what="the deterministic algorithm (all levels together)", unit="points computed")
 
 
 def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096,
@@ -222,7 +251,11 @@ def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096,
     ``C`` lies in the attractor ``A = C ∪ W(A)``, every point still lies on it.
 
     system: an :class:`IFS`.  n: number of points (1 <= n <= MAX_POINTS).  rng: a
-    ``numpy.random.Generator``, an int seed or None.  Returns ``(n, 2)``.
+    ``numpy.random.Generator``, an int seed or None.  burn_in: steps discarded, with
+    ``(burn_in + ceil(n / chains)) * chains`` map choices drawn at most
+    :data:`goldman_lib.validation.MAX_ITEMS` (so ``burn_in <= 1,200`` or so at the default
+    ``chains`` and ``n`` = 5,000,000, and up to about 9,999,980 for ``n <= chains = 1``... at
+    most :data:`goldman_lib.validation.MAX_ITERATIONS` steps in all).  chains >= 1.  Returns ``(n, 2)``.
     Raises ValueError if the points escape to infinity (the maps are not contractive).
 
     >>> chaos_game(sierpinski(), 4, rng=0).shape
@@ -248,11 +281,14 @@ def chaos_game_with_maps(system, n, rng=None, *, burn_in: int = 20, chains: int 
     """
     s = as_ifs(system)
     n = as_int(n, "n", minimum=1, maximum=MAX_POINTS)
-    burn_in = as_int(burn_in, "burn_in", minimum=0)
     chains = min(as_int(chains, "chains", minimum=1), n)
+    steps = -(-n // chains)
+    burn_in = within_budget(burn_in, "burn_in", cost=lambda v: v + steps, what="the chaos game",
+                            unit="steps", limit=MAX_ITERATIONS)
+    burn_in = within_budget(burn_in, "burn_in", cost=lambda v: (v + steps) * chains,
+                            what=f"the chaos game with {chains:,} chains", unit="map choices")
     gen = _rng(rng)
     k = len(s)
-    steps = -(-n // chains)
     try:
         start = affine.fixed_point(s.maps[0])
     except ValueError:
@@ -323,8 +359,10 @@ def iterate_map(M, shape, n) -> np.ndarray:
     """Iterate one affine transformation on a start shape (Goldman §6.1): ``shape, M(shape),
     M(M(shape)), ...``, ``n + 1`` shapes in all.
 
-    M: 3x3 affine matrix.  shape: ``(m, 2)`` points.  n: int >= 0.  Returns ``(n + 1, m, 2)``.
-    For a contraction the shapes shrink towards the map's fixed point.
+    M: 3x3 affine matrix.  shape: ``(m, 2)`` points.  n: 0 <= n <= 100,000, with the ``(n + 1) m``
+    points of the result at most :data:`goldman_lib.validation.MAX_ITEMS`.  Returns
+    ``(n + 1, m, 2)``.  For a contraction the shapes shrink towards the map's fixed point; a map
+    that expands so much that the points overflow is a ValueError naming ``M``.
 
     >>> iterate_map(affine.scaling(0.5, center=[2, 0]), [[0, 0]], 3)[:, 0].tolist()
     [[0.0, 0.0], [1.0, 0.0], [1.5, 0.0], [1.75, 0.0]]
@@ -334,11 +372,17 @@ def iterate_map(M, shape, n) -> np.ndarray:
         raise ValueError(f"M must be one 3x3 matrix; got shape {M.shape}")
     P = as_points(shape, "shape", dim=2)
     n = as_int(n, "n", minimum=0, maximum=100_000)
+    n = within_budget(n, "n", cost=lambda v: (v + 1) * len(P), what="the iterated shapes")
     out = np.empty((n + 1,) + P.shape)
     out[0] = P
     L, t = M[:2, :2], M[2, :2]
-    for j in range(n):
-        out[j + 1] = out[j] @ L + t
+    with np.errstate(over="ignore", invalid="ignore"):
+        for j in range(n):
+            out[j + 1] = out[j] @ L + t
+    if not np.isfinite(out).all():
+        j = int(np.flatnonzero(~np.isfinite(out).reshape(n + 1, -1).all(axis=1))[0])
+        raise ValueError(f"M expands the shape so much that its points overflow after {j} iterations; use fewer "
+                         f"iterations or a map that shrinks")
     return out
 
 
@@ -429,10 +473,16 @@ def c_curve() -> IFS:
 def tree(angle: float = 30.0, ratio: float = 0.6) -> IFS:
     """A fractal tree (Goldman §6.4): a trunk from (0, 0) to (0, 1) as condensation set and two
     maps that shrink by ``ratio`` and turn by ``±angle`` degrees onto the top of the trunk.
+    angle: finite degrees; ratio in (0, 1) (the maps must shrink).  Raises ValueError naming the
+    parameter.
 
     >>> t = tree(); t.condensation.tolist(), len(t)
     ([[0.0, 0.0], [0.0, 1.0]], 2)
     """
+    angle = as_float(angle, "angle")
+    ratio = as_float(ratio, "ratio")
+    if not 0 < ratio < 1:
+        raise ValueError(f"ratio must lie in (0, 1) (the tree's maps must shrink); got {ratio}")
     trunk = np.array([[0.0, 0.0], [0.0, 1.0]])
     return IFS([affine.similarity(ratio, angle, (0.0, 1.0)), affine.similarity(ratio, -angle, (0.0, 1.0))],
                condensation=trunk, name="fractal tree")

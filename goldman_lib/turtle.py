@@ -45,9 +45,9 @@ from typing import NamedTuple
 import numpy as np
 
 from goldman_lib.angles import cos_sin_degrees
-from goldman_lib.validation import as_float, as_int, as_points
+from goldman_lib.validation import MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, within_budget
 
-__all__ = ["FORWARD", "MOVE", "TURN", "RESIZE", "COMMANDS", "MAX_COMMANDS", "MAX_DEPTH",
+__all__ = ["FORWARD", "MOVE", "TURN", "RESIZE", "COMMANDS", "MAX_COMMANDS", "MAX_DEPTH", "MAX_VALUE", "MAX_REPEAT",
            "TurtleSyntaxError", "Command", "Repeat", "Program", "Trace", "Turtle",
            "parse", "expand", "trace", "run", "final_state", "total_turning", "closes",
            "closing_gap", "length", "perimeter", "turning_angles",
@@ -63,6 +63,43 @@ _CODE = {name: code for code, name in enumerate(COMMANDS)}
 MAX_COMMANDS = 200_000
 #: The deepest nesting of REPEAT blocks the parser accepts.
 MAX_DEPTH = 64
+#: The largest magnitude of a FORWARD, MOVE, TURN or RESIZE number (in a program, a :class:`Turtle`
+#: command or a program built here): a million steps or degrees is far beyond any drawing, and
+#: products and sums of such numbers over :data:`MAX_COMMANDS` commands stay finite.
+MAX_VALUE = 1e6
+#: The largest REPEAT count (:data:`goldman_lib.validation.MAX_ITERATIONS`); with at most
+#: :data:`MAX_DEPTH` nested REPEATs the command count of any program stays a modest Python int.
+MAX_REPEAT = MAX_ITERATIONS
+#: How many characters of an offending token a message quotes.
+_QUOTE = 60
+
+
+def _quote(text: str) -> str:
+    """``repr`` of a token, at most about 60 characters of it (a 1 MB word is not echoed back)."""
+    if len(text) <= _QUOTE:
+        return repr(text)
+    return repr(text[:_QUOTE]) + f"... ({len(text):,} characters)"
+
+
+def _short(text: str) -> str:
+    """A token as written, at most about 60 characters of it."""
+    return text if len(text) <= _QUOTE else text[:_QUOTE] + "..."
+
+
+def _big(n: int) -> str:
+    """An exact count for a message: with thousands separators, or as a power of ten when huge."""
+    if n < 10 ** 18:
+        return f"{n:,}"
+    return f"about 10^{len(str(n)) - 1}"
+
+
+def _value(value: float, name: str) -> float:
+    """A command's number: finite and at most :data:`MAX_VALUE` in magnitude (ValueError naming it)."""
+    value = as_float(value, name)
+    if abs(value) > MAX_VALUE:
+        raise ValueError(f"{name} must be at most {MAX_VALUE:g} in magnitude (a turtle step, angle or "
+                         f"factor beyond that overflows a drawing); got {value:g}")
+    return value
 
 
 # ---------------------------------------------------------------------------------------------
@@ -145,8 +182,8 @@ def _describe(kind: str, text: str) -> str:
     if kind == "end":
         return "end of program"
     if kind == "number":
-        return f"the number {text}"
-    return f"{text!r}"
+        return f"the number {_short(text)}"
+    return _quote(text)
 
 
 def _tokens(text: str) -> list[tuple[str, str, int]]:
@@ -240,7 +277,10 @@ def parse(program: str) -> Program:
                 fail(f"expected a number after {word}, found {_describe(nkind, ntok)}", noff)
             value = float(ntok)
             if not math.isfinite(value):
-                fail(f"the number after {word} must be finite; {ntok} is too large", noff)
+                fail(f"the number after {word} must be finite; {_short(ntok)} is too large", noff)
+            if abs(value) > MAX_VALUE:
+                fail(f"the number after {word} must be at most {MAX_VALUE:g} in magnitude (over the limit); "
+                     f"found {_short(ntok)}", noff)
             items.append(Command(word, value, off))
             i += 2
             continue
@@ -250,19 +290,23 @@ def parse(program: str) -> Program:
                 fail(f"expected a repeat count (a whole number) after REPEAT, found {_describe(nkind, ntok)}", noff)
             value = float(ntok)
             if not (math.isfinite(value) and value >= 0 and value == int(value)):
-                fail(f"the REPEAT count must be a non-negative whole number, found {ntok}", noff)
+                fail(f"the REPEAT count must be a non-negative whole number, found {_short(ntok)}", noff)
+            if value > MAX_REPEAT:
+                fail(f"the REPEAT count must be at most {MAX_REPEAT:,} (over the limit of the language), "
+                     f"found {_short(ntok)}", noff)
             bkind, btok, boff = toks[i + 2]
             if bkind != "open":
-                fail(f"expected '[' after REPEAT {ntok}, found {_describe(bkind, btok)}", boff)
+                fail(f"expected '[' after REPEAT {int(value)}, found {_describe(bkind, btok)}", boff)
             if len(stack) >= MAX_DEPTH:
                 fail(f"REPEAT blocks are nested more than {MAX_DEPTH} deep", off)
             stack.append((items, int(value), off))
             items = []
             i += 3
             continue
-        close = difflib.get_close_matches(word, list(COMMANDS) + ["REPEAT"], n=1, cutoff=0.6)
+        close = (difflib.get_close_matches(word, list(COMMANDS) + ["REPEAT"], n=1, cutoff=0.6)
+                 if len(word) <= 20 else [])
         hint = f" (did you mean {close[0]}?)" if close else ""
-        fail(f"expected a command (FORWARD, MOVE, TURN, RESIZE or REPEAT), found {tok!r}{hint}", off)
+        fail(f"expected a command (FORWARD, MOVE, TURN, RESIZE or REPEAT), found {_quote(tok)}{hint}", off)
     assert i == n - 1
     return Program(tuple(items), text)
 
@@ -304,14 +348,16 @@ def expand(program, *, max_commands: int = MAX_COMMANDS) -> tuple[np.ndarray, np
     ``(m,)`` arrays, ``codes`` (int8) holding :data:`FORWARD`, :data:`MOVE`, :data:`TURN` or
     :data:`RESIZE`, ``values`` (float) their numbers.  REPEAT bodies are tiled with numpy.
     Raises TurtleSyntaxError if the program does not parse, or if it would execute more than
-    ``max_commands`` commands (naming the REPEAT responsible).
+    ``max_commands`` commands (naming the REPEAT responsible).  max_commands: at most
+    :data:`goldman_lib.validation.MAX_ITEMS` (10,000,000: the flat arrays and the points they draw
+    would take gigabytes beyond that).
 
     >>> codes, values = expand("REPEAT 2 [FORWARD 1 TURN 90]")
     >>> codes.tolist(), values.tolist()
     ([0, 2, 0, 2], [1.0, 90.0, 1.0, 90.0])
     """
     prog = _as_program(program)
-    max_commands = as_int(max_commands, "max_commands", minimum=0)
+    max_commands = as_int(max_commands, "max_commands", minimum=0, maximum=MAX_ITEMS)
     total = prog.count()
     if total > max_commands:
         big = _biggest_repeat(prog.items)
@@ -319,10 +365,10 @@ def expand(program, *, max_commands: int = MAX_COMMANDS) -> tuple[np.ndarray, np
         line, col = 1, 1
         if big is not None:
             line, col = prog.position(big[1].offset)
-            what = (f" (this REPEAT runs its body of {_count(big[1].body):,} commands "
+            what = (f" (this REPEAT runs its body of {_big(_count(big[1].body))} commands "
                     f"{big[1].count:,} times)")
         raise TurtleSyntaxError(
-            f"this program would execute {total:,} commands, more than the limit of {max_commands:,}"
+            f"this program would execute {_big(total)} commands, more than the limit of {max_commands:,}"
             f"{what}; use fewer repetitions so the drawing stays quick", line, col)
     return _expand(prog.items)
 
@@ -423,7 +469,7 @@ def trace_arrays(codes: np.ndarray, values: np.ndarray, p0: np.ndarray, w0: np.n
         pts[1:] += p0
         cf, sf = cos_sin_degrees(np.array([total_turn]))
         w_end = total_scale * np.array([cf[0] * w0[0] - sf[0] * w0[1], sf[0] * w0[0] + cf[0] * w0[1]])
-    if not (np.isfinite(pts).all() and np.isfinite(w_end).all()):
+    if not (np.isfinite(pts).all() and np.isfinite(w_end).all() and math.isfinite(total_turn)):
         raise ValueError("the turtle's path overflowed (a coordinate became infinite or undefined): "
                          "use smaller steps or RESIZE factors")
     draws = codes[moving] == FORWARD
@@ -498,7 +544,11 @@ def total_turning(program) -> float:
     720.0
     """
     codes, values = expand(program)
-    return float(values[codes == TURN].sum())
+    with np.errstate(over="ignore"):
+        total = float(values[codes == TURN].sum())
+    if not math.isfinite(total):
+        raise ValueError("program: the sum of its TURN angles overflows; use smaller angles")
+    return total
 
 
 # ---------------------------------------------------------------------------------------------
@@ -612,22 +662,30 @@ def format_number(x: float) -> str:
     >>> format_number(72.0), format_number(360 / 7), format_number(-0.5)
     ('72', '51.42857142857143', '-0.5')
     """
-    x = float(x)
+    x = as_float(x, "x")
     if x == int(x) and abs(x) < 1e15:
         return str(int(x))
     return repr(x)
 
 
+def _sides(n, name: str, *, minimum: int, per: int, extra: int = 0) -> int:
+    """A count of repetitions whose program executes ``per * n + extra`` commands, bounded so that
+    it runs: at most :data:`MAX_COMMANDS` commands."""
+    return within_budget(n, name, cost=lambda v: per * v + extra, what="the program", unit="commands",
+                         limit=MAX_COMMANDS, minimum=minimum)
+
+
 def polygon(n: int, step: float = 1.0) -> str:
     """The program of a regular n-gon: ``REPEAT n [FORWARD step TURN 360/n]`` (Goldman §1.3).
 
-    n: number of sides, >= 3.  step: side length (in units of ``|w|``), > 0.
+    n: number of sides, 3 <= n <= 100,000 (the program runs ``2n`` commands, at most
+    :data:`MAX_COMMANDS`).  step: side length (in units of ``|w|``), 0 < step <= :data:`MAX_VALUE`.
 
     >>> polygon(6, 2)
     'REPEAT 6 [FORWARD 2 TURN 60]'
     """
-    n = as_int(n, "n", minimum=3)
-    step = as_float(step, "step", positive=True)
+    n = _sides(n, "n", minimum=3, per=2)
+    step = _value(as_float(step, "step", positive=True), "step")
     return f"REPEAT {n} [FORWARD {format_number(step)} TURN {format_number(360 / n)}]"
 
 
@@ -635,15 +693,16 @@ def star(n: int, k: int, step: float = 1.0) -> str:
     """The program of the star polygon {n/k}: ``REPEAT n [FORWARD step TURN 360k/n]`` (Goldman §1.3).
 
     The turtle visits every k-th of n points evenly spaced on a circle; it closes after n steps
-    having turned ``360k`` degrees.  n >= 2 points; 1 <= k < n (k = 1 is the regular polygon;
-    if gcd(n, k) = g > 1 the path retraces the {n/g / k/g} polygon g times).
+    having turned ``360k`` degrees.  2 <= n <= 100,000 points (``2n`` commands, at most
+    :data:`MAX_COMMANDS`); 1 <= k < n (k = 1 is the regular polygon; if gcd(n, k) = g > 1 the
+    path retraces the {n/g / k/g} polygon g times); 0 < step <= :data:`MAX_VALUE`.
 
     >>> star(5, 2)
     'REPEAT 5 [FORWARD 1 TURN 144]'
     """
-    n = as_int(n, "n", minimum=2)
+    n = _sides(n, "n", minimum=2, per=2)
     k = as_int(k, "k", minimum=1, maximum=n - 1)
-    step = as_float(step, "step", positive=True)
+    step = _value(as_float(step, "step", positive=True), "step")
     return f"REPEAT {n} [FORWARD {format_number(step)} TURN {format_number(360 * k / n)}]"
 
 
@@ -654,25 +713,29 @@ def spiral(n: int, angle: float = 90.0, step: float = 1.0, *, factor: float | No
     With ``factor`` (the default, 1.1): ``REPEAT n [FORWARD step TURN angle RESIZE factor]``, a
     spiral whose steps grow geometrically.  With ``increment``: the steps grow arithmetically,
     ``step, step + increment, ...`` (written out command by command).  Give at most one of the
-    two.  Raises ValueError/TypeError naming the parameter.
+    two.  n: 0 <= n <= 66,666 (``3n`` commands, at most :data:`MAX_COMMANDS`); angle, step,
+    factor: at most :data:`MAX_VALUE` in magnitude, and so must the last step
+    ``step + (n - 1) increment`` be.  Raises ValueError/TypeError naming the parameter.
 
     >>> spiral(3, 90, 1, factor=2)
     'REPEAT 3 [FORWARD 1 TURN 90 RESIZE 2]'
     >>> spiral(3, 90, 1, increment=1)
     'FORWARD 1 TURN 90\\nFORWARD 2 TURN 90\\nFORWARD 3 TURN 90'
     """
-    n = as_int(n, "n", minimum=0)
-    angle = as_float(angle, "angle")
-    step = as_float(step, "step")
+    n = _sides(n, "n", minimum=0, per=3)
+    angle = _value(angle, "angle")
+    step = _value(step, "step")
     if factor is not None and increment is not None:
         raise ValueError("give factor or increment, not both")
     a = format_number(angle)
     if increment is not None:
-        increment = as_float(increment, "increment")
-        if n > MAX_COMMANDS // 2:
-            raise ValueError(f"n must be <= {MAX_COMMANDS // 2} for an arithmetic spiral; got {n}")
+        increment = _value(increment, "increment")
+        last = step + (n - 1) * increment if n else step
+        if abs(last) > MAX_VALUE:
+            raise ValueError(f"increment is too large for n = {n}: the last step step + (n - 1)*increment = "
+                             f"{last:g} is over {MAX_VALUE:g} in magnitude")
         return "\n".join(f"FORWARD {format_number(step + i * increment)} TURN {a}" for i in range(n))
-    factor = 1.1 if factor is None else as_float(factor, "factor", nonzero=True)
+    factor = 1.1 if factor is None else _value(as_float(factor, "factor", nonzero=True), "factor")
     return f"REPEAT {n} [FORWARD {format_number(step)} TURN {a} RESIZE {format_number(factor)}]"
 
 
@@ -682,13 +745,18 @@ def circle(radius: float = 1.0, n: int = 36) -> str:
 
     The turtle starts on the circle heading along the tangent (the centre is on its left, at
     ``P + radius * w`` rotated by 90 degrees for ``|w| = 1``), walks ``n`` chords of length
-    ``2 radius sin(180/n)`` and ends in its initial state.  radius > 0; n >= 3.
+    ``2 radius sin(180/n)`` and ends in its initial state.  0 < radius <= :data:`MAX_VALUE` / 2
+    (a chord is at most a diameter, and the language's numbers are at most :data:`MAX_VALUE`);
+    3 <= n <= 99,999 (``2n + 2`` commands, at most :data:`MAX_COMMANDS`).
 
     >>> circle(1, 4)
     'TURN 45 REPEAT 4 [FORWARD 1.414213562373095 TURN 90] TURN -45'
     """
     radius = as_float(radius, "radius", positive=True)
-    n = as_int(n, "n", minimum=3)
+    if radius > MAX_VALUE / 2:
+        raise ValueError(f"radius must be at most {MAX_VALUE / 2:g} (its chords, up to a diameter, must be at most "
+                         f"{MAX_VALUE:g}, the largest number of the turtle language); got {radius:g}")
+    n = _sides(n, "n", minimum=3, per=2, extra=2)
     chord = 2 * radius * math.sin(math.pi / n)
     half = format_number(180 / n)
     return (f"TURN {half} REPEAT {n} [FORWARD {format_number(chord)} TURN {format_number(360 / n)}] "
@@ -699,13 +767,14 @@ def rosette(n: int = 12, sides: int = 6, step: float = 1.0) -> str:
     """The program of a rosette: a regular polygon drawn ``n`` times, turning 360/n between
     copies (Goldman §1.3).
 
-    n >= 1 copies; sides >= 3; step > 0.
+    n >= 1 copies; sides >= 3; step > 0; the program's ``n (2 sides + 1)`` commands at most
+    :data:`MAX_COMMANDS` (so sides <= 99,999 and n <= 200,000 / (2 sides + 1)).
 
     >>> rosette(4, 4)
     'REPEAT 4 [REPEAT 4 [FORWARD 1 TURN 90] TURN 90]'
     """
-    n = as_int(n, "n", minimum=1)
-    sides = as_int(sides, "sides", minimum=3)
+    sides = _sides(sides, "sides", minimum=3, per=2, extra=1)
+    n = _sides(n, "n", minimum=1, per=2 * sides + 1)
     return f"REPEAT {n} [{polygon(sides, step)} TURN {format_number(360 / n)}]"
 
 
@@ -736,7 +805,7 @@ class Turtle:
         self._turning = 0.0
 
     def _do(self, code: int, value, name: str):
-        value = as_float(value, name)
+        value = _value(value, name)
         t = trace_arrays(np.array([code], dtype=np.int8), np.array([value]), self.point, self.direction)
         self.point, self.direction = t.point, t.direction
         self._turning += t.total_turning
