@@ -17,6 +17,8 @@ LINES = 2 * math.sqrt(3)
 # 4. the xy-shadow is an L: 3x2 + 1x2 = 8; the plane z = x + y has unit normal (1, 1, -1)/sqrt 3, and the
 #    shadow's area is the area times |n_z| = 1/sqrt 3, so area = 8 sqrt 3 (|N| = 16 sqrt 3)
 AREA = 8 * math.sqrt(3)
+# 4b. edges from P0 = (1,0,1): (2,1,0), (0,4,1), (1,1,4); det = 2(16 - 1) - 1(0 - 1) + 0 = 31; volume 31/6
+VOLUME = 31 / 6
 # 5. (1, 2, 3): 1 + 2 + 3 = 6; 1 - 2 + 6 = 5; 2 + 2 - 3 = 1; det = 7
 POINT = [1, 2, 3]
 # 6. the ray y = 3 from (3, 3) to the right crosses (5,1)-(5,5) going up and (6,0)-(6,6) going up: +1 +1
@@ -29,6 +31,7 @@ CHECKERS = [
     (ch11.check_point_plane_distance, PLANE),
     (ch11.check_line_line_distance, LINES),
     (ch11.check_newell_area, AREA),
+    (ch11.check_tetrahedron_volume, VOLUME),
     (ch11.check_three_planes, POINT),
     (ch11.check_winding_number, WINDING),
     (ch11.check_slerp, SLERP),
@@ -43,6 +46,7 @@ def test_problem_constants_are_what_the_hand_answers_assume():
     assert [x.tolist() for x in ch11.LINE1] == [[1, 0, 0], [1, 1, 0]]
     assert [x.tolist() for x in ch11.LINE2] == [[0, 2, 3], [1, 0, 1]]
     assert ch11.POLYGON_3D.tolist() == [[0, 0, 0], [3, 0, 3], [3, 2, 5], [1, 2, 3], [1, 4, 5], [0, 4, 4]]
+    assert ch11.TETRAHEDRON.tolist() == [[1, 0, 1], [3, 1, 1], [1, 4, 2], [2, 1, 5]]
     assert [(N.tolist(), c) for N, c in ch11.PLANES] == [([1, 1, 1], 6), ([1, -1, 2], 5), ([2, 1, -1], 1)]
     assert ch11.WINDING_POLYGON.tolist() == [[0, 0], [6, 0], [6, 6], [1, 6], [1, 1], [5, 1], [5, 5], [0, 5]]
     assert ch11.WINDING_QUERY.tolist() == [3, 3]
@@ -104,6 +108,14 @@ def test_newell_area_slips():
     assert "twice the area" in ch11.check_newell_area(16 * math.sqrt(3)).message
     assert "shadow on the xy-plane" in ch11.check_newell_area(8).message
     assert "added the three components" in ch11.check_newell_area(24).message   # (16 + 16 + 16) / 2
+
+
+def test_tetrahedron_volume_slips():
+    assert "parallelepiped" in ch11.check_tetrahedron_volume(31).message
+    assert "halved" in ch11.check_tetrahedron_volume(15.5).message
+    assert "pyramid" in ch11.check_tetrahedron_volume(31 / 3).message
+    assert "not negative" in ch11.check_tetrahedron_volume(-31 / 6).message
+    assert "off by 1" in ch11.check_tetrahedron_volume(31 / 6 + 1).message
 
 
 def test_three_planes_slips():

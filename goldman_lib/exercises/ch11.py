@@ -19,9 +19,9 @@ from goldman_lib import vectors
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_number, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "TRIANGLE", "PLANE_POINT", "PLANE_NORMAL", "QUERY_POINT", "LINE1", "LINE2",
-           "POLYGON_3D", "PLANES", "WINDING_POLYGON", "WINDING_QUERY", "SLERP_V0", "SLERP_V1", "SLERP_T",
+           "POLYGON_3D", "TETRAHEDRON", "PLANES", "WINDING_POLYGON", "WINDING_QUERY", "SLERP_V0", "SLERP_V1", "SLERP_T",
            "check_law_of_cosines", "check_point_plane_distance", "check_line_line_distance", "check_newell_area",
-           "check_three_planes", "check_winding_number", "check_slerp"]
+           "check_tetrahedron_volume", "check_three_planes", "check_winding_number", "check_slerp"]
 
 #: Exercise 1: sides a, b and the angle γ between them (degrees).
 TRIANGLE = (5.0, 8.0, 60.0)
@@ -35,13 +35,15 @@ LINE2 = (np.array([0.0, 2.0, 3.0]), np.array([1.0, 0.0, 1.0]))
 #: Exercise 4: an L-shaped hexagon in the plane z = x + y.
 POLYGON_3D = np.array([[0.0, 0.0, 0.0], [3.0, 0.0, 3.0], [3.0, 2.0, 5.0], [1.0, 2.0, 3.0], [1.0, 4.0, 5.0],
                        [0.0, 4.0, 4.0]])
-#: Exercise 5: three planes N·X = c as (N, c).
+#: Exercise 5: the vertices P0, P1, P2, P3 of a tetrahedron.
+TETRAHEDRON = np.array([[1.0, 0.0, 1.0], [3.0, 1.0, 1.0], [1.0, 4.0, 2.0], [2.0, 1.0, 5.0]])
+#: Exercise 6: three planes N·X = c as (N, c).
 PLANES = ((np.array([1.0, 1.0, 1.0]), 6.0), (np.array([1.0, -1.0, 2.0]), 5.0), (np.array([2.0, 1.0, -1.0]), 1.0))
-#: Exercise 6: a self-intersecting octagon that winds twice around its middle, and the query point.
+#: Exercise 7: a self-intersecting octagon that winds twice around its middle, and the query point.
 WINDING_POLYGON = np.array([[0.0, 0.0], [6.0, 0.0], [6.0, 6.0], [1.0, 6.0], [1.0, 1.0], [5.0, 1.0], [5.0, 5.0],
                             [0.0, 5.0]])
 WINDING_QUERY = np.array([3.0, 3.0])
-#: Exercise 7: slerp between two unit vectors 90° apart, at t = 1/3.
+#: Exercise 8: slerp between two unit vectors 90° apart, at t = 1/3.
 SLERP_V0 = np.array([1.0, 0.0, 0.0])
 SLERP_V1 = np.array([0.0, 1.0, 1.0]) / np.sqrt(2)
 SLERP_T = 1 / 3
@@ -81,6 +83,9 @@ PROBLEMS = {
     "check_newell_area": (
         f"The hexagon with vertices {fmt_points(POLYGON_3D)} (in this order) lies in the plane z = x + y. "
         f"Give its area by Newell's formula (Goldman §11.4), to 3 decimals or better."),
+    "check_tetrahedron_volume": (
+        f"Give the volume of the tetrahedron with vertices {fmt_points(TETRAHEDRON)} (Goldman §11.4), to 3 decimals "
+        f"or better."),
     "check_three_planes": (
         "Give the point where the three planes " + ", ".join(_plane_text(N, c) for N, c in PLANES)
         + " meet, as [x, y, z] (Goldman §11.5)."),
@@ -203,6 +208,36 @@ def check_newell_area(answer) -> Result:
                  f"(N_x = Σ (y_i z_(i+1) - z_i y_(i+1)), and so on), including the last edge back to the first vertex.")
 
 
+def check_tetrahedron_volume(answer) -> Result:
+    """Check the volume of ``TETRAHEDRON`` (Goldman §11.4).  Recognises the parallelepiped's volume
+    (the 1/6 left out), the factor 1/2 of a triangle's area, the factor 1/3 of a pyramid over the
+    parallelogram, and a negative (signed) volume."""
+    what = "the volume"
+    value, problem = read_number(answer, what)
+    if problem is not None:
+        return problem
+    P0, P1, P2, P3 = TETRAHEDRON
+    expected = vg.tetrahedron_volume(P0, P1, P2, P3)
+    box = vg.parallelepiped_volume(P1 - P0, P2 - P0, P3 - P0)
+    if _is(value, expected):
+        return correct(f"{what} is |det(P1 - P0, P2 - P0, P3 - P0)| / 6 = {fmt(expected)}.")
+    if _is(value, -expected):
+        return wrong("a volume is not negative: det(P1 - P0, P2 - P0, P3 - P0) is a signed volume (its sign says "
+                     "whether the edges are right- or left-handed); take its absolute value.")
+    if _is(abs(value), box):
+        return wrong("that is the volume of the parallelepiped on the three edges from P0; the tetrahedron fills "
+                     "one sixth of it.")
+    if _is(abs(value), box / 2):
+        return wrong("you halved the determinant as for a triangle's area; in 3D the tetrahedron is one sixth of "
+                     "the parallelepiped (a third of a prism that is half the box).")
+    if _is(abs(value), box / 3):
+        return wrong("one third of base times height is right for a pyramid, but the base here is the triangle "
+                     "P0 P1 P2, half of the parallelogram whose area |(P1 - P0) × (P2 - P0)| measures: divide the "
+                     "determinant by 6.")
+    return wrong(f"{what} is {off_by(value, expected)}. Check the three edge vectors from P0 and the determinant "
+                 "(P1 - P0) × (P2 - P0) · (P3 - P0).")
+
+
 # -- §11.5 ------------------------------------------------------------------------------------------
 def check_three_planes(answer) -> Result:
     """Check the common point of ``PLANES`` (Goldman §11.5).  Recognises the point not divided by
@@ -306,6 +341,7 @@ SLIPS = {
     "check_point_plane_distance": [-3.0, 9.0, -9.0, 1.0, float(np.sqrt(26))],
     "check_line_line_distance": [6.0, 2.0, 3.0, float(np.sqrt(14)), -float(2 * np.sqrt(3))],
     "check_newell_area": [float(16 * np.sqrt(3)), 8.0, 16.0, 24.0],
+    "check_tetrahedron_volume": [31.0, 15.5, 31 / 3, -31 / 6],
     "check_three_planes": [[7.0, 14.0, 21.0], [-1.0, -2.0, -3.0], [4.0, 1.0, 1.0], [2.0, 3.0, 1.0], [1.0, 2.0, 4.0]],
     "check_winding_number": [0, -2, 1, True],
     "check_slerp": [[2 / 3, 1 / (3 * np.sqrt(2)), 1 / (3 * np.sqrt(2))],
