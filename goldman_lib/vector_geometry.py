@@ -19,9 +19,9 @@ from goldman_lib.validation import as_float, as_parameter, as_points, check_fini
 from goldman_lib.vectors import cross
 
 __all__ = ["law_of_cosines", "law_of_sines", "plane_through", "point_line_distance", "point_plane_distance",
-           "line_line_distance", "triangle_area", "newell_normal", "polygon_area", "tetrahedron_volume",
+           "line_line_distance", "foot_on_plane", "triangle_area", "newell_normal", "polygon_area", "tetrahedron_volume",
            "parallelepiped_volume", "intersect_lines", "intersect_two_planes", "intersect_three_planes", "slerp",
-           "ray_casting_inside", "winding_number"]
+           "nlerp", "ray_casting_inside", "winding_number", "ray_crossings"]
 
 _EPS = 1e-12
 
@@ -130,6 +130,21 @@ def point_plane_distance(points, plane_point, normal, signed: bool = False):
     N = _vec(normal, "normal", 3)
     d = _dot(Q - P, N) / _nonzero(N, "normal", "a plane needs a normal direction")
     return _out(d if signed else np.abs(d))
+
+
+def foot_on_plane(points, plane_point, normal) -> np.ndarray:
+    """The foot of the perpendicular from points to the plane through ``plane_point`` with normal
+    ``N``: ``Q - [(Q - P)·N / N·N] N``, the point of the plane closest to ``Q`` (Goldman §11.4); the
+    distance of :func:`point_plane_distance` is ``|Q - foot|``.  Vectorised over the points.
+
+    >>> foot_on_plane([1, 2, -3], [0, 0, 0], [0, 0, 2]).tolist()
+    [1.0, 2.0, 0.0]
+    """
+    Q = _vec(points, "points", 3)
+    P = _vec(plane_point, "plane_point", 3)
+    N = _vec(normal, "normal", 3)
+    nn = _nonzero(N, "normal", "a plane needs a normal direction") ** 2
+    return Q - (_dot(Q - P, N) / nn)[..., None] * N
 
 
 def line_line_distance(p1, d1, p2, d2):
@@ -335,6 +350,29 @@ def slerp(v0, v1, t) -> np.ndarray:
     return wa * a + wb * b
 
 
+def nlerp(v0, v1, t) -> np.ndarray:
+    """Normalised linear interpolation ``((1-t) v0 + t v1) / |(1-t) v0 + t v1|`` of two unit
+    directions: the comparison that shows why §11.6 needs slerp (our addition, not a formula of the
+    book).  It follows the same great arc as :func:`slerp` but not at constant speed: it lags near
+    the ends and rushes through the middle.  Opposite vectors raise ValueError (at t = 1/2 the chord
+    passes through the origin).
+
+    >>> np.round(nlerp([1, 0], [0, 1], 0.5), 12).tolist()
+    [0.707106781187, 0.707106781187]
+    """
+    a = _vec(v0, "v0")
+    b = _vec(v1, "v1", a.shape[-1])
+    _nonzero(a, "v0", "nlerp needs directions")
+    _nonzero(b, "v1", "nlerp needs directions")
+    tt = as_parameter(t, "t")[..., None]
+    chord = (1 - tt) * a + tt * b
+    n = np.linalg.norm(chord, axis=-1, keepdims=True)
+    if np.any(n <= 1e-12 * (np.linalg.norm(a, axis=-1, keepdims=True) + np.linalg.norm(b, axis=-1, keepdims=True))):
+        raise ValueError("v0 and v1 must not point in opposite directions: the chord between them passes through "
+                         "the origin, which has no direction")
+    return chord / n
+
+
 # -- §11.7 inside-outside tests ------------------------------------------------------------------------
 
 def _polygon_and_queries(polygon, points):
@@ -376,6 +414,34 @@ def winding_number(polygon, points) -> np.ndarray:
     """
     poly, Q = _polygon_and_queries(polygon, points)
     return _crossings(poly, Q.reshape(-1, 2), signed=True).reshape(Q.shape[:-1])
+
+
+def ray_crossings(polygon, point) -> tuple[np.ndarray, np.ndarray]:
+    """Where the rightward horizontal ray from one query point crosses the polygon's edges, and
+    how (Goldman §11.7): ``(crossings, signs)``, the crossing points ``(k, 2)`` sorted from the
+    query point outwards and ``+1`` for an edge going up, ``-1`` for one going down.  The count
+    ``k`` decides the even-odd rule (:func:`ray_casting_inside`), the sum of the signs is the
+    winding number (:func:`winding_number`); the same half-open rule for vertices is used.
+
+    >>> pts, signs = ray_crossings([[0, 0], [4, 0], [4, 4], [0, 4]], [1, 1])
+    >>> pts.tolist(), signs.tolist()
+    ([[4.0, 1.0]], [1])
+    """
+    poly = _polygon(polygon, dims=(2,))
+    Q = as_points(point, "point", ndim=1, dim=2)
+    a = poly
+    b = np.roll(poly, -1, axis=0)
+    up = a[:, 1] < b[:, 1]
+    lo = np.where(up, a[:, 1], b[:, 1])
+    hi = np.where(up, b[:, 1], a[:, 1])
+    span = (lo <= Q[1]) & (Q[1] < hi)
+    dy = np.where(span, b[:, 1] - a[:, 1], 1.0)
+    x_edge = a[:, 0] + (Q[1] - a[:, 1]) * (b[:, 0] - a[:, 0]) / dy
+    hit = span & (Q[0] < x_edge)
+    order = np.argsort(x_edge[hit], kind="stable")
+    xs = x_edge[hit][order]
+    signs = np.where(up[hit], 1, -1)[order]
+    return np.column_stack([xs, np.full(len(xs), Q[1])]), signs.astype(np.int64)
 
 
 def _crossings(poly: np.ndarray, Q: np.ndarray, signed: bool) -> np.ndarray:

@@ -129,3 +129,52 @@ def test_inside_tests_agree_with_matplotlib_on_simple_polygons(radii, seed):
     ours = vg.winding_number(poly, pts) != 0
     # points within 1e-9 of an edge may go either way
     assert np.array_equal(ours, ref) and np.array_equal(vg.ray_casting_inside(poly, pts), ours)
+
+
+# -- additions for the chapter-11 notebook and views: foot_on_plane, nlerp, ray_crossings ----------------
+
+def test_foot_on_plane_by_hand_and_as_the_closest_point():
+    # plane z = 1 (normal (0, 0, 5), not unit): the foot drops the z coordinate to 1
+    assert vg.foot_on_plane([3, -2, 7], [0, 0, 1], [0, 0, 5]).tolist() == [3.0, -2.0, 1.0]
+    # plane x + y + z = 3 through (1, 1, 1): the foot of the origin is (1, 1, 1)
+    assert np.allclose(vg.foot_on_plane([0, 0, 0], [3, 0, 0], [1, 1, 1]), [1, 1, 1])
+    rng = np.random.default_rng(11)
+    Q, P, N = rng.normal(size=(20, 3)), rng.normal(size=3), rng.normal(size=3)
+    F = vg.foot_on_plane(Q, P, N)
+    assert np.allclose((F - P) @ N, 0, atol=1e-12)                                   # on the plane
+    assert np.allclose(np.linalg.norm(Q - F, axis=1), vg.point_plane_distance(Q, P, N))
+    assert np.allclose(np.cross(Q - F, N), 0, atol=1e-12)                            # along the normal
+    with pytest.raises(ValueError, match="normal must be nonzero"):
+        vg.foot_on_plane([1, 2, 3], [0, 0, 0], [0, 0, 0])
+
+
+def test_nlerp_is_on_the_arc_but_not_at_constant_speed():
+    # v0 = x, v1 = y, t = 1/4: the chord point (3/4, 1/4) normalised is at atan(1/3), not 22.5 degrees
+    w = vg.nlerp([1, 0], [0, 1], 0.25)
+    assert np.allclose(w, np.array([3, 1]) / np.sqrt(10))
+    assert not np.isclose(np.degrees(np.arctan2(w[1], w[0])), 22.5)
+    ts = np.linspace(0, 1, 9)
+    assert np.allclose(np.linalg.norm(vg.nlerp([1, 0, 0], [0, 0, 1], ts), axis=1), 1)
+    assert np.allclose(vg.nlerp([1, 0], [0, 1], [0.0, 0.5, 1.0]), vg.slerp([1, 0], [0, 1], [0.0, 0.5, 1.0]))
+    with pytest.raises(ValueError, match="opposite"):
+        vg.nlerp([1, 0], [-1, 0], 0.5)
+
+
+def test_ray_crossings_by_hand_and_summing_to_the_winding_number():
+    # the square (0,0)-(4,4) from (1, 1): only the right side x = 4 is crossed, going up
+    pts, signs = vg.ray_crossings([[0, 0], [4, 0], [4, 4], [0, 4]], [1, 1])
+    assert pts.tolist() == [[4.0, 1.0]] and signs.tolist() == [1]
+    # the doubled square of exercise 6: from (3, 3) the edges x = 5 and x = 6, both going up
+    double = [[0, 0], [6, 0], [6, 6], [1, 6], [1, 1], [5, 1], [5, 5], [0, 5]]
+    pts, signs = vg.ray_crossings(double, [3, 3])
+    assert pts.tolist() == [[5.0, 3.0], [6.0, 3.0]] and signs.tolist() == [1, 1]
+    # from (0.5, 3): x = 1 going down first, then x = 5 and x = 6 going up
+    assert vg.ray_crossings(double, [0.5, 3])[1].tolist() == [-1, 1, 1]
+    rng = np.random.default_rng(3)
+    for _ in range(10):
+        poly = rng.normal(size=(int(rng.integers(3, 10)), 2)) * 3
+        for q in rng.uniform(-5, 5, size=(30, 2)):
+            pts, signs = vg.ray_crossings(poly, q)
+            assert int(signs.sum()) == _angle_sum_winding(poly, q)
+            assert bool(len(signs) % 2) == bool(vg.ray_casting_inside(poly, q))
+            assert np.all(pts[:, 0] > q[0]) and np.all(np.diff(pts[:, 0]) >= 0)
