@@ -86,7 +86,8 @@ def lever_view(points=LEVER_POINTS, masses=LEVER_MASSES) -> InteractiveView:
     (bar,) = ax.plot([], [], "-", color=style.PALETTE["control"], linewidth=2.5, alpha=0.6, zorder=1)
     (line,) = ax.plot([], [], ":", color=style.PALETTE["control"], linewidth=1, zorder=1)
     dots = [ax.plot([], [], "o", markersize=8, zorder=3)[0] for _ in range(3)]
-    labels = [ax.annotate("", (0, 0), textcoords="offset points", xytext=(7, 7), fontsize=9) for _ in range(3)]
+    labels = [ax.annotate("", (0, 0), textcoords="offset points", xytext=(-6, 9), ha="right", fontsize=9)
+              for _ in range(3)]
     (centre,) = ax.plot([], [], "o", color="black", zorder=4)
     centre_label = ax.annotate("", (0, 0), textcoords="offset points", xytext=(7, -14), fontsize=9)
     arrow = FancyArrowPatch((0, 0), (0, 0), arrowstyle="-|>", mutation_scale=16, color=style.PALETTE["accent"],
@@ -119,7 +120,7 @@ def lever_view(points=LEVER_POINTS, masses=LEVER_MASSES) -> InteractiveView:
         if mass != 0:
             centre_pt = mp.point_of(total)
             centre.set_data([centre_pt[0]], [centre_pt[1]])
-            centre.set_markersize(5 + 3 * min(abs(mass), 6))
+            centre.set_markersize(5 + 1.5 * min(abs(mass), 6))
             centre.set_markerfacecolor("black" if mass > 0 else "white")
             centre_label.xy = centre_pt
             centre_label.set_text(f"centre, M = {mass:g}")
