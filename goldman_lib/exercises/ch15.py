@@ -60,6 +60,10 @@ def _q_text(q) -> str:
     return "(" + ", ".join(fmt(v) for v in q) + ")"
 
 
+def _q5(q) -> str:
+    return "(" + ", ".join(f"{v:.5f}" for v in q) + ")"
+
+
 PROBLEMS = {
     "check_complex_factor": (
         f"Which complex number z sends the point {_q_text(COMPLEX_FROM)} = 2 + i to {_q_text(COMPLEX_TO)} = -1 + 3i "
@@ -81,8 +85,8 @@ PROBLEMS = {
         f"row convention (v' = v M, so the first row is the image of (1, 0, 0)). Give M as [[..], [..], [..]] "
         f"(Goldman §15.3.6)."),
     "check_slerp_angle": (
-        f"Two key orientations are the unit quaternions q0 = {_q_text(SLERP_Q0)} and q1 = {_q_text(SLERP_Q1)} "
-        f"(5 decimals), both rotations about the z-axis. Slerp between them (the shorter way) at t = {fmt(SLERP_T)}: "
+        f"Two key orientations are the unit quaternions q0 = {_q5(SLERP_Q0)} and q1 = {_q5(SLERP_Q1)} "
+        f"(to 5 decimals), both rotations about the z-axis. Slerp between them (the shorter way) at t = {fmt(SLERP_T)}: "
         f"the result is a rotation about the z-axis. Give its signed angle in degrees, between -180 and 180 "
         f"(positive = counterclockwise looking down z), to 2 decimals (Goldman §15.3.5)."),
     "check_lerp_distortion": (
