@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib.validation import as_float_array, as_parameter, as_points, check_finite
+from goldman_lib.validation import as_float, as_float_array, as_parameter, as_points, check_finite
 
 __all__ = ["complex_rotation", "complex_polar", "complex_multiply", "multiply", "conjugate", "norm", "inverse", "normalize",
            "from_axis_angle", "to_axis_angle", "rotate", "conformal_map", "to_matrix", "from_matrix", "slerp",
@@ -59,8 +59,13 @@ def complex_rotation(angle, scale=1.0) -> complex:
     >>> complex(np.round(z * (1 + 0j), 12))
     1j
     """
-    a = np.radians(float(as_parameter(angle, "angle")))
-    s = float(as_parameter(scale, "scale"))
+    values = []
+    for value, name in ((angle, "angle"), (scale, "scale")):
+        arr = as_parameter(value, name)
+        if arr.ndim != 0:
+            raise ValueError(f"{name} must be one number; got shape {arr.shape}")
+        values.append(float(arr))
+    a, s = np.radians(values[0]), values[1]
     return complex(s * np.cos(a), s * np.sin(a))
 
 
@@ -96,8 +101,12 @@ def complex_multiply(points, z) -> np.ndarray:
     z = complex(z)
     if not (np.isfinite(z.real) and np.isfinite(z.imag)):
         raise ValueError(f"z must be finite; got {z}")
-    w = (pts[..., 0] + 1j * pts[..., 1]) * z
-    return np.stack([w.real, w.imag], axis=-1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        w = (pts[..., 0] + 1j * pts[..., 1]) * z
+    out = np.stack([w.real, w.imag], axis=-1)
+    if not np.all(np.isfinite(out)):
+        raise ValueError(f"z is too large in magnitude for these points: the image overflows float64 (|z| = {abs(z):.3g})")
+    return out
 
 
 # -- §15.3.1: the quaternion algebra ---------------------------------------------------------------
@@ -273,6 +282,7 @@ def from_matrix(M, tol: float = 1e-6) -> np.ndarray:
     A = check_finite(as_float_array(M, "M"), "M")
     if A.ndim < 2 or A.shape[-2:] not in ((3, 3), (4, 4)):
         raise ValueError(f"M must be a 3x3 or 4x4 matrix (or a stack of them); got shape {A.shape}")
+    tol = as_float(tol, "tol", positive=True)
     if A.shape[-1] == 4:
         if np.any(np.abs(A[..., 3, :3]) > tol) or np.any(np.abs(A[..., :3, 3]) > tol) or np.any(np.abs(A[..., 3, 3] - 1) > tol):
             raise ValueError("M must be a pure rotation: its last row and column must be (0, 0, 0, 1)")
@@ -312,8 +322,10 @@ def slerp(q0, q1, t) -> np.ndarray:
     >>> np.round(slerp([1, 0, 0, 0], from_axis_angle([0, 0, 1], 90), 0.5), 6).tolist()
     [0.92388, 0.0, 0.0, 0.382683]
     """
-    a = normalize(q0)
-    b = normalize(q1)
+    a = _quaternions(q0, "q0")
+    a = _scale_rows(a, 1.0 / _nonzero(a, "q0"))
+    b = _quaternions(q1, "q1")
+    b = _scale_rows(b, 1.0 / _nonzero(b, "q1"))
     tt = as_parameter(t, "t")
     lead = np.broadcast_shapes(a.shape[:-1], b.shape[:-1], tt.shape)
     a, b, tt = np.broadcast_to(a, lead + (4,)), np.broadcast_to(b, lead + (4,)), np.broadcast_to(tt, lead)
@@ -370,7 +382,11 @@ def matrix_lerp(M0, M1, t) -> np.ndarray:
     if A.shape != B.shape or A.ndim < 2:
         raise ValueError(f"M0 and M1 must be matrices of the same shape; got {A.shape} and {B.shape}")
     tt = as_parameter(t, "t")[..., None, None]
-    return (1 - tt) * A + tt * B
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = (1 - tt) * A + tt * B
+    if not np.all(np.isfinite(out)):
+        raise ValueError("t is too large in magnitude: the blend (1-t) M0 + t M1 overflows float64")
+    return out
 
 
 def matrix_key_frames(orientations, times, t) -> np.ndarray:

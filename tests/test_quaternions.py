@@ -159,3 +159,18 @@ def test_matrix_key_frames_blend_the_key_matrices_linearly():
         qt.matrix_key_frames(keys, [0, 2, 1], 0.5)
     with pytest.raises(ValueError, match="orientations must be nonzero"):
         qt.matrix_key_frames([[0, 0, 0, 0], [1, 0, 0, 0]], [0, 1], 0.5)
+
+
+def test_bad_input_names_the_parameter_of_each_function():
+    with pytest.raises(ValueError, match="q0 must be nonzero"):
+        qt.slerp([0, 0, 0, 0], [1, 0, 0, 0], 0.5)
+    with pytest.raises(ValueError, match="q1 must hold quaternions"):
+        qt.slerp([1, 0, 0, 0], [1, 0, 0], 0.5)
+    with pytest.raises(ValueError, match="tol must be positive"):
+        qt.from_matrix(np.eye(3), tol=-1)
+    with pytest.raises(ValueError, match="angle must be one number"):
+        qt.complex_rotation([], 1.0)
+    with pytest.raises(ValueError, match="z is too large"):
+        qt.complex_multiply([[1.0, 1.0]], 1e308 + 1e308j)
+    with pytest.raises(ValueError, match="t is too large"):
+        qt.matrix_lerp(np.eye(3), -np.eye(3), 1e308)
