@@ -179,3 +179,20 @@ def test_project_cases_are_fixed_by_the_seed_and_cover_the_degenerate_kinds():
         assert np.isclose(np.linalg.norm(q0), 1) and np.isclose(np.linalg.norm(q1), 1)
         if c.kind.startswith("q0·q1 < 0"):
             assert q0 @ q1 < 0
+
+
+def vector_slerp(q0, q1, t):
+    t = np.asarray(t, dtype=float)
+    if t.ndim == 0:
+        return good_slerp(q0, q1, float(t))
+    return np.array([good_slerp(q0, q1, float(s)) for s in t])
+
+
+def test_project_checks_an_array_of_t_when_asked():
+    r = ch15.check_slerp_project(vector_slerp, vectorised=True)
+    assert r.correct and "19 cases" in r.message and "an array of t" in r.message, r
+    r = ch15.check_slerp_project(good_slerp, vectorised=True)     # a scalar-only slerp fails the array cases
+    assert not r.correct and "case 17 of 19" in r.message
+    r = ch15.check_slerp_project(lambda q0, q1, t: np.array([lerp(q0, q1, s) for s in np.atleast_1d(t)]).squeeze(),
+                                 vectorised=True)
+    assert not r.correct and "linear interpolation" in r.message

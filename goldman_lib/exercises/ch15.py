@@ -391,10 +391,12 @@ def _unit(v) -> np.ndarray:
     return v / np.linalg.norm(v)
 
 
-def slerp_project_cases(seed: int = 15) -> list[Case]:
+def slerp_project_cases(seed: int = 15, vectorised: bool = False) -> list[Case]:
     """The cases of :func:`check_slerp_project`, generated from a fixed seed: random pairs on the
     shorter side, t = 0 and t = 1, pairs with q0·q1 < 0 (the shorter arc needs -q1), q1 = -q0,
     identical and nearly identical quaternions (θ ≈ 0), and quaternions half a turn apart (q0·q1 = 0).
+    With ``vectorised=True`` three more cases pass ``t`` as an array (the result is then one
+    quaternion per t, shape (len(t), 4)).
 
     >>> cases = slerp_project_cases()
     >>> len(cases), cases[0].kind, cases[-1].kind
@@ -434,6 +436,11 @@ def slerp_project_cases(seed: int = 15) -> list[Case]:
     add([0.6, 0, 0.8, 0], [0.6, 0, 0.8, 1e-7], 0.5, "nearly equal (θ ≈ 1e-7)",
         label="q0 = (0.6, 0, 0.8, 0), q1 = (0.6, 0, 0.8, 1e-7) normalised, t = 0.5")
     add(qt.from_axis_angle([1, 2, 2], 170), qt.from_axis_angle([1, 2, 2], -170), 0.5, "q0·q1 < 0 (the shorter arc)")
+    if vectorised:
+        for sign, ts in ((1, [0.0, 0.25, 0.5, 0.75, 1.0]), (-1, [0.1, 0.9]), (1, [0.5])):
+            a, b = pair(sign)
+            cases.append(Case(f"q0 = {fmt(a)}, q1 = {fmt(b)}, t = np.array({ts})", (a, b, np.array(ts)),
+                              kind="an array of t"))
     return cases
 
 
@@ -447,13 +454,22 @@ def _longer_arc(q0, q1, t):
 
 def _compare_slerp(got, expected, case) -> str | None:
     arr = np.asarray(got, dtype=float)
+    exp = np.asarray(expected, dtype=float)
+    if exp.ndim == 2:       # an array of t: one quaternion per t, each compared up to sign
+        if arr.shape != exp.shape:
+            return f"it has shape {arr.shape}; for {len(exp)} values of t the result is {len(exp)} quaternions, shape {exp.shape}"
+        q0, q1, ts = case.args
+        for k, t in enumerate(ts):
+            problem = _compare_slerp(arr[k], exp[k], Case(case.label, (q0, q1, float(t))))
+            if problem is not None:
+                return f"at t = {fmt(t)} (entry {k}) " + problem
+        return None
     if arr.shape != (4,):
         return f"it has shape {arr.shape}; a quaternion is 4 numbers (w, x, y, z)"
     if not np.all(np.isfinite(arr)):
         return ("it contains NaN or infinity: when q0 and q1 are (nearly) equal, θ = 0 and sin θ = 0, and q0·q1 "
                 "may round to just above 1 (arccos is then NaN): clip q0·q1 to [-1, 1] and fall back to linear "
                 "interpolation when sin θ is tiny")
-    exp = np.asarray(expected, dtype=float)
     err = float(min(np.linalg.norm(arr - exp), np.linalg.norm(arr + exp)))
     if err <= 1e-6:
         return None
@@ -479,17 +495,19 @@ def _compare_slerp(got, expected, case) -> str | None:
     return head
 
 
-def check_slerp_project(function) -> Result:
+def check_slerp_project(function, vectorised: bool = False) -> Result:
     """Check the learner's ``slerp(q0, q1, t)`` (unit quaternions (w, x, y, z), t a number) against
     :func:`goldman_lib.quaternions.slerp` on :func:`slerp_project_cases`, up to sign (q and -q are
-    the same rotation) (Goldman §15.3.4-15.3.5).
+    the same rotation) (Goldman §15.3.4-15.3.5).  ``vectorised=True`` (for a slerp that accepts an
+    array of t) adds cases with t an array, the result one quaternion per t.
 
     >>> def lerp(q0, q1, t):
     ...     return (1 - t) * np.asarray(q0) + t * np.asarray(q1)
     >>> print(check_slerp_project(lerp).message)   # doctest: +ELLIPSIS
     case 1 of 16 (q0 = ..., t = 0.3): your function returned ...; it is ... from slerp's result ... it is the linear interpolation (1 - t) q0 + t q1, of length ...
     """
-    return check_project(function, slerp_project_cases(), reference=qt.slerp, compare=_compare_slerp,
+    return check_project(function, slerp_project_cases(vectorised=bool(vectorised)), reference=qt.slerp,
+                         compare=_compare_slerp,
                          what="slerp",
                          hint="with cos θ = q0·q1 (after negating q1 if it is negative), slerp is "
                               "sin((1 - t)θ)/sin θ q0 + sin(tθ)/sin θ q1")
