@@ -16,11 +16,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib.validation import as_float_array, as_parameter, as_points, check_finite
+from goldman_lib.validation import as_float, as_float_array, as_parameter, as_points, check_finite
 
-__all__ = ["complex_rotation", "complex_multiply", "multiply", "conjugate", "norm", "inverse", "normalize",
+__all__ = ["complex_rotation", "complex_polar", "complex_multiply", "multiply", "conjugate", "norm", "inverse", "normalize",
            "from_axis_angle", "to_axis_angle", "rotate", "conformal_map", "to_matrix", "from_matrix", "slerp",
-           "key_frames", "matrix_lerp", "matrix_distortion"]
+           "key_frames", "matrix_lerp", "matrix_key_frames", "matrix_distortion"]
 
 
 def _quaternions(q, name: str) -> np.ndarray:
@@ -59,9 +59,33 @@ def complex_rotation(angle, scale=1.0) -> complex:
     >>> complex(np.round(z * (1 + 0j), 12))
     1j
     """
-    a = np.radians(float(as_parameter(angle, "angle")))
-    s = float(as_parameter(scale, "scale"))
+    values = []
+    for value, name in ((angle, "angle"), (scale, "scale")):
+        arr = as_parameter(value, name)
+        if arr.ndim != 0:
+            raise ValueError(f"{name} must be one number; got shape {arr.shape}")
+        values.append(float(arr))
+    a, s = np.radians(values[0]), values[1]
     return complex(s * np.cos(a), s * np.sin(a))
+
+
+def complex_polar(z) -> tuple[float, float]:
+    """The scale ``|z|`` and the angle ``arg z`` in degrees, in (-180, 180], of the complex number
+    ``z``: multiplying by ``z`` scales the plane by ``|z|`` and rotates it by ``arg z`` (Goldman
+    §15.2; the inverse of :func:`complex_rotation`).  ``z = 0`` has scale 0 and, by convention,
+    angle 0 (it collapses the plane to the origin and rotates nothing).
+
+    >>> [round(v, 9) for v in complex_polar(complex_rotation(135, 2.0))]
+    [2.0, 135.0]
+    >>> complex_polar(-1 + 1j)[1]
+    135.0
+    """
+    if not isinstance(z, (int, float, complex, np.number)) or isinstance(z, bool):
+        raise TypeError(f"z must be a complex number; got {z!r}")
+    z = complex(z)
+    if not (np.isfinite(z.real) and np.isfinite(z.imag)):
+        raise ValueError(f"z must be finite; got {z}")
+    return float(abs(z)), float(np.degrees(np.arctan2(z.imag, z.real))) + 0.0
 
 
 def complex_multiply(points, z) -> np.ndarray:
@@ -77,8 +101,12 @@ def complex_multiply(points, z) -> np.ndarray:
     z = complex(z)
     if not (np.isfinite(z.real) and np.isfinite(z.imag)):
         raise ValueError(f"z must be finite; got {z}")
-    w = (pts[..., 0] + 1j * pts[..., 1]) * z
-    return np.stack([w.real, w.imag], axis=-1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        w = (pts[..., 0] + 1j * pts[..., 1]) * z
+    out = np.stack([w.real, w.imag], axis=-1)
+    if not np.all(np.isfinite(out)):
+        raise ValueError(f"z is too large in magnitude for these points: the image overflows float64 (|z| = {abs(z):.3g})")
+    return out
 
 
 # -- §15.3.1: the quaternion algebra ---------------------------------------------------------------
@@ -142,7 +170,7 @@ def normalize(q) -> np.ndarray:
     return _scale_rows(q, 1.0 / _nonzero(q, "q"))
 
 
-# -- §15.3.2-15.3.3: rotations and conformal maps -----------------------------------------------------
+# -- §15.3.2: rotations and conformal maps -----------------------------------------------------
 
 def from_axis_angle(axis, angle) -> np.ndarray:
     """The unit quaternion ``(cos(θ/2), sin(θ/2) u)`` that rotates by ``angle`` degrees about the
@@ -204,7 +232,7 @@ def rotate(q, v) -> np.ndarray:
 
 def conformal_map(q, v) -> np.ndarray:
     """``q v q*`` for any nonzero quaternion: the rotation of ``q / |q|`` followed by scaling by
-    ``|q|^2`` -- the conformal maps of 3-space fixing the origin (Goldman §15.3.3).
+    ``|q|^2`` -- the conformal maps of 3-space fixing the origin (Goldman §15.3.2).
 
     >>> conformal_map([0, 0, 0, 2], [1, 0, 0]).tolist()   # 180° about z, scaled by 4
     [-4.0, 0.0, 0.0]
@@ -254,6 +282,7 @@ def from_matrix(M, tol: float = 1e-6) -> np.ndarray:
     A = check_finite(as_float_array(M, "M"), "M")
     if A.ndim < 2 or A.shape[-2:] not in ((3, 3), (4, 4)):
         raise ValueError(f"M must be a 3x3 or 4x4 matrix (or a stack of them); got shape {A.shape}")
+    tol = as_float(tol, "tol", positive=True)
     if A.shape[-1] == 4:
         if np.any(np.abs(A[..., 3, :3]) > tol) or np.any(np.abs(A[..., :3, 3]) > tol) or np.any(np.abs(A[..., 3, 3] - 1) > tol):
             raise ValueError("M must be a pure rotation: its last row and column must be (0, 0, 0, 1)")
@@ -293,8 +322,10 @@ def slerp(q0, q1, t) -> np.ndarray:
     >>> np.round(slerp([1, 0, 0, 0], from_axis_angle([0, 0, 1], 90), 0.5), 6).tolist()
     [0.92388, 0.0, 0.0, 0.382683]
     """
-    a = normalize(q0)
-    b = normalize(q1)
+    a = _quaternions(q0, "q0")
+    a = _scale_rows(a, 1.0 / _nonzero(a, "q0"))
+    b = _quaternions(q1, "q1")
+    b = _scale_rows(b, 1.0 / _nonzero(b, "q1"))
     tt = as_parameter(t, "t")
     lead = np.broadcast_shapes(a.shape[:-1], b.shape[:-1], tt.shape)
     a, b, tt = np.broadcast_to(a, lead + (4,)), np.broadcast_to(b, lead + (4,)), np.broadcast_to(tt, lead)
@@ -351,7 +382,42 @@ def matrix_lerp(M0, M1, t) -> np.ndarray:
     if A.shape != B.shape or A.ndim < 2:
         raise ValueError(f"M0 and M1 must be matrices of the same shape; got {A.shape} and {B.shape}")
     tt = as_parameter(t, "t")[..., None, None]
-    return (1 - tt) * A + tt * B
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = (1 - tt) * A + tt * B
+    if not np.all(np.isfinite(out)):
+        raise ValueError("t is too large in magnitude: the blend (1-t) M0 + t M1 overflows float64")
+    return out
+
+
+def matrix_key_frames(orientations, times, t) -> np.ndarray:
+    """The counterpart of :func:`key_frames` that §15.3.4 warns against: the 4x4 matrices (row
+    convention) of the key orientations interpolated *linearly* between key times,
+    ``(1-s) M_k + s M_{k+1}``.  Between keys the result is in general not a rotation (measure it
+    with :func:`matrix_distortion`).  Times outside ``[times[0], times[-1]]`` are clamped.
+
+    orientations: (k, 4) quaternions, k >= 2.  times: (k,) strictly increasing.  t: scalar or
+    array; returns ``t.shape + (4, 4)``.
+
+    >>> keys = [[1, 0, 0, 0], from_axis_angle([0, 0, 1], 180)]
+    >>> M = matrix_key_frames(keys, [0, 1], 0.5)
+    >>> (np.round(M[:3, :3], 12) + 0.0).tolist()     # the xy-plane collapses to the origin
+    [[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    """
+    keys = _quaternions(orientations, "orientations")
+    if keys.ndim != 2 or len(keys) < 2:
+        raise ValueError(f"orientations must be at least two quaternions (k, 4); got shape {keys.shape}")
+    _nonzero(keys, "orientations")
+    ts = check_finite(as_float_array(times, "times"), "times")
+    if ts.shape != (len(keys),):
+        raise ValueError(f"times must have one entry per orientation ({len(keys)}); got shape {ts.shape}")
+    if np.any(np.diff(ts) <= 0):
+        i = int(np.flatnonzero(np.diff(ts) <= 0)[0])
+        raise ValueError(f"times must be strictly increasing; times[{i + 1}]={ts[i + 1]} <= times[{i}]={ts[i]}")
+    mats = to_matrix(keys)
+    tt = np.clip(as_parameter(t, "t"), ts[0], ts[-1])
+    seg = np.clip(np.searchsorted(ts, tt, side="right") - 1, 0, len(ts) - 2)
+    local = (tt - ts[seg]) / (ts[seg + 1] - ts[seg])
+    return matrix_lerp(mats[seg], mats[seg + 1], local)
 
 
 def matrix_distortion(M) -> np.ndarray:

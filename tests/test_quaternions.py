@@ -126,3 +126,51 @@ def test_bad_input_names_the_parameter():
         qt.from_matrix(np.diag([1.0, 1.0, -1.0]))
     with pytest.raises(ValueError, match="t must be finite"):
         qt.slerp([1, 0, 0, 0], [0, 1, 0, 0], np.nan)
+
+
+def test_complex_polar_inverts_complex_rotation_like_cmath():
+    import cmath
+
+    for z in (3 - 4j, -1 + 1j, -2.0, 0.5j, 1e-300 + 0j):
+        r, deg = cmath.polar(z)
+        ours = qt.complex_polar(z)
+        assert np.isclose(ours[0], r, rtol=1e-15, atol=0) and np.isclose(ours[1], np.degrees(deg), atol=1e-12)
+    assert qt.complex_polar(0) == (0.0, 0.0)
+    with pytest.raises(TypeError, match="z must be a complex number"):
+        qt.complex_polar("1+i")
+    with pytest.raises(ValueError, match="z must be finite"):
+        qt.complex_polar(complex(np.inf, 0))
+
+
+def test_matrix_key_frames_blend_the_key_matrices_linearly():
+    keys = np.stack([qt.from_axis_angle([0, 0, 1], 0), qt.from_axis_angle([0, 0, 1], 90),
+                     qt.from_axis_angle([1, 0, 0], 90)])
+    # scipy's matrices are column-convention: transpose for the book's rows
+    R = [np.eye(3), Rotation.from_rotvec([0, 0, np.pi / 2]).as_matrix().T,
+         Rotation.from_rotvec([np.pi / 2, 0, 0]).as_matrix().T]
+    M = qt.matrix_key_frames(keys, [0, 1, 3], [0.25, 2.0, -1.0, 9.0])
+    assert M.shape == (4, 4, 4)
+    assert np.allclose(M[0, :3, :3], 0.75 * R[0] + 0.25 * R[1])
+    assert np.allclose(M[1, :3, :3], 0.5 * R[1] + 0.5 * R[2])
+    assert np.allclose(M[2, :3, :3], R[0]) and np.allclose(M[3, :3, :3], R[2])    # clamped
+    # the blend of the identity and a quarter turn about z scales the xy-plane by |1 + i| / 2
+    assert np.isclose(qt.matrix_distortion(qt.matrix_key_frames(keys, [0, 1, 3], 0.5)), 1 - np.sqrt(2) / 2)
+    with pytest.raises(ValueError, match="times must be strictly increasing"):
+        qt.matrix_key_frames(keys, [0, 2, 1], 0.5)
+    with pytest.raises(ValueError, match="orientations must be nonzero"):
+        qt.matrix_key_frames([[0, 0, 0, 0], [1, 0, 0, 0]], [0, 1], 0.5)
+
+
+def test_bad_input_names_the_parameter_of_each_function():
+    with pytest.raises(ValueError, match="q0 must be nonzero"):
+        qt.slerp([0, 0, 0, 0], [1, 0, 0, 0], 0.5)
+    with pytest.raises(ValueError, match="q1 must hold quaternions"):
+        qt.slerp([1, 0, 0, 0], [1, 0, 0], 0.5)
+    with pytest.raises(ValueError, match="tol must be positive"):
+        qt.from_matrix(np.eye(3), tol=-1)
+    with pytest.raises(ValueError, match="angle must be one number"):
+        qt.complex_rotation([], 1.0)
+    with pytest.raises(ValueError, match="z is too large"):
+        qt.complex_multiply([[1.0, 1.0]], 1e308 + 1e308j)
+    with pytest.raises(ValueError, match="t is too large"):
+        qt.matrix_lerp(np.eye(3), -np.eye(3), 1e308)

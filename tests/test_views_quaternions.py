@@ -1,0 +1,85 @@
+"""Chapter 15 views draw what goldman_lib.quaternions computes: the image of the letter F under a
+complex number (§15.2), the conformal map q v q* of a body (§15.3.2) with its matrix (§15.3.6), and
+the key-frame animation by slerp beside the linear blend of matrices (§15.3.4-15.3.5), driven by a
+Play widget linked to the frame slider."""
+
+import numpy as np
+
+from goldman_lib import quaternions as qt
+from goldman_lib.views import quaternions as qv
+
+
+def test_complex_plane_view_rotates_and_scales_the_figure_by_z():
+    view = qv.complex_plane_view()
+    r = view.set_values(re=0.0, im=1.5)
+    # multiplying by 1.5 i sends (x, y) to (-1.5 y, 1.5 x): worked by hand on the first corner (0.5, 0.2)
+    assert np.allclose(r["image"][0], [-0.3, 0.75])
+    assert np.allclose(r["image"], qt.complex_multiply(qv.FIGURE_F, 1.5j))
+    assert np.isclose(r["scale"], 1.5) and np.isclose(r["angle"], 90) and "rotates F by 90.0°" in r["status"]
+    r = view.set_values(re=0.0, im=0.0)
+    assert "z = 0" in r["status"] and np.allclose(r["image"], 0) and view.last_error is None
+
+
+def test_complex_plane_view_point_z_is_dragged_with_the_mouse():
+    view = qv.complex_plane_view(re=1.0, im=0.0)
+    view.drag.press_at(1.0, 0.0)
+    view.drag.move_to(-0.5, 1.2)
+    view.drag.release()
+    assert view.values() == {"re": -0.5, "im": 1.2}
+    assert np.allclose(view.last_result["image"], qt.complex_multiply(qv.FIGURE_F, -0.5 + 1.2j))
+
+
+def test_rotation_view_draws_q_v_qstar_and_its_matrix():
+    view = qv.rotation_view()
+    r = view.set_values(ax=0.0, ay=0.0, az=1.0, angle=90.0, size=1.0)
+    # a quarter turn about z: (0.9, 0, 0) -> (0, 0.9, 0), (0, 0.6, 0) -> (-0.6, 0, 0), z fixed
+    assert np.allclose(r["image"], [[0, 0.9, 0], [-0.6, 0, 0], [0, 0, 0.35]], atol=1e-12)
+    assert np.allclose(r["q"], [np.sqrt(0.5), 0, 0, np.sqrt(0.5)])
+    assert np.allclose(r["matrix"], qt.to_matrix(r["q"])) and np.allclose(qv.BODY_ARROWS @ r["matrix"][:3, :3], r["image"])
+    assert "4x4 matrix" in r["status"] and "q = (0.707, 0.000, 0.000, 0.707)" in r["status"]
+    view.set_values(ax=1.0, ay=-1.0, az=0.5, angle=-130.0, size=1.0)
+    tips = view.scene.data("image:head")["positions"].reshape(3, -1, 3)[:, 0]   # the cones' apexes
+    assert np.allclose(tips, qt.rotate(qt.from_axis_angle([1, -1, 0.5], -130), qv.BODY_ARROWS), atol=1e-12)
+
+
+def test_rotation_view_scales_by_the_norm_squared_and_survives_a_zero_axis():
+    view = qv.rotation_view()
+    r = view.set_values(ax=1.0, ay=0.0, az=0.0, angle=40.0, size=1.2)
+    assert np.isclose(r["scale"], 1.44) and np.isclose(np.linalg.norm(r["image"][0]), 0.9 * 1.44)
+    assert "scaling by |q|² = 1.440" in r["status"]
+    r = view.set_values(ax=0.0, ay=0.0, az=0.0)
+    assert view.last_error is None and "no direction" in r["status"] and np.allclose(r["image"], qv.BODY_ARROWS)
+
+
+def test_key_frame_view_slerp_beside_linear_matrices():
+    view = qv.key_frame_view("tumble")
+    keys = qv.KEY_SETS["tumble"]
+    times = np.arange(len(keys), dtype=float)
+    for frame in (0, 7, 30, 61, qv.FRAMES):
+        r = view.set_values(frame=frame)
+        t = frame / qv.FRAMES * times[-1]
+        assert np.isclose(r["time"], t)
+        q = qt.key_frames(keys, times, t)
+        assert np.allclose(r["slerp"], q) and r["slerp_distortion"] < 1e-9
+        M = qt.matrix_key_frames(keys, times, t)
+        assert np.isclose(r["linear_distortion"], qt.matrix_distortion(M))
+        brick = view.scene.data("slerp:brick")["positions"]
+        assert np.allclose(brick, qv.BRICK @ qt.to_matrix(q)[:3, :3] - qv._OFFSET)
+        assert np.allclose(view.scene.data("linear:brick")["positions"], qv.BRICK @ M[:3, :3] + qv._OFFSET)
+    assert view.set_values(frame=12)["linear_distortion"] > 0.1           # between keys the blend distorts
+    r = view.set_values(keys="half turns", frame=qv.FRAMES // 6)           # halfway between I and a half turn
+    assert np.isclose(r["linear_distortion"], 1.0) and "collapsed" in r["status"]
+    # the nose paths follow the key set shown
+    path = view.scene.data("slerp:path")["positions"]
+    assert np.allclose(path[0], qv._NOSE[0] - qv._OFFSET)
+    assert np.allclose(np.linalg.norm(path + qv._OFFSET, axis=1), np.linalg.norm(qv._NOSE))   # on a sphere
+
+
+def test_the_play_widget_drives_the_frame_slider_and_the_plain_update():
+    view = qv.key_frame_view()
+    assert "goldman-play" in view.play._dom_classes
+    view.play.value = 40
+    assert view.controls["frame"].value == 40
+    assert np.isclose(view.last_result["time"], 40 / qv.FRAMES * 4)
+    view.set_values(frame=5)
+    assert view.play.value == 5
