@@ -1,0 +1,130 @@
+"""Part II in real JupyterLab (headless Chromium): a learner drags the query point of chapter 11's
+inside-outside map with the mouse, and presses Play on chapter 15's key-frame animation.
+
+* Drag: the test asks the kernel where the query point is on the ipympl canvas (the view's axes
+  transform, in figure pixels), presses the mouse there, drags it to where (3, -2) is drawn and lets
+  go.  The canvas pixels must change, the query point's sliders must follow (qx = 3, qy = -2, to the
+  slider step), and the status line must give the new winding number.
+* Play: pressing the ``Play`` widget (CSS class ``goldman-play``) must advance the frame slider it
+  drives and change the three.js picture of the two bricks.
+"""
+
+from __future__ import annotations
+
+import json
+import time
+
+import pytest
+
+from .conftest import SCREENSHOTS, course_notebooks
+from .labdriver import changed_fraction, screenshot, wait_changed, wait_for, wait_nonblank
+
+pytestmark = pytest.mark.browser
+
+NAMES = {p.name for p in course_notebooks()}
+CH11 = "11_vector_geometry_applications.ipynb"
+CH15 = "15_quaternions.ipynb"
+
+# Runs code in the notebook's kernel and returns what it printed.
+_JS_KERNEL = """
+async (code) => {
+  const w = window.jupyterapp.shell.currentWidget;
+  const kernel = w.sessionContext.session.kernel;
+  const future = kernel.requestExecute({code, silent: false, store_history: false});
+  let out = '';
+  future.onIOPub = (msg) => {
+    if (msg.header.msg_type === 'stream') out += msg.content.text;
+    if (msg.header.msg_type === 'error') out += 'ERROR ' + msg.content.ename + ': ' + msg.content.evalue;
+  };
+  await future.done;
+  return out;
+}
+"""
+
+
+def kernel(lab, code: str) -> str:
+    return lab.page.evaluate(_JS_KERNEL, code)
+
+
+def _view_with(nb, text: str):
+    views = nb.locator(".goldman-interactive")
+    for i in range(views.count()):
+        if text in views.nth(i).inner_text():
+            return views.nth(i)
+    raise AssertionError(f"no interactive view shows {text!r}")
+
+
+@pytest.mark.skipif(CH11 not in NAMES, reason="chapter 11 is not written yet")
+def test_drag_the_query_point_of_the_inside_outside_map(lab):
+    lab.open(f"course/{CH11}")
+    state = lab.run_all()
+    assert not state["errors"], "\n".join(state["errors"])
+    page = lab.page
+    nb = page.locator(".jp-NotebookPanel:not(.lm-mod-hidden) .jp-Notebook")
+    view = _view_with(nb, "winding number")
+    canvas = view.locator(".jupyter-matplotlib-canvas-div").first
+    canvas.scroll_into_view_if_needed()
+    before, _ = wait_nonblank(canvas)
+    where = json.loads(kernel(lab, (
+        "import json\n"
+        "v = inside_outside\n"
+        "a = v.ax.transData.transform((v.values()['qx'], v.values()['qy']))\n"
+        "b = v.ax.transData.transform((3.0, -2.0))\n"
+        "print(json.dumps([*map(float, a), *map(float, b), float(v.figure.bbox.height)]))")).strip())
+    ax_, ay_, bx_, by_, height = where
+    box = canvas.bounding_box()
+    # figure pixels (origin bottom left) -> page pixels (origin top left of the canvas)
+    start = (box["x"] + ax_, box["y"] + height - ay_)
+    end = (box["x"] + bx_, box["y"] + height - by_)
+    page.mouse.move(*start)
+    page.mouse.down()
+    for k in range(1, 9):
+        page.mouse.move(start[0] + (end[0] - start[0]) * k / 8, start[1] + (end[1] - start[1]) * k / 8)
+        time.sleep(0.05)
+    page.mouse.up()
+
+    def moved():
+        vals = json.loads(kernel(lab, "import json; print(json.dumps(inside_outside.values()))").strip())
+        return vals if abs(vals["qx"] - 3.0) <= 0.06 and abs(vals["qy"] + 2.0) <= 0.06 else None
+
+    vals = wait_for(moved, 30, message="the query point's sliders to follow the drag to (3, -2)")
+    time.sleep(1.0)   # the last redraw reaches the browser after the sliders have moved
+    after, frac = wait_changed(canvas, before, 0.001)
+    SCREENSHOTS.mkdir(parents=True, exist_ok=True)
+    (SCREENSHOTS / "drag-inside-outside-before.png").write_bytes(before)
+    (SCREENSHOTS / "drag-inside-outside-after.png").write_bytes(after)
+    assert frac > 0.001, "dragging the query point did not change the picture"
+    assert "winding number 0" in view.inner_text(), view.inner_text()
+    print(f"\ndragged the query point to ({vals['qx']}, {vals['qy']}); {frac:.1%} of the canvas changed")
+
+
+@pytest.mark.skipif(CH15 not in NAMES, reason="chapter 15 is not written yet")
+def test_play_moves_the_key_frame_animation(lab):
+    lab.open(f"course/{CH15}")
+    state = lab.run_all()
+    assert not state["errors"], "\n".join(state["errors"])
+    page = lab.page
+    nb = page.locator(".jp-NotebookPanel:not(.lm-mod-hidden) .jp-Notebook")
+    play = nb.locator(".goldman-play").first
+    play.scroll_into_view_if_needed()
+    view = nb.locator(".goldman-interactive", has=page.locator(".goldman-play")).first
+    display = view.locator(".goldman-display").first
+    before, st = wait_nonblank(display)
+    assert st.nonblank(), f"the key-frame view looks blank ({st})"
+    frame0 = int(kernel(lab, "print(animation.values()['frame'])").strip())
+    play.locator("button").first.click()
+
+    def advanced():
+        f = int(kernel(lab, "print(animation.values()['frame'])").strip())
+        return f if f != frame0 else None
+
+    frame1 = wait_for(advanced, 30, message="Play to advance the frame slider")
+    after, frac = wait_changed(display, before, 0.001, timeout=20)
+    (SCREENSHOTS / "play-key-frames-before.png").write_bytes(before)
+    (SCREENSHOTS / "play-key-frames-after.png").write_bytes(after)
+    # pause, so the animation does not keep the kernel busy for the next test
+    buttons = play.locator("button")
+    if buttons.count() > 1:
+        buttons.nth(1).click()
+    assert frac > 0.001, "the three.js picture did not change while playing"
+    print(f"\nPlay moved the frame from {frame0} to {frame1}; {frac:.1%} of the view changed")
