@@ -994,8 +994,10 @@ class BSplineCurve:
         return derivative(self.ctrl, self.knots, self.degree, u, order, side)
 
     def sample(self, count: int = 200) -> np.ndarray:
-        """``count`` points at equally spaced parameters over the domain."""
-        count = as_int(count, "count", minimum=2)
+        """``count`` points at equally spaced parameters over the domain (count >= 2, the
+        ``count * d`` coordinates at most :data:`~goldman_lib.validation.MAX_ITEMS`)."""
+        count = within_budget(count, "count", cost=lambda v: v * self.ctrl.shape[1], what="the sampled curve",
+                              unit="coordinates", minimum=2)
         return self.evaluate(np.linspace(*self.domain, count))
 
     def __repr__(self) -> str:

@@ -522,6 +522,6 @@ def test_summary(capsys):
     outcomes, seconds = fuzz_results()
     fuzzed = {TASKS[i][1].split("(")[0] for i in outcomes if TASKS[i][0] != "probe"}
     with capsys.disabled():
-        print(f"\nfuzz: {len(fuzzed)} public functions, {len(outcomes)} calls "
+        print(f"\nfuzz: {len(FUNCTIONS)} public functions ({len(fuzzed)} with parameters), {len(outcomes)} calls "
               f"({len(PROBES)} probes), {seconds:.1f} s; records left out: {_skipped_records(MODULES)}")
     assert len(outcomes) == len(TASKS)
