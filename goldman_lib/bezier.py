@@ -34,7 +34,7 @@ import math
 
 import numpy as np
 
-from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points,
+from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_parameter, as_points,
                                      finite_result, within_budget)
 
 __all__ = [
@@ -1025,6 +1025,15 @@ def is_flat(ctrl, tol, even=True) -> bool:
     return flatness(ctrl, even) <= tol
 
 
+def _check_pieces(count: int, per_piece: int, tol: float, depth_name: str = "max_depth", what: str = "curve") -> None:
+    """The work budget of adaptive subdivision, whose depth the tolerance sets: raise before a level
+    that would hold more than MAX_ITEMS coordinates (a tol far below the curve's size in float64)."""
+    if count * per_piece > MAX_ITEMS:
+        raise ValueError(f"tol = {tol:g} is too small for this {what}: the next level of subdivision would hold "
+                         f"{count:,} pieces ({count * per_piece:,} coordinates, over the limit of {MAX_ITEMS:,}); "
+                         f"use a larger tol or a smaller {depth_name}")
+
+
 def _tolerance(tol, name="tol") -> float:
     tol = as_float(tol, name, positive=True)
     return tol
@@ -1039,7 +1048,9 @@ def render_by_subdivision(ctrl, tol=1e-3, max_depth=24) -> tuple[np.ndarray, np.
     its chord (evenly parametrised), the polyline is within ``tol`` of the curve.
 
     ctrl: (n+1, d).  tol: positive float, an absolute distance.  max_depth: int in [0, 40], the
-    deepest subdivision (a safety stop; pieces at that depth are drawn flat or not).
+    deepest subdivision (a safety stop; pieces at that depth are drawn flat or not).  The work
+    budget: a level of more than :data:`~goldman_lib.validation.MAX_ITEMS` coordinates of pieces
+    (a tol far below what float64 resolves on this curve) raises ValueError naming tol.
     Returns ``(t, points)``: the parameters (k,) increasing from 0 to 1 and the points (k, d)
     on the curve at them.
     Raises ValueError for a non-positive tol, a bad max_depth or a bad ctrl.
@@ -1064,6 +1075,7 @@ def render_by_subdivision(ctrl, tol=1e-3, max_depth=24) -> tuple[np.ndarray, np.
         pieces, starts = pieces[~flat], starts[~flat]
         if len(pieces) == 0:
             break
+        _check_pieces(2 * len(pieces), P.size, tol)
         left, right = _split(pieces, 0.5, axis=1)
         width /= 2
         pieces = np.concatenate([left, right])
@@ -1418,7 +1430,8 @@ def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarra
     Returns ``(corners, domains)``: the corner points of the pieces (k, 4, d) in the order
     ``S(u0, v0), S(u1, v0), S(u1, v1), S(u0, v1)``, and their parameter rectangles (k, 4) as
     ``[u0, u1, v0, v1]``.
-    Raises ValueError for a non-positive tol, a bad max_depth or a bad net.
+    Raises ValueError for a non-positive tol, a bad max_depth or a bad net, or a tol so small that a
+    level of subdivision would hold more than :data:`~goldman_lib.validation.MAX_ITEMS` coordinates.
 
     >>> corners, domains = render_patch_by_subdivision([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], 0.1)
     >>> len(domains)
@@ -1440,6 +1453,7 @@ def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarra
         nets, dom = nets[~flat], dom[~flat]
         if len(nets) == 0:
             break
+        _check_pieces(4 * len(nets), P.size, tol, what="patch")
         nets, dom = _quarter(nets, dom)
     return np.concatenate(out_c), np.concatenate(out_d)
 

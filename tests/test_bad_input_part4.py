@@ -203,3 +203,19 @@ def test_messages_name_the_parameter(call, exc, pattern):
 def test_convergence_study_of_a_polygon_on_its_curve_is_finite():
     study = ki.convergence_study([[1, 1]] * 3, [0, 0, 0, 1, 1, 1], 2, 2)
     assert np.all(np.isfinite(study["ratio"])) and study["ratio"].tolist() == [0.0, 0.0]
+
+
+ADAPTIVE = [
+    ("render_by_subdivision", lambda: bezier.render_by_subdivision(C, tol=1e-300)),
+    ("render_patch_by_subdivision", lambda: bezier.render_patch_by_subdivision(NET, tol=1e-300, max_depth=12)),
+    ("knot_insertion.render", lambda: ki.render(POLYGON, KNOTS, 3, tol=1e-300, max_levels=20)),
+    ("knot_insertion.render subdivision",
+     lambda: ki.render(POLYGON, KNOTS, 3, tol=1e-300, method="subdivision", max_levels=20)),
+]
+
+
+@pytest.mark.parametrize("call", [b[1] for b in ADAPTIVE], ids=[b[0] for b in ADAPTIVE])
+def test_a_tolerance_below_float64_resolution_is_refused(call):
+    """Adaptive subdivision's depth is set by tol: a level over the budget raises, naming tol."""
+    with time_limit(30), pytest.raises(ValueError, match=r"^tol = 1e-300 is too small for this (curve|patch)"):
+        call()
