@@ -654,6 +654,17 @@ def _uv(u, v):
     return np.broadcast_to(u, shape).reshape(-1), np.broadcast_to(v, shape).reshape(-1), shape
 
 
+def _patch_finite(result: np.ndarray, u, v) -> np.ndarray:
+    """``result``, or the ValueError of :func:`~goldman_lib.validation.finite_result` naming the
+    parameter (u or v) farthest from [0, 1]."""
+    if np.all(np.isfinite(result)):
+        return result
+    far = [(float(np.max(np.abs(x))) if np.size(x) else 0.0, name, x) for name, x in (("u", u), ("v", v))]
+    _, name, x = max(far, key=lambda f: f[0])
+    x = np.asarray(x)
+    return finite_result(result, name, x.flat[int(np.argmax(np.abs(x)))] if x.size else None)
+
+
 def _patch_points(P: np.ndarray, uf: np.ndarray, vf: np.ndarray) -> np.ndarray:
     """de Casteljau in v on every row, then in u on the resulting points: returns (d, N)."""
     m1, n1, d = P.shape
@@ -664,6 +675,7 @@ def _patch_points(P: np.ndarray, uf: np.ndarray, vf: np.ndarray) -> np.ndarray:
     return _levels(cols, uf)                                         # (d, N)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def patch_de_casteljau(ctrl, u, v) -> np.ndarray:
     """Evaluate a tensor-product Bezier patch by de Casteljau in v then in u (Goldman §24.6).
 
@@ -681,9 +693,10 @@ def patch_de_casteljau(ctrl, u, v) -> np.ndarray:
     """
     P = _net(ctrl)
     uf, vf, shape = _uv(u, v)
-    return _patch_points(P, uf, vf).T.reshape(shape + (P.shape[2],))
+    return _patch_finite(_patch_points(P, uf, vf).T.reshape(shape + (P.shape[2],)), uf, vf)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def patch_evaluate_grid(ctrl, u, v) -> np.ndarray:
     """Evaluate a Bezier patch on the tensor grid u x v, as ``B(u) P B(v)^T`` (Goldman §24.6).
 
@@ -708,7 +721,7 @@ def patch_evaluate_grid(ctrl, u, v) -> np.ndarray:
     Bv = _bernstein_rows(P.shape[1] - 1, v)           # (n+1, b)
     # one (a, m+1) @ (m+1, n+1) @ (n+1, b) product per coordinate, batched over d by matmul
     out = Bu.T @ P.transpose(2, 0, 1) @ Bv          # (d, a, b)
-    return np.ascontiguousarray(np.moveaxis(out, 0, -1))
+    return _patch_finite(np.ascontiguousarray(np.moveaxis(out, 0, -1)), u, v)
 
 
 def patch_grid(ctrl, nu=21, nv=21) -> np.ndarray:
@@ -729,6 +742,7 @@ def patch_grid(ctrl, nu=21, nv=21) -> np.ndarray:
     return patch_evaluate_grid(ctrl, np.linspace(0.0, 1.0, nu), np.linspace(0.0, 1.0, nv))
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def patch_derivatives(ctrl, u, v) -> tuple[np.ndarray, np.ndarray]:
     """The partial derivatives ``S_u`` and ``S_v`` of a Bezier patch (Goldman §24.6, §24.5).
 
@@ -753,9 +767,10 @@ def patch_derivatives(ctrl, u, v) -> tuple[np.ndarray, np.ndarray]:
             continue
         D = deg * np.diff(P, axis=axis)
         out.append(_patch_points(D, uf, vf).T.reshape(shape + (d,)))
-    return out[0], out[1]
+    return _patch_finite(out[0], uf, vf), _patch_finite(out[1], uf, vf)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def patch_normal(ctrl, u, v, normalize=True) -> np.ndarray:
     """The surface normal ``S_u x S_v`` of a 3D Bezier patch (Goldman §24.6).
 
@@ -769,7 +784,7 @@ def patch_normal(ctrl, u, v, normalize=True) -> np.ndarray:
     """
     P = as_points(ctrl, "ctrl", ndim=3, dim=3)
     su, sv = patch_derivatives(P, u, v)
-    nrm = np.cross(su, sv)
+    nrm = _patch_finite(np.cross(su, sv), u, v)
     if not normalize:
         return nrm
     length = np.linalg.norm(nrm, axis=-1, keepdims=True)
