@@ -59,6 +59,27 @@ def _ctrl(ctrl, name: str = "ctrl") -> np.ndarray:
     return as_points(ctrl, name, ndim=2)
 
 
+#: Coordinates of at most this magnitude keep squared distances (flatness, boxes, Newton steps)
+#: inside float64.
+MAX_COORDINATE = 1e150
+
+
+def _moderate(P: np.ndarray, name: str = "ctrl") -> np.ndarray:
+    """``P`` if its coordinates are at most :data:`MAX_COORDINATE` in magnitude (the algorithms that
+    square distances need it), else a ValueError naming ``name``."""
+    big = float(np.abs(P).max()) if P.size else 0.0
+    if big > MAX_COORDINATE:
+        raise ValueError(f"{name} is too large in magnitude: coordinates must stay within {MAX_COORDINATE:g} so "
+                         f"that squared distances fit in float64; got {big:g}")
+    return P
+
+
+def _blame(t, ctrl: str = "ctrl"):
+    """Who made a curve point overflow: the parameter if it lies outside [-1, 1] (extrapolating
+    multiplies by powers of t), else the control points."""
+    return ("t", t) if np.any(np.abs(t) > 1) else (ctrl, None)
+
+
 def _net(ctrl, name: str = "ctrl") -> np.ndarray:
     return as_points(ctrl, name, ndim=3)
 
@@ -157,7 +178,7 @@ def de_casteljau(ctrl, t) -> np.ndarray:
     """
     P = _ctrl(ctrl)
     t = as_parameter(t, "t")
-    return finite_result(_curve_points(P, t), "t", t)
+    return finite_result(_curve_points(P, t), *_blame(t))
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -184,7 +205,7 @@ def de_casteljau_steps(ctrl, t) -> list[np.ndarray]:
     cur = P
     while cur.shape[0] > 1:
         cur = (1.0 - t) * cur[:-1] + t * cur[1:]
-        levels.append(finite_result(cur, "t", t))
+        levels.append(finite_result(cur, *_blame(t)))
     return levels
 
 
@@ -262,7 +283,7 @@ def bernstein_evaluate(ctrl, t) -> np.ndarray:
             out *= s
             tpow *= tf
         out += np.multiply(P[n][:, None], tpow, out=buf)
-    return finite_result(out.T.reshape(t.shape + (d,)), "t", t)
+    return finite_result(out.T.reshape(t.shape + (d,)), *_blame(t))
 
 
 # --------------------------------------------------------------------------------------------
@@ -313,7 +334,7 @@ def derivative(ctrl, t, order=1) -> np.ndarray:
     if order > n:
         return np.zeros(t.shape + (P.shape[1],))
     D = np.diff(P, n=order, axis=0) * float(_falling(n, order)) if order else P
-    return finite_result(_curve_points(D, t), "t", t)
+    return finite_result(_curve_points(D, t), *_blame(t))
 
 
 def elevate_degree(ctrl, times=1) -> np.ndarray:
@@ -659,6 +680,8 @@ def _patch_finite(result: np.ndarray, u, v) -> np.ndarray:
     parameter (u or v) farthest from [0, 1]."""
     if np.all(np.isfinite(result)):
         return result
+    if max((float(np.max(np.abs(x))) if np.size(x) else 0.0) for x in (u, v)) <= 1:
+        return finite_result(result, "ctrl")
     far = [(float(np.max(np.abs(x))) if np.size(x) else 0.0, name, x) for name, x in (("u", u), ("v", v))]
     _, name, x = max(far, key=lambda f: f[0])
     x = np.asarray(x)
@@ -954,7 +977,7 @@ def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     if t.ndim != 0:
         raise ValueError(f"t must be a scalar for subdivide; got shape {t.shape}")
     left, right = _split(P, float(t))
-    return finite_result(left, "t", t), finite_result(right, "t", t)
+    return finite_result(left, *_blame(t)), finite_result(right, *_blame(t))
 
 
 def subdivide_uniform(ctrl, depth) -> np.ndarray:
@@ -1021,7 +1044,7 @@ def flatness(ctrl, even=True) -> float:
     >>> flatness([[0, 0], [1.8, 0], [2, 0]]), flatness([[0, 0], [1.8, 0], [2, 0]], even=False)
     (0.8, 0.0)
     """
-    P = _ctrl(ctrl)
+    P = _moderate(_ctrl(ctrl))
     return float(_flatness(P, bool(even)))
 
 
@@ -1049,6 +1072,16 @@ def _check_pieces(count: int, per_piece: int, tol: float, depth_name: str = "max
                          f"use a larger tol or a smaller {depth_name}")
 
 
+def _resolvable(tol: float, P: np.ndarray, name: str = "ctrl") -> float:
+    """``tol`` if float64 can resolve it at the scale of ``P``: at least 1e-15 times its largest
+    coordinate (below that, adaptive subdivision would split down to rounding noise)."""
+    scale = float(np.abs(P).max()) if P.size else 0.0
+    if tol < 1e-15 * scale:
+        raise ValueError(f"tol must be at least 1e-15 times the size of {name} (float64 resolves no less): "
+                         f"got tol = {tol:g} for coordinates up to {scale:g}")
+    return tol
+
+
 def _tolerance(tol, name="tol") -> float:
     tol = as_float(tol, name, positive=True)
     return tol
@@ -1074,8 +1107,8 @@ def render_by_subdivision(ctrl, tol=1e-3, max_depth=24) -> tuple[np.ndarray, np.
     >>> t.tolist()
     [0.0, 0.25, 0.5, 0.75, 1.0]
     """
-    P = _ctrl(ctrl)
-    tol = _tolerance(tol)
+    P = _moderate(_ctrl(ctrl))
+    tol = _resolvable(_tolerance(tol), P)
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=40)
     pieces = P[None]
     starts = np.zeros(1)
@@ -1259,10 +1292,10 @@ def _merge_solutions(st: np.ndarray, res: np.ndarray, meet, tol_abs: float, clos
     return out[np.lexsort(out.T[::-1])]
 
 
-def _curves_pair(a, b):
+def _curves_pair(a, b, moderate: bool = False):
     A = as_points(a, "a", ndim=2, dim=2)
     B = as_points(b, "b", ndim=2, dim=2)
-    return A, B
+    return (_moderate(A, "a"), _moderate(B, "b")) if moderate else (A, B)
 
 
 def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
@@ -1301,7 +1334,7 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     >>> intersect_curves([[0, 0], [1, 0]], [[0, 1], [1, 1]]).shape
     (0, 2)
     """
-    A, B = _curves_pair(a, b)
+    A, B = _curves_pair(a, b, moderate=True)
     tol = _tolerance(tol)
     max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=60)
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
@@ -1343,7 +1376,7 @@ def intersection_boxes(a, b, level) -> tuple[np.ndarray, np.ndarray, np.ndarray,
     >>> ia.tolist(), ib.tolist()
     ([[0.0, 0.5], [0.5, 1.0]], [[0.0, 0.5], [0.5, 1.0]])
     """
-    A, B = _curves_pair(a, b)
+    A, B = _curves_pair(a, b, moderate=True)
     level = as_int(level, "level", minimum=0, maximum=30)
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
     kept_a, kept_b, kept_ia, kept_ib = [], [], [], []
@@ -1430,7 +1463,7 @@ def patch_flatness(ctrl) -> float:
     >>> patch_flatness([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
     0.25
     """
-    return float(_patch_flatness(_net(ctrl)[None])[0])
+    return float(_patch_flatness(_moderate(_net(ctrl))[None])[0])
 
 
 def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarray, np.ndarray]:
@@ -1452,8 +1485,8 @@ def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarra
     >>> len(domains)
     4
     """
-    P = _net(ctrl)
-    tol = _tolerance(tol)
+    P = _moderate(_net(ctrl))
+    tol = _resolvable(_tolerance(tol), P)
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=12)
     nets = P[None]
     dom = np.array([[0.0, 1.0, 0.0, 1.0]])
@@ -1522,9 +1555,9 @@ def intersect_ray_patch(ctrl, origin, direction, tol=1e-10, max_depth=16) -> np.
     >>> intersect_ray_patch(net, [0.25, 0.5, 1.0], [0, 0, -1]).tolist()
     [[0.25, 0.5, 1.0]]
     """
-    P = as_points(ctrl, "ctrl", ndim=3, dim=3)
-    o = as_points(origin, "origin", ndim=1, dim=3)
-    d = as_points(direction, "direction", ndim=1, dim=3)
+    P = _moderate(as_points(ctrl, "ctrl", ndim=3, dim=3))
+    o = _moderate(as_points(origin, "origin", ndim=1, dim=3), "origin")
+    d = _moderate(as_points(direction, "direction", ndim=1, dim=3), "direction")
     if not np.any(d):
         raise ValueError("direction must be a nonzero vector; got all zeros")
     tol = _tolerance(tol)
@@ -1610,7 +1643,7 @@ def subdivision_variation_counts(ctrl, line_point, line_normal, max_depth=8, tol
     >>> subdivision_variation_counts([[0, 1], [1, -2], [2, 0], [3, 1]], [0, -0.7], [0, 1], 4)
     [2, 2, 0, 0, 0]
     """
-    P = _ctrl(ctrl)
+    P = _moderate(_ctrl(ctrl))
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=16)
     tol = as_float(tol, "tol")
     counts = []
@@ -1896,8 +1929,8 @@ def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True, segments=False)
     >>> params[0].round(12).tolist()
     [0.5, 0.25, 0.5, 0.0]
     """
-    A = as_points(a, "a", ndim=3, dim=3)
-    B = as_points(b, "b", ndim=3, dim=3)
+    A = _moderate(as_points(a, "a", ndim=3, dim=3), "a")
+    B = _moderate(as_points(b, "b", ndim=3, dim=3), "b")
     tol = _tolerance(tol)
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=12)
     ends, params = _patch_pair_segments(A, B, tol, max_depth)

@@ -648,6 +648,7 @@ def control_polygon_distance(ctrl, knots, degree) -> float:
     1.0
     """
     P, t, p = _curve(ctrl, knots, degree)
+    bezier._moderate(P)
     if p < 1:
         raise ValueError("degree must be >= 1 for control_polygon_distance (Greville abscissae need a knot)")
     xi = np.clip(greville(t, p), t[p], t[t.size - p - 1])
@@ -674,6 +675,7 @@ def convergence_study(ctrl, knots, degree, levels=6) -> dict:
     [4.0, 4.0, 4.0]
     """
     P, t, p = _curve(ctrl, knots, degree)
+    bezier._moderate(P)
     if p < 1:
         raise ValueError("degree must be >= 1 for a convergence study")
     levels = as_int(levels, "levels", minimum=1, maximum=12)
@@ -768,7 +770,7 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     P, t, p = _curve(ctrl, knots, degree)
     if p < 1:
         raise ValueError("degree must be >= 1 to render by subdivision")
-    tol = as_float(tol, "tol", positive=True)
+    tol = bezier._resolvable(as_float(tol, "tol", positive=True), bezier._moderate(P))
     max_levels = as_int(max_levels, "max_levels", minimum=0, maximum=20)
     if method not in ("bezier", "subdivision"):
         raise ValueError(f"method must be 'bezier' or 'subdivision'; got {method!r}")

@@ -221,5 +221,11 @@ ADAPTIVE = [
 @pytest.mark.parametrize("call", [b[1] for b in ADAPTIVE], ids=[b[0] for b in ADAPTIVE])
 def test_a_tolerance_below_float64_resolution_is_refused(call):
     """Adaptive subdivision's depth is set by tol: a level over the budget raises, naming tol."""
-    with time_limit(30), pytest.raises(ValueError, match=r"^tol = 1e-300 is too small for this (curve|patch)"):
+    with time_limit(30), pytest.raises(ValueError, match=r"^tol must be at least 1e-15 times the size of ctrl"):
         call()
+
+
+def test_a_level_over_the_budget_is_refused():
+    """A resolvable tol that still needs more pieces than the budget allows raises, naming tol."""
+    with time_limit(60), pytest.raises(ValueError, match=r"^tol = 1e-13 is too small for this curve"):
+        bezier.render_by_subdivision(C, tol=1e-13, max_depth=40)

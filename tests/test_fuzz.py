@@ -249,7 +249,7 @@ NONFINITE_BY_CONTRACT = {
 
 # -- the battery of bad values ---------------------------------------------------------------------
 GENERIC = [("nan", math.nan), ("inf", math.inf), ("-inf", -math.inf), ("1e308", 1e308), ("-1e308", -1e308),
-           ("10**12", 10 ** 12), ("0", 0), ("-1", -1), ("[]", []), ("ragged", [[0.0, 0.0], [1.0]]),
+           ("10**12", 10 ** 12), ("1e-300", 1e-300), ("0", 0), ("-1", -1), ("[]", []), ("ragged", [[0.0, 0.0], [1.0]]),
            ("complex", 1 + 2j), ("string", "x"), ("None", None)]
 
 
@@ -275,6 +275,7 @@ def battery(value) -> list[tuple[str, object]]:
         out.append(("nan inside", nan_inside))
         out.append(("all equal", np.repeat(arr[:1], arr.shape[0], axis=0)))
         out.append(("one item", arr[:1].copy()))
+        out.append(("huge entries", arr * 1e300 + np.sign(arr) * 1e300))
         if arr.ndim >= 2:
             out.append(("flattened", arr.reshape(-1)))
             if arr.shape[-1] > 1:
