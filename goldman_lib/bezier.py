@@ -34,7 +34,7 @@ import math
 
 import numpy as np
 
-from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points,
+from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_parameter, as_points,
                                      finite_result, within_budget)
 
 __all__ = [
@@ -57,6 +57,27 @@ _POWER_FORM_MAX_DEGREE = 1000
 
 def _ctrl(ctrl, name: str = "ctrl") -> np.ndarray:
     return as_points(ctrl, name, ndim=2)
+
+
+#: Coordinates of at most this magnitude keep squared distances (flatness, boxes, Newton steps)
+#: inside float64.
+MAX_COORDINATE = 1e150
+
+
+def _moderate(P: np.ndarray, name: str = "ctrl") -> np.ndarray:
+    """``P`` if its coordinates are at most :data:`MAX_COORDINATE` in magnitude (the algorithms that
+    square distances need it), else a ValueError naming ``name``."""
+    big = float(np.abs(P).max()) if P.size else 0.0
+    if big > MAX_COORDINATE:
+        raise ValueError(f"{name} is too large in magnitude: coordinates must stay within {MAX_COORDINATE:g} so "
+                         f"that squared distances fit in float64; got {big:g}")
+    return P
+
+
+def _blame(t, ctrl: str = "ctrl"):
+    """Who made a curve point overflow: the parameter if it lies outside [-1, 1] (extrapolating
+    multiplies by powers of t), else the control points."""
+    return ("t", t) if np.any(np.abs(t) > 1) else (ctrl, None)
 
 
 def _net(ctrl, name: str = "ctrl") -> np.ndarray:
@@ -157,7 +178,7 @@ def de_casteljau(ctrl, t) -> np.ndarray:
     """
     P = _ctrl(ctrl)
     t = as_parameter(t, "t")
-    return finite_result(_curve_points(P, t), "t", t)
+    return finite_result(_curve_points(P, t), *_blame(t))
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -184,7 +205,7 @@ def de_casteljau_steps(ctrl, t) -> list[np.ndarray]:
     cur = P
     while cur.shape[0] > 1:
         cur = (1.0 - t) * cur[:-1] + t * cur[1:]
-        levels.append(finite_result(cur, "t", t))
+        levels.append(finite_result(cur, *_blame(t)))
     return levels
 
 
@@ -262,7 +283,7 @@ def bernstein_evaluate(ctrl, t) -> np.ndarray:
             out *= s
             tpow *= tf
         out += np.multiply(P[n][:, None], tpow, out=buf)
-    return finite_result(out.T.reshape(t.shape + (d,)), "t", t)
+    return finite_result(out.T.reshape(t.shape + (d,)), *_blame(t))
 
 
 # --------------------------------------------------------------------------------------------
@@ -313,7 +334,7 @@ def derivative(ctrl, t, order=1) -> np.ndarray:
     if order > n:
         return np.zeros(t.shape + (P.shape[1],))
     D = np.diff(P, n=order, axis=0) * float(_falling(n, order)) if order else P
-    return finite_result(_curve_points(D, t), "t", t)
+    return finite_result(_curve_points(D, t), *_blame(t))
 
 
 def elevate_degree(ctrl, times=1) -> np.ndarray:
@@ -654,6 +675,19 @@ def _uv(u, v):
     return np.broadcast_to(u, shape).reshape(-1), np.broadcast_to(v, shape).reshape(-1), shape
 
 
+def _patch_finite(result: np.ndarray, u, v) -> np.ndarray:
+    """``result``, or the ValueError of :func:`~goldman_lib.validation.finite_result` naming the
+    parameter (u or v) farthest from [0, 1]."""
+    if np.all(np.isfinite(result)):
+        return result
+    if max((float(np.max(np.abs(x))) if np.size(x) else 0.0) for x in (u, v)) <= 1:
+        return finite_result(result, "ctrl")
+    far = [(float(np.max(np.abs(x))) if np.size(x) else 0.0, name, x) for name, x in (("u", u), ("v", v))]
+    _, name, x = max(far, key=lambda f: f[0])
+    x = np.asarray(x)
+    return finite_result(result, name, x.flat[int(np.argmax(np.abs(x)))] if x.size else None)
+
+
 def _patch_points(P: np.ndarray, uf: np.ndarray, vf: np.ndarray) -> np.ndarray:
     """de Casteljau in v on every row, then in u on the resulting points: returns (d, N)."""
     m1, n1, d = P.shape
@@ -664,6 +698,7 @@ def _patch_points(P: np.ndarray, uf: np.ndarray, vf: np.ndarray) -> np.ndarray:
     return _levels(cols, uf)                                         # (d, N)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def patch_de_casteljau(ctrl, u, v) -> np.ndarray:
     """Evaluate a tensor-product Bezier patch by de Casteljau in v then in u (Goldman §24.6).
 
@@ -681,9 +716,10 @@ def patch_de_casteljau(ctrl, u, v) -> np.ndarray:
     """
     P = _net(ctrl)
     uf, vf, shape = _uv(u, v)
-    return _patch_points(P, uf, vf).T.reshape(shape + (P.shape[2],))
+    return _patch_finite(_patch_points(P, uf, vf).T.reshape(shape + (P.shape[2],)), uf, vf)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def patch_evaluate_grid(ctrl, u, v) -> np.ndarray:
     """Evaluate a Bezier patch on the tensor grid u x v, as ``B(u) P B(v)^T`` (Goldman §24.6).
 
@@ -708,7 +744,7 @@ def patch_evaluate_grid(ctrl, u, v) -> np.ndarray:
     Bv = _bernstein_rows(P.shape[1] - 1, v)           # (n+1, b)
     # one (a, m+1) @ (m+1, n+1) @ (n+1, b) product per coordinate, batched over d by matmul
     out = Bu.T @ P.transpose(2, 0, 1) @ Bv          # (d, a, b)
-    return np.ascontiguousarray(np.moveaxis(out, 0, -1))
+    return _patch_finite(np.ascontiguousarray(np.moveaxis(out, 0, -1)), u, v)
 
 
 def patch_grid(ctrl, nu=21, nv=21) -> np.ndarray:
@@ -729,6 +765,7 @@ def patch_grid(ctrl, nu=21, nv=21) -> np.ndarray:
     return patch_evaluate_grid(ctrl, np.linspace(0.0, 1.0, nu), np.linspace(0.0, 1.0, nv))
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def patch_derivatives(ctrl, u, v) -> tuple[np.ndarray, np.ndarray]:
     """The partial derivatives ``S_u`` and ``S_v`` of a Bezier patch (Goldman §24.6, §24.5).
 
@@ -753,9 +790,10 @@ def patch_derivatives(ctrl, u, v) -> tuple[np.ndarray, np.ndarray]:
             continue
         D = deg * np.diff(P, axis=axis)
         out.append(_patch_points(D, uf, vf).T.reshape(shape + (d,)))
-    return out[0], out[1]
+    return _patch_finite(out[0], uf, vf), _patch_finite(out[1], uf, vf)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def patch_normal(ctrl, u, v, normalize=True) -> np.ndarray:
     """The surface normal ``S_u x S_v`` of a 3D Bezier patch (Goldman §24.6).
 
@@ -769,7 +807,7 @@ def patch_normal(ctrl, u, v, normalize=True) -> np.ndarray:
     """
     P = as_points(ctrl, "ctrl", ndim=3, dim=3)
     su, sv = patch_derivatives(P, u, v)
-    nrm = np.cross(su, sv)
+    nrm = _patch_finite(np.cross(su, sv), u, v)
     if not normalize:
         return nrm
     length = np.linalg.norm(nrm, axis=-1, keepdims=True)
@@ -939,7 +977,7 @@ def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     if t.ndim != 0:
         raise ValueError(f"t must be a scalar for subdivide; got shape {t.shape}")
     left, right = _split(P, float(t))
-    return finite_result(left, "t", t), finite_result(right, "t", t)
+    return finite_result(left, *_blame(t)), finite_result(right, *_blame(t))
 
 
 def subdivide_uniform(ctrl, depth) -> np.ndarray:
@@ -1006,7 +1044,7 @@ def flatness(ctrl, even=True) -> float:
     >>> flatness([[0, 0], [1.8, 0], [2, 0]]), flatness([[0, 0], [1.8, 0], [2, 0]], even=False)
     (0.8, 0.0)
     """
-    P = _ctrl(ctrl)
+    P = _moderate(_ctrl(ctrl))
     return float(_flatness(P, bool(even)))
 
 
@@ -1025,6 +1063,25 @@ def is_flat(ctrl, tol, even=True) -> bool:
     return flatness(ctrl, even) <= tol
 
 
+def _check_pieces(count: int, per_piece: int, tol: float, depth_name: str = "max_depth", what: str = "curve") -> None:
+    """The work budget of adaptive subdivision, whose depth the tolerance sets: raise before a level
+    that would hold more than MAX_ITEMS coordinates (a tol far below the curve's size in float64)."""
+    if count * per_piece > MAX_ITEMS:
+        raise ValueError(f"tol = {tol:g} is too small for this {what}: the next level of subdivision would hold "
+                         f"{count:,} pieces ({count * per_piece:,} coordinates, over the limit of {MAX_ITEMS:,}); "
+                         f"use a larger tol or a smaller {depth_name}")
+
+
+def _resolvable(tol: float, P: np.ndarray, name: str = "ctrl") -> float:
+    """``tol`` if float64 can resolve it at the scale of ``P``: at least 1e-15 times its largest
+    coordinate (below that, adaptive subdivision would split down to rounding noise)."""
+    scale = float(np.abs(P).max()) if P.size else 0.0
+    if tol < 1e-15 * scale:
+        raise ValueError(f"tol must be at least 1e-15 times the size of {name} (float64 resolves no less): "
+                         f"got tol = {tol:g} for coordinates up to {scale:g}")
+    return tol
+
+
 def _tolerance(tol, name="tol") -> float:
     tol = as_float(tol, name, positive=True)
     return tol
@@ -1039,7 +1096,9 @@ def render_by_subdivision(ctrl, tol=1e-3, max_depth=24) -> tuple[np.ndarray, np.
     its chord (evenly parametrised), the polyline is within ``tol`` of the curve.
 
     ctrl: (n+1, d).  tol: positive float, an absolute distance.  max_depth: int in [0, 40], the
-    deepest subdivision (a safety stop; pieces at that depth are drawn flat or not).
+    deepest subdivision (a safety stop; pieces at that depth are drawn flat or not).  The work
+    budget: a level of more than :data:`~goldman_lib.validation.MAX_ITEMS` coordinates of pieces
+    (a tol far below what float64 resolves on this curve) raises ValueError naming tol.
     Returns ``(t, points)``: the parameters (k,) increasing from 0 to 1 and the points (k, d)
     on the curve at them.
     Raises ValueError for a non-positive tol, a bad max_depth or a bad ctrl.
@@ -1048,8 +1107,8 @@ def render_by_subdivision(ctrl, tol=1e-3, max_depth=24) -> tuple[np.ndarray, np.
     >>> t.tolist()
     [0.0, 0.25, 0.5, 0.75, 1.0]
     """
-    P = _ctrl(ctrl)
-    tol = _tolerance(tol)
+    P = _moderate(_ctrl(ctrl))
+    tol = _resolvable(_tolerance(tol), P)
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=40)
     pieces = P[None]
     starts = np.zeros(1)
@@ -1064,6 +1123,7 @@ def render_by_subdivision(ctrl, tol=1e-3, max_depth=24) -> tuple[np.ndarray, np.
         pieces, starts = pieces[~flat], starts[~flat]
         if len(pieces) == 0:
             break
+        _check_pieces(2 * len(pieces), P.size, tol)
         left, right = _split(pieces, 0.5, axis=1)
         width /= 2
         pieces = np.concatenate([left, right])
@@ -1232,10 +1292,10 @@ def _merge_solutions(st: np.ndarray, res: np.ndarray, meet, tol_abs: float, clos
     return out[np.lexsort(out.T[::-1])]
 
 
-def _curves_pair(a, b):
+def _curves_pair(a, b, moderate: bool = False):
     A = as_points(a, "a", ndim=2, dim=2)
     B = as_points(b, "b", ndim=2, dim=2)
-    return A, B
+    return (_moderate(A, "a"), _moderate(B, "b")) if moderate else (A, B)
 
 
 def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
@@ -1274,7 +1334,7 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     >>> intersect_curves([[0, 0], [1, 0]], [[0, 1], [1, 1]]).shape
     (0, 2)
     """
-    A, B = _curves_pair(a, b)
+    A, B = _curves_pair(a, b, moderate=True)
     tol = _tolerance(tol)
     max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=60)
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
@@ -1316,7 +1376,7 @@ def intersection_boxes(a, b, level) -> tuple[np.ndarray, np.ndarray, np.ndarray,
     >>> ia.tolist(), ib.tolist()
     ([[0.0, 0.5], [0.5, 1.0]], [[0.0, 0.5], [0.5, 1.0]])
     """
-    A, B = _curves_pair(a, b)
+    A, B = _curves_pair(a, b, moderate=True)
     level = as_int(level, "level", minimum=0, maximum=30)
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
     kept_a, kept_b, kept_ia, kept_ib = [], [], [], []
@@ -1403,7 +1463,7 @@ def patch_flatness(ctrl) -> float:
     >>> patch_flatness([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
     0.25
     """
-    return float(_patch_flatness(_net(ctrl)[None])[0])
+    return float(_patch_flatness(_moderate(_net(ctrl))[None])[0])
 
 
 def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarray, np.ndarray]:
@@ -1418,14 +1478,15 @@ def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarra
     Returns ``(corners, domains)``: the corner points of the pieces (k, 4, d) in the order
     ``S(u0, v0), S(u1, v0), S(u1, v1), S(u0, v1)``, and their parameter rectangles (k, 4) as
     ``[u0, u1, v0, v1]``.
-    Raises ValueError for a non-positive tol, a bad max_depth or a bad net.
+    Raises ValueError for a non-positive tol, a bad max_depth or a bad net, or a tol so small that a
+    level of subdivision would hold more than :data:`~goldman_lib.validation.MAX_ITEMS` coordinates.
 
     >>> corners, domains = render_patch_by_subdivision([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], 0.1)
     >>> len(domains)
     4
     """
-    P = _net(ctrl)
-    tol = _tolerance(tol)
+    P = _moderate(_net(ctrl))
+    tol = _resolvable(_tolerance(tol), P)
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=12)
     nets = P[None]
     dom = np.array([[0.0, 1.0, 0.0, 1.0]])
@@ -1440,6 +1501,7 @@ def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarra
         nets, dom = nets[~flat], dom[~flat]
         if len(nets) == 0:
             break
+        _check_pieces(4 * len(nets), P.size, tol, what="patch")
         nets, dom = _quarter(nets, dom)
     return np.concatenate(out_c), np.concatenate(out_d)
 
@@ -1493,9 +1555,9 @@ def intersect_ray_patch(ctrl, origin, direction, tol=1e-10, max_depth=16) -> np.
     >>> intersect_ray_patch(net, [0.25, 0.5, 1.0], [0, 0, -1]).tolist()
     [[0.25, 0.5, 1.0]]
     """
-    P = as_points(ctrl, "ctrl", ndim=3, dim=3)
-    o = as_points(origin, "origin", ndim=1, dim=3)
-    d = as_points(direction, "direction", ndim=1, dim=3)
+    P = _moderate(as_points(ctrl, "ctrl", ndim=3, dim=3))
+    o = _moderate(as_points(origin, "origin", ndim=1, dim=3), "origin")
+    d = _moderate(as_points(direction, "direction", ndim=1, dim=3), "direction")
     if not np.any(d):
         raise ValueError("direction must be a nonzero vector; got all zeros")
     tol = _tolerance(tol)
@@ -1581,7 +1643,7 @@ def subdivision_variation_counts(ctrl, line_point, line_normal, max_depth=8, tol
     >>> subdivision_variation_counts([[0, 1], [1, -2], [2, 0], [3, 1]], [0, -0.7], [0, 1], 4)
     [2, 2, 0, 0, 0]
     """
-    P = _ctrl(ctrl)
+    P = _moderate(_ctrl(ctrl))
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=16)
     tol = as_float(tol, "tol")
     counts = []
@@ -1867,8 +1929,8 @@ def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True, segments=False)
     >>> params[0].round(12).tolist()
     [0.5, 0.25, 0.5, 0.0]
     """
-    A = as_points(a, "a", ndim=3, dim=3)
-    B = as_points(b, "b", ndim=3, dim=3)
+    A = _moderate(as_points(a, "a", ndim=3, dim=3), "a")
+    B = _moderate(as_points(b, "b", ndim=3, dim=3), "b")
     tol = _tolerance(tol)
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=12)
     ends, params = _patch_pair_segments(A, B, tol, max_depth)

@@ -304,7 +304,7 @@ def blossom(ctrl, knots, degree, args, span=None) -> np.ndarray:
             lo, hi = t[i], t[i + p + 1 - r]
             alpha = (x - lo) / (hi - lo)
             pts[j] = (1.0 - alpha) * pts[j - 1] + alpha * pts[j]
-    return pts[p]
+    return finite_result(pts[p], "args")
 
 
 def local_de_boor(ctrl, knots, degree, u) -> np.ndarray:
@@ -603,7 +603,7 @@ def derivative_jumps(ctrl, knots, degree, value) -> np.ndarray:
         right = derivative(P, t, p, x, r, side="right")
         left = derivative(P, t, p, x, r, side="left")
         out[r] = np.linalg.norm(right - left)
-    return out
+    return finite_result(out, "ctrl", why="is too large in magnitude (or knots too close)")
 
 
 # --------------------------------------------------------------------------------------------
@@ -675,7 +675,10 @@ def spline_to_bspline(pieces, breaks, continuity):
         k = next(k for k in range(max(j, p), min(j + p, n) + 1) if knots[k] < knots[k + 1])
         ctrl[j] = _monomial_blossom(C[piece_of_span[k]], knots[j + 1:j + p + 1])
     # check: the B-spline must reproduce every piece (it does iff the stated smoothness holds)
-    back, _ = bspline_to_pieces(ctrl, knots, p)
+    try:
+        back, _ = bspline_to_pieces(ctrl, knots, p)
+    except ValueError:
+        raise ValueError("breaks are too large in magnitude: the pieces' power coefficients overflow float64") from None
     scale = max(1.0, float(np.abs(C).max()))
     bad = np.abs(back - C).max(axis=(1, 2)) > 1e-8 * scale * (1 + np.abs(br).max()) ** p
     if bad.any():
@@ -710,7 +713,7 @@ def bspline_to_pieces(ctrl, knots, degree):
     for m in range(p + 1):            # c_m (u - a)^m = sum_j c_m C(m, j) (-a)^(m-j) u^j
         for j in range(m + 1):
             pieces[:, j] += taylor[:, m] * (math.comb(m, j) * (-a) ** (m - j))[:, None]
-    return pieces, breaks
+    return finite_result(pieces, "knots", why="are too large in magnitude (powers of the knots)"), breaks
 
 
 # --------------------------------------------------------------------------------------------
@@ -994,8 +997,10 @@ class BSplineCurve:
         return derivative(self.ctrl, self.knots, self.degree, u, order, side)
 
     def sample(self, count: int = 200) -> np.ndarray:
-        """``count`` points at equally spaced parameters over the domain."""
-        count = as_int(count, "count", minimum=2)
+        """``count`` points at equally spaced parameters over the domain (count >= 2, the
+        ``count * d`` coordinates at most :data:`~goldman_lib.validation.MAX_ITEMS`)."""
+        count = within_budget(count, "count", cost=lambda v: v * self.ctrl.shape[1], what="the sampled curve",
+                              unit="coordinates", minimum=2)
         return self.evaluate(np.linspace(*self.domain, count))
 
     def __repr__(self) -> str:

@@ -648,6 +648,7 @@ def control_polygon_distance(ctrl, knots, degree) -> float:
     1.0
     """
     P, t, p = _curve(ctrl, knots, degree)
+    bezier._moderate(P)
     if p < 1:
         raise ValueError("degree must be >= 1 for control_polygon_distance (Greville abscissae need a knot)")
     xi = np.clip(greville(t, p), t[p], t[t.size - p - 1])
@@ -674,6 +675,7 @@ def convergence_study(ctrl, knots, degree, levels=6) -> dict:
     [4.0, 4.0, 4.0]
     """
     P, t, p = _curve(ctrl, knots, degree)
+    bezier._moderate(P)
     if p < 1:
         raise ValueError("degree must be >= 1 for a convergence study")
     levels = as_int(levels, "levels", minimum=1, maximum=12)
@@ -758,7 +760,8 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     ctrl, knots, degree (>= 1): the curve.  tol: float > 0.  method: "bezier" or "subdivision".
     max_levels: int in [0, 20], the most halvings.
     Returns ``(points (N, d), levels)``, levels the number of halvings used (the deepest, for "bezier").
-    Raises ValueError for a bad curve, degree 0, tol <= 0 or an unknown method.
+    Raises ValueError for a bad curve, degree 0, tol <= 0, an unknown method, or a tol so small that a
+    level would hold more than :data:`~goldman_lib.validation.MAX_ITEMS` coordinates (the work budget).
 
     >>> pts, used = render([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, tol=0.1)
     >>> len(pts), used
@@ -767,7 +770,7 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     P, t, p = _curve(ctrl, knots, degree)
     if p < 1:
         raise ValueError("degree must be >= 1 to render by subdivision")
-    tol = as_float(tol, "tol", positive=True)
+    tol = bezier._resolvable(as_float(tol, "tol", positive=True), bezier._moderate(P))
     max_levels = as_int(max_levels, "max_levels", minimum=0, maximum=20)
     if method not in ("bezier", "subdivision"):
         raise ValueError(f"method must be 'bezier' or 'subdivision'; got {method!r}")
@@ -775,6 +778,7 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
         _schaefer_check(t, p)
         level = 0
         while level < max_levels and _corner_flatness(P) > tol:
+            bezier._check_pieces(_refined_count(P.shape[0], p, 1), P.shape[1] * (p + 1), tol, "max_levels")
             rounds, t = _schaefer_level(P, t, p)
             P = rounds[-1]
             level += 1
@@ -785,6 +789,7 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
         flat = _flatness_many(pieces) <= tol
         if flat.all() or level >= max_levels:
             break
+        bezier._check_pieces(len(pieces) + int(np.count_nonzero(~flat)), pieces[0].size, tol, "max_levels")
         left, right = _halves_many(pieces[~flat])
         counts = np.where(flat, 1, 2)
         start = np.cumsum(counts) - counts

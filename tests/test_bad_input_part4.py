@@ -135,6 +135,10 @@ OVERFLOW = [
     ("derivative_by_blossom", lambda: blossom.derivative_by_blossom(C, 1e200), "t"),
     ("normal_curve", lambda: sm.normal_curve(3, 1e150), "t"),
     ("bezier_subdivision_matrices", lambda: sm.bezier_subdivision_matrices(3, 1e308), "t"),
+    ("patch_de_casteljau", lambda: bezier.patch_de_casteljau(NET, 0.5, 1e200), "v"),
+    ("patch_evaluate_grid", lambda: bezier.patch_evaluate_grid(NET, [1e200], [0.5]), "u"),
+    ("patch_derivatives", lambda: bezier.patch_derivatives(NET, 1e200, 0.7), "u"),
+    ("patch_normal", lambda: bezier.BezierPatch(NET).normal(0.5, -1e200), "v"),
     ("nurbs_curve", lambda: bspline.nurbs_curve(POLYGON, [1, 1e308, 1, 1, 1], KNOTS, 3, 0.5), "weights"),
 ]
 
@@ -203,3 +207,25 @@ def test_messages_name_the_parameter(call, exc, pattern):
 def test_convergence_study_of_a_polygon_on_its_curve_is_finite():
     study = ki.convergence_study([[1, 1]] * 3, [0, 0, 0, 1, 1, 1], 2, 2)
     assert np.all(np.isfinite(study["ratio"])) and study["ratio"].tolist() == [0.0, 0.0]
+
+
+ADAPTIVE = [
+    ("render_by_subdivision", lambda: bezier.render_by_subdivision(C, tol=1e-300)),
+    ("render_patch_by_subdivision", lambda: bezier.render_patch_by_subdivision(NET, tol=1e-300, max_depth=12)),
+    ("knot_insertion.render", lambda: ki.render(POLYGON, KNOTS, 3, tol=1e-300, max_levels=20)),
+    ("knot_insertion.render subdivision",
+     lambda: ki.render(POLYGON, KNOTS, 3, tol=1e-300, method="subdivision", max_levels=20)),
+]
+
+
+@pytest.mark.parametrize("call", [b[1] for b in ADAPTIVE], ids=[b[0] for b in ADAPTIVE])
+def test_a_tolerance_below_float64_resolution_is_refused(call):
+    """Adaptive subdivision's depth is set by tol: a level over the budget raises, naming tol."""
+    with time_limit(30), pytest.raises(ValueError, match=r"^tol must be at least 1e-15 times the size of ctrl"):
+        call()
+
+
+def test_a_level_over_the_budget_is_refused():
+    """A resolvable tol that still needs more pieces than the budget allows raises, naming tol."""
+    with time_limit(60), pytest.raises(ValueError, match=r"^tol = 1e-13 is too small for this curve"):
+        bezier.render_by_subdivision(C, tol=1e-13, max_depth=40)

@@ -3,15 +3,16 @@
 
 Functions are found by discovery, as the widget sweeps find widget factories: each module of the
 package (walked with :mod:`pkgutil`), each name in its ``__all__`` (or, without one, each name not
-starting with ``_`` and defined there), functions and the constructors of classes that check their
-input (exceptions and plain result records -- NamedTuples and dataclasses without
-``__post_init__`` -- are left out: they hold what the library computed, they read no input).
+starting with ``_`` and defined there), functions, the constructors of classes that check their
+input and those classes' public methods (exceptions and plain result records -- NamedTuples and
+dataclasses without ``__post_init__`` -- are left out: they hold what the library computed, they
+read no input).
 
 Each function needs one *valid example call*.  The examples are found by running the modules'
 doctests with every public function wrapped in a recorder (the first call a doctest makes is the
-example); :data:`EXTRA_EXAMPLES` adds the few that no doctest calls.  A public function without an
+example); :func:`_extra_examples` adds the few that no doctest calls.  A public function without an
 example fails :func:`test_every_public_function_has_a_valid_example`, so a new module of Parts II
-and III adds a doctest (or an entry here) and is then fuzzed like the rest.
+and III adds a doctest (or an entry there) and is then fuzzed like the rest.
 
 Then every parameter, in turn, gets a battery of bad values (NaN, +-inf, +-1e308, 10**12, 0, -1, an
 empty list, a ragged list, a complex number, a string, None, and, for an array, a NaN inside,
@@ -97,9 +98,51 @@ def _skipped_records(modules) -> list[str]:
     return out
 
 
+def _methods(functions) -> dict:
+    """The public methods (with parameters) of the fuzzed classes, as ``{"module.Class.method": function}``:
+    an example call of a method is ``(instance, *args)``."""
+    out = {}
+    for key, cls in functions.items():
+        if not inspect.isclass(cls):
+            continue
+        for name, fn in vars(cls).items():
+            if name.startswith("_") or not inspect.isfunction(fn):
+                continue
+            if any(p != "self" for p in inspect.signature(fn).parameters):
+                out[f"{key}.{name}"] = fn
+    return out
+
+
 def _record_examples(modules, functions) -> dict:
-    """The first call of each public function in its module's doctests: ``{key: (args, kwargs)}``."""
+    """The first call of each public function and method in the modules' doctests:
+    ``{key: (args, kwargs)}`` (a method's args start with its instance)."""
     found = {}
+    patched = []
+    for key, fn in functions.items():     # methods: recorded wherever a doctest calls them
+        if key.count(".") == 2:
+            cls = functions[key.rsplit(".", 1)[0]]
+
+            def method_recorder(self, *args, _key=key, _fn=fn, **kwargs):
+                try:
+                    snapshot = copy.deepcopy(((self,) + args, kwargs))
+                except Exception:  # noqa: BLE001
+                    snapshot = None
+                result = _fn(self, *args, **kwargs)
+                if snapshot is not None:
+                    found.setdefault(_key, snapshot)
+                return result
+
+            patched.append((cls, fn.__name__, fn))
+            setattr(cls, fn.__name__, functools.wraps(fn)(method_recorder))
+    try:
+        _run_doctests(modules, functions, found)
+    finally:
+        for cls, name, fn in patched:
+            setattr(cls, name, fn)
+    return found
+
+
+def _run_doctests(modules, functions, found) -> None:
     for module in modules:
         short = module.__name__[len("goldman_lib."):]
         globs = dict(vars(module))
@@ -118,17 +161,17 @@ def _record_examples(modules, functions) -> dict:
             return recorder
 
         for key, fn in functions.items():
-            if key.startswith(short + ".") and inspect.isfunction(fn):
+            if key.startswith(short + ".") and key.count(".") == 1 and inspect.isfunction(fn):
                 globs[key.split(".", 1)[1]] = wrap(key, fn)
         for test in doctest.DocTestFinder().find(module, globs=globs):
             test.globs = dict(globs)
             doctest.DocTestRunner(verbose=False).run(test, out=lambda s: None)
-    return found
 
 
 def _extra_examples() -> dict:
-    """Valid example calls of the public functions and classes that no doctest calls."""
-    from goldman_lib import ifs, subdivision_surfaces
+    """Valid example calls of the public functions, classes and methods that no doctest calls (a
+    method's arguments start with its instance)."""
+    from goldman_lib import bezier, bspline, ifs, subdivision_surfaces, turtle
 
     cubic = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
     net = [[[i, j, (i * j) % 2] for j in range(3)] for i in range(3)]
@@ -146,6 +189,19 @@ def _extra_examples() -> dict:
         "ifs.IFS": ((ifs.sierpinski().maps,), {}),
         "fractals.RecursiveTurtleProgram": (("F", "F"), {}),
         "turtle.Turtle": (((0, 0), (1, 0)), {}),
+        "bezier.BezierCurve.evaluate": ((bezier.BezierCurve(cubic), 0.5), {}),
+        "bezier.BezierCurve.derivative": ((bezier.BezierCurve(cubic), 0.5, 1), {}),
+        "bezier.BezierCurve.steps": ((bezier.BezierCurve(cubic), 0.5), {}),
+        "bezier.BezierPatch.derivatives": ((bezier.BezierPatch(net), 0.5, 0.5), {}),
+        "bezier.BezierPatch.normal": ((bezier.BezierPatch(net), 0.5, 0.5), {}),
+        "bspline.BSplineCurve.basis": ((bspline.BSplineCurve(polygon, knots, 3), 0.5), {}),
+        "bspline.BSplineCurve.derivative": ((bspline.BSplineCurve(polygon, knots, 3), 0.5), {}),
+        "bspline.BSplineCurve.sample": ((bspline.BSplineCurve(polygon, knots, 3), 50), {}),
+        "bspline.NURBSCurve.derivative": ((bspline.NURBSCurve(polygon, [1, 2, 1, 2, 1], knots, 3), 0.5), {}),
+        "subdivision_surfaces.Mesh.with_vertices": ((subdivision_surfaces.cube(), subdivision_surfaces.cube().vertices),
+                                                    {}),
+        "turtle.Turtle.resize": ((turtle.Turtle(), 2.0), {}),
+        "turtle.Turtle.run": ((turtle.Turtle(), "FORWARD 1"), {}),
     }
 
 
@@ -153,6 +209,7 @@ MODULES = _modules()
 FUNCTIONS: dict = {}
 for _m in MODULES:
     FUNCTIONS.update(_public(_m))
+FUNCTIONS.update(_methods(FUNCTIONS))
 EXAMPLES = _record_examples(MODULES, FUNCTIONS)
 for _key, _example in _extra_examples().items():
     if _key in FUNCTIONS:
@@ -192,7 +249,7 @@ NONFINITE_BY_CONTRACT = {
 
 # -- the battery of bad values ---------------------------------------------------------------------
 GENERIC = [("nan", math.nan), ("inf", math.inf), ("-inf", -math.inf), ("1e308", 1e308), ("-1e308", -1e308),
-           ("10**12", 10 ** 12), ("0", 0), ("-1", -1), ("[]", []), ("ragged", [[0.0, 0.0], [1.0]]),
+           ("10**12", 10 ** 12), ("1e-300", 1e-300), ("0", 0), ("-1", -1), ("[]", []), ("ragged", [[0.0, 0.0], [1.0]]),
            ("complex", 1 + 2j), ("string", "x"), ("None", None)]
 
 
@@ -218,6 +275,7 @@ def battery(value) -> list[tuple[str, object]]:
         out.append(("nan inside", nan_inside))
         out.append(("all equal", np.repeat(arr[:1], arr.shape[0], axis=0)))
         out.append(("one item", arr[:1].copy()))
+        out.append(("huge entries", arr * 1e300 + np.sign(arr) * 1e300))
         if arr.ndim >= 2:
             out.append(("flattened", arr.reshape(-1)))
             if arr.shape[-1] > 1:
@@ -487,7 +545,7 @@ def _failures(group: str) -> list[str]:
 
 # -- the tests ------------------------------------------------------------------------------------------
 def test_every_public_function_has_a_valid_example():
-    """A public function without an example call is not fuzzed: add a doctest or an EXTRA_EXAMPLES row."""
+    """A public function without an example call is not fuzzed: add a doctest or an _extra_examples row."""
     missing = sorted(set(FUNCTIONS) - set(EXAMPLES))
     assert not missing, f"public functions without a valid example call: {missing}"
     broken = []
@@ -522,6 +580,6 @@ def test_summary(capsys):
     outcomes, seconds = fuzz_results()
     fuzzed = {TASKS[i][1].split("(")[0] for i in outcomes if TASKS[i][0] != "probe"}
     with capsys.disabled():
-        print(f"\nfuzz: {len(fuzzed)} public functions, {len(outcomes)} calls "
+        print(f"\nfuzz: {len(FUNCTIONS)} public functions ({len(fuzzed)} with parameters), {len(outcomes)} calls "
               f"({len(PROBES)} probes), {seconds:.1f} s; records left out: {_skipped_records(MODULES)}")
     assert len(outcomes) == len(TASKS)
