@@ -89,9 +89,11 @@ def test_out_of_range_values_give_a_status_message(factory):
         for bad in _bad_values(view.controls[name]):
             values = {**defaults, name: bad}
             start = time.perf_counter()
+            raised = False
             try:
                 result = view.update(**values)
             except (ValueError, TypeError) as exc:
+                raised = True
                 message = str(exc)
                 assert message and len(message) < 1000, (name, bad, message[:200])
             else:
@@ -100,12 +102,15 @@ def test_out_of_range_values_give_a_status_message(factory):
                     assert np.all(np.isfinite(arr)), f"{name}={bad!r} drew a non-finite value"
             elapsed = time.perf_counter() - start
             assert elapsed < LIMIT, f"update({name}={str(bad)[:40]!r}) took {elapsed:.2f} s"
-            # what the learner sees: the view's refresh shows a message or the drawing, never raises
-            view.values = lambda values=values: values
-            view.refresh()
-            assert view.status.value or view.last_error is None, (name, bad)
-            if view.last_error is not None:
-                assert "&#9888;" in view.status.value and len(view.status.value) < 2000
-            del view.values
+            huge = isinstance(bad, (int, float)) and not isinstance(bad, bool) and abs(bad) >= 1e6
+            if raised or huge:
+                # what the learner sees: the view's refresh shows the message in the status line, or
+                # redraws (a huge drawing must not break the figure's ticks either)
+                view.values = lambda values=values: values
+                view.refresh()
+                if raised:
+                    assert view.last_error is not None and "&#9888;" in view.status.value, (name, bad)
+                    assert len(view.status.value) < 2000
+                del view.values
     view.set_values(**defaults)
     assert view.last_error is None, view.last_error
