@@ -67,7 +67,7 @@ from goldman_lib.validation import MAX_ITEMS, MAX_ITERATIONS, as_int, as_points
 
 __all__ = ["CodoError", "CodoSyntaxError", "CodoTypeError", "CodoRuntimeError", "Point", "Vector", "Figure",
            "Drawing", "parse", "execute", "run", "SAMPLES", "KEYWORDS", "BUILTINS", "MAX_STEPS", "MAX_POINTS",
-           "MAX_NESTING", "MAX_WORK", "MAX_LENGTH",
+           "MAX_NESTING", "MAX_WORK", "MAX_LENGTH", "MAX_STROKES",
            "turtle_program_through", "TurtleFit", "closest_turtle_state", "turtle_image_gap", "vertices"]
 
 #: The most statements one program may execute (REPEATs counted out).
@@ -78,12 +78,16 @@ MAX_POINTS = 200_000
 #: together, and of the expression tree (``1 + 1 + ... + 1`` with 51 terms is 50 deep).  Deeper
 #: programs are a :class:`CodoSyntaxError` at the token that goes too deep, never a RecursionError.
 MAX_NESTING = 50
-#: The most figure points one program may move (maps applied to figures, figures joined, drawn):
-#: :data:`goldman_lib.validation.MAX_ITEMS`.
+#: The most work one program may do on figures (maps applied to figures, figures joined, drawn),
+#: counted as the points moved plus :data:`_STROKE_WORK` per polyline (each costs a numpy call):
+#: :data:`goldman_lib.validation.MAX_ITEMS`, about a second.
 MAX_WORK = MAX_ITEMS
-#: The longest program text :func:`parse` reads: 50,000 characters, a thousand lines or so (about
-#: half a second of parsing; a program that draws more repeats its statements with REPEAT).
-MAX_LENGTH = 50_000
+_STROKE_WORK = 500
+#: The most polylines one figure may hold (each is a numpy array that every map and check visits).
+MAX_STROKES = 10_000
+#: The longest program text :func:`parse` reads: 20,000 characters, several hundred lines (a
+#: fraction of a second of parsing; a program that draws more repeats its statements with REPEAT).
+MAX_LENGTH = 20_000
 #: How many characters of a token a message quotes.
 _QUOTE = 60
 #: The statement keywords (case-insensitive).
@@ -502,7 +506,7 @@ def parse(program: str) -> Program:
     if not isinstance(program, str):
         raise TypeError(f"program must be a string of CODO statements; got {type(program).__name__}")
     if len(program) > MAX_LENGTH:
-        raise ValueError(f"program must be at most {MAX_LENGTH:,} characters long (about half a second of "
+        raise ValueError(f"program must be at most {MAX_LENGTH:,} characters long (a fraction of a second of "
                          f"parsing); got {len(program):,} characters: use REPEAT instead of writing statements out")
     return _Parser(program).program()
 
@@ -554,12 +558,13 @@ class _Interpreter:
             self.fail(f"this program runs more than {self.max_steps:,} statements (the limit max_steps); "
                       f"write a shorter program", tok)
 
-    def touch(self, points: int, tok: Token):
-        """Count figure points moved against :data:`MAX_WORK`."""
-        self.work += points
+    def touch(self, polylines, tok: Token):
+        """Count the work of moving these polylines (points + _STROKE_WORK each) against MAX_WORK."""
+        self.work += sum(len(p) for p in polylines) + _STROKE_WORK * len(polylines)
         if self.work > MAX_WORK:
-            self.fail(f"this program moves more than {MAX_WORK:,} figure points in all (maps applied to figures, "
-                      f"figures joined or drawn); use smaller figures or fewer repetitions", tok)
+            self.fail(f"this program does more than {MAX_WORK:,} units of work on figures (a point moved is "
+                      f"one, a polyline {_STROKE_WORK}: maps applied to figures, figures joined or drawn); use smaller "
+                      f"figures or fewer repetitions", tok)
 
     def fail(self, message: str, tok: Token, cls=CodoRuntimeError):
         line, col = _position(self.text, tok.offset)
@@ -601,7 +606,7 @@ class _Interpreter:
                 self.repeats.pop()
 
     def add(self, polylines, tok):
-        self.touch(sum(len(p) for p in polylines), tok)
+        self.touch(polylines, tok)
         for p in polylines:
             self.points += len(p)
         if self.points > MAX_POINTS:
@@ -708,9 +713,11 @@ class _Interpreter:
             with np.errstate(over="ignore", invalid="ignore"):   # overflow is reported by settle
                 return a @ b
         if op == "+" and isinstance(a, Figure) and isinstance(b, Figure):
+            if len(a.polylines) + len(b.polylines) > MAX_STROKES:
+                self.fail(f"the figure {self.snippet(node)} would hold more than {MAX_STROKES:,} polylines", node.tok)
             if sum(len(p) for p in a.polylines + b.polylines) > MAX_POINTS:
                 self.fail(f"the figure {self.snippet(node)} would hold more than {MAX_POINTS:,} points", node.tok)
-            self.touch(sum(len(p) for p in a.polylines + b.polylines), node.tok)
+            self.touch(a.polylines + b.polylines, node.tok)
             return Figure(a.polylines + b.polylines)
         da, db = _describe(a), _describe(b)
         verb = {"+": "add", "-": "subtract", "*": "multiply", "/": "divide"}[op]
@@ -839,7 +846,7 @@ class _Interpreter:
             (a, b, _), (c, d, _), (e, f, _) = M.tolist()
             return _Mass(x.x * a + x.y * c + x.w * e, x.x * b + x.y * d + x.w * f, x.w)
         if isinstance(x, Figure):
-            self.touch(sum(len(p) for p in x.polylines), node.tok)
+            self.touch(x.polylines, node.tok)
             with np.errstate(over="ignore", invalid="ignore"):   # overflow is reported by settle
                 return Figure(tuple(p @ M[:2, :2] + M[2, :2] for p in x.polylines))
         self.fail(f"a map applies to a point, a vector or a figure; {self.snippet(args[0])} is {_describe(x)}",
@@ -858,7 +865,7 @@ def execute(program, *, max_steps: int = MAX_STEPS) -> Drawing:
     program: program text or a parsed :class:`Program`.  max_steps: the most statements it may
     execute (each round of a REPEAT with an empty body counts as one), an int from 0 to
     :data:`goldman_lib.validation.MAX_ITERATIONS` (1,000,000: about a minute of interpreting).
-    A program may also move at most :data:`MAX_WORK` figure points and nest at most
+    A program may also do at most :data:`MAX_WORK` work on figures and nest at most
     :data:`MAX_NESTING` deep.  Returns a :class:`Drawing`.  Raises TypeError for a program that is not a string,
     :class:`CodoSyntaxError`, :class:`CodoTypeError` or :class:`CodoRuntimeError` (all
     ValueErrors) naming the line, column and token.

@@ -392,7 +392,9 @@ class TurtleIFS:
 
     def polylines(self, level: int) -> list[np.ndarray]:
         """Level ``level`` drawn by the deterministic algorithm (Goldman §6.1, §8.3): the copies
-        of the base strokes and of the condensation strokes, placed by the driver.
+        of the base strokes and of the condensation strokes, placed by the driver.  level >= 0,
+        with the drawing at most :data:`goldman_lib.ifs.MAX_POINTS` points and
+        :data:`goldman_lib.validation.MAX_ITERATIONS` strokes (ValueError naming ``level``).
 
         >>> from goldman_lib import fractals
         >>> len(rons_algorithm(fractals.sierpinski_gasket_program()).polylines(2))
@@ -567,7 +569,10 @@ def equivalence_distance(program, level: int, point=(0, 0), direction=(1, 0)) ->
     """The Hausdorff distance between level ``level`` drawn by the turtle and by the IFS of
     Ron's algorithm (Goldman §8.3: the equivalence theorem says it is 0, up to rounding).
 
-    Raises as :func:`rons_algorithm`, and ValueError if the level draws nothing.
+    level: as :meth:`goldman_lib.fractals.RecursiveTurtleProgram.polylines` allows (at most the
+    program's ``max_level()``).  Raises as :func:`rons_algorithm`, and ValueError if the level
+    draws nothing or the two drawings differ by more than rounding and are too large to compare
+    (:func:`drawing_distance`).
 
     >>> from goldman_lib import fractals
     >>> equivalence_distance(fractals.koch_curve_program(), 4) < 1e-12

@@ -879,13 +879,17 @@ def similarity_dimension(scales) -> float:
     ...
     ValueError: no dimension D solves sum(s_i**D) = 1: scales[1] = 1.0 is not < 1, so the sum is at least 1 + 0.5**D > 1 for every D >= 0 (every copy must be smaller than the whole)
     """
-    s = np.asarray(scales, dtype=float) if not isinstance(scales, (str, bytes)) else None
-    if s is None:
+    if isinstance(scales, (str, bytes)):
         raise TypeError("scales must be a sequence of numbers, not a string")
+    from goldman_lib.validation import MAX_ITERATIONS, as_float_array
+    s = as_float_array(scales, "scales")
     if s.ndim > 1:
         raise ValueError(f"scales must be a flat list of scale factors; got shape {s.shape}")
     if s.size == 0:
         raise ValueError("scales must hold at least one scale factor")
+    if s.size > MAX_ITERATIONS:
+        raise ValueError(f"scales must hold at most {MAX_ITERATIONS:,} scale factors (each Newton step sums them "
+                         f"all); got {s.size:,}")
     s = as_points(s.reshape(-1, 1), "scales", ndim=2, dim=1)[:, 0]
     bad = np.flatnonzero(s <= 0)
     if bad.size:
@@ -895,7 +899,8 @@ def similarity_dimension(scales) -> float:
     big = np.flatnonzero(s >= 1)
     if big.size:
         i = int(big[0])
-        others = " + ".join(f"{_fmt(x)}**D" for j, x in enumerate(s) if j != i) or "0"
+        rest = [f"{_fmt(x)}**D" for j, x in enumerate(s[:5]) if j != i]
+        others = " + ".join(rest[:3]) + (" + ..." if s.size > 4 else "") if rest else "0"
         raise ValueError(f"no dimension D solves sum(s_i**D) = 1: scales[{i}] = {s[i]} is not < 1, so the sum "
                          f"is at least 1 + {others} > 1 for every D >= 0 (every copy must be smaller than "
                          f"the whole)")

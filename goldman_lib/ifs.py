@@ -251,11 +251,11 @@ def chaos_game(system, n, rng=None, *, burn_in: int = 20, chains: int = 4096,
     ``C`` lies in the attractor ``A = C ∪ W(A)``, every point still lies on it.
 
     system: an :class:`IFS`.  n: number of points (1 <= n <= MAX_POINTS).  rng: a
-    ``numpy.random.Generator``, an int seed or None.  burn_in: steps discarded, with
-    ``(burn_in + ceil(n / chains)) * chains`` map choices drawn at most
-    :data:`goldman_lib.validation.MAX_ITEMS` (so ``burn_in <= 1,200`` or so at the default
-    ``chains`` and ``n`` = 5,000,000, and up to about 9,999,980 for ``n <= chains = 1``... at
-    most :data:`goldman_lib.validation.MAX_ITERATIONS` steps in all).  chains >= 1.  Returns ``(n, 2)``.
+    ``numpy.random.Generator``, an int seed or None.  burn_in: steps discarded, >= 0, with the
+    steps in all, ``burn_in + ceil(n / chains)``, at most :data:`goldman_lib.validation.MAX_ITERATIONS`
+    and the map choices drawn, ``(burn_in + ceil(n / chains)) * chains``, at most
+    :data:`goldman_lib.validation.MAX_ITEMS` (about ``burn_in <= 1,200`` at the default ``chains``
+    and ``n`` = 5,000,000).  chains >= 1 (at most ``n`` are used).  Returns ``(n, 2)``.
     Raises ValueError if the points escape to infinity (the maps are not contractive).
 
     >>> chaos_game(sierpinski(), 4, rng=0).shape

@@ -115,7 +115,7 @@ def test_instant_memory_errors_are_value_errors():
     "P = " + "(" * 500 + "1" + ")" * 500,
     "P = " + "-" * 2000 + "1",
     "REPEAT 1 [ " * 500 + "]" * 500,
-    "P = " + " + ".join(["1"] * 5000),
+    "P = " + " + ".join(["1"] * 1000),
     "P = point(0, 0)\nQ = " + "rotate(P, 1)(" * 300 + "P" + ")" * 300,
 ])
 def test_codo_deep_programs_are_syntax_errors_with_line_and_column(program):

@@ -218,7 +218,7 @@ ERRORS = [
      "more than 20,000 statements"),
     ("REPEAT 100000 [ ]", codo.CodoRuntimeError, 1, 1, "REPEAT", "more than the limit"),
     ("F = polygon(point(0, 0), point(1, 0))\nREPEAT 30 [ F = F + F ]", codo.CodoRuntimeError, 2, 19, "+",
-     "more than 200,000 points"),
+     "more than 10,000 polylines"),
     ("x = 1e300 * 1e300", codo.CodoRuntimeError, 1, 11, "*", "overflows"),
     ("C = point(0, 0)\nF = polygon(C, point(1, 0), point(0, 1))\nM = scale(C, 1e200)\nDRAW M(M(F))",
      codo.CodoRuntimeError, 4, 7, "(", "the figure has non-finite points"),

@@ -16,6 +16,7 @@ import numpy as np
 
 from goldman_lib import affine, codo, turtle
 from goldman_lib.views import style
+from goldman_lib.views import _checks
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
 from goldman_lib.views.turtle import stroke_data
 
@@ -181,7 +182,10 @@ def turtle_shortcoming_view(program: str = "square", sx: float = 2.0, sy: float 
     ax.set_adjustable("box")
 
     def update(program, sx, sy, shear):
-        text = TURTLE_PROGRAMS[program]
+        text = TURTLE_PROGRAMS[_checks.option(TURTLE_PROGRAMS, program, "program")]
+        sx = _checks.number(sx, "sx", -1000.0, 1000.0)     # a drawing a million times too big: no picture
+        sy = _checks.number(sy, "sy", -1000.0, 1000.0)
+        shear = _checks.number(shear, "shear", -1000.0, 1000.0)
         M = affine.scaling([sx, sy]) @ affine.shear(shear)
         image = [affine.apply(p, M) for p in turtle.run(text)]
         fit = codo.closest_turtle_state(text, image)

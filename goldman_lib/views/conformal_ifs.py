@@ -34,6 +34,7 @@ from goldman_lib import affine, fractals, turtle
 from goldman_lib import conformal_ifs as cf
 from goldman_lib.validation import as_float, as_int
 from goldman_lib.views import style
+from goldman_lib.views import _checks
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.turtle import stroke_data
 
@@ -188,7 +189,10 @@ def initial_state_view(fractal: str = "Koch curve", level: int = 2, x: float = 0
     title = ax.set_title("", fontsize=10)
 
     def update(fractal, level, x, y, angle, scale):
-        program = fractals.PROGRAMS[fractal]()
+        program = fractals.PROGRAMS[_checks.option(fractals.PROGRAMS, fractal, "fractal")]()
+        level = _checks.integer(level, "level", 0, 5)
+        x, y = _checks.number(x, "x", -1000.0, 1000.0), _checks.number(y, "y", -1000.0, 1000.0)
+        angle, scale = _checks.number(angle, "angle"), _checks.number(scale, "scale", 0.001, 1000.0)
         lev = _fitting_level(program, int(level), 8000)
         w = _heading(angle, scale)
         standard = program.polylines(lev)
@@ -269,7 +273,10 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
     cache: dict = {}
 
     def update(fractal, level, x, y, angle, scale):
-        program = fractals.PROGRAMS[fractal]()
+        program = fractals.PROGRAMS[_checks.option(fractals.PROGRAMS, fractal, "fractal")]()
+        level = _checks.integer(level, "level", 0, 8)
+        x, y = _checks.number(x, "x", -1000.0, 1000.0), _checks.number(y, "y", -1000.0, 1000.0)
+        angle, scale = _checks.number(angle, "angle"), _checks.number(scale, "scale", 0.001, 1000.0)
         w = _heading(angle, scale)
         key = (fractal, float(x), float(y), float(angle), float(scale))
         conv = cache.get(key)
@@ -372,7 +379,8 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
             program = cf.tao_algorithm(s, unit)
         except ValueError as exc:
             return clear(f"Tao's algorithm refuses this IFS: {exc}")
-        level = min(int(values.get("levels", 0)), program.max_level(MAX_COMMANDS))
+        levels = _checks.integer(values.get("levels", 0), "levels", 0, 12)
+        level = min(levels, program.max_level(MAX_COMMANDS))
         cond = [s.condensation] if s.condensation is not None else []
         # keep the IFS drawing as small as the turtle's
         strokes = program.polylines(level)
@@ -394,7 +402,7 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
         right_title.set_text(f"IFS deterministic algorithm from the unit segment, level {level}")
         status = (f"Tao's algorithm: {len(s)} maps -> a body of {len(program.body)} commands "
                   f"({len(s)} RECURSE);  Hausdorff distance turtle vs IFS {distance:.1e}")
-        if level < int(values.get("levels", 0)):
+        if level < levels:
             status += f"  (level lowered to {level} to stay quick)"
         return {"turtle": strokes, "ifs": drawn, "program": ptext, "distance": distance, "level": level,
                 "status": status}
@@ -442,7 +450,9 @@ def bump_view(bump: str = "Koch curve", level: int = 4, height: float = 1.0) -> 
     right_title = right.set_title("", fontsize=10)
 
     def update(bump, level, height):
-        poly, rev = cf.BUMPS[bump]
+        poly, rev = cf.BUMPS[_checks.option(cf.BUMPS, bump, "bump")]
+        level = _checks.integer(level, "level", 0, 8)
+        height = _checks.number(height, "height", -1000.0, 1000.0)
         poly = poly * np.array([1.0, height])
         if np.any(np.hypot(*np.diff(poly, axis=0).T) < 1e-9):
             # a height of 0 folds a vertical segment to nothing: nudge it

@@ -14,6 +14,7 @@ import numpy as np
 from goldman_lib import ifs
 from goldman_lib.validation import as_int
 from goldman_lib.views import style
+from goldman_lib.views import _checks
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
 __all__ = ["START_SHAPES", "plot_copies", "iteration_view", "condensation_view"]
@@ -78,8 +79,9 @@ def iteration_view(system: str = "Sierpinski gasket", start: str = "unit square"
     cache = {}
 
     def update(system, start, level):
-        s = ifs.STANDARD[system]()
-        shape = START_SHAPES[start]
+        s = ifs.STANDARD[_checks.option(names, system, "system")]()
+        shape = START_SHAPES[_checks.option(START_SHAPES, start, "start")]
+        level = _checks.integer(level, "level", 0, max_level)
         if system not in cache:
             cache[system] = ifs.chaos_game(s, 30_000, rng=0)
         A = cache[system]
@@ -123,8 +125,9 @@ def condensation_view(angle: float = 30.0, ratio: float = 0.6, level: int = 6, m
     ax.set_ylim(-0.1, 2.9)
 
     def update(angle, ratio, level):
+        level = _checks.integer(level, "level", 0, max_level)
         s = ifs.tree(angle, ratio)
-        pts = ifs.deterministic(s, int(level))
+        pts = ifs.deterministic(s, level)
         branches = pts.reshape(-1, 2, 2)
         strokes = _strokes(branches)
         line.set_data(strokes[:, 0], strokes[:, 1])

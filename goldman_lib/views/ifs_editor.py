@@ -37,6 +37,7 @@ import numpy as np
 from goldman_lib import affine, ifs
 from goldman_lib.validation import as_int
 from goldman_lib.views import style
+from goldman_lib.views import _checks
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
 __all__ = ["ifs_editor", "system_from_values", "values_from_system", "MAX_MAPS", "PARAMETERS",
@@ -117,7 +118,7 @@ def values_from_system(system, max_maps: int = MAX_MAPS) -> dict:
 
 
 def _map_parameters(values: dict, i: int) -> tuple:
-    return tuple(float(values.get(f"{key}{i}", _spare_map(i)[key])) for key in PARAMETERS)
+    return tuple(_checks.number(values.get(f"{key}{i}", _spare_map(i)[key]), f"{key}{i}") for key in PARAMETERS)
 
 
 def system_from_values(values: dict, *, name: str = "edited IFS") -> ifs.IFS:
@@ -129,7 +130,7 @@ def system_from_values(values: dict, *, name: str = "edited IFS") -> ifs.IFS:
     >>> np.allclose(s.maps, ifs.sierpinski().maps)
     True
     """
-    k = max(1, int(values.get("maps", 1)))
+    k = _checks.integer(values.get("maps", 1), "maps", 1, MAX_MAPS)
     maps, weights = [], []
     for i in range(k):
         angle, sx, sy, shear, tx, ty, p = _map_parameters(values, i)
@@ -137,7 +138,7 @@ def system_from_values(values: dict, *, name: str = "edited IFS") -> ifs.IFS:
         weights.append(max(p, 0.0))
     weights = np.array(weights)
     probs = weights if weights.sum() > 0 else None
-    C = CONDENSATIONS.get(values.get("condensation", "none"))
+    C = CONDENSATIONS[_checks.option(CONDENSATIONS, values.get("condensation", "none"), "condensation")]
     return ifs.IFS(maps, probabilities=probs, condensation=C, name=name)
 
 
@@ -146,9 +147,15 @@ def attractor_points(system, algorithm: str = "chaos game", points: int = 100_00
     """What the editor draws: ``(points (n, 2), labels (n,), note)``; ``labels`` is the map that
     placed each point (``len(system)`` for condensation points).  Never raises for a
     non-contractive system: it then draws a few deterministic levels from the unit square, drops
-    what ran off, and says so in ``note``.
+    what ran off, and says so in ``note``.  algorithm: ``"chaos game"`` or ``"deterministic"``;
+    points: 1 to :data:`goldman_lib.ifs.MAX_POINTS`; levels: 0 to 64 (and capped further so that
+    at most 100,000 points are drawn, as ``note`` says).  Raises ValueError/TypeError naming a bad
+    one of these.
     """
     s = ifs.as_ifs(system)
+    algorithm = _checks.option(_ALGORITHMS, algorithm, "algorithm")
+    points = _checks.integer(points, "points", 1, ifs.MAX_POINTS)
+    levels = _checks.integer(levels, "levels", 0, 64)
     k = len(s)
     contractive = s.is_contractive()
     note = ""
@@ -243,7 +250,7 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
                                                 layout=widgets.Layout(width="290px"))
 
     def update(maps, edit, algorithm, points, levels, condensation, **params):
-        k = max(1, min(int(maps), max_maps))
+        k = _checks.integer(maps, "maps", 1, max_maps)
         values = {"maps": k, "condensation": condensation, **params}
         s = system_from_values(values)
         factors = s.contraction_factors()

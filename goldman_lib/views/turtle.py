@@ -26,6 +26,7 @@ import numpy as np
 from goldman_lib import turtle
 from goldman_lib.validation import as_float, as_int, as_points
 from goldman_lib.views import style
+from goldman_lib.views import _checks
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
 __all__ = ["plot_polylines", "plot_program", "polygon_explorer", "program_editor", "EXAMPLES",
@@ -51,6 +52,9 @@ EXAMPLES = {
 
 _ARROW = np.array([[1.0, 0.0], [-0.7, 0.6], [-0.3, 0.0], [-0.7, -0.6], [1.0, 0.0]])
 
+
+#: The longest program the editor runs (it re-runs at every edit; parsing takes about 2 s a megabyte).
+MAX_EDITOR_LENGTH = 100_000
 
 def heading_marker(direction):
     """A matplotlib marker: an arrowhead pointing along ``direction`` ``(2,)`` (the turtle)."""
@@ -212,6 +216,10 @@ def polygon_explorer(angle: float = 72.0, step: float = 1.0, repetitions: int = 
     artists = _PathArtists(ax)
 
     def update(angle, step, repetitions, factor):
+        angle = _checks.number(angle, "angle", 0.0, 360.0)
+        step = _checks.number(step, "step", 0.1, 3.0)
+        repetitions = _checks.integer(repetitions, "repetitions", 1, 120)
+        factor = _checks.number(factor, "factor", 0.8, 1.2)
         body = f"FORWARD {turtle.format_number(round(step, 6))} TURN {turtle.format_number(round(angle, 6))}"
         if factor != 1:
             body += f" RESIZE {turtle.format_number(round(factor, 6))}"
@@ -271,6 +279,9 @@ def program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> 
     def update(program):
         if not isinstance(program, str):
             raise TypeError(f"program must be a string; got {type(program).__name__}")
+        if len(program) > MAX_EDITOR_LENGTH:
+            raise ValueError(f"program must be at most {MAX_EDITOR_LENGTH:,} characters in the editor (it re-runs "
+                             f"as you type); got {len(program):,}: use REPEAT")
         t = turtle.trace(program)
         artists.set(t.polylines, (0.0, 0.0), t.point, t.direction)
         heading = float(np.degrees(np.arctan2(t.direction[1], t.direction[0])))
