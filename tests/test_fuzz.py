@@ -171,7 +171,7 @@ def _run_doctests(modules, functions, found) -> None:
 def _extra_examples() -> dict:
     """Valid example calls of the public functions, classes and methods that no doctest calls (a
     method's arguments start with its instance)."""
-    from goldman_lib import bezier, bspline, ifs, subdivision_surfaces, turtle
+    from goldman_lib import bezier, bspline, ifs, subdivision_surfaces, turtle, vectors
 
     cubic = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
     net = [[[i, j, (i * j) % 2] for j in range(3)] for i in range(3)]
@@ -202,6 +202,10 @@ def _extra_examples() -> dict:
                                                     {}),
         "turtle.Turtle.resize": ((turtle.Turtle(), 2.0), {}),
         "turtle.Turtle.run": ((turtle.Turtle(), "FORWARD 1"), {}),
+        "vectors.Point": (([1.0, 2.0, 0.0],), {}),
+        "vectors.Vector": (([3.0, 4.0, 0.0],), {}),
+        "vectors.Vector.dot": ((vectors.Vector([1.0, 2.0, 3.0]), vectors.Vector([4.0, -5.0, 6.0])), {}),
+        "vectors.Vector.cross": ((vectors.Vector([1.0, 0.0, 0.0]), vectors.Vector([0.0, 1.0, 0.0])), {}),
     }
 
 
