@@ -180,9 +180,28 @@ def point_pairs(count: int, prefix: str = "") -> list[tuple[str, str]]:
     return [(f"{prefix}x{k}", f"{prefix}y{k}") for k in range(count)]
 
 
+#: The largest coordinate :func:`points_from` accepts: far past any slider's box, small enough that
+#: a curve's arithmetic on it (powers, sums of products) stays finite.
+POINT_LIMIT = 1e12
+
+
 def points_from(values: dict, count: int, prefix: str = "") -> np.ndarray:
-    """The ``(count, 2)`` points that the sliders of :func:`point_sliders` hold in ``values``."""
-    return np.array([[values[f"{prefix}x{k}"], values[f"{prefix}y{k}"]] for k in range(count)], dtype=float)
+    """The ``(count, 2)`` points that the sliders of :func:`point_sliders` hold in ``values``.
+
+    A value no slider can reach (NaN, infinite, beyond ``POINT_LIMIT``) raises ValueError naming
+    the control, so the view shows a message instead of drawing nothing.
+    """
+    out = np.empty((count, 2))
+    for k in range(count):
+        for j, axis in enumerate("xy"):
+            name = f"{prefix}{axis}{k}"
+            v = values[name]
+            if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
+                raise TypeError(f"{name} must be a number; got {type(v).__name__}")
+            if not (np.isfinite(v) and abs(v) <= POINT_LIMIT):
+                raise ValueError(f"{name} must be a finite number of size at most {POINT_LIMIT:g}; got {v!r}")
+            out[k, j] = float(v)
+    return out
 
 
 def pair_rows(controls: dict, count: int, prefix: str = "") -> list:
