@@ -186,7 +186,8 @@ def degree_elevation_view(ctrl=DEFAULT_CUBIC, times: int = 2, max_times: int = 1
     controls = {"times": int_slider("elevate", times, 0, max_times),
                 **point_sliders(ctrl, box, width="200px", label_width="24px")}
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="degree elevation", arrange=[controls["times"]] + pair_rows(controls, n + 1))
+                           title="degree elevation", side=True,
+                           arrange=[controls["times"]] + pair_rows(controls, n + 1))
     view.ax = ax
     drag_sliders(view, ax, point_pairs(n + 1))
     return view

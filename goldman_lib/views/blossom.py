@@ -112,7 +112,7 @@ def blossom_view(ctrl=DEFAULT_CUBIC, args=(0.2, 0.5, 0.8), low: float = 0.0, hig
     controls.update(point_sliders(P, (*ax.get_xlim(), *ax.get_ylim()), width="200px", label_width="24px"))
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="blossom diagram",
-                           arrange=[controls[name] for name in names] + pair_rows(controls, n + 1))
+                           arrange=[controls[name] for name in names] + pair_rows(controls, n + 1), side=True)
     view.ax = ax
     drag_sliders(view, ax, point_pairs(n + 1))
     return view

@@ -119,7 +119,7 @@ def de_boor_explorer(ctrl=DEFAULT_POLYGON, u: float = 0.4, degree: int = 3, max_
                 **point_sliders(ctrl, (*ax.get_xlim(), *ax.get_ylim()), width="200px", label_width="24px")}
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="de Boor explorer",
-                           arrange=[controls["u"], controls["degree"]] + pair_rows(controls, n1))
+                           arrange=[controls["u"], controls["degree"]] + pair_rows(controls, n1), side=True)
     view.ax = ax
     drag_sliders(view, ax, point_pairs(n1))
     return view

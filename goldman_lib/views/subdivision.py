@@ -167,7 +167,8 @@ def subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_dep
                 "t": float_slider("split t", t, 0.1, 0.9, 0.05),
                 **point_sliders(ctrl, (*xlim, *ylim), width="200px", label_width="24px")}
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="subdivision level", arrange=[controls["depth"], controls["t"]] + pair_rows(controls, n1))
+                           title="subdivision level", side=True,
+                           arrange=[controls["depth"], controls["t"]] + pair_rows(controls, n1))
     view.ax = ax
     drag_sliders(view, ax, point_pairs(n1))
     return view
