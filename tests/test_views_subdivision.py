@@ -52,6 +52,22 @@ def test_adaptive_rendering_view_polyline_lies_on_the_curve():
         prev = r["segments"]
 
 
+def test_adaptive_rendering_view_control_points_are_dragged():
+    view = views.adaptive_rendering_view(digits=3)
+    view.drag.press_at(2.0, -1.0)         # on P2 of WAVY
+    view.drag.move_to(2.0, 1.0)
+    view.drag.release()
+    assert (view.values()["x2"], view.values()["y2"]) == (2.0, 1.0)
+    P = views.WAVY.copy()
+    P[2] = (2.0, 1.0)
+    r = view.last_result
+    np.testing.assert_allclose(r["polygon"], P)
+    np.testing.assert_allclose(r["polyline"], bezier.de_casteljau(P, r["t"]), atol=1e-12)
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[2].get_data()), r["polyline"])
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[1].get_data()),
+                               bezier.de_casteljau(P, np.linspace(0, 1, 2001))[::5], atol=1e-12)
+
+
 def test_intersection_view_points_are_on_both_curves():
     view = views.intersection_view()
     r = view.set_values(case="two cubics, three crossings", level=10, shift=0.0)

@@ -178,19 +178,20 @@ def adaptive_rendering_view(ctrl=WAVY, digits: int = 2) -> InteractiveView:
     """Rendering by adaptive subdivision (Goldman §25.3): the tolerance slider sets ``tol = 10**-digits``
     and the polyline of :func:`goldman_lib.bezier.render_by_subdivision` is drawn with its vertices.
 
-    ``update(digits)`` returns the polyline, its parameters and the number of segments; the status
-    compares it with the number of evenly spaced segments that reach the same accuracy.
+    ``update(digits, x0, y0, ...)`` returns the polyline, its parameters and the number of segments; the status
+    compares it with the number of evenly spaced segments that reach the same accuracy.  The
+    control points have x/y sliders and can be dragged with the mouse (``view.drag``).
     """
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
     fig, ax = style.new_axes()
-    plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
-    plot_curve(ctrl, ax, samples=400, alpha=0.35)
+    polygon = plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
+    curve = plot_curve(ctrl, ax, samples=400, alpha=0.35)
     (poly,) = ax.plot([], [], ".-", color=style.PALETTE["point"], markersize=6, linewidth=1.2)
     _limits(ax, ctrl, pad=0.3)
     dense = np.linspace(0.0, 1.0, 2001)
-    dense_pts = bezier.de_casteljau(ctrl, dense)
+    n1 = len(ctrl)
 
-    def uniform_segments(tol):
+    def uniform_segments(tol, dense_pts):
         # the fewest evenly spaced segments (powers of two) whose chords are within tol
         for k in range(0, 15):
             m = 2 ** k
@@ -208,24 +209,36 @@ def adaptive_rendering_view(ctrl=WAVY, digits: int = 2) -> InteractiveView:
                 return len(idx) - 1
         return len(dense) - 1
 
-    cache: dict[int, int] = {}
+    cache: dict[tuple, int] = {}
 
-    def update(digits):
+    def update(digits, **coords):
         digits = as_int(digits, "digits", minimum=1, maximum=4)
+        P = points_from(coords, n1)
         tol = 10.0 ** (-digits)
-        t, pts = bezier.render_by_subdivision(ctrl, tol)
+        t, pts = bezier.render_by_subdivision(P, tol)
+        dense_pts = bezier.de_casteljau(P, dense)
+        polygon.set_data(P[:, 0], P[:, 1])
+        curve.set_data(dense_pts[::5, 0], dense_pts[::5, 1])
         poly.set_data(pts[:, 0], pts[:, 1])
-        if digits not in cache:
-            cache[digits] = uniform_segments(tol)
+        key = (digits, P.tobytes())
+        if key not in cache:
+            if len(cache) > 64:
+                cache.clear()
+            cache[key] = uniform_segments(tol, dense_pts)
         ax.set_title(f"tolerance {tol:g}: {len(t) - 1} segments", fontsize=10)
-        return {"polyline": pts, "t": t, "segments": len(t) - 1,
+        return {"polyline": pts, "t": t, "segments": len(t) - 1, "polygon": P,
                 "status": f"tol = {tol:g}: {len(t) - 1} segments by adaptive subdivision; evenly spaced "
-                          f"parameters need about {cache[digits]}"}
+                          f"parameters need about {cache[key]}"}
 
     digits = as_int(digits, "digits", minimum=1, maximum=4)
-    controls = {"digits": int_slider("tol 1e-", digits, 1, 4)}
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="rendering by subdivision")
+    controls = {"digits": int_slider("tol 1e-", digits, 1, 4),
+                **point_sliders(ctrl, (*ax.get_xlim(), *ax.get_ylim()), width="200px", label_width="24px")}
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="rendering by subdivision", side=True,
+                           arrange=[controls["digits"]] + pair_rows(controls, n1))
+    view.ax = ax
+    drag_sliders(view, ax, point_pairs(n1))
+    return view
 
 
 def intersection_view(case: str = "two cubics, three crossings", level: int = 3, shift: float = 0.0,
