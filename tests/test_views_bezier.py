@@ -17,11 +17,40 @@ def test_explorer_draws_the_de_casteljau_point_of_the_slider_polygon():
 
 def test_elevation_keeps_the_curve_and_closes_in_on_it():
     view = views.degree_elevation_view()
-    gaps = [view.update(times=k)["gap"] for k in (0, 4, 12)]
+    gaps = [view.set_values(times=k)["gap"] for k in (0, 4, 12)]
     assert gaps[0] > gaps[1] > gaps[2]
-    elevated = view.update(times=3)["polygon"]
+    elevated = view.set_values(times=3)["polygon"]
     t = np.linspace(0, 1, 11)
     np.testing.assert_allclose(bezier.de_casteljau(elevated, t), bezier.de_casteljau(views.DEFAULT_CUBIC, t), atol=1e-12)
+
+
+def test_explorer_control_point_follows_the_mouse_and_the_sliders_follow():
+    view = views.de_casteljau_explorer()
+    before = view.last_result["curve"].copy()
+    view.drag.press_at(1.0, 2.5)          # on P1
+    view.drag.move_to(1.5, 3.0)
+    view.drag.move_to(2.04, 3.51)
+    view.drag.release()
+    assert view.values()["x1"] == 2.0 and view.values()["y1"] == 3.5   # snapped to the 0.1 steps
+    pts = np.array([[0, 0], [2.0, 3.5], [3, 2.5], [4, 0.5]])
+    np.testing.assert_allclose(view.last_result["polygon"], pts)
+    t = np.linspace(0, 1, 160)
+    np.testing.assert_allclose(view.last_result["curve"], bezier.de_casteljau(pts, t), atol=1e-12)
+    assert np.abs(view.last_result["curve"] - before).max() > 0.3
+    np.testing.assert_allclose(np.column_stack(view.figure.axes[0].lines[1].get_data()), view.last_result["curve"])
+
+
+def test_elevation_view_drags_the_original_points():
+    view = views.degree_elevation_view(times=3)
+    view.drag.press_at(3.0, 2.5)          # on P2
+    view.drag.move_to(2.5, 1.5)
+    view.drag.release()
+    assert (view.values()["x2"], view.values()["y2"]) == (2.5, 1.5)
+    P = np.array([[0, 0], [1, 2.5], [2.5, 1.5], [4, 0.5]])
+    np.testing.assert_allclose(view.last_result["original"], P)
+    np.testing.assert_allclose(view.last_result["polygon"], bezier.elevate_degree(P, 3), atol=1e-12)
+    t = np.linspace(0, 1, 400)
+    np.testing.assert_allclose(view.last_result["curve"], bezier.de_casteljau(P, t), atol=1e-12)
 
 
 def test_bernstein_view_values_sum_to_one():

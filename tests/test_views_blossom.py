@@ -28,6 +28,21 @@ def test_blossom_view_apex_is_symmetric_and_the_control_points_appear():
     np.testing.assert_allclose(view.set_values(u1=1.0, u2=0.0, u3=1.0)["point"], DEFAULT_CUBIC[2], atol=1e-12)
 
 
+def test_blossom_view_control_points_are_dragged_and_the_pyramid_follows():
+    view = views.blossom_view()
+    view.drag.press_at(4.0, 0.5)          # on P3
+    view.drag.move_to(3.5, 1.5)
+    view.drag.release()
+    assert (view.values()["x3"], view.values()["y3"]) == (3.5, 1.5)
+    P = DEFAULT_CUBIC.copy()
+    P[3] = (3.5, 1.5)
+    r = view.last_result
+    np.testing.assert_allclose(r["curve"], bezier.de_casteljau(P, np.linspace(0, 1, 200)), atol=1e-12)
+    r = view.set_values(u1=0.4, u2=0.4, u3=0.4)
+    np.testing.assert_allclose(r["point"], bezier.de_casteljau(P, 0.4), atol=1e-12)
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[0].get_data()), P)
+
+
 def test_blossom_labels_follow_goldman():
     assert views.blossom_label(3, 0, 0) == "000"
     assert views.blossom_label(3, 0, 3) == "111"

@@ -15,6 +15,7 @@ def test_de_boor_explorer_draws_the_scipy_curve_and_point():
     ctrl = views.DEFAULT_POLYGON
     for vals in view.sweep_values(n=5):
         r = view.update(**vals)
+        ctrl = np.array([[vals[f"x{k}"], vals[f"y{k}"]] for k in range(len(views.DEFAULT_POLYGON))])
         p = vals["degree"]
         knots = np.r_[np.zeros(p), np.linspace(0, 1, len(ctrl) - p + 1), np.ones(p)]   # clamped, even
         np.testing.assert_allclose(r["knots"], knots, atol=1e-15)
@@ -24,6 +25,24 @@ def test_de_boor_explorer_draws_the_scipy_curve_and_point():
         k = r["span"]
         assert knots[k] <= vals["u"] <= knots[k + 1] and len(r["levels"]) == p + 1
         np.testing.assert_allclose(r["levels"][0], ctrl[k - p:k + 1])
+
+
+def test_de_boor_explorer_control_points_are_dragged():
+    view = views.de_boor_explorer()
+    ctrl = views.DEFAULT_POLYGON.copy()
+    k = 3
+    view.drag.press_at(*ctrl[k])
+    target = np.round(ctrl[k] + [0.3, -0.6], 1)
+    view.drag.move_to(*target)
+    view.drag.release()
+    assert (view.values()[f"x{k}"], view.values()[f"y{k}"]) == tuple(target)
+    ctrl[k] = target
+    r = view.last_result
+    knots = bspline.clamped_knots(len(ctrl), 3)
+    np.testing.assert_allclose(r["polygon"], ctrl)
+    np.testing.assert_allclose(r["curve"], BSpline(knots, ctrl, 3)(np.linspace(0, 1, 240)), atol=1e-12)
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[0].get_data()), ctrl)   # the drawn polygon
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[1].get_data()), r["curve"])
 
 
 def test_local_control_changes_only_the_support():

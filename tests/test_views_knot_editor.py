@@ -111,7 +111,9 @@ def test_curve_editor_draws_scipy_curve_and_basis():
         r = view.update(**vals)
         knots, p = r["knots"], len(r["knots"]) - 8
         u = np.linspace(0, 1, len(r["curve"]))
-        np.testing.assert_allclose(r["curve"], BSpline(knots, ke.DEFAULT_POLYGON, p)(u), atol=1e-12)
+        ctrl = np.array([[vals[f"x{k}"], vals[f"y{k}"]] for k in range(len(ke.DEFAULT_POLYGON))])
+        np.testing.assert_allclose(r["polygon"], ctrl)
+        np.testing.assert_allclose(r["curve"], BSpline(knots, ctrl, p)(u), atol=1e-12)
         np.testing.assert_allclose(r["basis"], BSpline.design_matrix(u, knots, p).toarray(), atol=1e-12)
     fig = view.figure
     line = fig.axes[0].lines[1]
@@ -132,6 +134,40 @@ def test_nurbs_editor_starts_as_the_circle_and_matches_geomdl():
     crv.knotvector = list(r["knots"])
     u = np.linspace(0, 1, len(r["curve"]))
     np.testing.assert_allclose(r["curve"], np.array(crv.evaluate_list(list(u))), atol=1e-12)
+
+
+def test_curve_editors_control_points_are_dragged():
+    view = ke.bspline_curve_editor()
+    ctrl = ke.DEFAULT_POLYGON.copy()
+    view.drag.press_at(*ctrl[2])
+    target = np.round(ctrl[2] + [-0.4, 0.3], 1)
+    view.drag.move_to(*target)
+    view.drag.release()
+    assert (view.values()["x2"], view.values()["y2"]) == tuple(target)
+    ctrl[2] = target
+    r = view.last_result
+    np.testing.assert_allclose(r["curve"], BSpline(r["knots"], ctrl, 3)(np.linspace(0, 1, len(r["curve"]))), atol=1e-12)
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[0].get_data()), ctrl)
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[1].get_data()), r["curve"])
+
+    from geomdl import NURBS
+
+    view = ke.nurbs_curve_editor()
+    P = np.array(view.last_result["polygon"])
+    view.drag.press_at(*P[1])             # the circle's corner (1, 1): pull it out, the arc bulges
+    view.drag.move_to(1.4, 1.4)
+    view.drag.release()
+    r = view.last_result
+    assert (view.values()["x1"], view.values()["y1"]) == (1.4, 1.4)
+    P[1] = (1.4, 1.4)
+    np.testing.assert_allclose(r["polygon"], P)
+    crv = NURBS.Curve()
+    crv.degree = 2
+    crv.ctrlptsw = [list(np.r_[q * w, w]) for q, w in zip(r["polygon"], r["weights"])]
+    crv.knotvector = list(r["knots"])
+    u = np.linspace(0, 1, len(r["curve"]))
+    np.testing.assert_allclose(r["curve"], np.array(crv.evaluate_list(list(u))), atol=1e-12)
+    assert np.hypot(*r["curve"].T).max() > 1.05
 
 
 def test_surface_editor_draws_bisplev_surface():

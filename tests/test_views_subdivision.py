@@ -24,8 +24,22 @@ def test_subdivision_view_draws_pieces_of_the_curve():
         # every joint is a point of the curve: the joints at depth 2, t=1/2 are C(k/4)
         if depth == 2 and t == 0.5:
             np.testing.assert_allclose(polys[:, 0], bezier.de_casteljau(ctrl, [0, 0.25, 0.5, 0.75]), atol=1e-12)
-    gaps = [view.update(depth=d, t=0.5)["gap"] for d in range(5)]
+    gaps = [view.set_values(depth=d, t=0.5)["gap"] for d in range(5)]
     assert all(g1 < g0 for g0, g1 in zip(gaps, gaps[1:]))
+
+
+def test_subdivision_view_control_points_are_dragged():
+    view = views.subdivision_view(depth=2)
+    view.drag.press_at(3.0, 2.5)          # on P2
+    view.drag.move_to(2.0, 1.0)
+    view.drag.release()
+    assert (view.values()["x2"], view.values()["y2"]) == (2.0, 1.0)
+    P = np.array([[0, 0], [1, 2.5], [2, 1.0], [4, 0.5]])
+    r = view.last_result
+    np.testing.assert_allclose(r["polygon"], P)
+    np.testing.assert_allclose(r["curve"], bezier.de_casteljau(P, np.linspace(0, 1, 400)), atol=1e-12)
+    np.testing.assert_allclose(r["polygons"][:, 0], bezier.de_casteljau(P, [0, 0.25, 0.5, 0.75]), atol=1e-12)
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[1].get_data()), r["curve"])
 
 
 def test_adaptive_rendering_view_polyline_lies_on_the_curve():
@@ -36,6 +50,22 @@ def test_adaptive_rendering_view_polyline_lies_on_the_curve():
         np.testing.assert_allclose(r["polyline"], bezier.de_casteljau(views.WAVY, r["t"]), atol=1e-12)
         assert r["segments"] > prev
         prev = r["segments"]
+
+
+def test_adaptive_rendering_view_control_points_are_dragged():
+    view = views.adaptive_rendering_view(digits=3)
+    view.drag.press_at(2.0, -1.0)         # on P2 of WAVY
+    view.drag.move_to(2.0, 1.0)
+    view.drag.release()
+    assert (view.values()["x2"], view.values()["y2"]) == (2.0, 1.0)
+    P = views.WAVY.copy()
+    P[2] = (2.0, 1.0)
+    r = view.last_result
+    np.testing.assert_allclose(r["polygon"], P)
+    np.testing.assert_allclose(r["polyline"], bezier.de_casteljau(P, r["t"]), atol=1e-12)
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[2].get_data()), r["polyline"])
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[1].get_data()),
+                               bezier.de_casteljau(P, np.linspace(0, 1, 2001))[::5], atol=1e-12)
 
 
 def test_intersection_view_points_are_on_both_curves():

@@ -33,6 +33,22 @@ def test_fractal_editor_at_one_half_draws_the_parabola_and_survives_collinear_po
     assert view.last_error is None and "collinear" in flat["status"] and np.allclose(flat["fractal"][:, 1], 0)
 
 
+def test_fractal_editor_control_points_are_dragged():
+    view = views.fractal_editor()
+    before = view.last_result["fractal"].copy()
+    view.drag.press_at(1.5, 2.5)          # on P1
+    view.drag.move_to(2.0, 3.0)
+    view.drag.release()
+    assert (view.values()["x1"], view.values()["y1"]) == (2.0, 3.0)
+    P = np.array([[0.0, 0.0], [2.0, 3.0], [4.0, 0.0]])
+    result = view.last_result
+    np.testing.assert_allclose(result["polygon"], P)
+    # the fractal is the affine image of the barycentric attractor: the same map moves it
+    A = np.linalg.solve(np.c_[views.DEFAULT_TRIANGLE, np.ones(3)], np.c_[P, np.ones(3)])
+    np.testing.assert_allclose(result["fractal"], (np.c_[before, np.ones(len(before))] @ A)[:, :2], atol=1e-9)
+    np.testing.assert_allclose(np.column_stack(view.ax.lines[1].get_data()), result["fractal"])
+
+
 def test_curve_view_converges():
     view = views.curve_attractor_view()
     for kind in ("bezier", "bspline"):

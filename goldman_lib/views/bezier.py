@@ -16,6 +16,7 @@ import numpy as np
 from goldman_lib import bezier
 from goldman_lib.validation import as_int, as_points, within_budget
 from goldman_lib.views import style
+from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.three import SceneView, grid_triangles
 
@@ -99,6 +100,8 @@ def de_casteljau_explorer(ctrl=DEFAULT_CUBIC, t: float = 0.4, box=(-1.0, 5.0, -1
     ``update(t, x0, y0, x1, y1, ...)`` redraws the curve, the control polygon, each level of the
     construction and the point ``C(t)``; it returns them as arrays.  ``box`` = (xmin, xmax, ymin,
     ymax) is both the sliders' range and the fixed view, so the picture does not jump.
+    The control points can also be dragged with the mouse (``view.drag``, a
+    :class:`~goldman_lib.views.drag.PointDrag`): a drag sets the point's two sliders.
     """
     import ipywidgets as widgets
 
@@ -116,13 +119,10 @@ def de_casteljau_explorer(ctrl=DEFAULT_CUBIC, t: float = 0.4, box=(-1.0, 5.0, -1
     ax.set_title("de Casteljau construction", fontsize=10)
     samples = np.linspace(0.0, 1.0, 160)
 
-    controls = {"t": float_slider("t", t, 0.0, 1.0, 0.01)}
-    for k, (x, y) in enumerate(ctrl):
-        controls[f"x{k}"] = float_slider(f"x{k}", float(x), xmin, xmax, 0.1)
-        controls[f"y{k}"] = float_slider(f"y{k}", float(y), ymin, ymax, 0.1)
+    controls = {"t": float_slider("t", t, 0.0, 1.0, 0.01), **point_sliders(ctrl, box)}
 
     def update(t, **coords):
-        pts = np.array([[coords[f"x{k}"], coords[f"y{k}"]] for k in range(n + 1)], dtype=float)
+        pts = points_from(coords, n + 1)
         steps = bezier.de_casteljau_steps(pts, t)
         crv = bezier.de_casteljau(pts, samples)
         polygon.set_data(pts[:, 0], pts[:, 1])
@@ -135,47 +135,62 @@ def de_casteljau_explorer(ctrl=DEFAULT_CUBIC, t: float = 0.4, box=(-1.0, 5.0, -1
                 "status": f"t = {t:.2f}:  C(t) = ({c[0]:.3f}, {c[1]:.3f}); {n} levels of affine combinations"}
 
     # Controls beside the figure, t first and set apart, so the view fits on one deck slide.
-    points_label = widgets.HTML("<small>control points</small>")
+    points_label = widgets.HTML("<small>control points (or drag them)</small>")
     arrange = [controls["t"], points_label] + [controls[f"{a}{k}"] for k in range(n + 1) for a in "xy"]
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="de Casteljau explorer", arrange=arrange, side=True)
+    view.ax = ax
+    drag_sliders(view, ax, point_pairs(n + 1))
+    return view
 
 
 def degree_elevation_view(ctrl=DEFAULT_CUBIC, times: int = 2, max_times: int = 12) -> InteractiveView:
     """A slider for how many times the degree is elevated (Goldman §24.5): the curve stays the
-    same while the elevated control polygons close in on it.
+    same while the elevated control polygons close in on it.  The original control points have
+    x/y sliders and can be dragged with the mouse (``view.drag``); each box is the figure's.
 
-    ``update(times)`` returns the elevated polygon and the largest distance from its points to
-    the curve.
+    ``update(times, x0, y0, ...)`` returns the original and the elevated polygon, the curve and
+    the largest distance from the elevated control points to the curve.
     """
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
     max_times = as_int(max_times, "max_times", minimum=1, maximum=60)
     fig, ax = style.new_axes()
     crv = bezier.de_casteljau(ctrl, np.linspace(0.0, 1.0, 400))
-    plot_control_polygon(ctrl, ax, labels=False, alpha=0.6)
-    ax.plot(crv[:, 0], crv[:, 1], color=style.PALETTE["curve"], linewidth=2.4, label="the curve (unchanged)")
+    original = plot_control_polygon(ctrl, ax, labels=False, alpha=0.6)
+    (curve,) = ax.plot(crv[:, 0], crv[:, 1], color=style.PALETTE["curve"], linewidth=2.4, label="the curve (unchanged)")
     (elevated,) = ax.plot([], [], "s-", color=style.PALETTE["accent"], markersize=4, linewidth=1.4,
                           label="elevated control polygon")
     ax.legend(loc="lower center", fontsize=8, frameon=False)
     pad = 0.3
-    ax.set_xlim(ctrl[:, 0].min() - pad, ctrl[:, 0].max() + pad)
-    ax.set_ylim(ctrl[:, 1].min() - pad, ctrl[:, 1].max() + pad)
+    box = (ctrl[:, 0].min() - pad, ctrl[:, 0].max() + pad, ctrl[:, 1].min() - pad, ctrl[:, 1].max() + pad)
+    ax.set_xlim(box[0], box[1])
+    ax.set_ylim(box[2], box[3])
     ax.set_aspect("equal", adjustable="box")
     n = len(ctrl) - 1
+    samples = np.linspace(0.0, 1.0, 400)
 
-    def update(times):
+    def update(times, **coords):
         times = as_int(times, "times", minimum=0)
-        pts = bezier.elevate_degree(ctrl, times) if times else ctrl
+        P = points_from(coords, n + 1)
+        crv = bezier.de_casteljau(P, samples)
+        pts = bezier.elevate_degree(P, times) if times else P
+        original.set_data(P[:, 0], P[:, 1])
+        curve.set_data(crv[:, 0], crv[:, 1])
         elevated.set_data(pts[:, 0], pts[:, 1])
         gap = float(np.sqrt(((pts[:, None, :] - crv[None]) ** 2).sum(-1)).min(1).max())
-        return {"polygon": pts, "gap": gap,
+        return {"polygon": pts, "original": P, "curve": crv, "gap": gap,
                 "status": f"degree {n} -> {n + times}: {len(pts)} control points, "
                           f"farthest control point {gap:.3f} from the curve"}
 
     times = as_int(times, "times", minimum=0, maximum=max_times)
-    controls = {"times": int_slider("elevate", times, 0, max_times)}
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="degree elevation")
+    controls = {"times": int_slider("elevate", times, 0, max_times),
+                **point_sliders(ctrl, box, width="200px", label_width="24px")}
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="degree elevation", side=True,
+                           arrange=[controls["times"]] + pair_rows(controls, n + 1))
+    view.ax = ax
+    drag_sliders(view, ax, point_pairs(n + 1))
+    return view
 
 
 def bernstein_view(n: int = 3, t: float = 0.4, max_degree: int = 12) -> InteractiveView:

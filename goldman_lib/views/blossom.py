@@ -6,7 +6,7 @@ an :class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a
 
 >>> view = blossom_view()
 >>> sorted(view.update(**view.values()))
-['levels', 'point', 'status']
+['curve', 'levels', 'point', 'polygon', 'status']
 >>> blossom_label(3, 1, 2)
 'u₁11'
 """
@@ -20,6 +20,7 @@ from goldman_lib import blossom as bl
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
 from goldman_lib.views.bezier import DEFAULT_CUBIC, plot_control_polygon, plot_curve
+from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
 
 __all__ = ["blossom_label", "plot_blossom_diagram", "blossom_view", "interval_view"]
@@ -65,8 +66,10 @@ def blossom_view(ctrl=DEFAULT_CUBIC, args=(0.2, 0.5, 0.8), low: float = 0.0, hig
     (Goldman §26.2-26.3), each slider over ``[low, high]``: level r of the pyramid uses ``u_r``, every point is a blossom value
     labelled by its arguments, and the apex is ``p(u_1, ..., u_n)``.  Equal arguments give a point
     of the curve (the diagonal); swapping two sliders leaves the apex where it is (symmetry).
+    The control points have x/y sliders and can be dragged with the mouse (``view.drag``): the
+    whole pyramid follows.
 
-    ``update(u1, ..., un)`` returns every level and the apex.
+    ``update(u1, ..., un, x0, y0, ...)`` returns every level and the apex.
     """
     P = as_points(ctrl, "ctrl", dim=2, min_count=2)
     n = len(P) - 1
@@ -74,9 +77,10 @@ def blossom_view(ctrl=DEFAULT_CUBIC, args=(0.2, 0.5, 0.8), low: float = 0.0, hig
     if args.shape != (n,):
         raise ValueError(f"args must have shape ({n},), one argument per degree; got shape {args.shape}")
     fig, ax = style.new_axes()
-    plot_control_polygon(P, ax, labels=False)
-    plot_curve(P, ax, alpha=0.5)
+    polygon = plot_control_polygon(P, ax, labels=False)
+    curve = plot_curve(P, ax, alpha=0.5)
     lines, texts, apex = plot_blossom_diagram(P, args, ax)
+    samples = np.linspace(0.0, 1.0, 200)
     # every blossom value with arguments in [low, high] lies in the hull of the curve's control
     # points over [low, high]: frame that
     hull = bl.control_points_on_interval(P, low, high)
@@ -87,7 +91,11 @@ def blossom_view(ctrl=DEFAULT_CUBIC, args=(0.2, 0.5, 0.8), low: float = 0.0, hig
 
     def update(**values):
         u = np.array([values[name] for name in names], dtype=float)
-        steps = bl.blossom_steps(P, u)
+        Q = points_from(values, n + 1)
+        steps = bl.blossom_steps(Q, u)
+        crv = bezier.de_casteljau(Q, samples)
+        polygon.set_data(Q[:, 0], Q[:, 1])
+        curve.set_data(crv[:, 0], crv[:, 1])
         for line, level in zip(lines, steps[1:-1]):
             line.set_data(level[:, 0], level[:, 1])
         flat = [p for level in steps for p in level]
@@ -97,12 +105,17 @@ def blossom_view(ctrl=DEFAULT_CUBIC, args=(0.2, 0.5, 0.8), low: float = 0.0, hig
         apex.set_data([c[0]], [c[1]])
         on_curve = "on the curve (all arguments equal)" if np.ptp(u) < 1e-12 else "off the curve unless the arguments agree"
         args_text = ", ".join(f"{x:.2f}" for x in u)
-        return {"levels": steps, "point": c,
+        return {"levels": steps, "point": c, "curve": crv, "polygon": Q,
                 "status": f"p({args_text}) = ({c[0]:.3f}, {c[1]:.3f}); {on_curve}"}
 
     controls = {name: float_slider(name, float(v), low, high, 0.05) for name, v in zip(names, args)}
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="blossom diagram")
+    controls.update(point_sliders(P, (*ax.get_xlim(), *ax.get_ylim()), width="200px", label_width="24px"))
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="blossom diagram",
+                           arrange=[controls[name] for name in names] + pair_rows(controls, n + 1), side=True)
+    view.ax = ax
+    drag_sliders(view, ax, point_pairs(n + 1))
+    return view
 
 
 def interval_view(ctrl=DEFAULT_CUBIC, a: float = 0.25, b: float = 0.75, low: float = -0.5,

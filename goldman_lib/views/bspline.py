@@ -17,6 +17,7 @@ import numpy as np
 from goldman_lib import bspline
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
+from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.knot_editor import DEFAULT_POLYGON, plot_knot_marks
 
@@ -69,17 +70,19 @@ def de_boor_explorer(ctrl=DEFAULT_POLYGON, u: float = 0.4, degree: int = 3, max_
     """A u slider and a degree picker over the local de Boor algorithm (Goldman §27.2-27.3).
 
     The knots are clamped and evenly spaced.  For u, only the p+1 control points of u's knot
-    span take part: they are drawn bold, then each level of the pyramid, then C(u).
-    ``update(u, degree)`` returns the curve, the knots, the span index, the levels and the point.
+    span take part: they are drawn bold, then each level of the pyramid, then C(u).  The control
+    points have x/y sliders and can be dragged with the mouse (``view.drag``).
+    ``update(u, degree, x0, y0, ...)`` returns the curve, the knots, the span index, the levels and
+    the point.
     """
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=3)
     n1 = len(ctrl)
     max_degree = min(as_int(max_degree, "max_degree", minimum=1), n1 - 1)
     fig, ax = style.new_axes()
     _fixed_view(ax, ctrl)
-    ax.plot(ctrl[:, 0], ctrl[:, 1], "o--", color=style.PALETTE["control"], markersize=5, linewidth=1)
-    for k, q in enumerate(ctrl):
-        ax.annotate(f"$P_{{{k}}}$", q, textcoords="offset points", xytext=(5, 5), fontsize=9)
+    (polygon,) = ax.plot(ctrl[:, 0], ctrl[:, 1], "o--", color=style.PALETTE["control"], markersize=5, linewidth=1)
+    labels = [ax.annotate(f"$P_{{{k}}}$", q, textcoords="offset points", xytext=(5, 5), fontsize=9)
+              for k, q in enumerate(ctrl)]
     (curve,) = ax.plot([], [], color=style.PALETTE["curve"], linewidth=2.2)
     (marks,) = ax.plot([], [], "D", color=style.PALETTE["accent"], markersize=5, markeredgecolor="#333333", zorder=4)
     levels = [ax.plot([], [], "o-", color=style.level_colour(k + 1), markersize=4 + (k == 0),
@@ -88,8 +91,12 @@ def de_boor_explorer(ctrl=DEFAULT_POLYGON, u: float = 0.4, degree: int = 3, max_
     ax.set_title("local de Boor: only p+1 control points act at u", fontsize=10)
     samples = np.linspace(0.0, 1.0, 240)
 
-    def update(u, degree):
+    def update(u, degree, **coords):
         p = int(min(max(degree, 1), max_degree))
+        ctrl = points_from(coords, n1)
+        polygon.set_data(ctrl[:, 0], ctrl[:, 1])
+        for label, q in zip(labels, ctrl):
+            label.xy = q
         knots = bspline.clamped_knots(n1, p)
         crv = bspline.de_boor(ctrl, knots, p, samples)
         steps = bspline.de_boor_steps(ctrl, knots, p, u)
@@ -108,9 +115,14 @@ def de_boor_explorer(ctrl=DEFAULT_POLYGON, u: float = 0.4, degree: int = 3, max_
                 "status": f"u = {u:.2f} lies in [t{k}, t{k + 1}] = [{knots[k]:.3g}, {knots[k + 1]:.3g}): "
                           f"P{k - p}..P{k} and {p} levels give C(u) = ({c[0]:.3f}, {c[1]:.3f})"}
 
-    controls = {"u": float_slider("u", u, 0.0, 1.0, 0.01), "degree": int_slider("degree", degree, 1, max_degree)}
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="de Boor explorer")
+    controls = {"u": float_slider("u", u, 0.0, 1.0, 0.01), "degree": int_slider("degree", degree, 1, max_degree),
+                **point_sliders(ctrl, (*ax.get_xlim(), *ax.get_ylim()), width="200px", label_width="24px")}
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="de Boor explorer",
+                           arrange=[controls["u"], controls["degree"]] + pair_rows(controls, n1), side=True)
+    view.ax = ax
+    drag_sliders(view, ax, point_pairs(n1))
+    return view
 
 
 def local_control_view(ctrl=LONG_POLYGON, degree: int = 3, index: int = 4, dy: float = 1.2) -> InteractiveView:

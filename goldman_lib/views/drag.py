@@ -28,7 +28,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-__all__ = ["PointDrag", "drag_sliders"]
+__all__ = ["PointDrag", "drag_sliders", "point_sliders", "point_pairs", "points_from", "pair_rows"]
 
 
 class PointDrag:
@@ -151,3 +151,61 @@ def drag_sliders(view, ax, pairs: Sequence[tuple[str, str]], radius: float = 12.
     drag = PointDrag(ax, points, on_drag, radius=radius)
     view.drag = drag
     return drag
+
+
+def point_sliders(points, box, step: float = 0.1, prefix: str = "", width: str = "290px",
+                  label_width: str = "48px") -> dict:
+    """An x and a y slider for each of ``points`` (``{"x0": ..., "y0": ..., "x1": ...}``, with
+    ``prefix`` before each name), each over the view's ``box`` = (xmin, xmax, ymin, ymax), so the
+    keyboard and tests place the points the mouse drags with :func:`drag_sliders`.
+
+    >>> sorted(point_sliders([[0, 0], [1, 2]], (-1, 2, -1, 3)))
+    ['x0', 'x1', 'y0', 'y1']
+    """
+    from goldman_lib.views.interactive import float_slider
+
+    pts = np.asarray(points, dtype=float).reshape(-1, 2)
+    xmin, xmax, ymin, ymax = (float(v) for v in box)
+    controls = {}
+    for k, (x, y) in enumerate(pts):
+        for axis, v, lo, hi in (("x", x, xmin, xmax), ("y", y, ymin, ymax)):
+            name = f"{prefix}{axis}{k}"
+            controls[name] = float_slider(name, float(min(max(v, lo), hi)), lo, hi, step, width=width,
+                                          label_width=label_width)
+    return controls
+
+
+def point_pairs(count: int, prefix: str = "") -> list[tuple[str, str]]:
+    """The slider-name pairs ``[("x0", "y0"), ("x1", "y1"), ...]`` of :func:`point_sliders`."""
+    return [(f"{prefix}x{k}", f"{prefix}y{k}") for k in range(count)]
+
+
+#: The largest coordinate :func:`points_from` accepts: far past any slider's box, small enough that
+#: a curve's arithmetic on it (powers, sums of products) stays finite.
+POINT_LIMIT = 1e12
+
+
+def points_from(values: dict, count: int, prefix: str = "") -> np.ndarray:
+    """The ``(count, 2)`` points that the sliders of :func:`point_sliders` hold in ``values``.
+
+    A value no slider can reach (NaN, infinite, beyond ``POINT_LIMIT``) raises ValueError naming
+    the control, so the view shows a message instead of drawing nothing.
+    """
+    out = np.empty((count, 2))
+    for k in range(count):
+        for j, axis in enumerate("xy"):
+            name = f"{prefix}{axis}{k}"
+            v = values[name]
+            if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
+                raise TypeError(f"{name} must be a number; got {type(v).__name__}")
+            if not (np.isfinite(v) and abs(v) <= POINT_LIMIT):
+                raise ValueError(f"{name} must be a finite number of size at most {POINT_LIMIT:g}; got {v!r}")
+            out[k, j] = float(v)
+    return out
+
+
+def pair_rows(controls: dict, count: int, prefix: str = "") -> list:
+    """The point sliders laid out one row per point (x and y side by side), for a compact panel."""
+    import ipywidgets as widgets
+
+    return [widgets.HBox([controls[f"{prefix}x{k}"], controls[f"{prefix}y{k}"]]) for k in range(count)]

@@ -40,6 +40,7 @@ import numpy as np
 from goldman_lib import bspline
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
+from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
 from goldman_lib.views.three import SceneView, grid_triangles
 
@@ -452,9 +453,13 @@ def _curve_editor(ctrl, degree, max_degree, preset, interior, weights, samples, 
     ax.set_title("NURBS curve: curve, control polygon, knots" if rational else
                  "B-spline curve: curve, control polygon, knots", fontsize=10)
     u = np.linspace(0.0, 1.0, samples)
+    # the control points: x/y sliders over the figure's box, and dragged with the mouse
+    points = point_sliders(ctrl, (*ax.get_xlim(), *ax.get_ylim()), width="200px", label_width="24px")
 
     def update(**values):
         knots, p, w = editor.read(values)
+        ctrl = points_from(values, n_ctrl)
+        polygon.set_data(ctrl[:, 0], ctrl[:, 1])
         if rational:
             pts = bspline.nurbs_curve(ctrl, w, knots, p, u)
             N = bspline.basis(knots, p, u) * w
@@ -473,10 +478,16 @@ def _curve_editor(ctrl, degree, max_degree, preset, interior, weights, samples, 
         return {"curve": pts, "knots": knots, "knot_points": kp, "basis": N, "polygon": ctrl,
                 "weights": w if rational else np.ones(n_ctrl), "status": status}
 
-    view = InteractiveView(controls=editor.controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title=title, arrange=editor.arrange(), side=True)
+    import ipywidgets as widgets
+
+    view = InteractiveView(controls={**editor.controls, **points}, views=[figure_widget(fig)], update=update,
+                           figure=fig, title=title, side=True,
+                           arrange=editor.arrange() + [widgets.HTML("<small>control points (or drag them)</small>")]
+                           + pair_rows(points, n_ctrl))
     editor.attach(view)
     view.editor = editor
+    view.ax = ax
+    drag_sliders(view, ax, point_pairs(n_ctrl))
     return view
 
 
@@ -486,7 +497,8 @@ def bspline_curve_editor(ctrl=DEFAULT_POLYGON, degree: int = 3, max_degree: int 
 
     A degree picker, a preset picker and one slider per interior knot (they never let the knots
     decrease); the figure shows the curve, its control polygon, the curve points at the knots,
-    and below it every basis function ``N_{k,p}`` with the knots marked.  ``update(**values)``
+    and below it every basis function ``N_{k,p}`` with the knots marked.  The control points have
+    x/y sliders and can be dragged with the mouse (``view.drag``).  ``update(**values)``
     returns the curve, the knot vector, the knot points and the basis values.
     """
     return _curve_editor(ctrl, degree, max_degree, preset, interior, None, samples, "knot-vector editor")

@@ -8,7 +8,7 @@ is a plain function returning what it drew.
 
 >>> view = subdivision_view()
 >>> sorted(view.update(**view.values()))
-['gap', 'polygons', 'status']
+['curve', 'gap', 'polygon', 'polygons', 'status']
 
 :func:`patch_subdivision_3d_view` is the chapter's three.js view (through
 :class:`goldman_lib.views.three.SceneView`): the sub-nets of a subdivided bicubic patch and the
@@ -23,6 +23,7 @@ from goldman_lib import bezier
 from goldman_lib.validation import as_float, as_int, as_points
 from goldman_lib.views import style
 from goldman_lib.views.bezier import DEFAULT_CUBIC, plot_control_polygon, plot_curve
+from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
 __all__ = ["plot_pieces", "plot_boxes", "plot_patch_domains", "subdivision_view", "adaptive_rendering_view",
@@ -125,58 +126,72 @@ def _split_recursively(ctrl: np.ndarray, depth: int, t: float) -> np.ndarray:
 # -- widgets ------------------------------------------------------------------------------------
 def subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_depth: int = 6) -> InteractiveView:
     """A subdivision-level slider (Goldman §25.2): the curve split ``depth`` times, each piece at its
-    own parameter ``t``, and the 2**depth control polygons closing in on the curve.
+    own parameter ``t``, and the 2**depth control polygons closing in on the curve.  The control
+    points have x/y sliders and can be dragged with the mouse (``view.drag``).
 
-    ``update(depth, t)`` returns the control polygons (2**depth, n+1, 2) and the largest distance
-    ``|P_k - piece(k/n)|`` from a control point of a piece to the piece's point at k/n.
+    ``update(depth, t, x0, y0, ...)`` returns the control polygons (2**depth, n+1, 2) and the largest
+    distance ``|P_k - piece(k/n)|`` from a control point of a piece to the piece's point at k/n.
     """
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
     max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=8)
     fig, ax = style.new_axes()
-    plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
-    plot_curve(ctrl, ax, samples=400)
+    polygon = plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
+    curve = plot_curve(ctrl, ax, samples=400)
     greville = np.arange(len(ctrl)) / (len(ctrl) - 1)
     pieces = plot_pieces(_split_recursively(ctrl, depth, t), ax)
     (joints,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=4, zorder=4)
     _limits(ax, ctrl, pad=0.3)
     ax.set_title("de Casteljau subdivision", fontsize=10)
+    n1 = len(ctrl)
+    samples = np.linspace(0.0, 1.0, 400)
 
-    def update(depth, t):
+    def update(depth, t, **coords):
         depth = as_int(depth, "depth", minimum=0, maximum=max_depth)
-        polys = _split_recursively(ctrl, depth, t)
+        P = points_from(coords, n1)
+        polys = _split_recursively(P, depth, t)
+        crv = bezier.de_casteljau(P, samples)
+        polygon.set_data(P[:, 0], P[:, 1])
+        curve.set_data(crv[:, 0], crv[:, 1])
         pieces.set_segments(list(polys))
         pieces.set_color([(style.LEVELS[0], style.LEVELS[3])[k % 2] for k in range(len(polys))])
         ends = np.concatenate([polys[:, 0], polys[-1:, -1]])
         joints.set_data(ends[:, 0], ends[:, 1])
         gap = float(np.linalg.norm(polys - np.stack([bezier.de_casteljau(p, greville) for p in polys]), axis=-1).max())
-        return {"polygons": polys, "gap": gap,
+        return {"polygons": polys, "gap": gap, "curve": crv, "polygon": P,
                 "status": f"depth {depth}: {len(polys)} pieces split at t = {t:.2f}; control points within "
                           f"{gap:.4f} of the curve (P_k vs the piece at k/n)"}
 
     depth = as_int(depth, "depth", minimum=0, maximum=max_depth)
+    xlim, ylim = ax.get_xlim(), ax.get_ylim()
     controls = {"depth": int_slider("depth", depth, 0, max_depth),
-                "t": float_slider("split t", t, 0.1, 0.9, 0.05)}
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="subdivision level")
+                "t": float_slider("split t", t, 0.1, 0.9, 0.05),
+                **point_sliders(ctrl, (*xlim, *ylim), width="200px", label_width="24px")}
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="subdivision level", side=True,
+                           arrange=[controls["depth"], controls["t"]] + pair_rows(controls, n1))
+    view.ax = ax
+    drag_sliders(view, ax, point_pairs(n1))
+    return view
 
 
 def adaptive_rendering_view(ctrl=WAVY, digits: int = 2) -> InteractiveView:
     """Rendering by adaptive subdivision (Goldman §25.3): the tolerance slider sets ``tol = 10**-digits``
     and the polyline of :func:`goldman_lib.bezier.render_by_subdivision` is drawn with its vertices.
 
-    ``update(digits)`` returns the polyline, its parameters and the number of segments; the status
-    compares it with the number of evenly spaced segments that reach the same accuracy.
+    ``update(digits, x0, y0, ...)`` returns the polyline, its parameters and the number of segments; the status
+    compares it with the number of evenly spaced segments that reach the same accuracy.  The
+    control points have x/y sliders and can be dragged with the mouse (``view.drag``).
     """
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
     fig, ax = style.new_axes()
-    plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
-    plot_curve(ctrl, ax, samples=400, alpha=0.35)
+    polygon = plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
+    curve = plot_curve(ctrl, ax, samples=400, alpha=0.35)
     (poly,) = ax.plot([], [], ".-", color=style.PALETTE["point"], markersize=6, linewidth=1.2)
     _limits(ax, ctrl, pad=0.3)
     dense = np.linspace(0.0, 1.0, 2001)
-    dense_pts = bezier.de_casteljau(ctrl, dense)
+    n1 = len(ctrl)
 
-    def uniform_segments(tol):
+    def uniform_segments(tol, dense_pts):
         # the fewest evenly spaced segments (powers of two) whose chords are within tol
         for k in range(0, 15):
             m = 2 ** k
@@ -194,24 +209,36 @@ def adaptive_rendering_view(ctrl=WAVY, digits: int = 2) -> InteractiveView:
                 return len(idx) - 1
         return len(dense) - 1
 
-    cache: dict[int, int] = {}
+    cache: dict[tuple, int] = {}
 
-    def update(digits):
+    def update(digits, **coords):
         digits = as_int(digits, "digits", minimum=1, maximum=4)
+        P = points_from(coords, n1)
         tol = 10.0 ** (-digits)
-        t, pts = bezier.render_by_subdivision(ctrl, tol)
+        t, pts = bezier.render_by_subdivision(P, tol)
+        dense_pts = bezier.de_casteljau(P, dense)
+        polygon.set_data(P[:, 0], P[:, 1])
+        curve.set_data(dense_pts[::5, 0], dense_pts[::5, 1])
         poly.set_data(pts[:, 0], pts[:, 1])
-        if digits not in cache:
-            cache[digits] = uniform_segments(tol)
+        key = (digits, P.tobytes())
+        if key not in cache:
+            if len(cache) > 64:
+                cache.clear()
+            cache[key] = uniform_segments(tol, dense_pts)
         ax.set_title(f"tolerance {tol:g}: {len(t) - 1} segments", fontsize=10)
-        return {"polyline": pts, "t": t, "segments": len(t) - 1,
+        return {"polyline": pts, "t": t, "segments": len(t) - 1, "polygon": P,
                 "status": f"tol = {tol:g}: {len(t) - 1} segments by adaptive subdivision; evenly spaced "
-                          f"parameters need about {cache[digits]}"}
+                          f"parameters need about {cache[key]}"}
 
     digits = as_int(digits, "digits", minimum=1, maximum=4)
-    controls = {"digits": int_slider("tol 1e-", digits, 1, 4)}
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="rendering by subdivision")
+    controls = {"digits": int_slider("tol 1e-", digits, 1, 4),
+                **point_sliders(ctrl, (*ax.get_xlim(), *ax.get_ylim()), width="200px", label_width="24px")}
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="rendering by subdivision", side=True,
+                           arrange=[controls["digits"]] + pair_rows(controls, n1))
+    view.ax = ax
+    drag_sliders(view, ax, point_pairs(n1))
+    return view
 
 
 def intersection_view(case: str = "two cubics, three crossings", level: int = 3, shift: float = 0.0,

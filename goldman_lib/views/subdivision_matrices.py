@@ -114,7 +114,8 @@ def fractal_editor(ctrl=DEFAULT_TRIANGLE, middle: float = -0.3, levels: int = 10
     The matrices of :func:`~goldman_lib.subdivision_matrices.fractal_matrices` (rows summing to one;
     ``middle`` is the weight of ``P1`` where the two pieces meet, 1/2 for the Bezier parabola)
     are conjugated by the control points, ``P^-1 L P`` and ``P^-1 R P``, and the attractor is drawn
-    with ``ifs.deterministic`` from the end points.  ``update(middle, levels, x0, y0, ...)``
+    with ``ifs.deterministic`` from the end points; the control points can be dragged with the
+    mouse (``view.drag``).  ``update(middle, levels, x0, y0, ...)``
     returns the fractal polyline, the control polygon and the joint ``u P0 + v P1 + w P2``.
     Collinear control points have no ``P^-1``; the view then draws the same attractor from
     barycentric coordinates and says so.
@@ -163,5 +164,11 @@ def fractal_editor(ctrl=DEFAULT_TRIANGLE, middle: float = -0.3, levels: int = 10
 
     arrange = [controls["middle"], controls["levels"], widgets.HTML("<small>control points</small>")]
     arrange += [controls[f"{a}{k}"] for k in range(3) for a in "xy"]
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="fractal with control points", arrange=arrange, side=True)
+    # the control points are also dragged with the mouse; a drag sets their sliders
+    from goldman_lib.views.drag import drag_sliders, point_pairs
+
+    view.ax = ax
+    drag_sliders(view, ax, point_pairs(3))
+    return view
