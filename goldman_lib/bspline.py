@@ -664,7 +664,8 @@ def global_pyramid(ctrl, knots, degree, u) -> list[np.ndarray]:
     empty (``defined`` False in the labels) belongs to no piece; its row holds NaN, by design.
 
     ctrl: (n+1, d).  knots: (n+p+2,).  degree: p.  u: a finite scalar (any real value).
-    Returns a list of p+1 arrays.  Raises ValueError/TypeError for a bad curve or u.
+    Returns a list of p+1 arrays.  Raises ValueError/TypeError for a bad curve or u, and ValueError
+    naming u when u is so far from the knots that a node overflows float64.
 
     >>> top = global_pyramid([[0, 0], [1, 2], [2, 2], [3, 0]], [0, 0, 0, 1, 2, 2, 2], 2, 0.5)[-1]
     >>> top.tolist()   # the pieces on [0, 1) and [1, 2) at u = 0.5; the first is C(0.5)
@@ -684,7 +685,9 @@ def global_pyramid(ctrl, knots, degree, u) -> list[np.ndarray]:
         den = hi - lo
         ok = den > 0
         a = np.divide(x - lo, den, out=np.full(den.shape, np.nan), where=ok)[:, None]
-        nxt = (1.0 - a) * cur[:-1] + a * cur[1:]
+        with np.errstate(over="ignore", invalid="ignore"):
+            nxt = (1.0 - a) * cur[:-1] + a * cur[1:]
+        finite_result(nxt[ok], "u", x)       # an overflow (|u| huge) is reported naming u; undefined nodes stay NaN
         levels.append(nxt)
         cur = nxt
     return levels
