@@ -2,10 +2,12 @@
 
 Two layers, as everywhere in ``goldman_lib``:
 
-- pure functions on arrays: :func:`de_casteljau` (§24.2), :func:`bernstein` and
+- pure functions on arrays: :func:`neville` (interpolation, the counterpart of §24.1),
+  :func:`de_casteljau` (§24.2), :func:`bernstein` and
   :func:`bernstein_evaluate` (§24.3), the properties of §24.4 (:func:`variation_count`,
   :func:`curve_crossings`, :func:`convex_hull`, :func:`convex_hull_contains`, :func:`apply_affine`),
   derivatives and smooth joins of §24.5 (:func:`hodograph`, :func:`derivative`,
+  :func:`de_casteljau_with_derivative`,
   :func:`elevate_degree`, :func:`smooth_join`, :func:`join_continuity`) and tensor-product
   patches of §24.6 (:func:`patch_de_casteljau`, :func:`patch_evaluate_grid`, :func:`patch_grid`,
   :func:`patch_derivatives`, :func:`patch_normal`);
@@ -38,8 +40,8 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
                                      finite_result, within_budget)
 
 __all__ = [
-    "de_casteljau", "de_casteljau_steps", "bernstein", "bernstein_evaluate",
-    "hodograph", "derivative", "elevate_degree",
+    "neville", "de_casteljau", "de_casteljau_steps", "bernstein", "bernstein_evaluate",
+    "hodograph", "derivative", "de_casteljau_with_derivative", "elevate_degree",
     "smooth_join", "join_continuity",
     "variation_count", "curve_crossings", "convex_hull", "convex_hull_contains", "apply_affine",
     "patch_de_casteljau", "patch_evaluate_grid", "patch_grid", "patch_derivatives", "patch_normal",
@@ -150,6 +152,54 @@ def _falling(n: int, r: int) -> int:
     for j in range(r):
         out *= n - j
     return out
+
+
+# --------------------------------------------------------------------------------------------
+# §24.1 interpolation versus approximation: Neville's pyramid
+# --------------------------------------------------------------------------------------------
+
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
+def neville(points, t, nodes=None) -> np.ndarray:
+    """The interpolating polynomial through ``points`` at ``nodes``, evaluated by Neville's algorithm (Goldman §24.1).
+
+    Neville's pyramid is de Casteljau's with other weights: level r replaces neighbours by
+    ``((t_{i+r} - t) P_i^{r-1} + (t - t_i) P_{i+1}^{r-1}) / (t_{i+r} - t_i)``, so the apex is the
+    unique polynomial curve of degree n that passes through every point, ``L(t_i) = P_i`` (Lagrange
+    interpolation).  The Bezier curve of the same points (:func:`de_casteljau`) only approximates
+    them: it interpolates the first and last and is pulled towards the others.
+
+    points: (n+1, d).  t: scalar or array of any shape.  nodes: (n+1,) distinct parameters,
+    default equally spaced on [0, 1] (``i / n``; a single point gets the node 0).
+    Returns ``t.shape + (d,)``.
+    Raises ValueError for bad points, nodes of the wrong length, repeated or non-finite nodes,
+    or a result that overflows float64.
+
+    >>> neville([[0, 0], [1, 2], [2, 0]], 0.5)
+    array([1., 2.])
+    >>> neville([[0, 0], [1, 2], [2, 0]], [0.0, 1.0], nodes=[0, 0.5, 1]).tolist()
+    [[0.0, 0.0], [2.0, 0.0]]
+    """
+    P = _ctrl(points, "points")
+    t = as_parameter(t, "t")
+    n1 = P.shape[0]
+    if nodes is None:
+        x = np.linspace(0.0, 1.0, n1) if n1 > 1 else np.zeros(1)
+    else:
+        x = np.asarray(as_parameter(nodes, "nodes"), dtype=float).reshape(-1)
+        if x.size != n1:
+            raise ValueError(f"nodes must hold one parameter per point ({n1}); got {x.size}")
+        srt = np.sort(x)
+        same = np.flatnonzero(np.diff(srt) == 0)
+        if same.size:
+            raise ValueError(f"nodes must be distinct; {srt[same[0]]:g} appears twice "
+                             "(no polynomial takes two values at one parameter)")
+    flat = t.reshape(-1)
+    level = [np.broadcast_to(P[i][:, None], (P.shape[1], flat.size)).astype(float) for i in range(n1)]
+    for r in range(1, n1):
+        level = [((x[i + r] - flat) * level[i] + (flat - x[i]) * level[i + 1]) / (x[i + r] - x[i])
+                 for i in range(n1 - r)]
+    out = level[0].T.reshape(t.shape + (P.shape[1],))
+    return finite_result(out, "t", t)
 
 
 # --------------------------------------------------------------------------------------------
@@ -335,6 +385,35 @@ def derivative(ctrl, t, order=1) -> np.ndarray:
         return np.zeros(t.shape + (P.shape[1],))
     D = np.diff(P, n=order, axis=0) * float(_falling(n, order)) if order else P
     return finite_result(_curve_points(D, t), *_blame(t))
+
+
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
+def de_casteljau_with_derivative(ctrl, t) -> tuple[np.ndarray, np.ndarray]:
+    """The curve point and its derivative from one de Casteljau pyramid (Goldman §24.5).
+
+    Differentiating the de Casteljau algorithm: the last level but one holds two points,
+    ``P_0^{n-1}(t)`` (the curve of ``P_0 .. P_{n-1}``) and ``P_1^{n-1}(t)`` (the curve of
+    ``P_1 .. P_n``); the point is ``C(t) = (1-t) P_0^{n-1} + t P_1^{n-1}`` and the derivative is
+    ``C'(t) = n (P_1^{n-1}(t) - P_0^{n-1}(t))``: the last leg of the pyramid is the tangent, and
+    n times it is the velocity.  A degree-0 curve has derivative zero.
+
+    ctrl: (n+1, d).  t: scalar or array of any shape.
+    Returns ``(point, derivative)``, each ``t.shape + (d,)``.
+    Raises as :func:`de_casteljau`.
+
+    >>> pt, vel = de_casteljau_with_derivative([[0, 0], [1, 2], [2, 0]], 0.5)
+    >>> pt.tolist(), vel.tolist()
+    ([1.0, 1.0], [2.0, 0.0])
+    """
+    P = _ctrl(ctrl)
+    t = as_parameter(t, "t")
+    n = P.shape[0] - 1
+    if n == 0:
+        return finite_result(_curve_points(P, t), "t", t), np.zeros(t.shape + (P.shape[1],))
+    first, second = _curve_points(P[:-1], t), _curve_points(P[1:], t)
+    tt = t[..., None]
+    point = (1.0 - tt) * first + tt * second
+    return finite_result(point, "t", t), finite_result(n * (second - first), "t", t)
 
 
 def elevate_degree(ctrl, times=1) -> np.ndarray:

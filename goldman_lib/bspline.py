@@ -14,7 +14,8 @@ Two layers, as everywhere in ``goldman_lib``:
   :func:`control_point_labels`), the global de Boor algorithm and the B-spline basis
   (§27.3: :func:`de_boor`, :func:`basis`, :func:`global_de_boor`), derivatives and smoothness at
   the knots (§27.4: :func:`derivative_ctrl`, :func:`derivative`, :func:`continuity_at`,
-  :func:`derivative_jumps`), "every spline is a B-spline" (§27.6: :func:`spline_to_bspline`,
+  :func:`derivative_jumps`), labelling and locality in the global pyramid (§27.5:
+  :func:`global_pyramid_labels`, :func:`global_pyramid`), "every spline is a B-spline" (§27.6: :func:`spline_to_bspline`,
   :func:`bspline_to_pieces`), the properties of §27.7 (:func:`support`,
   :func:`affected_span`), tensor-product surfaces (§27.8: :func:`surface_de_boor`,
   :func:`surface_grid`) and NURBS (§27.9: :func:`nurbs_curve`, :func:`nurbs_surface`,
@@ -43,6 +44,7 @@ __all__ = [
     "blossom", "local_de_boor", "de_boor_steps", "control_point_labels",
     "de_boor", "basis", "global_de_boor",
     "derivative_ctrl", "derivative", "continuity_at", "derivative_jumps",
+    "global_pyramid_labels", "global_pyramid",
     "spline_to_bspline", "bspline_to_pieces",
     "support", "affected_span",
     "surface_de_boor", "surface_grid",
@@ -604,6 +606,91 @@ def derivative_jumps(ctrl, knots, degree, value) -> np.ndarray:
         left = derivative(P, t, p, x, r, side="left")
         out[r] = np.linalg.norm(right - left)
     return finite_result(out, "ctrl", why="is too large in magnitude (or knots too close)")
+
+
+# --------------------------------------------------------------------------------------------
+# §27.5 labelling and locality in the global de Boor algorithm
+# --------------------------------------------------------------------------------------------
+
+def global_pyramid_labels(knots, degree) -> list[list[dict]]:
+    """The blossom labels and the locality of every node of the global de Boor pyramid (Goldman §27.5).
+
+    The global pyramid runs the de Boor recurrence over *all* control points: level 0 holds
+    ``P_0 .. P_n`` with labels ``(t_{i+1}, ..., t_{i+p})``; level r holds nodes i = r..n,
+
+    ``P_i^r(u) = ((t_{i+p+1-r} - u) P_{i-1}^{r-1} + (u - t_i) P_i^{r-1}) / (t_{i+p+1-r} - t_i)``,
+
+    with the label ``(u^r, t_{i+1}, ..., t_{i+p-r})``: r copies of u and the knots the parents share.
+    Locality: the node is a polynomial of degree r in u, and it is the blossom value
+    ``b_k(u^r, t_{i+1}, ..., t_{i+p-r})`` of the piece on every span k with ``i <= k <= i+p-r``,
+    that is for u in ``[t_i, t_{i+p+1-r}]``; the apex nodes (r = p) are the pieces themselves, node k
+    being C(u) only for u in ``[t_k, t_{k+1})``.
+
+    knots: (n+p+2,) valid for degree p.  Returns a list of p+1 levels; level r lists, for
+    i = r..n, a dict with ``index`` i, ``knots`` (the p-r knots of the label), ``u_count`` r,
+    ``interval`` ``(t_i, t_{i+p+1-r})`` (the edge factors are ``interval[1] - u`` on the edge from
+    node i-1 and ``u - interval[0]`` on the edge from node i), ``spans`` (the non-empty spans k that
+    use the node) and ``defined`` (False when the interval is empty: a knot repeated p+2-r or more
+    times; such a node is used by no span).
+    Raises ValueError/TypeError for a bad knot vector or degree.
+
+    >>> levels = global_pyramid_labels([0, 0, 0, 1, 2, 2, 2], 2)
+    >>> [(d["index"], d["knots"], d["interval"], d["spans"]) for d in levels[1]]
+    [(1, (0.0,), (0.0, 1.0), [2]), (2, (1.0,), (0.0, 2.0), [2, 3]), (3, (2.0,), (1.0, 2.0), [3])]
+    """
+    p = as_int(degree, "degree", minimum=0)
+    t = check_knots(knots, p)
+    n = t.size - p - 2
+    levels = []
+    for r in range(p + 1):
+        level = []
+        for i in range(r, n + 1):
+            lo, hi = float(t[i]), float(t[i + p + 1 - r])
+            spans = [k for k in range(max(i, p), min(i + p - r, n) + 1) if t[k] < t[k + 1]]
+            level.append({"index": i, "knots": tuple(float(x) for x in t[i + 1:i + p + 1 - r]), "u_count": r,
+                          "interval": (lo, hi), "spans": spans, "defined": lo < hi})
+        levels.append(level)
+    return levels
+
+
+def global_pyramid(ctrl, knots, degree, u) -> list[np.ndarray]:
+    """The values of every node of the global de Boor pyramid at one parameter u (Goldman §27.5).
+
+    Level r is an array (n+1-r, d) of the nodes i = r..n of :func:`global_pyramid_labels`
+    (row ``i - r``).  Each node is computed by the recurrence for *any* real u (a polynomial of
+    degree r in u); by locality it is the blossom value ``b_k(u^r, t_{i+1}, ..., t_{i+p-r})`` of the
+    pieces k listed in its ``spans``, and the apex row holds every piece of the curve at u:
+    ``global_pyramid(...)[p][k - p]`` is C(u) when u lies in span k.  A node whose interval is
+    empty (``defined`` False in the labels) belongs to no piece; its row holds NaN, by design.
+
+    ctrl: (n+1, d).  knots: (n+p+2,).  degree: p.  u: a finite scalar (any real value).
+    Returns a list of p+1 arrays.  Raises ValueError/TypeError for a bad curve or u, and ValueError
+    naming u when u is so far from the knots that a node overflows float64.
+
+    >>> top = global_pyramid([[0, 0], [1, 2], [2, 2], [3, 0]], [0, 0, 0, 1, 2, 2, 2], 2, 0.5)[-1]
+    >>> top.tolist()   # the pieces on [0, 1) and [1, 2) at u = 0.5; the first is C(0.5)
+    [[0.875, 1.5], [1.125, 1.5]]
+    """
+    P, t, p = _curve_args(ctrl, knots, degree)
+    x = as_parameter(u, "u")
+    if x.ndim != 0:
+        raise ValueError(f"u must be a scalar for global_pyramid; got shape {x.shape}")
+    x = float(x)
+    n = P.shape[0] - 1
+    levels = [P.copy()]
+    cur = P
+    for r in range(1, p + 1):
+        i = np.arange(r, n + 1)
+        lo, hi = t[i], t[i + p + 1 - r]
+        den = hi - lo
+        ok = den > 0
+        a = np.divide(x - lo, den, out=np.full(den.shape, np.nan), where=ok)[:, None]
+        with np.errstate(over="ignore", invalid="ignore"):
+            nxt = (1.0 - a) * cur[:-1] + a * cur[1:]
+        finite_result(nxt[ok], "u", x)       # an overflow (|u| huge) is reported naming u; undefined nodes stay NaN
+        levels.append(nxt)
+        cur = nxt
+    return levels
 
 
 # --------------------------------------------------------------------------------------------

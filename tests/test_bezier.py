@@ -532,3 +532,49 @@ def test_bernstein_evaluate_low_and_very_high_degree(n):
     ref = binom.pmf(np.arange(n + 1), n, t[:, None]) @ ctrl
     assert np.allclose(gb.bernstein_evaluate(ctrl, t), ref, atol=1e-12)
     assert gb.bernstein_evaluate(ctrl, 0.25).shape == (2,)
+
+
+# ------------------------------------------------------------------ §24.1 Neville's interpolation
+
+@pytest.mark.parametrize("n", [0, 1, 2, 3, 5, 8])
+def test_neville_matches_numpy_polyfit_through_the_points(n):
+    rng = np.random.default_rng(n)
+    pts = rng.uniform(-3, 3, size=(n + 1, 2))
+    nodes = np.sort(rng.uniform(-1, 2, size=n + 1)) + np.arange(n + 1) * 0.1   # distinct, unequal gaps
+    t = np.linspace(-1, 2.5, 41)
+    got = gb.neville(pts, t, nodes=nodes)
+    for c in range(2):
+        ref = Polynomial.fit(nodes, pts[:, c], n)(t) if n else np.full(t.shape, pts[0, c])
+        assert np.allclose(got[:, c], ref, rtol=0, atol=1e-8 * max(1.0, np.abs(ref).max()))
+    assert np.allclose(gb.neville(pts, nodes, nodes=nodes), pts, atol=1e-12)  # L(t_i) = P_i
+
+
+def test_neville_default_nodes_are_equally_spaced_and_differ_from_bezier():
+    pts = [[0, 0], [1, 2], [3, 2], [4, 0]]
+    assert np.allclose(gb.neville(pts, [0, 1 / 3, 2 / 3, 1]), pts)
+    assert not np.allclose(gb.de_casteljau(pts, 1 / 3), pts[1])       # Bezier only approximates
+
+
+def test_neville_rejects_bad_nodes():
+    with pytest.raises(ValueError, match="nodes must be distinct"):
+        gb.neville([[0, 0], [1, 1]], 0.5, nodes=[1, 1])
+    with pytest.raises(ValueError, match="one parameter per point"):
+        gb.neville([[0, 0], [1, 1]], 0.5, nodes=[0, 0.5, 1])
+
+
+# ------------------------------------------------------------------ §24.5 differentiating de Casteljau
+
+@pytest.mark.parametrize("n,d", [(0, 2), (1, 2), (2, 3), (3, 2), (6, 1), (9, 3)])
+def test_last_leg_of_the_pyramid_is_the_derivative(n, d):
+    ctrl = RNG.uniform(-4, 4, size=(n + 1, d))
+    t = np.linspace(-0.3, 1.3, 17)
+    point, vel = gb.de_casteljau_with_derivative(ctrl, t)
+    polys = curve_polys(ctrl)
+    ref_p = np.stack([p(t) for p in polys], -1)
+    ref_v = np.stack([p.deriv()(t) if n else np.zeros_like(t) for p in polys], -1)
+    assert np.allclose(point, ref_p, atol=1e-9)
+    assert np.allclose(vel, ref_v, atol=1e-9)
+    # and it is n times the last leg of the levels drawn by de_casteljau_steps
+    if n:
+        last = gb.de_casteljau_steps(ctrl, 0.3)[-2]
+        assert np.allclose(gb.de_casteljau_with_derivative(ctrl, 0.3)[1], n * (last[1] - last[0]))

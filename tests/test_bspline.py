@@ -22,6 +22,7 @@ from scipy.interpolate import BSpline, PPoly, bisplev
 from scipy.spatial import Delaunay
 
 from goldman_lib import bspline as bs
+from goldman_lib import bspline
 
 FAST = settings(max_examples=40, deadline=None, derandomize=True)
 
@@ -542,3 +543,48 @@ def test_classes():
     h = 1e-6
     np.testing.assert_allclose(d, (n.evaluate(u + h) - n.evaluate(u - h)) / (2 * h), rtol=1e-6)
     np.testing.assert_allclose(n.derivative(u, 0), n.evaluate(u), atol=1e-15)
+
+
+# ------------------------------------------------------------------ §27.5 the global pyramid
+
+def _piece_polynomials(ctrl, knots, p, k):
+    """The polynomial piece on span k, from scipy's B-spline sampled inside the span (independent of goldman_lib)."""
+    from numpy.polynomial import Polynomial
+    from scipy.interpolate import BSpline
+    s = np.linspace(knots[k], knots[k + 1], p + 3)[1:-1]
+    vals = BSpline(knots, ctrl, p)(s)
+    return [Polynomial.fit(s, vals[:, c], p) for c in range(ctrl.shape[1])]
+
+
+@pytest.mark.parametrize("interior,p", [([0.25, 0.5, 0.75], 3), ([0.3, 0.6], 2), ([0.4, 0.4, 0.7], 3), ([0.5], 1)])
+def test_global_pyramid_apex_holds_every_piece_and_nodes_are_blossoms(interior, p):
+    rng = np.random.default_rng(len(interior) + p)
+    n1 = len(interior) + p + 1
+    knots = bspline.clamped_knots(n1, p, interior)
+    ctrl = rng.uniform(-3, 3, size=(n1, 2))
+    labels = bspline.global_pyramid_labels(knots, p)
+    for u in (-0.2, 0.1, 0.45, 0.8, 1.3):          # any real u: each node is a polynomial in u
+        levels = bspline.global_pyramid(ctrl, knots, p, u)
+        assert [len(lv) for lv in levels] == [len(lb) for lb in labels] == [n1 - r for r in range(p + 1)]
+        for node, info in zip(levels[p], labels[p]):
+            for k in info["spans"]:
+                ref = np.array([q(u) for q in _piece_polynomials(ctrl, knots, p, k)])
+                assert np.allclose(node, ref, atol=1e-8)
+        for r in range(p + 1):                     # locality: node (r, i) = b_k(u^r, t_{i+1}..t_{i+p-r}) for its spans
+            for node, info in zip(levels[r], labels[r]):
+                for k in info["spans"]:
+                    args = [u] * r + list(info["knots"])
+                    assert np.allclose(node, bspline.blossom(ctrl, knots, p, args, span=k), atol=1e-9)
+    u = 0.45
+    k = bspline.find_span(knots, p, u)
+    assert np.allclose(bspline.global_pyramid(ctrl, knots, p, u)[p][k - p], bspline.de_boor(ctrl, knots, p, u))
+
+
+def test_global_pyramid_labels_by_hand_and_empty_intervals():
+    lv = bspline.global_pyramid_labels([0, 0, 0, 0, 0.5, 1, 1, 1, 1], 3)
+    assert lv[0][2]["knots"] == (0.0, 0.5, 1.0) and lv[0][2]["u_count"] == 0
+    assert lv[3][0]["interval"] == (0.0, 0.5) and lv[3][0]["spans"] == [3]
+    doubled = bspline.global_pyramid_labels([0, 0, 0, 0.5, 0.5, 1, 1, 1], 2)
+    assert [d["defined"] for d in doubled[2]] == [True, False, True]
+    vals = bspline.global_pyramid([[0, 0], [1, 1], [2, 0], [3, 1], [4, 0]], [0, 0, 0, 0.5, 0.5, 1, 1, 1], 2, 0.3)
+    assert np.isnan(vals[2][1]).all() and np.isfinite(vals[2][[0, 2]]).all()

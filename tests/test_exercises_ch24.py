@@ -123,3 +123,14 @@ def test_patch_messages():
     assert "shape" in ch24.check_patch_point([1, 2]).message
     r = ch24.check_patch_point([1, 2, 2])
     assert "0.19 from the patch point" in r.message
+
+
+# -- Exercise 8 (§24.1), worked by hand: nodes 0, 1/2, 1 at t = 1/4 give level 1 (2, 2) and (2, 6),
+#    level 2 3/4 (2, 2) + 1/4 (2, 6) = (2, 3); the parabola is x = 8t, y = 16 t (1 - t)
+def test_neville_exercise_by_hand_and_its_slips():
+    assert ch24.NEVILLE_POINTS.tolist() == [[0, 0], [4, 4], [8, 0]] and ch24.NEVILLE_NODES.tolist() == [0, 0.5, 1]
+    assert ch24.NEVILLE_T == 0.25
+    assert ch24.check_neville_point([2, 3]).correct
+    assert "Bezier" in ch24.check_neville_point([2, 1.5]).message         # the approximation, not the interpolant
+    assert "first level" in ch24.check_neville_point([2, 6]).message
+    assert "data points" in ch24.check_neville_point([4, 4]).message

@@ -118,3 +118,15 @@ def test_slips_are_all_recognised_as_wrong():
         for slip in slips:
             r = getattr(ch27, name)(slip)
             assert r.answered and not r.correct, (name, slip, r)
+
+
+# -- Exercise 7 (§27.5), worked by hand: knots 0,0,0,1,2,4,5,5,5, p = 2, node (r, i) = (1, 3):
+#    label (u, t_4) = (u, 2); spans k = 3, 4; interval [t_3, t_5] = [1, 4]
+def test_pyramid_node_interval_by_hand_and_its_slips():
+    assert ch27.PYRAMID_KNOTS.tolist() == [0, 0, 0, 1, 2, 4, 5, 5, 5] and ch27.PYRAMID_DEGREE == 2
+    assert ch27.PYRAMID_NODE == (1, 3)
+    assert ch27.check_pyramid_node_interval([1, 4]).correct
+    assert "support of the basis function" in ch27.check_pyramid_node_interval([1, 5]).message
+    assert "single knot span" in ch27.check_pyramid_node_interval([1, 2]).message
+    assert "wrong knot" in ch27.check_pyramid_node_interval([0, 2]).message
+    assert not ch27.check_pyramid_node_interval([0, 1]).correct

@@ -80,3 +80,18 @@ def test_factories_reject_bad_input_naming_the_parameter():
         views.patch_editor(ctrl=np.zeros((2, 2, 3)))
     with pytest.raises(TypeError, match="max_times must be an integer"):
         views.degree_elevation_view(max_times=2.5)
+
+
+def test_interpolation_vs_approximation_draws_both_curves_from_the_library():
+    import matplotlib.pyplot as plt
+
+    from goldman_lib import bezier
+    from goldman_lib.views import bezier as views
+
+    pts = np.array([[0, 0], [1, 2.5], [3, 2.5], [4, 0.5]])
+    fig, ax = plt.subplots()
+    interp, bez = views.plot_interpolation_vs_approximation(pts, ax, samples=31)
+    x, y = interp.get_data()
+    assert np.allclose(np.c_[x, y][[0, 10, 20, 30]], pts)             # through every point at i/3
+    assert np.allclose(np.c_[bez.get_data()], bezier.de_casteljau(pts, np.linspace(0, 1, 31)))
+    plt.close(fig)

@@ -68,3 +68,35 @@ def test_static_plots():
     np.testing.assert_allclose(pt.get_xydata()[0], BSpline(knots, ctrl, 3)(0.3), atol=1e-12)
     import matplotlib.pyplot as plt
     plt.close("all")
+
+
+def test_global_pyramid_figure_labels_come_from_the_library():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from goldman_lib import bspline
+    from goldman_lib.views import bspline as views
+
+    knots = bspline.clamped_knots(7, 3)
+    ax = views.plot_global_pyramid(knots, 3, u=0.4)
+    texts = [t.get_text() for t in ax.texts]
+    assert "$P_{3}$\n(0.25, 0.5, 0.75)" in texts                 # a base label: t_4, t_5, t_6
+    assert "(u, 0.25, 0.5)" in texts and "0.75−u" in texts and "u−0.25" in texts
+    assert sum("piece on" in t for t in texts) == 4               # one apex per non-empty span
+    plt.close(ax.figure)
+
+
+def test_nurbs_surface_figure_draws_the_sphere_and_its_net():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from goldman_lib import bspline
+    from goldman_lib.views import bspline as views
+
+    ctrl, w, tu, tv, p, q = bspline.nurbs_sphere()
+    ax = views.plot_nurbs_surface(ctrl, w, tu, tv, p, q, resolution=9)
+    assert len(ax.lines) == ctrl.shape[0] + ctrl.shape[1]        # the rows and columns of the net
+    assert len(ax.collections) == 2                               # the surface and the control points
+    plt.close(ax.figure)

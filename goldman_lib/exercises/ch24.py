@@ -25,9 +25,9 @@ from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_point
 
 __all__ = ["PROBLEMS", "SLIPS", "DE_CASTELJAU_CTRL", "DE_CASTELJAU_T", "BERNSTEIN_N", "BERNSTEIN_T",
            "END_P0", "END_D0", "END_P3", "END_D1", "HODOGRAPH_CTRL", "ELEVATION_CTRL", "JOIN_CTRL",
-           "JOIN_RATIO", "PATCH_NET", "PATCH_U", "PATCH_V",
+           "JOIN_RATIO", "PATCH_NET", "PATCH_U", "PATCH_V", "NEVILLE_POINTS", "NEVILLE_NODES", "NEVILLE_T",
            "check_de_casteljau_point", "check_bernstein_weights", "check_end_conditions", "check_hodograph",
-           "check_degree_elevation", "check_c1_join_unequal", "check_patch_point"]
+           "check_degree_elevation", "check_c1_join_unequal", "check_patch_point", "check_neville_point"]
 
 #: Exercise 1 (§24.2): the cubic whose point at t = 1/4 is computed by hand with de Casteljau.
 DE_CASTELJAU_CTRL = np.array([[0.0, 0.0], [4.0, 8.0], [8.0, 8.0], [12.0, 0.0]])
@@ -48,6 +48,10 @@ JOIN_RATIO = 2.0
 _Z = np.array([[0.0, 2.0, 0.0], [2.0, 4.0, 2.0], [0.0, 2.0, 4.0]])
 PATCH_NET = np.array([[[2.0 * j, 2.0 * i, _Z[i, j]] for j in range(3)] for i in range(3)])
 PATCH_U, PATCH_V = 0.5, 0.25
+#: Exercise 8 (§24.1): three points interpolated at the nodes 0, 1/2, 1; the parameter of Neville's pyramid.
+NEVILLE_POINTS = np.array([[0.0, 0.0], [4.0, 4.0], [8.0, 0.0]])
+NEVILLE_NODES = np.array([0.0, 0.5, 1.0])
+NEVILLE_T = 0.25
 
 
 def _net_text(net) -> str:
@@ -80,6 +84,10 @@ PROBLEMS = {
         f"The biquadratic patch P(u, v) = sum_i sum_j B_i^2(u) B_j^2(v) P_ij has the control net "
         f"{_net_text(PATCH_NET)} (the row index i goes with u, the column index j with v). Give the point "
         f"P({fmt(PATCH_U)}, {fmt(PATCH_V)}) as [x, y, z] (Goldman §24.6)."),
+    "check_neville_point": (
+        f"The quadratic curve L(t) passes through the points {fmt_points(NEVILLE_POINTS)} at the parameters "
+        f"t = {', '.join(fmt(x) for x in NEVILLE_NODES)}. Run Neville's pyramid by hand and give L({fmt(NEVILLE_T)}) "
+        f"as [x, y] (Goldman §24.1)."),
 }
 
 
@@ -336,6 +344,45 @@ def check_patch_point(answer) -> Result:
                  f"Casteljau on each row at v, then on the three results at u.")
 
 
+def check_neville_point(answer) -> Result:
+    """Check the point of the interpolating quadratic through ``NEVILLE_POINTS`` at ``NEVILLE_T`` (Goldman §24.1).
+
+    answer: [x, y].  Recognises the Bezier point of the same three points (approximation instead of
+    interpolation: de Casteljau's weights 1-t and t on every level), a point of the first level of
+    Neville's pyramid (stopped too early), and a data point itself.
+
+    >>> check_neville_point([2, 3])
+    Correct: L(0.25) = (2, 3), on the parabola through the three points.
+    """
+    t = NEVILLE_T
+    what = f"L({fmt(t)})"
+    got, err = read_points(answer, "your point", ask=what + " as [x, y]")
+    if err is not None:
+        return err
+    if got.shape != (2,):
+        return wrong(f"{what} should be one point [x, y]; yours has shape {got.shape}.")
+    expected = bezier.neville(NEVILLE_POINTS, t, nodes=NEVILLE_NODES)
+    dist = float(np.linalg.norm(got - expected))
+    if dist <= 1e-4:
+        return correct(f"{what} = {fmt(expected)}, on the parabola through the three points.")
+    if np.linalg.norm(got - bezier.de_casteljau(NEVILLE_POINTS, t)) <= 1e-4:
+        return wrong("that is the point of the Bezier curve of the three points (de Casteljau's weights 1 - t and t): "
+                     "it approximates the points, it does not pass through the middle one. Neville's weights are "
+                     "(t_(i+r) - t) / (t_(i+r) - t_i) and (t - t_i) / (t_(i+r) - t_i), with each node's own interval.")
+    for i in range(2):
+        lo, hi = NEVILLE_NODES[i], NEVILLE_NODES[i + 1]
+        level1 = bezier.neville(NEVILLE_POINTS[i:i + 2], t, nodes=[lo, hi])
+        if np.linalg.norm(got - level1) <= 1e-4:
+            return wrong(f"that is a point of the first level of the pyramid (the line through P{i} and P{i + 1}); "
+                         "a quadratic needs a second level, which combines the two first-level points over the nodes' "
+                         "whole interval.")
+    if np.any(np.linalg.norm(NEVILLE_POINTS - got, axis=1) <= 1e-4):
+        return wrong(f"that is one of the data points; the curve passes through them at their nodes, and {fmt(t)} is "
+                     "not one of the nodes.")
+    return wrong(f"your point is {fmt(dist, 2)} from {what}; each level of Neville's pyramid is an affine combination "
+                 "weighted by distances to the nodes, and extrapolation (a weight below 0) is allowed.")
+
+
 SLIPS = {
     "check_de_casteljau_point": [[9.0, 4.5], [2.0, 3.5], [6.0, 4.0], [5.0, 8.0]],
     "check_bernstein_weights": [[0.4096, 0.1024, 0.0256, 0.0064, 0.0016],
@@ -348,4 +395,5 @@ SLIPS = {
     "check_c1_join_unequal": [[[6, 3], [8, 2]], [[6, 3], [7, 2.5]], [[6, 3], [2, 5]], [[6, 4], [10, 1]],
                               [[6, 3], [12, 0]]],
     "check_patch_point": [[2, 1, 1.8125], [1, 2, 0.5], [2, 2, 16 / 9]],
+    "check_neville_point": [[2, 1.5], [2, 2], [2, 6], [4, 4], [2, 1]],
 }

@@ -24,9 +24,9 @@ __all__ = ["PROBLEMS", "SLIPS",
            "CONT_DEGREE", "CONT_KNOTS", "CONT_AT",
            "SPLINE_PIECES", "SPLINE_BREAKS", "SPLINE_CONTINUITY",
            "SURF_HEIGHTS", "SURF_KNOTS_U", "SURF_KNOTS_V", "SURF_DEGREES", "SURF_UV",
-           "NURBS_CTRL", "NURBS_WEIGHTS", "NURBS_KNOTS", "NURBS_U",
+           "NURBS_CTRL", "NURBS_WEIGHTS", "NURBS_KNOTS", "NURBS_U", "PYRAMID_KNOTS", "PYRAMID_DEGREE", "PYRAMID_NODE",
            "check_local_de_boor", "check_basis_values", "check_continuity_orders",
-           "check_spline_control_points", "check_surface_point", "check_nurbs_point"]
+           "check_spline_control_points", "check_surface_point", "check_nurbs_point", "check_pyramid_node_interval"]
 
 #: Exercises 1-2: a quadratic B-spline on non-uniform knots (interior knots 1 and 3).
 CURVE_CTRL = np.array([[0.0, 0.0], [1.0, 3.0], [4.0, 6.0], [7.0, 0.0], [9.0, 2.0]])
@@ -56,6 +56,10 @@ NURBS_CTRL = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]])
 NURBS_WEIGHTS = np.array([1.0, 2.0, 1.0, 3.0])
 NURBS_KNOTS = np.array([0.0, 0, 0, 1, 2, 2, 2])
 NURBS_U = 1.5
+#: Exercise 7 (§27.5): a node (level r, index i) of the global de Boor pyramid of a quadratic.
+PYRAMID_KNOTS = np.array([0.0, 0, 0, 1, 2, 4, 5, 5, 5])
+PYRAMID_DEGREE = 2
+PYRAMID_NODE = (1, 3)
 
 
 def _knots(t) -> str:
@@ -95,6 +99,11 @@ PROBLEMS = {
         f"The quadratic NURBS curve with control points {fmt_points(NURBS_CTRL)}, weights "
         f"{', '.join(fmt(w) for w in NURBS_WEIGHTS)} and knots {_knots(NURBS_KNOTS)}: compute C({fmt(NURBS_U)}) "
         f"= sum w_k N_k,2(u) P_k / sum w_k N_k,2(u). Give [x, y] to 3 decimals (Goldman §27.9)."),
+    "check_pyramid_node_interval": (
+        f"In the global de Boor pyramid of a quadratic B-spline (degree {PYRAMID_DEGREE}) on the knots "
+        f"{_knots(PYRAMID_KNOTS)}, take the node P_{PYRAMID_NODE[1]}^{PYRAMID_NODE[0]} (level {PYRAMID_NODE[0]}, "
+        f"index {PYRAMID_NODE[1]}). On which interval [a, b] of u is this node a blossom value of the curve's "
+        f"polynomial pieces (the union of the spans whose local pyramids use it)? Give [a, b] (Goldman §27.5)."),
 }
 
 
@@ -360,6 +369,46 @@ def check_nurbs_point(answer) -> Result:
                  f"N_2,2, N_3,2 at u = {fmt(u)}, then C = sum w_k N_k P_k / sum w_k N_k.")
 
 
+# -- Exercise 7 -----------------------------------------------------------------------------------
+
+def check_pyramid_node_interval(answer) -> Result:
+    """Check the locality interval ``[t_i, t_(i+p+1-r)]`` of the node ``PYRAMID_NODE`` (Goldman §27.5).
+
+    answer: [a, b].  Recognises the support of the basis function N_i,p (the level ignored), the one
+    span [t_i, t_(i+1)] (the node is shared by several spans), and a knot index shifted by one.
+
+    >>> check_pyramid_node_interval([1, 4])
+    Correct: the node P_3^1 is labelled (u, 2) and is a blossom value of the pieces on [1, 2) and [2, 4): u in [1, 4].
+    """
+    r, i = PYRAMID_NODE
+    p, t = PYRAMID_DEGREE, PYRAMID_KNOTS
+    got, err = read_points(answer, "your interval", ask="the interval as [a, b]")
+    if err is not None:
+        return err
+    if got.shape != (2,):
+        return wrong(f"the interval should be two numbers [a, b]; yours has shape {got.shape}.")
+    info = bspline.global_pyramid_labels(t, p)[r][i - r]
+    expected = np.array(info["interval"])
+    if _near(got, expected, 1e-9):
+        label = ", ".join(["u"] * r + [fmt(x) for x in info["knots"]])
+        pieces = " and ".join(f"[{fmt(t[k])}, {fmt(t[k + 1])})" for k in info["spans"])
+        return correct(f"the node P_{i}^{r} is labelled ({label}) and is a blossom value of the pieces on {pieces}: "
+                       f"u in [{fmt(expected[0])}, {fmt(expected[1])}].")
+    if _near(got, [t[i], t[i + p + 1]], 1e-9):
+        return wrong(f"that is the support of the basis function N_{i},{p}, the reach of a control point at level 0; "
+                     f"a node of level {r} has its parents' common knots, one fewer per level, so it reaches fewer spans.")
+    if _near(got, [t[i], t[i + 1]], 1e-9):
+        return wrong("that is a single knot span; a node below the apex is shared by the local pyramids of several "
+                     "neighbouring spans: count the knots in its label.")
+    for shift in (-1, 1):
+        j = i + shift
+        if 0 <= j and j + p + 1 - r < t.size and _near(got, [t[j], t[j + p + 1 - r]], 1e-9):
+            return wrong("your interval has the right length in knots but starts at the wrong knot: node i of level r "
+                         "combines with the weight (u - t_i) / (t_(i+p+1-r) - t_i), so its interval starts at t_i.")
+    return wrong("your interval is not one the node's label gives; the node's label is (u^r, t_(i+1), ..., t_(i+p-r)) "
+                 "and it serves the spans k with i <= k <= i+p-r.")
+
+
 #: Wrong answers of the kinds each checker recognises (tests/test_solutions.py feeds them in).
 SLIPS = {
     "check_local_de_boor": [[4.0, 3.75], [3.0, 5.0], [5.0, 4.0], [4.0, 4.0], [5.0, 10.0], [0.0, 0.0]],
@@ -368,4 +417,5 @@ SLIPS = {
     "check_spline_control_points": [[0.0, 0.75, 0.5, -1.0], [0.0, 1.0, 1.0, -3.0], [0.0, 1.0, 2.0, -1.0]],
     "check_surface_point": [[1.0, 1.5, 2.5], [1.0, 1.0, 3.0], [2.0, 1.0, 2.5], [1.5, 1.0, 3.0]],
     "check_nurbs_point": [[3.0, 1.5], [5.125, 1.75], [5.125 / 7, 0.25], [2.9459, 1.7838], [3.0, 1.0]],
+    "check_pyramid_node_interval": [[1.0, 5.0], [1.0, 2.0], [0.0, 2.0], [2.0, 5.0], [0.0, 1.0]],
 }

@@ -275,3 +275,29 @@ def patch_editor(ctrl=DEFAULT_PATCH, resolution: int = 24, width: int = 480, hei
                            title="bicubic Bezier patch", side=True)
     view.scene = scene
     return view
+
+
+# -- §24.1 interpolation versus approximation (added at the end so the factories above stay untouched)
+def plot_interpolation_vs_approximation(points, ax=None, samples: int = 200, nodes=None):
+    """Draw the interpolating polynomial through ``points`` (Neville, :func:`goldman_lib.bezier.neville`)
+    and the Bezier curve of the same points (:func:`goldman_lib.bezier.de_casteljau`) (Goldman §24.1).
+
+    The interpolant passes through every point at its node (equally spaced on [0, 1] by default) and
+    may swing far outside their convex hull; the Bezier curve passes only through the first and last
+    and follows the polygon.  Returns ``(interpolant_line, bezier_line)``.
+    """
+    pts = as_points(points, "points", dim=2)
+    samples = within_budget(samples, "samples", cost=lambda v: 4 * v, what="the two sampled curves",
+                            unit="coordinates", minimum=2)
+    ax = style.get_axes(ax)
+    plot_control_polygon(pts, ax)
+    t = np.linspace(0.0, 1.0, samples)
+    lag = bezier.neville(pts, t, nodes=nodes)
+    (interp,) = ax.plot(lag[:, 0], lag[:, 1], color=style.PALETTE["point"], linewidth=2.0,
+                        label="interpolating polynomial (Neville)")
+    bez = plot_curve(pts, ax, samples=samples, label="Bézier curve (de Casteljau)")
+    ax.legend(fontsize=8, loc="best", frameon=False)
+    return interp, bez
+
+
+__all__ += ["plot_interpolation_vs_approximation"]

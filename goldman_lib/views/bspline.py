@@ -170,3 +170,112 @@ def local_control_view(ctrl=LONG_POLYGON, degree: int = 3, index: int = 4, dy: f
                 "degree": int_slider("degree", degree, 1, min(5, n1 - 1))}
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="local control")
+
+
+# -- §27.5 and §27.9 static figures (added at the end so the factories above stay untouched) ---------
+def _fmt_knot(x: float) -> str:
+    return f"{x:.3g}"
+
+
+def plot_global_pyramid(knots, degree, u=None, ax=None, edge_labels: bool = True):
+    """Draw Goldman's global de Boor pyramid with every node labelled by its blossom arguments (Goldman §27.5).
+
+    Level 0 (bottom) holds ``P_0 .. P_n`` labelled ``(t_{i+1}, ..., t_{i+p})``; the node i of level r
+    is labelled ``(u^r, t_{i+1}, ..., t_{i+p-r})`` and its two incoming edges carry the factors
+    ``t_{i+p+1-r} - u`` (from node i-1) and ``u - t_i`` (from node i).  All numbers come from
+    :func:`goldman_lib.bspline.global_pyramid_labels`.  If ``u`` is given, the nodes that the span of
+    u uses (the local de Boor pyramid, locality) are drawn in colour and the rest in grey.
+    Returns the axes.
+    """
+    import matplotlib.pyplot as plt
+
+    levels = bspline.global_pyramid_labels(knots, degree)
+    p = len(levels) - 1
+    t = bspline.check_knots(knots, degree)
+    k = bspline.find_span(t, p, u) if u is not None else None
+    if ax is None:
+        fig = plt.figure(figsize=(style.WIDE_FIGSIZE[0], 4.8), dpi=style.DPI)
+        ax = fig.add_subplot(1, 1, 1)
+    ax.set_axis_off()
+    pos = {(r, d["index"]): (d["index"] - r / 2, r) for r, level in enumerate(levels) for d in level}
+
+    def active(r, d):
+        return k is not None and k in d["spans"]
+
+    for r, level in enumerate(levels[1:], start=1):
+        for d in level:
+            i = d["index"]
+            lo, hi = d["interval"]
+            on = active(r, d)
+            colour = style.PALETTE["curve"] if on else "#c8c8c8"
+            for parent, text in (((r - 1, i - 1), f"{_fmt_knot(hi)}−u"), ((r - 1, i), f"u−{_fmt_knot(lo)}")):
+                (x0, y0), (x1, y1) = pos[parent], pos[(r, i)]
+                ax.plot([x0, x1], [y0, y1], color=colour, linewidth=1.6 if on else 0.8, zorder=1)
+                if edge_labels and d["defined"]:       # written along the edge, nearer the parent
+                    xm, ym = x0 + 0.4 * (x1 - x0), y0 + 0.4 * (y1 - y0)
+                    angle = float(np.degrees(np.arctan2(y1 - y0, x1 - x0)))
+                    angle = angle - 180 if angle > 90 else angle
+                    ax.text(xm, ym, text, fontsize=6, ha="center", va="center", rotation=angle,
+                            rotation_mode="anchor", transform_rotates_text=True,
+                            color="#333333" if on else "#999999", zorder=2,
+                            bbox=dict(boxstyle="square,pad=0.05", fc="white", ec="none"))
+    for r, level in enumerate(levels):
+        for d in level:
+            x, y = pos[(r, d["index"])]
+            args = ["u"] * r + [_fmt_knot(v) for v in d["knots"]]
+            text = "(" + ", ".join(args) + ")" if args else "()"
+            if r == 0:
+                text = f"$P_{{{d['index']}}}$\n" + text
+            elif r == p:
+                lo_k, hi_k = d["interval"]
+                text += f"\npiece on [{_fmt_knot(lo_k)}, {_fmt_knot(hi_k)})"
+            on = active(r, d)
+            face = style.level_colour(r) if on else "#eeeeee"
+            ax.plot(x, y, "o", markersize=7, color=face, markeredgecolor="#555555", zorder=3)
+            ax.text(x, y + (0.16 if r < p else 0.16), text, fontsize=6.5, ha="center", va="bottom",
+                    color="#111111" if (on or k is None) else "#888888", zorder=4,
+                    bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
+    xs = [x for x, _ in pos.values()]
+    ax.set_xlim(min(xs) - 0.7, max(xs) + 0.7)
+    ax.set_ylim(-0.3, p + 0.75)
+    title = f"global de Boor pyramid, degree {p}, knots {[float(_fmt_knot(v)) for v in t]}"
+    if k is not None:
+        title += f"\nu = {u:g} lies in [t{k}, t{k + 1}): the coloured nodes are its local pyramid"
+    ax.set_title(title, fontsize=9)
+    return ax
+
+
+def plot_nurbs_surface(ctrl, weights, knots_u, knots_v, degree_u, degree_v, ax=None, resolution: int = 33,
+                       net: bool = True):
+    """Draw a NURBS surface (Goldman §27.9) with its control net in a static 3D matplotlib view.
+
+    The surface points come from :func:`goldman_lib.bspline.nurbs_surface_grid` over the domains of
+    the two knot vectors; the control net is drawn as its rows and columns with the points sized by
+    their weights.  Returns the axes (a 3D axes; a new figure when ``ax`` is None).
+    """
+    import matplotlib.pyplot as plt
+
+    P = as_points(ctrl, "ctrl", ndim=3, dim=3)
+    resolution = as_int(resolution, "resolution", minimum=2, maximum=200)
+    tu = bspline.check_knots(knots_u, degree_u, P.shape[0], name="knots_u")
+    tv = bspline.check_knots(knots_v, degree_v, P.shape[1], name="knots_v")
+    u = np.linspace(*bspline.domain(tu, degree_u), resolution)
+    v = np.linspace(*bspline.domain(tv, degree_v), resolution)
+    S = bspline.nurbs_surface_grid(P, weights, tu, tv, degree_u, degree_v, u, v)
+    if ax is None:
+        fig = plt.figure(figsize=style.FIGSIZE, dpi=style.DPI)
+        ax = fig.add_subplot(1, 1, 1, projection="3d")
+    ax.plot_surface(S[..., 0], S[..., 1], S[..., 2], color=style.PALETTE["curve"], alpha=0.55,
+                    linewidth=0.2, edgecolor="#ffffff", shade=True)
+    if net:
+        for row in P:
+            ax.plot(*row.T, color=style.PALETTE["control"], linewidth=0.9)
+        for col in P.transpose(1, 0, 2):
+            ax.plot(*col.T, color=style.PALETTE["control"], linewidth=0.9)
+        w = np.asarray(weights, dtype=float).reshape(-1)
+        ax.scatter(*P.reshape(-1, 3).T, s=14 * w / w.max() + 4, color=style.PALETTE["point"], depthshade=False)
+    ax.set_box_aspect((np.ptp(P[..., 0]), np.ptp(P[..., 1]), np.ptp(P[..., 2])))
+    return ax
+
+
+__all__ += ["plot_global_pyramid", "plot_nurbs_surface"]
