@@ -66,7 +66,7 @@ from goldman_lib import affine
 from goldman_lib import ifs as ifs_module
 from goldman_lib.fixed_point import MAX_PAIRS, hausdorff_distance
 from goldman_lib.fractals import RECURSE, RecursiveTurtleProgram
-from goldman_lib.validation import MAX_ITEMS, as_float, as_int, as_points, as_tolerance, within_budget
+from goldman_lib.validation import as_float, as_int, as_points, as_tolerance, within_budget
 
 __all__ = [
     "STANDARD_POINT", "STANDARD_DIRECTION", "state_map", "initial_state_map", "state_after",
@@ -350,8 +350,8 @@ def drawing_distance(first, second) -> float:
 
 def _check_pairs(m: int, n: int, what: str = "first and second differ, so") -> None:
     if m * n > MAX_PAIRS:
-        raise ValueError(f"{what} their Hausdorff distance compares every vertex of one with every vertex of the other: "
-                         f"{m:,} * {n:,} = {m * n:,} pairs, over the limit of {MAX_PAIRS:,}; use lower levels")
+        raise ValueError(f"{what} their Hausdorff distance compares every vertex of one with every vertex of the "
+                         f"other: {m:,} * {n:,} = {m * n:,} pairs, over the limit of {MAX_PAIRS:,}; use lower levels")
 
 
 # ---------------------------------------------------------------------------------------------
