@@ -251,7 +251,11 @@ def segment_set(polylines, decimals: int = 9) -> np.ndarray:
             segs.append(np.concatenate([p[:-1], p[1:]], axis=1))
     if not segs:
         return np.zeros((0, 4))
-    s = np.round(np.concatenate(segs), decimals) + 0.0
+    with np.errstate(over="ignore", invalid="ignore"):
+        s = np.round(np.concatenate(segs), decimals) + 0.0
+    if not np.isfinite(s).all():
+        raise ValueError(f"polylines are too large to round to {decimals} decimals (a coordinate overflows); "
+                         f"scale them down or use fewer decimals")
     s = s[np.hypot(s[:, 2] - s[:, 0], s[:, 3] - s[:, 1]) > 0]
     swap = (s[:, 0] > s[:, 2]) | ((s[:, 0] == s[:, 2]) & (s[:, 1] > s[:, 3]))
     s[swap] = s[swap][:, [2, 3, 0, 1]]

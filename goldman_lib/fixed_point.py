@@ -444,7 +444,8 @@ def directed_hausdorff(A, B) -> float:
     1.0
     """
     A, B = _point_sets(A, B)
-    return float(np.sqrt(_nearest_sq(A, B).max()))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _distance(np.sqrt(_nearest_sq(A, B).max()))
 
 
 def hausdorff_distance(A, B) -> float:
@@ -463,7 +464,16 @@ def hausdorff_distance(A, B) -> float:
     3.0
     """
     A, B = _point_sets(A, B)
-    return float(np.sqrt(max(_nearest_sq(A, B).max(), _nearest_sq(B, A).max())))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _distance(np.sqrt(max(_nearest_sq(A, B).max(), _nearest_sq(B, A).max())))
+
+
+def _distance(d) -> float:
+    d = float(d)
+    if not math.isfinite(d):
+        raise ValueError("A and B are too far apart (or too large): their squared distances overflow a float; "
+                         "scale the points down")
+    return d
 
 
 
