@@ -51,6 +51,11 @@ def _matrix(L, t=(0.0, 0.0)) -> np.ndarray:
     return M
 
 
+def _square(x: float) -> float:
+    """``x**2`` for a size in a tolerance, inf rather than an OverflowError for a huge ``x``."""
+    return x * x if x < 1e154 else math.inf
+
+
 def _finite(M: np.ndarray, names: str) -> np.ndarray:
     """``M`` if every entry is finite; otherwise a ValueError saying which inputs overflowed it."""
     if not np.all(np.isfinite(M)):
@@ -268,7 +273,7 @@ def affine_from_point_and_vectors(point, vectors, image_point, image_vectors) ->
         raise ValueError(f"vectors and image_vectors must each hold two 2D vectors, shape (2, 2); "
                          f"got {V.shape} and {W.shape}")
     det = V[0, 0] * V[1, 1] - V[0, 1] * V[1, 0]
-    if abs(det) <= 1e-12 * max(1.0, float(np.abs(V).max()) ** 2):
+    if abs(det) <= 1e-12 * max(1.0, _square(float(np.abs(V).max()))):
         raise ValueError(f"vectors must be linearly independent; {V[0]} and {V[1]} are parallel")
     with np.errstate(over="ignore", invalid="ignore"):
         L = np.linalg.solve(V, W)
@@ -294,7 +299,8 @@ def affine_from_points(src, dst) -> np.ndarray:
         raise ValueError(f"src and dst must each hold three 2D points, shape (3, 2); got {A.shape} and {B.shape}")
     u, v = A[1] - A[0], A[2] - A[0]
     area2 = u[0] * v[1] - u[1] * v[0]
-    scale = max(1.0, float(np.abs(A - A[0]).max()) ** 2)
+    with np.errstate(over="ignore", invalid="ignore"):
+        scale = max(1.0, _square(float(np.abs(A - A[0]).max())))
     if abs(area2) <= 1e-12 * scale:
         raise ValueError(f"src points must not be collinear; {A.tolist()} lie on one line")
     H = np.column_stack([A, np.ones(3)])
@@ -504,7 +510,7 @@ def barycentric_coordinates(points, triangle) -> np.ndarray:
         raise ValueError(f"triangle must hold three 2D points, shape (3, 2); got {T.shape}")
     u, v = T[1] - T[0], T[2] - T[0]
     area2 = u[0] * v[1] - u[1] * v[0]
-    if abs(area2) <= 1e-12 * max(1.0, float(np.abs(T - T[0]).max()) ** 2):
+    if abs(area2) <= 1e-12 * max(1.0, _square(float(np.abs(T - T[0]).max()))):
         raise ValueError(f"triangle must not be collinear; {T.tolist()} lie on one line")
     with np.errstate(over="ignore", invalid="ignore"):
         d = P - T[0]

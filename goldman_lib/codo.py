@@ -494,7 +494,8 @@ def parse(program: str) -> Program:
 
     program: the program text (see the module docstring for the language).  Returns a
     :class:`Program`.  Raises TypeError if ``program`` is not a string, ValueError if it is longer
-    than :data:`MAX_LENGTH` characters, and :class:`CodoSyntaxError` naming the line, column and token where parsing failed.
+    than :data:`MAX_LENGTH` characters, and :class:`CodoSyntaxError` naming the line, column and
+    token where parsing failed.
 
     >>> len(parse("P = point(0, 0)\\nREPEAT 3 [ P = P + vector(1, 0) ]").statements)
     2

@@ -66,7 +66,7 @@ from goldman_lib import affine
 from goldman_lib import ifs as ifs_module
 from goldman_lib.fixed_point import MAX_PAIRS, hausdorff_distance
 from goldman_lib.fractals import RECURSE, RecursiveTurtleProgram
-from goldman_lib.validation import MAX_ITEMS, as_float, as_int, as_points, as_tolerance, within_budget
+from goldman_lib.validation import as_float, as_int, as_points, as_tolerance, within_budget
 
 __all__ = [
     "STANDARD_POINT", "STANDARD_DIRECTION", "state_map", "initial_state_map", "state_after",
@@ -251,7 +251,11 @@ def segment_set(polylines, decimals: int = 9) -> np.ndarray:
             segs.append(np.concatenate([p[:-1], p[1:]], axis=1))
     if not segs:
         return np.zeros((0, 4))
-    s = np.round(np.concatenate(segs), decimals) + 0.0
+    with np.errstate(over="ignore", invalid="ignore"):
+        s = np.round(np.concatenate(segs), decimals) + 0.0
+    if not np.isfinite(s).all():
+        raise ValueError(f"polylines are too large to round to {decimals} decimals (a coordinate overflows); "
+                         f"scale them down or use fewer decimals")
     s = s[np.hypot(s[:, 2] - s[:, 0], s[:, 3] - s[:, 1]) > 0]
     swap = (s[:, 0] > s[:, 2]) | ((s[:, 0] == s[:, 2]) & (s[:, 1] > s[:, 3]))
     s[swap] = s[swap][:, [2, 3, 0, 1]]
@@ -350,8 +354,8 @@ def drawing_distance(first, second) -> float:
 
 def _check_pairs(m: int, n: int, what: str = "first and second differ, so") -> None:
     if m * n > MAX_PAIRS:
-        raise ValueError(f"{what} their Hausdorff distance compares every vertex of one with every vertex of the other: "
-                         f"{m:,} * {n:,} = {m * n:,} pairs, over the limit of {MAX_PAIRS:,}; use lower levels")
+        raise ValueError(f"{what} their Hausdorff distance compares every vertex of one with every vertex of the "
+                         f"other: {m:,} * {n:,} = {m * n:,} pairs, over the limit of {MAX_PAIRS:,}; use lower levels")
 
 
 # ---------------------------------------------------------------------------------------------

@@ -31,8 +31,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import affine
-from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, as_tolerance, check_finite,
-                         within_budget)
+from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points, as_tolerance,
+                         check_finite, within_budget)
 
 __all__ = ["MAX_PAIRS", "Convergence", "ConvergenceError", "fixed_point_iteration", "newton", "newton_steps", "jacobi",
            "gauss_seidel", "is_diagonally_dominant", "contraction_factor", "hausdorff_distance",
@@ -72,8 +72,7 @@ class ConvergenceError(ArithmeticError):
         self.report = report
 
 
-def as_float_array_x0(x0) -> np.ndarray:
-    from .validation import as_float_array
+def _as_x0(x0) -> np.ndarray:
     return as_float_array(x0, "x0").copy()
 
 
@@ -122,7 +121,7 @@ def fixed_point_iteration(F, x0, *, tol: float = 1e-12, max_iter: int = 1000, fu
     """
     F = _callable(F, "F")
     scalar = np.ndim(x0) == 0
-    x = check_finite(as_float_array_x0(x0), "x0")
+    x = check_finite(_as_x0(x0), "x0")
     tol = as_tolerance(tol)
     max_iter = _iterations(max_iter, x.size)
     history, residuals = [x.copy()], []
@@ -246,7 +245,6 @@ def _cycle(history, tol) -> int:
 
 
 def _linear_system(A, b, x0):
-    from .validation import as_float_array
     A = as_float_array(A, "A")
     if A.ndim != 2 or A.shape[0] != A.shape[1] or A.shape[0] == 0:
         raise ValueError(f"A must be a square matrix (n, n); got shape {A.shape}")
@@ -274,7 +272,6 @@ def is_diagonally_dominant(A) -> bool:
     >>> is_diagonally_dominant([[4, 1], [2, 5]]), is_diagonally_dominant([[1, 2], [3, 4]])
     (True, False)
     """
-    from .validation import as_float_array
     A = np.abs(check_finite(as_float_array(A, "A"), "A"))
     if A.ndim != 2 or A.shape[0] != A.shape[1]:
         raise ValueError(f"A must be a square matrix (n, n); got shape {A.shape}")
@@ -382,7 +379,6 @@ def contraction_factor(M) -> float | np.ndarray:
     >>> round(contraction_factor([[1.0, 0.0], [1.0, 1.0]]), 6)   # a shear stretches by the golden ratio
     1.618034
     """
-    from .validation import as_float_array
     arr = as_float_array(M, "M")
     if arr.ndim >= 2 and arr.shape[-2:] == (3, 3):
         arr = affine.as_affine(arr, "M")[..., :2, :2]
@@ -448,7 +444,8 @@ def directed_hausdorff(A, B) -> float:
     1.0
     """
     A, B = _point_sets(A, B)
-    return float(np.sqrt(_nearest_sq(A, B).max()))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _distance(np.sqrt(_nearest_sq(A, B).max()))
 
 
 def hausdorff_distance(A, B) -> float:
@@ -467,7 +464,16 @@ def hausdorff_distance(A, B) -> float:
     3.0
     """
     A, B = _point_sets(A, B)
-    return float(np.sqrt(max(_nearest_sq(A, B).max(), _nearest_sq(B, A).max())))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _distance(np.sqrt(max(_nearest_sq(A, B).max(), _nearest_sq(B, A).max())))
+
+
+def _distance(d) -> float:
+    d = float(d)
+    if not math.isfinite(d):
+        raise ValueError("A and B are too far apart (or too large): their squared distances overflow a float; "
+                         "scale the points down")
+    return d
 
 
 

@@ -24,7 +24,6 @@ from goldman_lib import affine
 from goldman_lib.angles import cos_sin_degrees
 from goldman_lib.validation import as_points
 from goldman_lib.views import style
-from goldman_lib.views import _checks
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
 from goldman_lib.views.turtle import stroke_data
 
