@@ -78,6 +78,8 @@ def as_float_array(x, name: str) -> np.ndarray:
             raise TypeError(f"{name} must be real; complex numbers are not points or parameters here")
     try:
         arr = np.asarray(x, dtype=float)
+    except OverflowError:
+        raise ValueError(f"{name} must hold numbers a float can represent (|x| < 1.8e308); an integer is too large") from None
     except (TypeError, ValueError) as exc:
         raise TypeError(f"{name} must be a numeric array-like; got {type(x).__name__} ({exc})") from None
     return arr
@@ -174,8 +176,12 @@ def as_float(x, name: str, *, positive: bool = False, nonzero: bool = False) -> 
     ValueError: factor must be nonzero; got 0.0
     """
     if isinstance(x, bool) or not isinstance(x, numbers.Real):
-        raise TypeError(f"{name} must be a real number; got {x!r}")
-    x = float(x)
+        text = repr(x)
+        raise TypeError(f"{name} must be a real number; got {text if len(text) <= 60 else text[:57] + '...'}")
+    try:
+        x = float(x)
+    except OverflowError:
+        raise ValueError(f"{name} must be finite; got an integer too large for a float") from None
     if not np.isfinite(x):
         raise ValueError(f"{name} must be finite; got {x}")
     if positive and x <= 0:

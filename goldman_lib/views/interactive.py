@@ -192,7 +192,11 @@ class InteractiveView(widgets.VBox):
         self.last_result = result
         status = result.get("status", "")
         self.status.value = html.escape(status) if status else ""
-        self._redraw()
+        try:
+            self._redraw()
+        except Exception as exc:  # noqa: BLE001 - a drawing error is shown, not raised
+            self.last_error = f"{type(exc).__name__}: {exc}"
+            self.status.value = (f'<span style="color:#b3261e">&#9888; could not redraw: {html.escape(str(exc))}</span>')
 
     _muted = False
 
