@@ -34,7 +34,7 @@ __all__ = [
     "identity", "translation", "rotation", "scaling", "directional_scaling", "shear", "similarity",
     "from_parameters", "to_parameters", "affine_from_point_and_vectors", "affine_from_points",
     "apply", "apply_vectors", "compose", "inverse", "as_affine", "linear_part", "translation_part",
-    "fixed_point", "is_conformal",
+    "fixed_point", "is_conformal", "is_similarity", "conformal_from_point_and_vector",
     "mirror", "affine_coordinates", "vector_coordinates", "affine_combination", "barycentric_coordinates",
     "commute", "is_rigid",
 ]
@@ -194,8 +194,10 @@ def shear(k, center=None) -> np.ndarray:
 
 
 def similarity(scale, angle, translate=(0.0, 0.0), *, reflect: bool = False) -> np.ndarray:
-    """A conformal map: scale by ``scale``, optionally reflect in the x-axis, rotate by ``angle``
-    degrees, then translate (Goldman §8.3: the maps of a conformal IFS).
+    """A similarity: scale by ``scale``, optionally reflect in the x-axis, rotate by ``angle``
+    degrees, then translate (Goldman §8.3: the maps of a conformal IFS).  Without ``reflect`` it
+    is conformal in the book's sense (§4.6, :func:`is_conformal`); with it, it is a mirror image
+    of a conformal map (:func:`is_similarity` only).
 
     >>> apply([[1, 0]], similarity(0.5, 90, [1, 1])).round(12)
     array([[1. , 1.5]])
@@ -277,6 +279,35 @@ def affine_from_point_and_vectors(point, vectors, image_point, image_vectors) ->
         raise ValueError(f"vectors must be linearly independent; {V[0]} and {V[1]} are parallel")
     with np.errstate(over="ignore", invalid="ignore"):
         L = np.linalg.solve(V, W)
+        out = _matrix(L, Q - P @ L)
+    return _finite(out, "the points or vectors are")
+
+
+def conformal_from_point_and_vector(point, vector, image_point, image_vector) -> np.ndarray:
+    """The unique conformal map (translation, rotation and uniform scaling, no mirror) sending a
+    point and one nonzero vector to given images (Goldman §4.6).
+
+    A conformal map is multiplication by a complex number followed by a translation,
+    ``z -> c z + d``; in the row-vector convention its linear part is ``[[a, b], [-b, a]]`` with
+    ``c = a + i b``.  So one vector fixes it: ``c = image_vector / vector`` (complex division:
+    the scale factor is the ratio of lengths, the angle the angle between them), and ``point ->
+    image_point`` fixes ``d``.  A general affine map needs two vectors
+    (:func:`affine_from_point_and_vectors`).  point, image_point, vector, image_vector: (2,).
+    Raises ValueError for a zero ``vector``.
+
+    >>> M = conformal_from_point_and_vector([0, 0], [1, 0], [1, 1], [0, 2])
+    >>> np.allclose(M, scaling(2) @ rotation(90) @ translation([1, 1])), is_conformal(M)
+    (True, True)
+    """
+    P = _point(point, "point")
+    Q = _point(image_point, "image_point")
+    v = _point(vector, "vector")
+    w = _point(image_vector, "image_vector")
+    if math.hypot(*v) == 0:
+        raise ValueError("vector must be a nonzero vector; got (0, 0)")
+    with np.errstate(over="ignore", invalid="ignore"):
+        c = complex(w[0], w[1]) / complex(v[0], v[1])
+        L = np.array([[c.real, c.imag], [-c.imag, c.real]])
         out = _matrix(L, Q - P @ L)
     return _finite(out, "the points or vectors are")
 
@@ -407,11 +438,13 @@ def fixed_point(M) -> np.ndarray:
     return _finite(P, "M is too close to having no fixed point, or its translation is")
 
 
-def is_conformal(M, tol: float = 1e-9) -> bool:
-    """Whether a map preserves angles (a similarity: rotation, uniform scaling, reflection,
-    translation), Goldman §8.3.  True iff ``L L^T`` is a multiple of the identity.
+def is_similarity(M, tol: float = 1e-9) -> bool:
+    """Whether a map multiplies every distance by one factor (a similarity: translation, rotation,
+    uniform scaling, **and reflection**), Goldman §4.6.  True iff ``L L^T`` is a multiple of the
+    identity.  Mirrors preserve the size of angles but reverse their orientation, so a similarity
+    is conformal in the book's sense (:func:`is_conformal`) only if it does not reflect.
 
-    >>> is_conformal(similarity(0.5, 30, [1, 2])), is_conformal(scaling([1, 2]))
+    >>> is_similarity(mirror([0, 0], [1, 0])), is_similarity(scaling([1, 2]))
     (True, False)
     """
     tol = as_tolerance(tol)
@@ -419,6 +452,28 @@ def is_conformal(M, tol: float = 1e-9) -> bool:
     with np.errstate(over="ignore", invalid="ignore"):
         G = _finite(L @ L.T, "M is")
     return bool(abs(G[0, 1]) <= tol * max(1.0, abs(G[0, 0])) and abs(G[0, 0] - G[1, 1]) <= tol * max(1.0, abs(G[0, 0])))
+
+
+def is_conformal(M, tol: float = 1e-9) -> bool:
+    """Whether a map is conformal in the book's sense: a composite of translation, rotation and
+    uniform scaling, **no mirror** (Goldman §4.6, §8.2: what a turtle can do by changing its state).
+
+    In the row-vector convention the linear part is then ``[[a, b], [-b, a]]`` (``s`` times a
+    rotation, ``a = s cos t``, ``b = s sin t``), the matrix of multiplication by a complex number.
+    A mirror is a similarity (:func:`is_similarity`) but not conformal here: it reverses
+    orientation.  The degenerate scaling by 0 (``a = b = 0``) passes.
+
+    >>> is_conformal(similarity(0.5, 30, [1, 2])), is_conformal(scaling([1, 2]))
+    (True, False)
+    >>> is_conformal(mirror([0, 0], [1, 0]))
+    False
+    """
+    tol = as_tolerance(tol)
+    L = as_affine(M)[:2, :2]
+    with np.errstate(over="ignore", invalid="ignore"):
+        size = _finite(np.abs(L).max(), "M is")
+    bound = tol * max(1.0, float(size))
+    return bool(abs(L[0, 0] - L[1, 1]) <= bound and abs(L[0, 1] + L[1, 0]) <= bound)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -591,14 +591,16 @@ def contraction_ratio(system) -> float:
     the fractal theorem, ``h(W(A), W(B)) <= s h(A, B)`` (Goldman §7.3.3, §8.3).
 
     system: a :class:`TurtleIFS`, an :class:`goldman_lib.ifs.IFS` or a list of maps.  For a
-    conformal map the scale is ``sqrt(|det L|)``.  Raises ValueError if a map is not conformal.
+    conformal map the scale is ``sqrt(|det L|)``; a mirror image of one (a similarity that
+    reflects, :func:`goldman_lib.affine.is_similarity`) has a scale factor too and is accepted here.
+    Raises ValueError if a map is not a similarity (it has no single scale factor).
 
     >>> round(contraction_ratio(ifs_module.dragon()), 12)
     0.707106781187
     """
     maps = _maps_of(system)
     for i, Mi in enumerate(maps):
-        if not affine.is_conformal(Mi):
+        if not affine.is_similarity(Mi):
             raise ValueError(f"maps[{i}] is not conformal: it has no single scale factor")
     return float(np.sqrt(np.abs(np.linalg.det(maps[:, :2, :2]))).max())
 
@@ -799,7 +801,7 @@ def tao_algorithm(system, base=None, *, condensation=None, point=(0, 0), directi
     S_inv = np.linalg.inv(S)
     for i, Mi in enumerate(maps):
         L = Mi[:2, :2]
-        if not affine.is_conformal(Mi):
+        if not affine.is_similarity(Mi):   # a reflection is a similarity: it gets its own message below
             shown = "[" + ", ".join("[" + ", ".join(f"{v:.4g}" for v in row) + "]" for row in L) + "]"
             raise ValueError(f"maps[{i}] is not conformal (its linear part {shown} stretches directions by "
                              f"different factors or shears them): a turtle can only move, turn and resize, "

@@ -40,7 +40,7 @@ from .validation import MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, 
 
 __all__ = ["IFS", "deterministic", "chaos_game", "chaos_game_with_maps", "map_images", "set_map", "iterate_map", "UNIT_SQUARE", "MAX_POINTS", "STANDARD",
            "sierpinski", "koch", "barnsley_fern", "dragon", "c_curve", "tree", "sierpinski_carpet", "cantor",
-           "grid_fractal"]
+           "grid_fractal", "ifs_from_points"]
 
 #: The most points :func:`deterministic` or :func:`chaos_game` will produce (memory guard).
 MAX_POINTS = 5_000_000
@@ -398,6 +398,39 @@ def map_images(system, shape=None) -> np.ndarray:
     s = as_ifs(system)
     P = UNIT_SQUARE if shape is None else as_points(shape, "shape", dim=2)
     return np.matmul(P[None], s.linear_parts) + s.translations[:, None, :]
+
+
+def ifs_from_points(reference, images, probabilities=None, name: str = "") -> IFS:
+    """An IFS designed by choosing, for each map, the images of three points (Goldman §4.7.3 and
+    the fractal strategy of §7.3.3): map ``i`` is the unique affine map sending the reference
+    triangle ``reference`` to the triangle ``images[i]``
+    (:func:`goldman_lib.affine.affine_from_points`).
+
+    The strategy: to get a fractal made of smaller copies of itself, draw the copies as triangles
+    inside the reference triangle, one per piece, with corresponding corners in the same order
+    (the order decides the rotation and whether a copy is mirrored).  If each image triangle is
+    smaller than the reference in every direction, every map contracts and the attractor is the
+    fractal whose pieces are those copies.
+
+    reference: ``(3, 2)`` non-collinear points.  images: ``(k, 3, 2)``, k >= 1.  probabilities,
+    name: as for :class:`IFS`.  Raises ValueError for collinear reference points or a wrong shape.
+
+    >>> half = [[0, 0], [1, 0], [0, 1]]
+    >>> s = ifs_from_points(half, [[[0, 0], [0.5, 0], [0, 0.5]], [[0.5, 0], [1, 0], [0.5, 0.5]],
+    ...                            [[0, 0.5], [0.5, 0.5], [0, 1]]])
+    >>> [m.round(12).tolist() for m in s.maps[1:2]]
+    [[[0.5, 0.0, 0.0], [0.0, 0.5, 0.0], [0.5, 0.0, 1.0]]]
+    """
+    R = as_points(reference, "reference", dim=2)
+    if R.shape != (3, 2):
+        raise ValueError(f"reference must be three 2D points, shape (3, 2); got {R.shape}")
+    Q = np.asarray(images, dtype=float)
+    if Q.ndim != 3 or Q.shape[1:] != (3, 2) or len(Q) == 0:
+        raise ValueError(f"images must hold one triangle per map, shape (k, 3, 2) with k >= 1; got {Q.shape}")
+    if not np.all(np.isfinite(Q)):
+        raise ValueError("images must be finite numbers")
+    maps = [affine.affine_from_points(R, T) for T in Q]
+    return IFS(maps, probabilities, name=name)
 
 
 # -- the standard systems --------------------------------------------------------------------------

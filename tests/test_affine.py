@@ -124,7 +124,7 @@ def test_mirror_closed_forms_and_properties():
     np.testing.assert_allclose(M @ M, np.eye(3), atol=1e-14)
     assert np.linalg.det(M[:2, :2]) == pytest.approx(-1)
     np.testing.assert_allclose(affine.apply([[1, 2], [4, 1]], M), [[1, 2], [4, 1]], atol=1e-14)  # the line is fixed
-    assert affine.is_rigid(M) and affine.is_conformal(M)
+    assert affine.is_rigid(M) and affine.is_similarity(M) and not affine.is_conformal(M)  # §4.6: no mirrors
 
 
 # --- the algebra of §4.3 --------------------------------------------------------------------------
@@ -329,3 +329,31 @@ def test_degenerate_parameters_raise():
         affine.affine_combination([[0, 0], [1, 1]], [1, 1])
     with pytest.raises(ValueError, match="one weight per point"):
         affine.affine_combination([[0, 0], [1, 1]], [1])
+
+
+# --- §4.6 conformal transformations revisited ---------------------------------------------------
+
+def test_conformal_means_no_mirror():
+    M = affine.mirror([1, 2], [3, -1])
+    assert affine.is_rigid(M) and affine.is_similarity(M) and not affine.is_conformal(M)
+    assert not affine.is_conformal(affine.similarity(2, 30, [1, 0], reflect=True))
+    assert affine.is_conformal(affine.similarity(2, 30, [1, 0]))
+    assert not affine.is_similarity(affine.shear(1)) and not affine.is_conformal(affine.shear(1))
+    assert affine.is_conformal(affine.scaling(0))   # the degenerate uniform scaling
+
+
+@given(angle, st.floats(0.1, 5), point, point)
+@SETTINGS
+def test_conformal_from_point_and_vector(a, s, P, Q):
+    v = np.array([np.cos(np.radians(a + 10)), np.sin(np.radians(a + 10))]) * 1.5
+    M_true = affine.similarity(s, a, Q)
+    Pimg = affine.apply(P, M_true)
+    vimg = affine.apply_vectors(v, M_true)
+    M = affine.conformal_from_point_and_vector(P, v, Pimg, vimg)
+    np.testing.assert_allclose(M, M_true, atol=1e-9 * max(1, np.abs(M_true).max()))
+    assert affine.is_conformal(M)
+
+
+def test_conformal_from_point_and_vector_errors():
+    with pytest.raises(ValueError, match="vector must be a nonzero"):
+        affine.conformal_from_point_and_vector([0, 0], [0, 0], [1, 1], [1, 0])

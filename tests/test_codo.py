@@ -298,15 +298,41 @@ def test_similarities_are_a_change_of_turtle_state(a, s, t):
 
 @pytest.mark.parametrize("M", [affine.scaling([2, 1]), affine.shear(1), affine.directional_scaling(0.3, [1, 2]),
                                affine.mirror([0, 0], [1, 0])])
-def test_nonuniform_maps_and_mirrors_are_not_a_change_of_state(M):
-    z = turtle.run(SQUARE)[0]
+@pytest.mark.parametrize("program", [SQUARE, "FORWARD 2 TURN 90 FORWARD 1 TURN 135 FORWARD 1.4142135623730951"])
+def test_nonuniform_maps_and_mirrors_are_not_a_change_of_state(M, program):
+    (z,) = turtle.run(program)
     y = affine.apply(z, M)
-    sol, ref_residual = reference_state_fit(z, y)
-    fit = codo.closest_turtle_state(SQUARE, [y])
-    assert fit.residual == pytest.approx(ref_residual, rel=1e-9)
-    np.testing.assert_allclose(fit.direction, sol[:2], atol=1e-12)
-    np.testing.assert_allclose(fit.point, sol[2:], atol=1e-12)
+    fit = codo.closest_turtle_state(program, [y])
+    # each distinct vertex once: the square's closing vertex is its first one
+    distinct = z[:-1] if program == SQUARE else z
+    sol, ls_largest = reference_state_fit(distinct, affine.apply(distinct, M))
+    ls_err = np.linalg.norm(affine.apply(distinct, M) - (distinct @ np.array([[sol[0], sol[1]], [-sol[1], sol[0]]]) + sol[2:]), axis=1)
+    assert fit.rms == pytest.approx(np.sqrt(np.mean(ls_err ** 2)), rel=1e-9)
+    # the state found attains the residual it reports ...
+    (drawn,) = turtle.run(program, point=fit.point, direction=fit.direction)
+    assert np.linalg.norm(drawn - y, axis=1).max() == pytest.approx(fit.residual, rel=1e-9)
+    # ... which is no larger than least squares' largest distance, and at least the smallest RMS
+    assert fit.rms - 1e-12 <= fit.residual <= ls_largest + 1e-12
+    # and no state does better: an independent minimax solve (SLSQP on the epigraph form)
+    optimize = pytest.importorskip("scipy.optimize")
+    Z = distinct
+
+    def gaps(v):
+        return np.linalg.norm(affine.apply(Z, M) - (Z @ np.array([[v[0], v[1]], [-v[1], v[0]]]) + v[2:4]), axis=1)
+
+    x0 = np.concatenate([sol, [ls_largest]])
+    r = optimize.minimize(lambda v: v[4], x0, method="SLSQP",
+                          constraints=[{"type": "ineq", "fun": lambda v: v[4] ** 2 - gaps(v) ** 2}],
+                          options={"ftol": 1e-14, "maxiter": 500})
+    assert fit.residual <= gaps(r.x).max() + 1e-7
     assert fit.residual > 0.1
+
+
+def test_closing_vertex_counted_once():
+    # a square scaled by (2, 1): four distinct vertices, each 1/2 * sqrt(1/2) from the best square
+    fit = codo.turtle_image_gap(SQUARE, affine.scaling([2, 1]))
+    assert fit.residual == pytest.approx(np.sqrt(2) / 4, rel=1e-9)
+    assert fit.rms == pytest.approx(np.sqrt(2) / 4, rel=1e-9)
 
 
 def test_closest_turtle_state_errors():

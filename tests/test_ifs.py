@@ -188,3 +188,25 @@ def test_grid_fractal_rejects_bad_cells_and_sides():
         ifs.grid_fractal([])
     with pytest.raises(ValueError, match="side must be a positive"):
         ifs.grid_fractal([(0, 0)], side=0)
+
+
+# --- §4.7.3 / §7.3.3: an IFS designed from three points per map --------------------------------
+
+def test_ifs_from_points_rebuilds_the_gasket():
+    corners = np.array([[0.0, 0.0], [1.0, 0.0], [0.5, np.sqrt(3) / 2]])
+    mid = lambda a, b: (corners[a] + corners[b]) / 2
+    images = [[corners[0], mid(0, 1), mid(0, 2)], [mid(0, 1), corners[1], mid(1, 2)], [mid(0, 2), mid(1, 2), corners[2]]]
+    s = ifs.ifs_from_points(corners, images)
+    np.testing.assert_allclose(s.maps, ifs.sierpinski().maps, atol=1e-12)
+    # each map sends the reference corners to its image triangle
+    for M, T in zip(s.maps, images):
+        np.testing.assert_allclose(affine.apply(corners, M), T, atol=1e-12)
+
+
+def test_ifs_from_points_errors():
+    with pytest.raises(ValueError, match="reference must be three"):
+        ifs.ifs_from_points([[0, 0], [1, 0]], [[[0, 0], [1, 0], [0, 1]]])
+    with pytest.raises(ValueError, match="images must hold one triangle per map"):
+        ifs.ifs_from_points([[0, 0], [1, 0], [0, 1]], [[0, 0], [1, 0], [0, 1]])
+    with pytest.raises(ValueError):
+        ifs.ifs_from_points([[0, 0], [1, 1], [2, 2]], [[[0, 0], [1, 0], [0, 1]]])

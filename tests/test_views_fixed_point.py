@@ -4,6 +4,7 @@ import math
 
 import matplotlib.pyplot as plt
 import numpy as np
+import pytest
 
 from goldman_lib.views import fixed_point as views
 
@@ -38,3 +39,23 @@ def test_fractal_theorem_view_reports_the_bound():
     assert r["distances"][-1] < r["distances"][0] / 10
     assert len(r["iterate"]) == 3 ** 4
     plt.close(v.figure)
+
+
+def test_cobweb_path_goes_up_to_the_graph_and_across_to_the_diagonal():
+    import math
+    from goldman_lib.views import fixed_point as fpv
+    ax = fpv.cobweb(math.cos, [0.0, 1.0], 30, (0.0, 1.2))
+    path = ax.lines[2].get_xydata()
+    np.testing.assert_allclose(path[1::2, 1], np.cos(path[1::2, 0]), atol=1e-15)   # on the graph
+    np.testing.assert_allclose(path[2::2, 0], path[2::2, 1], atol=0)                # on the diagonal
+    assert abs(path[-1, 0] - 0.7390851332) < 1e-4 and len(ax.lines) == 4
+    with pytest.raises(ValueError, match="interval"):
+        fpv.cobweb(math.cos, [0.0], 3, (1, 0))
+    with pytest.raises(ValueError, match="steps"):
+        fpv.cobweb(math.cos, [0.0], 0, (0, 1))
+
+
+def test_convergence_plot_skips_zeros():
+    from goldman_lib.views import fixed_point as fpv
+    ax = fpv.convergence_plot({"a": [1, 0.1, 0.0], "b": [2, 1]})
+    assert ax.lines[0].get_xydata().tolist() == [[0.0, 1.0], [1.0, 0.1]] and len(ax.lines) == 2

@@ -19,7 +19,8 @@ from goldman_lib.views import style
 from goldman_lib.views import _checks
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
-__all__ = ["NEWTON_FUNCTIONS", "newton_view", "relaxation_view", "fractal_theorem_view", "START_SETS"]
+__all__ = ["NEWTON_FUNCTIONS", "newton_view", "relaxation_view", "fractal_theorem_view", "START_SETS", "cobweb",
+           "convergence_plot"]
 
 #: Functions for the Newton view: name -> (f, f', x range) — one root, a cycle, divergence, a flat spot.
 NEWTON_FUNCTIONS = {
@@ -127,7 +128,8 @@ def relaxation_view(method: str = "Jacobi", steps: int = 6, diagonal: float = 3.
         ax.set_ylim(exact[1] - span, exact[1] + span)
         res_line.set_data(np.arange(len(res)), res)
         axr.set_xlim(-0.5, max(int(steps), 1) + 0.5)
-        axr.set_ylim(1e-17, 1e12)
+        # the axis follows the data, so the slope (the rate, a factor per step) is visible
+        axr.set_ylim(max(float(res.min()) / 4, 1e-17), max(float(res.max()) * 4, 1e-15))
         dominant = fp.is_diagonally_dominant(A)
         ax.set_title(f"{method}, d = {diagonal:.2f} ({'' if dominant else 'not '}diagonally dominant)", fontsize=10)
         return {"iterates": hist, "residuals": res, "solution": exact,
@@ -217,3 +219,76 @@ def fractal_theorem_view(system: str = "Sierpinski gasket", start: str = "unit s
                                           layout=widgets.Layout(width="260px"))}
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="the fractal theorem")
+
+
+# ---------------------------------------------------------------------------------------------
+# Static pictures of §7.2-7.3 (added for the cobweb and the convergence plots)
+# ---------------------------------------------------------------------------------------------
+
+def cobweb(F, starts, steps: int, interval, ax=None, title: str = ""):
+    """The cobweb picture of ``x_{n+1} = F(x_n)`` (Goldman §7.2-7.3): the graph of ``F``, the
+    diagonal ``y = x``, and for each start the path ``(x_0, x_0) -> (x_0, x_1) -> (x_1, x_1) ->
+    (x_1, x_2) -> ...`` (up to the graph, across to the diagonal).  Where ``|F'| <= s < 1`` the
+    path closes in on the fixed point (a staircase if ``F' > 0``, a spiral if ``F' < 0``); where
+    ``|F'| > 1`` it moves away.  The iterates come from
+    :func:`goldman_lib.fixed_point.fixed_point_iteration`.
+
+    F: a function of a float.  starts: numbers.  steps: iterations per start (1..200).
+    interval: ``(a, b)``, the x-range drawn.  ax: a matplotlib Axes (a new figure if None).
+    Returns the Axes; ``ax.lines[2:]`` are the paths, one per start.
+
+    >>> import math
+    >>> ax = cobweb(math.cos, [0.0], 5, (0, 1.2))
+    >>> ax.lines[2].get_xydata().shape
+    (11, 2)
+    """
+    steps = as_int(steps, "steps", minimum=1, maximum=200)
+    a, b = (float(v) for v in interval)
+    if not a < b:
+        raise ValueError(f"interval must be (a, b) with a < b; got {interval!r}")
+    if ax is None:
+        ax = style.new_figure().add_subplot()
+    style.style_axes(ax)
+    t = np.linspace(a, b, 400)
+    with np.errstate(all="ignore"):
+        ax.plot(t, [F(float(x)) for x in t], color=style.PALETTE["curve"], linewidth=1.5, label="y = F(x)")
+    ax.plot([a, b], [a, b], color=style.PALETTE["control"], linewidth=1, linestyle="--", label="y = x")
+    colours = [style.PALETTE["point"], style.PALETTE["good"], style.PALETTE["accent"]]
+    for k, x0 in enumerate(starts):
+        _, rep = fp.fixed_point_iteration(F, float(x0), max_iter=steps, tol=1e-300, full_output=True)
+        h = rep.history
+        xs = np.repeat(h, 2)[:-1]      # x0, x0, x1, x1, ..., x_n
+        ys = np.repeat(h, 2)[1:]       # x0, x1, x1, x2, ..., x_n: up to the graph, across to the diagonal
+        ax.plot(xs, ys, "-", color=colours[k % len(colours)], linewidth=1, marker="o", markersize=2,
+                label=f"x0 = {float(x0):g}")
+    ax.set_xlim(a, b)
+    ax.set_ylim(a, b)
+    ax.legend(fontsize=8, loc="upper left", frameon=False)
+    if title:
+        ax.set_title(title, fontsize=10)
+    return ax
+
+
+def convergence_plot(errors: dict, ax=None, ylabel: str = "error", title: str = ""):
+    """Errors against the iteration number on a logarithmic axis (Goldman §7.3): a straight line
+    is linear convergence (its slope is the factor per step), a curve bending down ever more
+    steeply is quadratic.  errors: name -> sequence of nonnegative numbers (zeros are not drawn).
+    Returns the Axes, one line per name.
+
+    >>> convergence_plot({"halving": [1, 0.5, 0.25]}).lines[0].get_xydata().tolist()
+    [[0.0, 1.0], [1.0, 0.5], [2.0, 0.25]]
+    """
+    if ax is None:
+        ax = style.new_figure().add_subplot()
+    style.style_axes(ax, equal=False)
+    for name, e in errors.items():
+        e = np.asarray(e, dtype=float)
+        n = np.arange(len(e))
+        keep = e > 0
+        ax.semilogy(n[keep], e[keep], "o-", markersize=3, linewidth=1, label=name)
+    ax.set_xlabel("iteration n")
+    ax.set_ylabel(ylabel)
+    ax.legend(fontsize=8, frameon=False)
+    if title:
+        ax.set_title(title, fontsize=10)
+    return ax
