@@ -65,8 +65,10 @@ import numpy as np
 from goldman_lib import affine
 from goldman_lib import ifs as ifs_module
 from goldman_lib.fixed_point import MAX_PAIRS, hausdorff_distance
+from goldman_lib import fractals
 from goldman_lib.fractals import RECURSE, RecursiveTurtleProgram
-from goldman_lib.validation import as_float, as_int, as_points, as_tolerance, within_budget
+from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, as_tolerance,
+                                    check_finite, within_budget)
 
 __all__ = [
     "STANDARD_POINT", "STANDARD_DIRECTION", "state_map", "initial_state_map", "state_after",
@@ -157,7 +159,9 @@ def transform_polylines(polylines, M) -> list[np.ndarray]:
     [[0.0, 1.0], [1.0, 1.0]]
     """
     M = affine.as_affine(M)
-    return [as_points(p, f"polylines[{i}]", dim=2) @ M[:2, :2] + M[2, :2] for i, p in enumerate(polylines)]
+    if polylines is None:
+        raise TypeError("polylines must be a list of (k, 2) strokes; got None")
+    return [p @ M[:2, :2] + M[2, :2] for p in _as_strokes(polylines, "polylines")]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -244,9 +248,12 @@ def segment_set(polylines, decimals: int = 9) -> np.ndarray:
     [[0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 1.0, 0.0]]
     """
     decimals = as_int(decimals, "decimals", minimum=-300, maximum=300)
+    return _segment_set(polylines, decimals, "polylines")
+
+
+def _segment_set(polylines, decimals: int, name: str) -> np.ndarray:
     segs = []
-    for i, p in enumerate(_as_strokes(polylines, "polylines")):
-        p = as_points(p, f"polylines[{i}]", dim=2)
+    for p in _as_strokes(polylines, name):
         if len(p) >= 2:
             segs.append(np.concatenate([p[:-1], p[1:]], axis=1))
     if not segs:
@@ -272,7 +279,7 @@ def same_drawing(first, second, tol: float = 1e-9) -> bool:
     True
     """
     tol = as_tolerance(tol)
-    a, b = segment_set(first), segment_set(second)
+    a, b = _segment_set(first, 9, "first"), _segment_set(second, 9, "second")
     a, b = np.unique(a, axis=0), np.unique(b, axis=0)
     if a.shape != b.shape:
         return False
@@ -343,13 +350,24 @@ def drawing_distance(first, second) -> float:
     0.5
     """
     A, B = _vertices(first, "first"), _vertices(second, "second")
-    if len(A) == 0 or len(B) == 0:
-        raise ValueError("both drawings must draw something to have a Hausdorff distance")
-    matched = _matched_distance(A, B)
-    if matched is not None:
-        return matched
-    _check_pairs(len(A), len(B))
-    return hausdorff_distance(A, B)
+    distance = _distance(A, B)
+    if not math.isfinite(distance):
+        name = "first" if np.abs(A).max() >= np.abs(B).max() else "second"
+        raise ValueError(f"{name} is too large in magnitude: the distance between the drawings overflows float64")
+    return distance
+
+
+def _distance(A: np.ndarray, B: np.ndarray) -> float:
+    """The Hausdorff distance of two vertex sets (inf if it overflows) for :func:`drawing_distance`."""
+    for name, P in (("first", A), ("second", B)):
+        if len(P) == 0:
+            raise ValueError(f"both drawings must draw something to have a Hausdorff distance; {name} has no strokes")
+    with np.errstate(over="ignore", invalid="ignore"):
+        distance = _matched_distance(A, B)
+        if distance is None:
+            _check_pairs(len(A), len(B))
+            distance = hausdorff_distance(A, B)
+    return distance
 
 
 def _check_pairs(m: int, n: int, what: str = "first and second differ, so") -> None:
@@ -583,7 +601,16 @@ def equivalence_distance(program, level: int, point=(0, 0), direction=(1, 0)) ->
     True
     """
     conv = rons_algorithm(program, point, direction)
-    return drawing_distance(program.polylines(level, point, direction), conv.polylines(level))
+    with np.errstate(over="ignore", invalid="ignore"):
+        turtle_drawing = program.polylines(level, point, direction)
+        ifs_drawing = conv.polylines(level)
+        finite = all(np.isfinite(p).all() for p in turtle_drawing + ifs_drawing)
+        distance = _distance(_vertices(turtle_drawing), _vertices(ifs_drawing)) if finite else math.inf
+    if not math.isfinite(distance):
+        p, w = _state(point, direction)
+        name = "direction" if np.abs(w).max() >= np.abs(p).max() else "point"
+        raise ValueError(f"{name} is too large in magnitude: level {level} drawn from it overflows float64")
+    return distance
 
 
 def contraction_ratio(system) -> float:
@@ -628,11 +655,14 @@ def base_case_gaps(program, other_base, levels: int) -> np.ndarray:
     """
     if not isinstance(program, RecursiveTurtleProgram):
         raise TypeError(f"program must be a goldman_lib.fractals.RecursiveTurtleProgram; got {type(program).__name__}")
-    other = program.with_base(other_base)
+    other = program.with_base(fractals._as_commands(other_base, "other_base", allow_recurse=False))
     a, b = rons_algorithm(program), rons_algorithm(other)
     if a.maps.shape != b.maps.shape or not _close(a.maps, b.maps, 1e-8):
-        raise ValueError("the two base cases change the turtle's state differently, so the two programs "
-                         "have different IFS; give a base case that ends in the same state")
+        raise ValueError("other_base and the program's base case change the turtle's state differently, so "
+                         "the two programs have different IFS; give a base case that ends in the same state")
+    if not b.base and not b.condensation and not b.frame:
+        raise ValueError("other_base draws nothing (only MOVE and TURN), and neither does the body: there is no "
+                         "drawing to compare")
 
     def vertices(conv, n):
         if n > 4096:
@@ -747,13 +777,27 @@ def polyline_commands(polyline, *, draw: bool = True, home: bool = True) -> list
     return cmds
 
 
-def _maps_of(system) -> np.ndarray:
+def _maps_of(system, name: str = "system") -> np.ndarray:
     if isinstance(system, TurtleIFS):
         return system.maps
     if isinstance(system, ifs_module.IFS):
         return system.maps
-    M = affine.as_affine(system, "maps")
+    try:
+        arr = as_float_array(system, name)
+    except TypeError as exc:
+        raise TypeError(f"{name} must be an IFS, a TurtleIFS or a list of 3x3 maps; {exc}") from None
+    if arr.ndim not in (2, 3) or arr.shape[-2:] != (3, 3) or len(arr) == 0:
+        raise ValueError(f"{name} must be an IFS, a TurtleIFS or a list of 3x3 maps (shape (3, 3) or (k, 3, 3)); "
+                         f"got shape {arr.shape}")
+    M = affine.as_affine(check_finite(arr, name), "maps")
     return M[None] if M.ndim == 2 else M
+
+
+def _ndim(x) -> int | None:
+    try:
+        return np.ndim(x)
+    except (TypeError, ValueError):   # ragged: as_points names it
+        return None
 
 
 def _as_strokes(x, name: str) -> list[np.ndarray]:
@@ -761,7 +805,9 @@ def _as_strokes(x, name: str) -> list[np.ndarray]:
         return []
     if isinstance(x, np.ndarray) and x.ndim == 2:
         return [as_points(x, name, dim=2)]
-    if isinstance(x, (list, tuple)) and x and np.ndim(x[0]) == 1:
+    if isinstance(x, np.ndarray) and x.ndim == 3:
+        return [as_points(p, f"{name}[{i}]", dim=2) for i, p in enumerate(x)]
+    if isinstance(x, (list, tuple)) and x and _ndim(x[0]) == 1:
         return [as_points(x, name, dim=2)]
     if not isinstance(x, (list, tuple)):
         return [as_points(x, name, dim=2)]
@@ -891,8 +937,12 @@ def _as_bump(bump, reverse) -> tuple[np.ndarray, frozenset]:
     if np.any(lens <= _TOL):
         i = int(np.argmax(lens <= _TOL))
         raise ValueError(f"bump segment {i} has length 0 (points {i} and {i + 1} coincide)")
+    if reverse is None:
+        reverse = ()
+    if isinstance(reverse, (str, bytes)) or not hasattr(reverse, "__iter__"):
+        raise TypeError(f"reverse must be a sequence of segment indices; got {type(reverse).__name__}")
     rev = set()
-    for r in (reverse or ()):
+    for r in reverse:
         r = as_int(r, "reverse entry", minimum=0, maximum=len(seg) - 1)
         rev.add(r)
     return P, frozenset(rev)
@@ -976,6 +1026,10 @@ def bump_of(system, tol: float = 1e-9) -> tuple[np.ndarray, tuple]:
     """
     maps = _maps_of(system)
     tol = as_tolerance(tol)
+    floor = 1e-15 * max(1.0, float(np.abs(maps).max(initial=0.0)))
+    if tol < floor:
+        raise ValueError(f"tol must be at least {floor:.3g}: below that, float rounding alone breaks the chain of "
+                         f"images of the unit segment; got {tol:g}")
     pts = [np.zeros(2)]
     rev = []
     for i, Mi in enumerate(maps):

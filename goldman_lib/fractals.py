@@ -364,7 +364,12 @@ def _levels(program: RecursiveTurtleProgram, levels) -> list[int]:
     for i, n in enumerate(arr):
         n = as_int(n, f"levels[{i}]", minimum=0)
         if n > highest:
-            program.expand(n)   # raises, naming the level that fits
+            try:
+                program.expand(n)   # raises, naming the level that fits
+            except ValueError as exc:
+                shown = f"{n:,}" if n < 10 ** 15 else f"{float(n):.3g}"
+                reason = str(exc).replace(f"level {n} ", f"level {shown} ", 1)
+                raise ValueError(f"levels[{i}] must be <= {highest}: {reason}") from None
         out.append(n)
     total = sum(program.count(n) for n in out)
     if total > MAX_ITEMS:
@@ -1010,10 +1015,13 @@ def ink_length(program, level: int, *, step: float = 1.0) -> float:
     level = _level(level)
     step = as_float(step, "step", positive=True)
     with np.errstate(over="ignore", invalid="ignore"):
-        return _ink_length(program, level, step)
+        length = step * _ink_length(program, level)
+    if not math.isfinite(length):
+        raise ValueError(f"step is too large: the ink length at step {step:g} overflows a float; use a smaller step")
+    return length
 
 
-def _ink_length(program, level: int, step: float) -> float:
+def _ink_length(program, level: int) -> float:
     nets = _net_scales(program, level)
 
     def run(cmds, sub_len, sub_net):
@@ -1031,7 +1039,7 @@ def _ink_length(program, level: int, step: float) -> float:
     L = run(program.base, 0.0, 1.0)
     for n in range(1, level + 1):
         L = run(program.body, L, nets[n - 1])
-    L = step * run(program.start, L, nets[level])
+    L = run(program.start, L, nets[level])
     if not math.isfinite(L):
         raise ValueError(f"level {level} is too high for this program: its ink length overflows a float "
                          f"(the strokes or RESIZE factors grow too fast); use a lower level")
@@ -1060,7 +1068,10 @@ def chord_angles(polyline, anchor: int, offsets) -> np.ndarray:
 def _chord_args(polyline, anchor, offsets):
     p = as_points(polyline, "polyline", ndim=2, dim=2, min_count=2)
     anchor = as_int(anchor, "anchor", minimum=0, maximum=len(p) - 1)
-    offs = np.asarray(offsets)
+    try:
+        offs = np.asarray(offsets)
+    except (TypeError, ValueError):
+        raise TypeError("offsets must be a non-empty 1-D sequence of integers") from None
     if offs.ndim != 1 or offs.size == 0 or not np.issubdtype(offs.dtype, np.integer):
         raise TypeError("offsets must be a non-empty 1-D sequence of integers")
     for i, h in enumerate(offs):
@@ -1196,7 +1207,7 @@ def base_case_distances(program, bases, levels, *, per_segment: int = 2) -> np.n
     levels = _levels(program, levels)
     if isinstance(bases, (str, bytes)) or not hasattr(bases, "__len__"):
         raise TypeError(f"bases must be a list of base cases; got {type(bases).__name__}")
-    others = [program.with_base(b) for b in bases]
+    others = [program.with_base(_as_commands(b, f"bases[{i}]", allow_recurse=False)) for i, b in enumerate(bases)]
     out = np.zeros((len(others), len(levels)))
     for j, n in enumerate(levels):
         ref_polys = program.polylines(n)
