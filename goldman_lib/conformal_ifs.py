@@ -261,7 +261,7 @@ def _segment_set(polylines, decimals: int, name: str) -> np.ndarray:
     with np.errstate(over="ignore", invalid="ignore"):
         s = np.round(np.concatenate(segs), decimals) + 0.0
     if not np.isfinite(s).all():
-        raise ValueError(f"polylines are too large to round to {decimals} decimals (a coordinate overflows); "
+        raise ValueError(f"{name} is too large to round to {decimals} decimals (a coordinate overflows); "
                          f"scale them down or use fewer decimals")
     s = s[np.hypot(s[:, 2] - s[:, 0], s[:, 3] - s[:, 1]) > 0]
     swap = (s[:, 0] > s[:, 2]) | ((s[:, 0] == s[:, 2]) & (s[:, 1] > s[:, 3]))
@@ -366,7 +366,12 @@ def _distance(A: np.ndarray, B: np.ndarray) -> float:
         distance = _matched_distance(A, B)
         if distance is None:
             _check_pairs(len(A), len(B))
-            distance = hausdorff_distance(A, B)
+            try:
+                distance = hausdorff_distance(A, B)
+            except ValueError as exc:
+                if "overflow" not in str(exc):
+                    raise
+                distance = math.inf   # the callers name the input that made it overflow
     return distance
 
 
