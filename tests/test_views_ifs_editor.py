@@ -94,3 +94,23 @@ def test_sweep_grid_is_safe_for_many_controls(view):
 def test_too_many_maps_is_rejected():
     with pytest.raises(ValueError, match="at most 2 maps"):
         ed.values_from_system("Sierpinski gasket", max_maps=2)
+
+
+def test_a_map_is_edited_by_dragging_the_images_of_three_points():
+    """§4.7.3: drag the image of (1, 0) under map 1 of the gasket; the map becomes the affine map
+    through the three new images, and its sliders follow."""
+    import numpy as np
+
+    from goldman_lib import affine
+    from goldman_lib.views.ifs_editor import REFERENCE_TRIANGLE, ifs_editor, system_from_values
+
+    editor = ifs_editor("Sierpinski gasket", points=2000)
+    before = affine.apply(REFERENCE_TRIANGLE, system_from_values(editor.values()).maps[0])
+    assert np.allclose(before, [[0, 0], [0.5, 0], [0, 0.5]])           # the gasket's first map halves
+    editor.drag.press_at(0.5, 0.0)
+    editor.drag.move_to(0.5, 0.25)
+    editor.drag.release()
+    after = affine.apply(REFERENCE_TRIANGLE, system_from_values(editor.values()).maps[0])
+    # the sliders snap to steps of 0.001 and of 1 degree (0.5 sin 0.5° = 0.0044 at most)
+    assert np.allclose(after, [[0, 0], [0.5, 0.25], [0, 0.5]], atol=6e-3)
+    assert editor.last_error is None and editor.values()["angle0"] != 0

@@ -8,6 +8,10 @@ image of the unit square shows what the map does; the attractor is drawn by the 
 point-count slider) or the deterministic algorithm (a level slider), coloured by the map that
 placed each point, so you see ``A = w_1(A) ∪ ... ∪ w_k(A)``.
 
+Each map can also be set by dragging, with the mouse, the images of the three points (0, 0), (1, 0),
+(0, 1) of a reference triangle (the white squares of the map being edited): an affine map is fixed
+by the images of three non-collinear points (Goldman §4.7.3), and the sliders follow.
+
 How to reuse it from another chapter::
 
     from goldman_lib.views.ifs_editor import ifs_editor, system_from_values
@@ -41,7 +45,7 @@ from goldman_lib.views import _checks
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
 __all__ = ["ifs_editor", "system_from_values", "values_from_system", "MAX_MAPS", "PARAMETERS",
-           "CONDENSATIONS", "MAP_COLOURS", "attractor_points"]
+           "CONDENSATIONS", "MAP_COLOURS", "attractor_points", "REFERENCE_TRIANGLE", "map_values_from_points"]
 
 #: The most maps the editor holds (the Sierpinski carpet needs eight).
 MAX_MAPS = 8
@@ -231,6 +235,7 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
     squares = [ax.plot([], [], "--", color=MAP_COLOURS[i], linewidth=1.2)[0] for i in range(max_maps)]
     strokes = ax.plot([], [], "-", color=MAP_COLOURS[-1], linewidth=1.0)[0]
     corners = ax.plot([], [], "o", color="#333333", markersize=3)[0]
+    handles = ax.plot([], [], "s", color="#111111", markerfacecolor="#ffffff", markersize=7, zorder=5)[0]
     title = ax.set_title("", fontsize=10)
 
     controls = {"maps": int_slider("maps", initial["maps"], 1, max_maps, width="200px"),
@@ -281,6 +286,11 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
             else:
                 line.set_data([], [])
         corners.set_data(images[:, 0, 0], images[:, 0, 1])
+        if sel_map < k:
+            grip = affine.apply(REFERENCE_TRIANGLE, s.maps[sel_map])
+            handles.set_data(grip[:, 0], grip[:, 1])
+        else:
+            handles.set_data([], [])
         _fit(ax, pts if s.is_contractive() else np.zeros((0, 2)), images)
         count = f"{len(pts):,} points" if algorithm == "chaos game" else f"{len(pts):,} points, level {levels}"
         title.set_text(f"{s.name}: {algorithm}, {count}")
@@ -342,7 +352,57 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
     view.load = load
     view.preset = preset
     view.axes = ax
+    view.ax = ax
+
+    # -- direct manipulation (§4.7.3): drag the images of the reference triangle's three points --------
+    from goldman_lib.views.drag import PointDrag
+
+    def grips():
+        vals = view.values()
+        i = int(vals["edit"]) - 1
+        if i >= vals["maps"]:
+            return np.zeros((0, 2))
+        return affine.apply(REFERENCE_TRIANGLE, system_from_values(vals).maps[i])
+
+    def on_drag(k, x, y):
+        i = int(controls["edit"].value) - 1
+        view.set_values(**map_values_from_points(i, grips(), k, (x, y)))
+
+    view.drag = PointDrag(ax, grips, on_drag)
     return view
+
+
+#: The reference triangle whose images set a map when dragged (Goldman §4.7.3): the origin and the
+#: ends of the unit vectors, the corners the dashed unit-square images start from.
+REFERENCE_TRIANGLE = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
+
+
+def map_values_from_points(i: int, images, k: int, new_point) -> dict:
+    """The slider values of map ``i`` after its image of reference point ``k`` moves to
+    ``new_point`` (the other two images kept): the affine map through three points
+    (:func:`goldman_lib.affine.affine_from_points`, Goldman §4.7.3) written as the editor's
+    parameters (:func:`goldman_lib.affine.to_parameters`), each clamped to its slider's range.
+    Images that fall on a line leave the map unchanged (an empty dict).
+
+    >>> v = map_values_from_points(0, [[0, 0], [0.5, 0], [0, 0.5]], 1, (0.5, 0.5))
+    >>> round(v["angle0"], 6), round(v["tx0"], 6)
+    (45.0, 0.0)
+    """
+    pts = np.array(images, dtype=float)
+    pts[int(k)] = new_point
+    try:
+        M = affine.affine_from_points(REFERENCE_TRIANGLE, pts)
+    except ValueError:
+        return {}
+    p = affine.to_parameters(M)
+    raw = {"angle": p["angle"], "sx": p["scale"][0], "sy": p["scale"][1], "shear": p["shear"],
+           "tx": p["translate"][0], "ty": p["translate"][1]}
+    out = {}
+    for key, value in raw.items():
+        _, low, high, step = PARAMETERS[key]
+        value = min(max(float(value), low), high)
+        out[f"{key}{i}"] = round(low + round((value - low) / step) * step, 10)
+    return out
 
 
 def _condensation_copies(s: ifs.IFS, levels: int) -> np.ndarray:
