@@ -73,14 +73,25 @@ def _factor(factor, name: str) -> np.ndarray:
     return check_finite(f, name)
 
 
-def _about(M: np.ndarray, center) -> np.ndarray:
-    """Conjugate ``M`` by the translation taking ``center`` to the origin (a map about a point)."""
+def _squared_extent(arr: np.ndarray, name: str) -> float:
+    """The square of the largest absolute entry of ``arr`` (a scale for collinearity tests), or a
+    ValueError naming ``name`` when it overflows a float."""
+    m = float(np.abs(arr).max())
+    sq = m * m
+    if not math.isfinite(sq):
+        raise ValueError(f"{name} is too large in magnitude: its squared size overflows a float; use smaller values")
+    return sq
+
+
+def _about(M: np.ndarray, center, names: str = "center or the map's parameters are") -> np.ndarray:
+    """Conjugate ``M`` by the translation taking ``center`` to the origin (a map about a point).
+    names: the parameters to blame if the result overflows."""
     if center is None:
         return M
     c = _point(center, "center")
     with np.errstate(over="ignore", invalid="ignore"):
         out = translation(-c) @ M @ translation(c)
-    return _finite(out, "center or the map's parameters are")
+    return _finite(out, names)
 
 
 def as_affine(M, name: str = "M") -> np.ndarray:
@@ -159,7 +170,7 @@ def scaling(factor, center=None) -> np.ndarray:
     >>> apply([[1, 1]], scaling([2, 3]))
     array([[2., 3.]])
     """
-    return _about(_matrix(np.diag(_factor(factor, "factor"))), center)
+    return _about(_matrix(np.diag(_factor(factor, "factor"))), center, "factor or center are")
 
 
 def directional_scaling(factor, direction, center=None) -> np.ndarray:
@@ -181,7 +192,7 @@ def directional_scaling(factor, direction, center=None) -> np.ndarray:
     w = w / n
     with np.errstate(over="ignore", invalid="ignore"):
         L = _finite(np.eye(2) + (s - 1.0) * np.outer(w, w), "factor is")
-    return _about(_matrix(L), center)
+    return _about(_matrix(L), center, "factor or center are")
 
 
 def shear(k, center=None) -> np.ndarray:
@@ -190,7 +201,7 @@ def shear(k, center=None) -> np.ndarray:
     >>> apply([[1, 2]], shear(0.5))
     array([[2., 2.]])
     """
-    return _about(_matrix([[1.0, 0.0], [as_float(k, "k"), 1.0]]), center)
+    return _about(_matrix([[1.0, 0.0], [as_float(k, "k"), 1.0]]), center, "k or center are")
 
 
 def similarity(scale, angle, translate=(0.0, 0.0), *, reflect: bool = False) -> np.ndarray:
@@ -203,6 +214,7 @@ def similarity(scale, angle, translate=(0.0, 0.0), *, reflect: bool = False) -> 
     array([[1. , 1.5]])
     """
     M = scaling(as_float(scale, "scale"))
+    translate = _point(translate, "translate")
     if reflect:
         M = M @ scaling([1.0, -1.0])
     with np.errstate(over="ignore", invalid="ignore"):
@@ -224,6 +236,7 @@ def from_parameters(angle=0.0, scale=(1.0, 1.0), shear=0.0, translate=(0.0, 0.0)
     """
     H = _matrix([[1.0, 0.0], [as_float(shear, "shear"), 1.0]])
     S = _matrix(np.diag(_factor(scale, "scale")))
+    translate = _point(translate, "translate")
     with np.errstate(over="ignore", invalid="ignore"):
         out = S @ H @ rotation(angle) @ translation(translate)
     return _finite(out, "scale, shear or translate is")
@@ -275,7 +288,7 @@ def affine_from_point_and_vectors(point, vectors, image_point, image_vectors) ->
         raise ValueError(f"vectors and image_vectors must each hold two 2D vectors, shape (2, 2); "
                          f"got {V.shape} and {W.shape}")
     det = V[0, 0] * V[1, 1] - V[0, 1] * V[1, 0]
-    if abs(det) <= 1e-12 * max(1.0, _square(float(np.abs(V).max()))):
+    if abs(det) <= 1e-12 * max(1.0, _squared_extent(V, "vectors")):
         raise ValueError(f"vectors must be linearly independent; {V[0]} and {V[1]} are parallel")
     with np.errstate(over="ignore", invalid="ignore"):
         L = np.linalg.solve(V, W)
@@ -331,7 +344,8 @@ def affine_from_points(src, dst) -> np.ndarray:
     u, v = A[1] - A[0], A[2] - A[0]
     area2 = u[0] * v[1] - u[1] * v[0]
     with np.errstate(over="ignore", invalid="ignore"):
-        scale = max(1.0, _square(float(np.abs(A - A[0]).max())))
+        spread = A - A[0]
+    scale = max(1.0, _squared_extent(spread, "src"))
     if abs(area2) <= 1e-12 * scale:
         raise ValueError(f"src points must not be collinear; {A.tolist()} lie on one line")
     H = np.column_stack([A, np.ones(3)])
@@ -565,7 +579,9 @@ def barycentric_coordinates(points, triangle) -> np.ndarray:
         raise ValueError(f"triangle must hold three 2D points, shape (3, 2); got {T.shape}")
     u, v = T[1] - T[0], T[2] - T[0]
     area2 = u[0] * v[1] - u[1] * v[0]
-    if abs(area2) <= 1e-12 * max(1.0, _square(float(np.abs(T - T[0]).max()))):
+    with np.errstate(over="ignore", invalid="ignore"):
+        spread = T - T[0]
+    if abs(area2) <= 1e-12 * max(1.0, _squared_extent(spread, "triangle")):
         raise ValueError(f"triangle must not be collinear; {T.tolist()} lie on one line")
     with np.errstate(over="ignore", invalid="ignore"):
         d = P - T[0]

@@ -64,7 +64,7 @@ import numpy as np
 
 from goldman_lib import affine, turtle
 from goldman_lib.angles import cos_sin_degrees
-from goldman_lib.validation import MAX_ITEMS, MAX_ITERATIONS, as_int, as_points
+from goldman_lib.validation import MAX_ITEMS, MAX_ITERATIONS, as_float_array, as_int, as_points, check_finite
 
 __all__ = ["CodoError", "CodoSyntaxError", "CodoTypeError", "CodoRuntimeError", "Point", "Vector", "Figure",
            "Drawing", "parse", "execute", "run", "SAMPLES", "KEYWORDS", "BUILTINS", "MAX_STEPS", "MAX_POINTS",
@@ -906,9 +906,20 @@ def vertices(polylines) -> np.ndarray:
     >>> vertices([np.zeros((2, 2)), np.ones((1, 2))]).shape
     (3, 2)
     """
+    if isinstance(polylines, np.ndarray) and polylines.ndim >= 1:
+        polylines = list(polylines)
+    if not isinstance(polylines, (list, tuple)):
+        raise TypeError(f"polylines must be a list of (k, 2) arrays of points; got {type(polylines).__name__}")
     if not polylines:
         return np.zeros((0, 2))
-    return np.concatenate([np.asarray(p, dtype=float).reshape(-1, 2) for p in polylines])
+    out = []
+    for i, p in enumerate(polylines):
+        name = f"polylines[{i}]"
+        arr = check_finite(as_float_array(p, name), name)
+        if arr.size % 2:
+            raise ValueError(f"{name} must hold 2D points (x, y); got shape {arr.shape}")
+        out.append(arr.reshape(-1, 2))
+    return np.concatenate(out)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1083,6 +1094,9 @@ def closest_turtle_state(program, target) -> TurtleFit:
     (0.3536, 0.3536)
     """
     drawn = turtle.run(program)
+    if not isinstance(target, (np.ndarray, list, tuple)):
+        raise TypeError(f"target must be polylines: one (k, 2) array of points or a list of them; "
+                        f"got {type(target).__name__}")
     if isinstance(target, np.ndarray) or (isinstance(target, (list, tuple)) and target and np.ndim(target[0]) == 1):
         target = [target]
     tgt = [as_points(t, f"target[{i}]", dim=2) for i, t in enumerate(target)]

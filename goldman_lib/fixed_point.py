@@ -31,8 +31,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import affine
-from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points, as_tolerance,
-                         check_finite, within_budget)
+from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, as_tolerance, check_finite,
+                         within_budget, finite_result)
 
 __all__ = ["MAX_PAIRS", "Convergence", "ConvergenceError", "fixed_point_iteration", "newton", "newton_steps", "jacobi",
            "gauss_seidel", "is_diagonally_dominant", "contraction_factor", "hausdorff_distance",
@@ -64,8 +64,11 @@ class Convergence:
                 f"(last residual {last:.3g}){'; ' + self.message if self.message else ''}")
 
 
-class ConvergenceError(ArithmeticError):
-    """An iteration failed to converge; ``.report`` is its :class:`Convergence` report."""
+class ConvergenceError(ArithmeticError, ValueError):
+    """An iteration failed to converge; ``.report`` is its :class:`Convergence` report.
+
+    Also a ``ValueError`` (as numpy's ``LinAlgError`` is): the inputs given -- the start, the
+    function, the tolerance -- are ones from which the iteration does not reach an answer."""
 
     def __init__(self, message: str, report: Convergence):
         super().__init__(message)
@@ -120,8 +123,10 @@ def fixed_point_iteration(F, x0, *, tol: float = 1e-12, max_iter: int = 1000, fu
     0.7390851332
     """
     F = _callable(F, "F")
-    scalar = np.ndim(x0) == 0
-    x = check_finite(_as_x0(x0), "x0")
+    x = check_finite(as_float_array_x0(x0), "x0")
+    scalar = x.ndim == 0
+    if x.size == 0:
+        raise ValueError(f"x0 must hold at least one number; got shape {x.shape}")
     tol = as_tolerance(tol)
     max_iter = _iterations(max_iter, x.size)
     history, residuals = [x.copy()], []
@@ -192,10 +197,10 @@ def newton_steps(f, df, x0, *, tol: float = 1e-12, max_iter: int = 50) -> Conver
         except (OverflowError, ZeroDivisionError, ValueError) as exc:
             reason, message = "diverged", f"f or df failed at x = {x:.6g}: {exc}"
             break
-        residuals.append(abs(fx))
         if not (math.isfinite(fx) and math.isfinite(dfx)):
             reason, message = "diverged", f"f(x) is not finite at x = {x:.6g}"
             break
+        residuals.append(abs(fx))
         if fx == 0.0:
             reason, message = "converged", ""
             break
@@ -293,6 +298,7 @@ def _relax(A, b, x0, tol, max_iter, full_output, method):
     reason, message = "max iterations", f"the residual did not fall below the tolerance in {max_iter} iterations"
     dominant = is_diagonally_dominant(A)
     stalled = 0
+    best = r0  # the least residual so far
     with np.errstate(all="ignore"):
         for it in range(1, max_iter + 1):
             if method == "Jacobi":
@@ -313,7 +319,8 @@ def _relax(A, b, x0, tol, max_iter, full_output, method):
                 reason, message = "converged", ""
                 break
             # at rounding level the residual stops falling: accept if tiny, stop if stuck
-            stalled = stalled + 1 if res >= min(residuals[:-1]) else 0
+            stalled = stalled + 1 if res >= best else 0
+            best = min(best, res)
             if stalled >= 20 and res <= 1e3 * tol * (scale_A * float(np.abs(x).max()) + scale_b):
                 reason, message = "converged", "stopped at rounding level"
                 break
@@ -444,8 +451,7 @@ def directed_hausdorff(A, B) -> float:
     1.0
     """
     A, B = _point_sets(A, B)
-    with np.errstate(over="ignore", invalid="ignore"):
-        return _distance(np.sqrt(_nearest_sq(A, B).max()))
+    return float(finite_result(np.sqrt(_nearest_sq(A, B).max()), "A and B", why="are too large in magnitude"))
 
 
 def hausdorff_distance(A, B) -> float:
@@ -464,16 +470,8 @@ def hausdorff_distance(A, B) -> float:
     3.0
     """
     A, B = _point_sets(A, B)
-    with np.errstate(over="ignore", invalid="ignore"):
-        return _distance(np.sqrt(max(_nearest_sq(A, B).max(), _nearest_sq(B, A).max())))
-
-
-def _distance(d) -> float:
-    d = float(d)
-    if not math.isfinite(d):
-        raise ValueError("A and B are too far apart (or too large): their squared distances overflow a float; "
-                         "scale the points down")
-    return d
+    out = np.sqrt(max(_nearest_sq(A, B).max(), _nearest_sq(B, A).max()))
+    return float(finite_result(out, "A and B", why="are too large in magnitude"))
 
 
 
@@ -523,6 +521,8 @@ def fractal_theorem(system, start, levels: int, *, attractor_points: int = 6000)
 
     s = _ifs.as_ifs(system)
     A0 = as_points(start, "start", dim=2)
+    with np.errstate(over="ignore", invalid="ignore"):
+        finite_result(np.einsum("ij,ij->i", A0, A0), "start", why="is too large in magnitude (its squared distances)")
     k = len(s)
     levels = within_budget(levels, "levels", cost=lambda v: len(A0) * k ** v if v <= 40 else 10 ** 9,
                            what="the last iterate W^levels(start)", limit=200_000)

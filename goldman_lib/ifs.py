@@ -36,7 +36,8 @@ import math
 import numpy as np
 
 from . import affine
-from .validation import MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, check_finite, within_budget
+from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points, check_finite,
+                         finite_result, within_budget)
 
 __all__ = ["IFS", "deterministic", "chaos_game", "chaos_game_with_maps", "map_images", "set_map", "iterate_map", "UNIT_SQUARE", "MAX_POINTS", "STANDARD",
            "sierpinski", "koch", "barnsley_fern", "dragon", "c_curve", "tree", "sierpinski_carpet", "cantor",
@@ -53,6 +54,8 @@ def _rng(rng) -> np.random.Generator:
     if isinstance(rng, np.random.Generator):
         return rng
     if rng is None or isinstance(rng, (int, np.integer)):
+        if rng is not None and rng < 0:
+            raise ValueError(f"rng must be a non-negative int seed (or a numpy.random.Generator, or None); got {rng}")
         return np.random.default_rng(rng)
     raise TypeError(f"rng must be a numpy.random.Generator, an int seed or None; got {type(rng).__name__}")
 
@@ -352,7 +355,7 @@ def set_map(system, points) -> np.ndarray:
     >>> set_map(cantor(), [[0, 0], [1, 0]]).tolist()
     [[0.0, 0.0], [0.3333333333333333, 0.0], [0.6666666666666667, 0.0], [1.0, 0.0]]
     """
-    return deterministic(system, 1, start=points)
+    return deterministic(system, 1, start=as_points(points, "points", dim=2))
 
 
 def iterate_map(M, shape, n) -> np.ndarray:
@@ -570,15 +573,17 @@ def grid_fractal(cells, corner=(0.0, 0.0), side=1.0, name: str = "") -> IFS:
     >>> deterministic(box, 1, start=[[1, 0]]).round(12).tolist()
     [[1.0, 0.0], [3.0, 0.0], [2.0, 1.0], [1.0, 2.0], [3.0, 2.0]]
     """
+    as_float_array(cells, "cells")  # numeric, not ragged
     C = np.array(cells)
     if C.ndim != 2 or C.shape[1:] != (2,) or len(C) == 0:
         raise ValueError(f"cells must be a non-empty list of (i, j) pairs; got shape {C.shape}")
     if not np.issubdtype(C.dtype, np.integer) or C.min() < 0 or C.max() > 2:
         raise ValueError(f"cells must hold whole numbers 0, 1 or 2 (column i, row j); got {C.tolist()}")
     P = as_points(corner, "corner", ndim=1, dim=2)
-    a = float(side)
-    if not math.isfinite(a) or a <= 0:
+    a = as_float(side, "side")
+    if a <= 0:
         raise ValueError(f"side must be a positive number; got {side!r}")
+    with np.errstate(over="ignore", invalid="ignore"):
+        moves = [finite_result(np.array([i, j]) * a / 3.0, "side") for i, j in C.tolist()]
     shrink = affine.scaling(1.0 / 3.0, center=P)
-    return IFS([shrink @ affine.translation(np.array([i, j]) * a / 3.0) for i, j in C.tolist()],
-               name=name or "grid fractal")
+    return IFS([shrink @ affine.translation(v) for v in moves], name=name or "grid fractal")

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_float_array, as_points, check_finite
+from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
 
 __all__ = ["mass_point", "vector", "add", "scale", "mass_of", "point_of", "center_of_mass", "same_projective_point",
            "perspective_mass", "pseudoperspective", "pseudoperspective_matrix", "pseudodepth"]
@@ -78,7 +78,7 @@ def scale(c, a) -> np.ndarray:
     >>> scale(2, mass_point([1, 1], 3)).tolist()
     [6.0, 6.0, 6.0]
     """
-    return as_float(c, "c") * _mp(a, "a")
+    return finite_result(as_float(c, "c") * _mp(a, "a"), "c", why="(times a) is too large in magnitude")
 
 
 def mass_of(a):
@@ -115,7 +115,7 @@ def center_of_mass(points, masses) -> np.ndarray:
     pts = as_points(points, "points")
     m = check_finite(as_float_array(masses, "masses"), "masses")
     if m.shape != pts.shape[:1]:
-        raise ValueError(f"masses must have one entry per point ({len(pts)}); got shape {m.shape}")
+        raise ValueError(f"masses must have one entry per point of points ({len(pts)}); got shape {m.shape}")
     if m.sum() == 0:
         raise ValueError("masses must not sum to 0: the sum of the mass-points is then a vector, with no centre")
     return point_of((pts * m[:, None]).sum(axis=0).tolist() + [float(m.sum())])
@@ -129,6 +129,8 @@ def same_projective_point(a, b, tol: float = 1e-12):
     (True, False)
     """
     x, y = _mp(a, "a"), _mp(b, "b")
+    if x.shape[-1] != y.shape[-1]:
+        raise ValueError(f"a and b must have the same number of coordinates; got shapes {x.shape} and {y.shape}")
     tol = as_float(tol, "tol", positive=True)
     nx, ny = np.linalg.norm(x, axis=-1), np.linalg.norm(y, axis=-1)
     if np.any(nx == 0) or np.any(ny == 0):
@@ -147,13 +149,18 @@ def _frame(eye, plane_point, normal):
     for arr, name in ((E, "eye"), (Q, "plane_point"), (N, "normal")):
         if arr.shape != (3,):
             raise ValueError(f"{name} must be a 3D point or vector (shape (3,)); got shape {arr.shape}")
-    n = np.linalg.norm(N)
+    with np.errstate(over="ignore", invalid="ignore"):
+        n = np.linalg.norm(N)
+        gap = np.linalg.norm(Q - E)
+    finite_result(np.asarray(n), "normal")
+    finite_result(np.asarray(gap), "plane_point", why="is too far from eye")
     if n == 0:
         raise ValueError("normal must be a nonzero vector: a plane needs a normal direction")
     N = N / n
     c = float((Q - E) @ N)
-    if abs(c) <= 1e-12 * (1 + np.linalg.norm(Q - E)):
-        raise ValueError("eye must not lie on the plane of projection")
+    if abs(c) <= 1e-12 * (1 + gap):
+        raise ValueError("eye must not lie on the plane of projection (the plane through plane_point with normal "
+                         "normal)")
     return E, Q, N, c
 
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_float_array, as_parameter, as_points, check_finite
+from goldman_lib.validation import as_float, as_float_array, as_parameter, as_points, check_finite, finite_result
 
 __all__ = ["complex_rotation", "complex_polar", "complex_multiply", "multiply", "conjugate", "norm", "inverse", "normalize",
            "from_axis_angle", "to_axis_angle", "rotate", "conformal_map", "to_matrix", "from_matrix", "slerp",
@@ -146,7 +146,7 @@ def norm(q) -> np.ndarray:
     5.0
     """
     q = _quaternions(q, "q")
-    return np.sqrt(np.einsum("...i,...i->...", q, q))
+    return finite_result(np.sqrt(np.einsum("...i,...i->...", q, q)), "q")
 
 
 def inverse(q) -> np.ndarray:
@@ -239,7 +239,7 @@ def conformal_map(q, v) -> np.ndarray:
     """
     q = _quaternions(q, "q")
     n = _nonzero(q, "q")
-    return rotate(q, v) * (n * n)[..., None]
+    return finite_result(rotate(q, v) * (n * n)[..., None], "q", why="(or v) is too large in magnitude")
 
 
 # -- §15.3.6: conversion formulas ----------------------------------------------------------------------

@@ -238,7 +238,7 @@ def contraction_factors(maps, length: int = 1) -> np.ndarray:
     >>> contraction_factors(maps).round(4).tolist()
     [0.7302, 0.7302]
     """
-    M = check_finite(np.asarray(maps, dtype=float), "maps")
+    M = check_finite(as_float_array(maps, "maps"), "maps")
     if M.ndim != 3 or M.shape[1] != M.shape[2] or M.shape[1] < 2:
         raise ValueError(f"maps must be a stack of square matrices (k, D+1, D+1); got shape {M.shape}")
     k = len(M)

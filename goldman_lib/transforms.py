@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_float_array, as_points, check_finite
+from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
 
 __all__ = ["translation", "rotation", "mirror", "scaling", "nonuniform_scaling", "orthogonal_projection",
            "perspective", "apply", "homogeneous", "apply_to_vectors", "compose", "translate", "rotate", "reflect", "scale", "scale_along",
@@ -142,9 +142,12 @@ def project_orthogonal(points, plane_point, normal) -> np.ndarray:
 
 
 def _check_perspective(eye, Q, N):
-    if abs((Q - eye) @ N) <= 1e-12 * (1 + np.linalg.norm(Q - eye)):
-        raise ValueError("eye must not lie on the plane of projection: every line through it would meet the "
-                         "plane at the eye itself")
+    with np.errstate(over="ignore", invalid="ignore"):
+        gap = np.linalg.norm(Q - eye)
+    finite_result(np.asarray(gap), "plane_point", why="is too far from eye")
+    if abs((Q - eye) @ N) <= 1e-12 * (1 + gap):
+        raise ValueError("eye must not lie on the plane of projection (the plane through plane_point with normal "
+                         "normal): every line through it would meet the plane at the eye itself")
 
 
 def project_perspective(points, eye, plane_point, normal) -> np.ndarray:

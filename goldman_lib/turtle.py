@@ -45,7 +45,7 @@ from typing import NamedTuple
 import numpy as np
 
 from goldman_lib.angles import cos_sin_degrees
-from goldman_lib.validation import MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, within_budget
+from goldman_lib.validation import MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, as_tolerance, within_budget
 
 __all__ = ["FORWARD", "MOVE", "TURN", "RESIZE", "COMMANDS", "MAX_COMMANDS", "MAX_DEPTH", "MAX_VALUE", "MAX_REPEAT",
            "TurtleSyntaxError", "Command", "Repeat", "Program", "Trace", "Turtle",
@@ -624,8 +624,9 @@ def perimeter(polyline, tol: float = 1e-9) -> float:
     8.0
     """
     p = _as_polyline(polyline)
+    tol = as_tolerance(tol, "tol")
     gap = closing_gap(p)
-    if gap > as_float(tol, "tol"):
+    if gap > tol:
         raise ValueError(f"polyline must be closed to have a perimeter; its ends are {gap:.3g} apart")
     return length(p)
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_parameter, as_points, check_finite, as_float_array
+from goldman_lib.validation import as_float, as_parameter, as_points, check_finite, as_float_array, finite_result
 from goldman_lib.vectors import cross
 
 __all__ = ["law_of_cosines", "law_of_sines", "plane_through", "point_line_distance", "point_plane_distance",
@@ -26,13 +26,23 @@ __all__ = ["law_of_cosines", "law_of_sines", "plane_through", "point_line_distan
 _EPS = 1e-12
 
 
-def _vec(x, name: str, dim=None) -> np.ndarray:
+def _vec(x, name: str, dim=None, like: str | None = None) -> np.ndarray:
+    """``x`` as a finite array of points or vectors; ``dim``: the required number of coordinates,
+    which ``like`` (a parameter's name) has, for the message."""
     arr = check_finite(as_float_array(x, name), name)
     if arr.ndim == 0:
         raise ValueError(f"{name} must be a point or vector with coordinates in its last axis, not a scalar")
     if dim is not None and arr.shape[-1] != dim:
-        raise ValueError(f"{name} must have {dim} coordinates (last axis of length {dim}); got shape {arr.shape}")
+        of = f" as {like} has" if like else ""
+        raise ValueError(f"{name} must have {dim} coordinates (last axis of length {dim}){of}; got shape {arr.shape}")
     return arr
+
+
+def _not_huge(v: np.ndarray, name: str) -> None:
+    """ValueError naming ``name`` when the squared length of ``v`` overflows float64."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        sq = np.einsum("...i,...i->...", v, v)
+    finite_result(sq, name, why="is too large in magnitude (its squared length)")
 
 
 def _nonzero(v: np.ndarray, name: str, what: str) -> np.ndarray:
@@ -62,7 +72,8 @@ def law_of_cosines(a, b, gamma):
     a = as_parameter(a, "a", low=0)
     b = as_parameter(b, "b", low=0)
     g = as_parameter(gamma, "gamma", low=0, high=180)
-    return _out(np.sqrt(np.maximum(a * a + b * b - 2 * a * b * np.cos(np.radians(g)), 0)))
+    out = np.sqrt(np.maximum(a * a + b * b - 2 * a * b * np.cos(np.radians(g)), 0))
+    return _out(finite_result(out, "a and b", why="are too large in magnitude"))
 
 
 def law_of_sines(a, alpha, beta):
@@ -80,7 +91,7 @@ def law_of_sines(a, alpha, beta):
     s = np.sin(np.radians(al))
     if np.any(s <= _EPS):
         raise ValueError("alpha must be strictly between 0 and 180 degrees")
-    return _out(a * np.sin(np.radians(be)) / s)
+    return _out(finite_result(a * np.sin(np.radians(be)) / s, "a"))
 
 
 # -- §11.3 lines and planes ------------------------------------------------------------------------
@@ -110,12 +121,13 @@ def point_line_distance(points, line_point, direction):
     5.0
     """
     Q = _vec(points, "points")
-    P = _vec(line_point, "line_point", Q.shape[-1])
-    v = _vec(direction, "direction", Q.shape[-1])
+    P = _vec(line_point, "line_point", Q.shape[-1], like="points")
+    v = _vec(direction, "direction", Q.shape[-1], like="points")
     vv = _nonzero(v, "direction", "a line needs a direction") ** 2
     w = Q - P
     perp = w - (_dot(w, v) / vv)[..., None] * v
-    return _out(np.linalg.norm(perp, axis=-1))
+    out = np.linalg.norm(perp, axis=-1)
+    return _out(finite_result(out, "points", why="(or line_point) is too large in magnitude"))
 
 
 def point_plane_distance(points, plane_point, normal, signed: bool = False):
@@ -203,7 +215,7 @@ def newell_normal(polygon) -> np.ndarray:
     """
     pts = _polygon(polygon, dims=(3,))
     nxt = np.roll(pts, -1, axis=0)
-    return cross(pts, nxt).sum(axis=0)
+    return finite_result(cross(pts, nxt).sum(axis=0), "polygon")
 
 
 def polygon_area(polygon) -> float:
@@ -216,8 +228,10 @@ def polygon_area(polygon) -> float:
     pts = _polygon(polygon)
     if pts.shape[1] == 2:
         x, y = pts[:, 0], pts[:, 1]
-        return float(abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))) / 2)
-    return float(np.linalg.norm(newell_normal(pts)) / 2)
+        area = abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))) / 2
+    else:
+        area = np.linalg.norm(newell_normal(pts)) / 2
+    return float(finite_result(np.asarray(area), "polygon"))
 
 
 def tetrahedron_volume(P0, P1, P2, P3):
@@ -257,9 +271,14 @@ def intersect_lines(p1, d1, p2, d2) -> tuple[np.ndarray, np.ndarray, float]:
     if p1.ndim != 1 or p1.shape[0] not in (2, 3):
         raise ValueError(f"p1 must be one 2D or 3D point; got shape {p1.shape}")
     dim = p1.shape[0]
-    d1, p2, d2 = (_vec(x, n, dim) for x, n in ((d1, "d1"), (p2, "p2"), (d2, "d2")))
+    d1, p2, d2 = (_vec(x, n, dim, like="p1") for x, n in ((d1, "d1"), (p2, "p2"), (d2, "d2")))
+    for x, n in ((d1, "d1"), (p2, "p2"), (d2, "d2")):
+        if x.shape != (dim,):
+            raise ValueError(f"{n} must be one {dim}D point or vector, as p1 is; got shape {x.shape}")
     _nonzero(d1, "d1", "a line needs a direction")
     _nonzero(d2, "d2", "a line needs a direction")
+    _not_huge(d1, "d1")
+    _not_huge(d2, "d2")
     # minimise |p1 + s d1 - p2 - t d2|^2: the 2x2 normal equations
     a, b, c = d1 @ d1, d1 @ d2, d2 @ d2
     w = p1 - p2
@@ -269,6 +288,7 @@ def intersect_lines(p1, d1, p2, d2) -> tuple[np.ndarray, np.ndarray, float]:
     s = (b * (d2 @ w) - c * (d1 @ w)) / denom
     t = (a * (d2 @ w) - b * (d1 @ w)) / denom
     A, B = p1 + s * d1, p2 + t * d2
+    finite_result(np.concatenate([A, B, [s, t]]), "p1, d1, p2 and d2", why="are too large in magnitude")
     dist = float(np.linalg.norm(A - B))
     if dist <= 1e-12 * (1 + np.linalg.norm(A)):
         B, dist = A.copy(), 0.0
@@ -283,6 +303,7 @@ def _plane(plane, name):
     P = _vec(point, f"{name} point", 3)
     N = _vec(normal, f"{name} normal", 3)
     _nonzero(N, f"{name} normal", "a plane needs a normal direction")
+    _not_huge(N, f"{name} normal")
     return P, N
 
 
@@ -319,7 +340,8 @@ def intersect_three_planes(plane1, plane2, plane3) -> np.ndarray:
     if abs(d) <= 1e-12 * scale:
         raise ValueError("the three normals must be independent (det(N1, N2, N3) != 0): otherwise two planes are "
                          "parallel or all three share a line, and there is no single common point")
-    return (np.dot(P1, N1) * cross(N2, N3) + np.dot(P2, N2) * cross(N3, N1) + np.dot(P3, N3) * cross(N1, N2)) / d
+    out = (np.dot(P1, N1) * cross(N2, N3) + np.dot(P2, N2) * cross(N3, N1) + np.dot(P3, N3) * cross(N1, N2)) / d
+    return finite_result(out, "plane1, plane2 and plane3", why="are too large in magnitude")
 
 
 # -- §11.6 spherical linear interpolation -------------------------------------------------------------
@@ -334,7 +356,7 @@ def slerp(v0, v1, t) -> np.ndarray:
     [0.707106781187, 0.707106781187]
     """
     a = _vec(v0, "v0")
-    b = _vec(v1, "v1", a.shape[-1])
+    b = _vec(v1, "v1", a.shape[-1], like="v0")
     la = _nonzero(a, "v0", "slerp needs directions")
     lb = _nonzero(b, "v1", "slerp needs directions")
     tt = as_parameter(t, "t")[..., None]
@@ -361,7 +383,7 @@ def nlerp(v0, v1, t) -> np.ndarray:
     [0.707106781187, 0.707106781187]
     """
     a = _vec(v0, "v0")
-    b = _vec(v1, "v1", a.shape[-1])
+    b = _vec(v1, "v1", a.shape[-1], like="v0")
     _nonzero(a, "v0", "nlerp needs directions")
     _nonzero(b, "v1", "nlerp needs directions")
     tt = as_parameter(t, "t")[..., None]

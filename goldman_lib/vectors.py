@@ -31,7 +31,7 @@ import numbers
 
 import numpy as np
 
-from goldman_lib.validation import as_float_array, check_finite
+from goldman_lib.validation import as_float_array, as_tolerance, check_finite, finite_result
 
 __all__ = ["Point", "Vector", "affine_combination", "combination_kind", "weighted_sum_from_origin", "dot", "cross",
            "det", "det_cofactor_terms", "length", "angle_between", "dot_from_lengths", "cross_from_geometry",
@@ -55,6 +55,13 @@ def _vector3(x, name: str) -> np.ndarray:
     if arr.shape[-1] != 3:
         raise ValueError(f"{name} must be a 3D vector (last axis of length 3); got shape {arr.shape}")
     return arr
+
+
+def _not_huge(arr: np.ndarray, name: str) -> None:
+    """ValueError naming ``name`` when the squared length of ``arr`` overflows float64 (entries near 1e154 and over)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        sq = np.einsum("...i,...i->...", arr, arr)
+    finite_result(sq, name, why="is too large in magnitude (its squared length)")
 
 
 def _scalar(c, name: str) -> float | np.ndarray:
@@ -148,11 +155,16 @@ class Vector(_Affine):
 
     def dot(self, other):
         """``dot(self, other)``."""
-        return dot(self, other)
+        if isinstance(other, Point):
+            raise TypeError("other must be a vector, not a point: dot takes vectors (Goldman §9.4)")
+        o = _coords(other, "other")
+        if o.shape[-1] != self.dim:
+            raise ValueError(f"other must have the dimension of this vector ({self.dim}); got shape {o.shape}")
+        return dot(self, o)
 
     def cross(self, other):
         """``cross(self, other)`` as a :class:`Vector`."""
-        return Vector(cross(self, other))
+        return Vector(cross(self, _vector3(other, "other")))
 
 
 class Point(_Affine):
@@ -241,6 +253,7 @@ def combination_kind(weights, tol: float = 1e-9) -> str:
     ('point', 'vector', 'undefined')
     """
     w = check_finite(as_float_array(weights, "weights"), "weights")
+    tol = as_tolerance(tol, "tol")
     if w.ndim != 1 or w.size == 0:
         raise ValueError(f"weights must be a non-empty 1D sequence; got shape {w.shape}")
     total = float(w.sum())
@@ -275,7 +288,8 @@ def weighted_sum_from_origin(points, weights, origin) -> np.ndarray:
     if w.shape != (pts.shape[0],):
         raise ValueError(f"weights must have one entry per point: {pts.shape[0]} points, weights of shape {w.shape}")
     if O.shape[-1] != pts.shape[-1] or O.ndim > 2:
-        raise ValueError(f"origin must have shape ({pts.shape[-1]},) or (m, {pts.shape[-1]}); got shape {O.shape}")
+        raise ValueError(f"origin must have shape ({pts.shape[-1]},) or (m, {pts.shape[-1]}), the dimension of points; "
+                         f"got shape {O.shape}")
     return O + np.einsum("k,...kd->...d", w, pts - O[..., None, :])
 
 
@@ -343,7 +357,7 @@ def length(v):
     """
     if isinstance(v, Point):
         raise TypeError("a point has no length (Goldman §9.3): take the length of a vector P - Q")
-    out = np.linalg.norm(_coords(v, "v"), axis=-1)
+    out = finite_result(np.linalg.norm(_coords(v, "v"), axis=-1), "v")
     return float(out) if out.ndim == 0 else out
 
 
@@ -375,8 +389,12 @@ def dot_from_lengths(u, v):
     12.0
     """
     a, b = _coords(u, "u"), _coords(v, "v")
+    if a.shape[-1] != b.shape[-1]:
+        raise ValueError(f"u and v must have the same dimension; got {a.shape[-1]} and {b.shape[-1]}")
+    _not_huge(a, "u")
+    _not_huge(b, "v")
     la, lb, lab = (np.linalg.norm(x, axis=-1) for x in (a, b, a - b))
-    out = (la ** 2 + lb ** 2 - lab ** 2) / 2
+    out = finite_result((la ** 2 + lb ** 2 - lab ** 2) / 2, "u and v", why="are too large in magnitude")
     return float(out) if np.ndim(out) == 0 else out
 
 
@@ -390,6 +408,9 @@ def cross_from_geometry(u, v, normal) -> np.ndarray:
     [0.0, 0.0, 2.0]
     """
     a, b, n = _vector3(u, "u"), _vector3(v, "v"), _vector3(normal, "normal")
+    _not_huge(a, "u")
+    _not_huge(b, "v")
+    _not_huge(n, "normal")
     la, lb = np.linalg.norm(a, axis=-1), np.linalg.norm(b, axis=-1)
     if np.any(la == 0) or np.any(lb == 0):
         return np.zeros(np.broadcast_shapes(a.shape, b.shape))
@@ -403,7 +424,7 @@ def cross_from_geometry(u, v, normal) -> np.ndarray:
     if np.any((lm == 0) & (sin > 0)):
         raise ValueError("normal must not lie in the plane of u and v: it must say which side is 'up'")
     unit = m / np.where(lm > 0, lm, 1)[..., None]
-    return (la * lb * sin)[..., None] * unit
+    return finite_result((la * lb * sin)[..., None] * unit, "u and v", why="are too large in magnitude")
 
 
 def cross_associator(u, v, w) -> np.ndarray:
