@@ -260,12 +260,16 @@ def oslo_steps(ctrl, knots, degree, new_knots) -> list[dict]:
 
     Returns one dict per new control point j: ``point`` (d,), ``label`` (the p new knots
     ``tau_{j+1..j+p}``), ``span`` k of the old knots used, and ``levels``: de Boor's pyramid with
-    the label as arguments, level 0 being the old points ``P_{k-p} .. P_k``.
+    the label as arguments, level 0 being the old points ``P_{k-p} .. P_k``, and ``labels``: the
+    blossom label of every point of every level, sorted (level r, point of old index i: the first r
+    new knots of the label and ``t_{i+1} .. t_{i+p-r}``; level 0 the labels of the old points).
     Raises ValueError as :func:`oslo`.
 
     >>> s = oslo_steps([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, [0, 0, 0, 0.5, 1, 1, 1])
     >>> [step["point"].tolist() for step in s]
     [[0.0, 0.0], [0.5, 1.0], [1.5, 1.0], [2.0, 0.0]]
+    >>> s[1]["labels"]
+    [[(0.0, 0.0), (0.0, 1.0), (1.0, 1.0)], [(0.0, 0.0), (0.0, 1.0)], [(0.0, 0.5)]]
     """
     P, t, p = _curve(ctrl, knots, degree)
     tau = bspline.check_knots(new_knots, p, name="new_knots")
@@ -284,7 +288,9 @@ def oslo_steps(ctrl, knots, degree, new_knots) -> list[dict]:
                 a = (x - t[i]) / (t[i + p + 1 - r] - t[i])
                 pts[jj] = (1.0 - a) * pts[jj - 1] + a * pts[jj]
             levels.append(pts[r:].copy())
-        out.append({"point": pts[p].copy(), "label": label, "span": k, "levels": levels})
+        labels = [[tuple(sorted(float(x) for x in np.r_[label[:r], t[k - p + jj + 1:k + jj - r + 1]]))
+                   for jj in range(r, p + 1)] for r in range(p + 1)]
+        out.append({"point": pts[p].copy(), "label": label, "span": k, "levels": levels, "labels": labels})
     return out
 
 

@@ -23,7 +23,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.interpolate import BSpline
 
-from goldman_lib import bezier
+from goldman_lib import bezier, bspline
 from goldman_lib import knot_insertion as ki
 
 FAST = settings(max_examples=40, deadline=None, derandomize=True)
@@ -668,3 +668,17 @@ def test_intersect_at_a_knot_is_reported_once():
     assert len(points) == 1
     np.testing.assert_allclose(points[0], [1, 2], atol=1e-9)
     np.testing.assert_allclose(params[0], [0.5, 0.75], atol=1e-9)
+
+
+def test_oslo_pyramid_labels_are_blossom_arguments():
+    """Every point of every Oslo pyramid is the blossom (bspline.blossom, another route) at its label."""
+    rng = np.random.default_rng(28)
+    ctrl = rng.uniform(-3, 3, (7, 2))
+    knots = np.array([0, 0, 0, 0, 0.2, 0.5, 0.7, 1, 1, 1, 1.0])
+    tau = np.sort(np.r_[knots, [0.1, 0.35, 0.5, 0.9]])
+    for step in ki.oslo_steps(ctrl, knots, 3, tau):
+        assert step["labels"][-1][0] == tuple(step["label"].tolist())
+        for pts, labels in zip(step["levels"], step["labels"]):
+            assert len(pts) == len(labels)
+            for x, lab in zip(pts, labels):
+                np.testing.assert_allclose(x, bspline.blossom(ctrl, knots, 3, lab, span=step["span"]), atol=1e-12)
