@@ -599,8 +599,9 @@ def schaefer(ctrl, knots, degree, levels=1):
     two label values coincide keeps its first point), and the result is the Boehm/Oslo insertion of
     every midpoint.  Where 2m - 1 exceeds p + 1 the refined vector would repeat the knot more than
     p + 1 times; the B-splines of zero support there (``u_j = u_{j+p+1}``) are identically zero, so
-    their coefficients are dropped with one copy of the knot each, and the knot keeps multiplicity
-    p + 1 (it is then at most C^-1 anyway, a discontinuity, or already C^(p-m) with m > p/2 + 1).
+    their coefficients are dropped with one copy of the knot each, and the knot comes out with
+    multiplicity p + 1, i.e. min(2m - 1, p + 1) in every case (the curve is unchanged: the dropped
+    B-splines vanish everywhere).
     The tests check every case against :func:`oslo` inserting the same midpoints.
 
     ctrl: (n+1, d).  knots: (n+p+2,), any valid knot vector (:func:`goldman_lib.bspline.check_knots`).
