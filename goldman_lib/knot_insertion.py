@@ -260,12 +260,16 @@ def oslo_steps(ctrl, knots, degree, new_knots) -> list[dict]:
 
     Returns one dict per new control point j: ``point`` (d,), ``label`` (the p new knots
     ``tau_{j+1..j+p}``), ``span`` k of the old knots used, and ``levels``: de Boor's pyramid with
-    the label as arguments, level 0 being the old points ``P_{k-p} .. P_k``.
+    the label as arguments, level 0 being the old points ``P_{k-p} .. P_k``, and ``labels``: the
+    blossom label of every point of every level, sorted (level r, point of old index i: the first r
+    new knots of the label and ``t_{i+1} .. t_{i+p-r}``; level 0 the labels of the old points).
     Raises ValueError as :func:`oslo`.
 
     >>> s = oslo_steps([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, [0, 0, 0, 0.5, 1, 1, 1])
     >>> [step["point"].tolist() for step in s]
     [[0.0, 0.0], [0.5, 1.0], [1.5, 1.0], [2.0, 0.0]]
+    >>> s[1]["labels"]
+    [[(0.0, 0.0), (0.0, 1.0), (1.0, 1.0)], [(0.0, 0.0), (0.0, 1.0)], [(0.0, 0.5)]]
     """
     P, t, p = _curve(ctrl, knots, degree)
     tau = bspline.check_knots(new_knots, p, name="new_knots")
@@ -284,7 +288,9 @@ def oslo_steps(ctrl, knots, degree, new_knots) -> list[dict]:
                 a = (x - t[i]) / (t[i + p + 1 - r] - t[i])
                 pts[jj] = (1.0 - a) * pts[jj - 1] + a * pts[jj]
             levels.append(pts[r:].copy())
-        out.append({"point": pts[p].copy(), "label": label, "span": k, "levels": levels})
+        labels = [[tuple(sorted(float(x) for x in np.r_[label[:r], t[k - p + jj + 1:k + jj - r + 1]]))
+                   for jj in range(r, p + 1)] for r in range(p + 1)]
+        out.append({"point": pts[p].copy(), "label": label, "span": k, "levels": levels, "labels": labels})
     return out
 
 
@@ -492,24 +498,26 @@ def midpoint_knots(knots) -> np.ndarray:
     return u
 
 
-def _schaefer_check(t: np.ndarray, p: int) -> None:
-    """Interior knots must be simple and repeated knots only the clamped ends: the midpoints of
-    zero-length intervals would repeat a knot beyond degree+1 times."""
-    lo, hi = t[p], t[t.size - p - 1]
-    inner = t[(t > lo) & (t < hi)]
-    dup = inner[1:][inner[1:] == inner[:-1]]
-    if dup.size:
-        raise ValueError(f"knots must have simple interior knots for schaefer (every interval is halved); "
-                         f"{_fmt(dup[0])} is repeated")
-    for end in (lo, hi):
-        s = int(np.count_nonzero(t == end))
-        if 1 < s < p + 1 or (s == p + 1 and not (t[0] == end or t[-1] == end)):
-            raise ValueError(f"knots may repeat an end of the domain only as a clamped end (degree+1 = {p + 1} "
-                             f"times at the start or the end) for schaefer; {_fmt(end)} appears {s} times")
-    outer = t[(t < lo) | (t > hi)]
-    dup = outer[1:][outer[1:] == outer[:-1]]
-    if dup.size:
-        raise ValueError(f"knots outside the domain must be simple for schaefer; {_fmt(dup[0])} is repeated")
+def _drop_zero_support(P: np.ndarray, u: np.ndarray, p: int) -> tuple[np.ndarray, np.ndarray]:
+    """Drop the B-splines of zero support (``u_j = u_{j+p+1}``) with their control points and one
+    copy of the knot, until no knot repeats more than p+1 times.  Only a knot of multiplicity m with
+    2m - 1 > p + 1 (the midpoint of a zero-length interval is the knot again) needs it; such a B-spline
+    is identically zero, so its coefficient is no control point of the curve."""
+    zero = u[p + 1:] == u[:-p - 1]
+    if not zero.any():
+        return P, u
+    keep_pts = np.ones(len(P), dtype=bool)
+    keep_knots = np.ones(len(u), dtype=bool)
+    j, kept = 0, list(range(len(u)))
+    while j + p + 1 < len(kept):                   # drop one at a time: each drop shifts the window
+        if u[kept[j]] == u[kept[j + p + 1]]:
+            keep_knots[kept[j]] = False
+            keep_pts[kept[j]] = False              # point j sits under the knots j..j+p+1
+            del kept[j]
+        else:
+            j += 1
+    # points and knots are dropped at the same original indices (point j pairs with knot j)
+    return P[keep_pts[:len(P)]], u[keep_knots]
 
 
 def _schaefer_level(P: np.ndarray, t: np.ndarray, p: int) -> tuple[list[np.ndarray], np.ndarray]:
@@ -540,6 +548,14 @@ def _schaefer_level(P: np.ndarray, t: np.ndarray, p: int) -> tuple[list[np.ndarr
         R = new
         rounds.append(R)
     return rounds, u[p:2 * n1 + p + 1].copy()
+
+
+def _schaefer_refine(P: np.ndarray, t: np.ndarray, p: int) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
+    """One level: (rounds as computed, the final control points, the final knots), zero-support
+    B-splines dropped from the last two (see :func:`_drop_zero_support`)."""
+    rounds, u = _schaefer_level(P, t, p)
+    Q, u = _drop_zero_support(rounds[-1], u, p)
+    return rounds, Q, u
 
 
 def schaefer_labels(knots, degree, rnd: int) -> list[tuple[float, ...]]:
@@ -577,11 +593,23 @@ def schaefer(ctrl, knots, degree, levels=1):
     over the knot vector with every interval halved; on uniform knots it equals
     :func:`lane_riesenfeld`.
 
-    ctrl: (n+1, d).  knots: (n+p+2,) with simple interior knots (clamped ends allowed).
+    Any knot vector works, repeated knots included (clamped or floating ends, interior knots up to
+    multiplicity p+1).  The midpoint of a zero-length interval is the knot itself, so a knot of
+    multiplicity m comes out with multiplicity 2m - 1: the rounds run unchanged (an affine step whose
+    two label values coincide keeps its first point), and the result is the Boehm/Oslo insertion of
+    every midpoint.  Where 2m - 1 exceeds p + 1 the refined vector would repeat the knot more than
+    p + 1 times; the B-splines of zero support there (``u_j = u_{j+p+1}``) are identically zero, so
+    their coefficients are dropped with one copy of the knot each, and the knot comes out with
+    multiplicity p + 1, i.e. min(2m - 1, p + 1) in every case (the curve is unchanged: the dropped
+    B-splines vanish everywhere).
+    The tests check every case against :func:`oslo` inserting the same midpoints.
+
+    ctrl: (n+1, d).  knots: (n+p+2,), any valid knot vector (:func:`goldman_lib.bspline.check_knots`).
     degree: p.  levels: int >= 0 within the work budget: ``(p + 1) d`` times the refined point
     count at most :data:`~goldman_lib.validation.MAX_ITEMS` coordinates computed.
-    Returns ``(new_ctrl, new_knots)``: ``2 m - p`` points from m per level.
-    Raises ValueError for a bad curve or repeated interior knots.
+    Returns ``(new_ctrl, new_knots)``: ``2 m - p`` points from m per level (fewer where zero-support
+    B-splines were dropped).
+    Raises ValueError for a bad curve.
 
     >>> ctrl, knots = schaefer([[0, 0], [4, 0], [4, 4]], [0, 0, 0, 1, 1, 1], 2)
     >>> ctrl.tolist()
@@ -593,10 +621,8 @@ def schaefer(ctrl, knots, degree, levels=1):
     m, d = P.shape
     levels = within_budget(levels, "levels", cost=lambda v: _refined_count(m, p, v) * d * (p + 1),
                            what="the refined polygon", unit="coordinates computed")
-    _schaefer_check(t, p)
     for _ in range(levels):
-        rounds, t = _schaefer_level(P, t, p)
-        P = rounds[-1]
+        _, P, t = _schaefer_refine(P, t, p)
     return P.copy(), t.copy()
 
 
@@ -604,17 +630,18 @@ def schaefer_steps(ctrl, knots, degree) -> dict:
     """One level of Schaefer's algorithm, round by round, for drawing (Goldman §28.4.2).
 
     Returns ``{"rounds": [doubled, round 1, ..., round p], "labels": [labels of each round],
-    "knots": the new knot vector}``.  Raises ValueError as :func:`schaefer`.
+    "knots": the new knot vector, "ctrl": the new control points}``; ``ctrl`` is the last round
+    except where a knot of high multiplicity made B-splines of zero support, whose points
+    :func:`schaefer` drops.  Raises ValueError as :func:`schaefer`.
 
     >>> s = schaefer_steps([[0, 0], [4, 0], [4, 4]], [0, 0, 0, 1, 1, 1], 2)
     >>> [len(r) for r in s["rounds"]], s["labels"][2][1]
     ([6, 5, 4], (0.0, 0.5))
     """
     P, t, p = _curve(ctrl, knots, degree)
-    _schaefer_check(t, p)
-    rounds, u = _schaefer_level(P, t, p)
+    rounds, Q, u = _schaefer_refine(P, t, p)
     labels = [schaefer_labels(t, p, r) for r in range(p + 1)]
-    return {"rounds": rounds, "labels": labels, "knots": u}
+    return {"rounds": rounds, "labels": labels, "knots": u, "ctrl": Q}
 
 
 # --------------------------------------------------------------------------------------------
@@ -682,12 +709,10 @@ def convergence_study(ctrl, knots, degree, levels=6) -> dict:
     m, d = P.shape
     levels = within_budget(levels, "levels", cost=lambda v: _refined_count(m, p, v) * d * (p + 1),
                            what="the refined polygon", unit="coordinates computed", minimum=1)
-    _schaefer_check(t, p)
     dist = [control_polygon_distance(P, t, p)]
     counts = [P.shape[0]]
     for _ in range(levels):
-        rounds, t = _schaefer_level(P, t, p)
-        P = rounds[-1]
+        _, P, t = _schaefer_refine(P, t, p)
         dist.append(control_polygon_distance(P, t, p))
         counts.append(P.shape[0])
     d = np.array(dist)
@@ -775,12 +800,10 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     if method not in ("bezier", "subdivision"):
         raise ValueError(f"method must be 'bezier' or 'subdivision'; got {method!r}")
     if method == "subdivision":
-        _schaefer_check(t, p)
         level = 0
         while level < max_levels and _corner_flatness(P) > tol:
             bezier._check_pieces(_refined_count(P.shape[0], p, 1), P.shape[1] * (p + 1), tol, "max_levels")
-            rounds, t = _schaefer_level(P, t, p)
-            P = rounds[-1]
+            _, P, t = _schaefer_refine(P, t, p)
             level += 1
         return P.copy(), level
     pieces, _ = to_piecewise_bezier(P, t, p)

@@ -48,12 +48,21 @@ __all__ = [
     "quad_vertex_stencil", "quad_edge_stencil", "quad_face_stencil",
     "triangle_vertex_stencil", "triangle_edge_stencil", "apply_stencils",
     "local_subdivision_matrix", "local_eigenvalues", "BOX_SPLINE_SELF_WEIGHT",
+    "VERTEX_RULES", "loop_beta", "warren_beta", "tangent_plane_condition", "valence_table",
+    "ring_height_ratio", "cone_ratios",
 ]
 
 #: Weight of a vertex itself in the weighted triangle centroid used by the triangle scheme; the
 #: other two corners get (1 - 1/4)/2 = 3/8 each.  On a regular grid this makes the averaging step
 #: the three-direction averaging of the quartic box spline (see :func:`triangle_average`).
 BOX_SPLINE_SELF_WEIGHT = 0.25
+
+
+#: The vertex rules of the triangle scheme (Goldman §30.4.2 and the smooth variants of Loop's scheme):
+#: ``"centroid"`` the book's weighted-centroid averaging, ``v' = 5/8 v + 3/(8n) sum u`` (a cone at
+#: valence 3); ``"warren"`` Warren's weight beta = 3/16 at n = 3 and 3/(8n) otherwise; ``"loop"``
+#: Loop's original beta(n) (:func:`loop_beta`).  The two last give ``v' = (1 - n beta) v + beta sum u``.
+VERTEX_RULES = ("centroid", "warren", "loop")
 
 
 def _scatter_sum(index: np.ndarray, values: np.ndarray, n: int) -> np.ndarray:
@@ -707,7 +716,7 @@ def triangle_average(mesh: Mesh, self_weight: float = BOX_SPLINE_SELF_WEIGHT) ->
 
 
 def centroid_averaging(mesh: Mesh, levels: int = 1, scheme: str | None = None,
-                       self_weight: float = BOX_SPLINE_SELF_WEIGHT) -> Mesh:
+                       self_weight: float = BOX_SPLINE_SELF_WEIGHT, rule: str = "centroid") -> Mesh:
     """Subdivide a mesh by centroid averaging, ``levels`` times (Goldman §30.3.1 and §30.4.1).
 
     scheme ``"quad"``: split every face into quadrilaterals (:func:`bilinear_split`), then
@@ -720,12 +729,20 @@ def centroid_averaging(mesh: Mesh, levels: int = 1, scheme: str | None = None,
     (:func:`triangle_average` with ``self_weight``).  On a regular triangle grid (default weight)
     one level is one level of the three-direction quartic box spline.  Needs a triangle mesh.
 
+    rule (triangle scheme only): ``"centroid"`` (the book's, default) or a vertex rule smooth at every
+    valence, ``"warren"`` or ``"loop"`` (:data:`VERTEX_RULES`): the midpoint split and averaging
+    give the edge points as before, and every interior old vertex then moves by
+    ``(1 - n beta) v + beta sum u`` instead (:func:`triangle_vertex_stencil`); with ``"loop"`` one
+    level is Loop's scheme with Loop's weights on a closed mesh.  Boundary vertices keep the
+    averaging's point.
+
     scheme None picks ``"triangle"`` for a triangle mesh and ``"quad"`` otherwise.
     levels: >= 0, within the work budget: each level multiplies the face corners by 4, and
     ``4^levels`` times the corners of the mesh is at most :data:`~goldman_lib.validation.MAX_ITEMS`
     / 4 (levels <= 8 for the cube, 24 corners).  Returns a new Mesh (the input is unchanged).
-    Raises TypeError if mesh is not a Mesh; ValueError for an unknown scheme, a negative level, a
-    level over the budget, or the triangle scheme on a mesh with non-triangular faces.
+    Raises TypeError if mesh is not a Mesh; ValueError for an unknown scheme or rule, a negative
+    level, a level over the budget, the triangle scheme on a mesh with non-triangular faces, or a
+    rule other than ``"centroid"`` with the quad scheme or another self_weight.
 
     >>> m = centroid_averaging(cube(), 2)
     >>> m.n_faces, m.euler_characteristic()
@@ -741,21 +758,103 @@ def centroid_averaging(mesh: Mesh, levels: int = 1, scheme: str | None = None,
         scheme = "triangle" if mesh.is_triangle else "quad"
     if scheme not in ("quad", "triangle"):
         raise ValueError(f"scheme must be 'quad' or 'triangle'; got {scheme!r}")
+    w = _self_weight(self_weight)
+    rule = _rule(rule, w)
     if scheme == "triangle":
         if not mesh.is_triangle:
             raise ValueError("scheme 'triangle' needs a triangle mesh; call triangulate(mesh) first")
-        w = _self_weight(self_weight)
         for _ in range(levels):
-            mesh = triangle_average(midpoint_split(mesh), w)
+            new = triangle_average(midpoint_split(mesh), w)
+            if rule != "centroid":
+                new = new.with_vertices(_smooth_vertex_points(mesh, new._vertices, rule))
+            mesh = new
         return mesh
+    if rule != "centroid":
+        raise ValueError(f"rule {rule!r} is a vertex rule of the triangle scheme; the quad scheme has rule 'centroid' only")
     for _ in range(levels):
         mesh = quad_average(bilinear_split(mesh))
     return mesh
 
 
+def _smooth_vertex_points(old: Mesh, new_vertices: np.ndarray, rule: str) -> np.ndarray:
+    """The new vertex array with the interior old vertices (rows 0..V-1) moved by the rule's
+    vertex stencil ``(1 - n beta) v + beta sum u`` over the old mesh."""
+    V, edges, nv = old._vertices, old.edges, old.n_vertices
+    n = old.valences
+    nbr_sum = _scatter_sum(edges.ravel(), V[edges[:, ::-1].ravel()], nv)
+    beta = _rule_beta(rule, np.maximum(n, 3))
+    pts = (1 - n * beta)[:, None] * V + beta[:, None] * nbr_sum
+    out = new_vertices.copy()
+    interior = ~old.boundary_vertices
+    out[:nv][interior] = pts[interior]
+    return out
+
+
 # --------------------------------------------------------------------------------------------
 # §30.3.2 and §30.4.2 stencils
 # --------------------------------------------------------------------------------------------
+
+def loop_beta(valence) -> np.ndarray | float:
+    """Loop's weight of each neighbour in the vertex rule of his scheme (Loop 1987; Goldman §30.4.2):
+    ``beta(n) = (5/8 - (3/8 + 1/4 cos(2 pi / n))^2) / n``, so ``v' = (1 - n beta) v + beta sum u``.
+
+    Chosen so that the subdominant eigenvalue of the local subdivision matrix is
+    ``3/8 + 1/4 cos(2 pi / n)`` with the vertex eigenvalue ``5/8 - n beta`` below it: a tangent plane at
+    every valence.  beta(6) = 1/16 (the box-spline stencil), beta(3) = 3/16 (Warren's choice).
+    valence: an integer >= 3 or an integer array of them.  Raises ValueError below 3.
+
+    >>> loop_beta(6), loop_beta(3)
+    (0.0625, 0.1875)
+    """
+    n = _valences(valence)
+    beta = (5 / 8 - (3 / 8 + np.cos(2 * np.pi / n) / 4) ** 2) / n
+    return float(beta) if np.ndim(beta) == 0 else beta
+
+
+def warren_beta(valence) -> np.ndarray | float:
+    """Warren's simplified weight of each neighbour in Loop's vertex rule (Warren and Weimer 2002;
+    Goldman §30.4.2): ``3/16`` at valence 3 and ``3/(8n)`` otherwise, so ``v' = (1 - n beta) v + beta sum u``.
+    Above valence 3 it is the book's centroid-averaging rule; at valence 3 it replaces 1/8 by 3/16,
+    which removes the cone of the plain rule.
+    valence: an integer >= 3 or an integer array of them.  Raises ValueError below 3.
+
+    >>> warren_beta(3), warren_beta(4)
+    (0.1875, 0.09375)
+    """
+    n = _valences(valence)
+    beta = np.where(n == 3, 3 / 16, 3 / (8 * n))
+    return float(beta) if np.ndim(beta) == 0 else beta
+
+
+def _valences(valence, name="valence", cost=lambda v: v, what="the stencil", unit="neighbours"):
+    """An integer valence >= 3 (returned as int) or a 1-D sequence of them (an int array), each within
+    the work budget."""
+    if isinstance(valence, (str, bytes)) or valence is None:
+        raise TypeError(f"{name} must be an integer >= 3 or a sequence of them; got {valence!r}")
+    try:
+        arr = np.asarray(valence)
+    except ValueError:
+        raise TypeError(f"{name} must be an integer >= 3 or a flat sequence of them; got a ragged sequence") from None
+    if arr.ndim == 0:
+        return within_budget(valence, name, cost=cost, what=what, unit=unit, minimum=3)
+    if arr.ndim != 1 or arr.size == 0:
+        raise ValueError(f"{name} must be an integer or a non-empty flat sequence of integers; got shape {arr.shape}")
+    return np.array([within_budget(x, f"{name}[{k}]", cost=cost, what=what, unit=unit, minimum=3)
+                     for k, x in enumerate(arr.tolist())], dtype=np.int64)
+
+
+def _rule(rule, self_weight):
+    if rule not in VERTEX_RULES:
+        raise ValueError(f"rule must be one of {VERTEX_RULES}; got {rule!r}")
+    if rule != "centroid" and _self_weight(self_weight) != BOX_SPLINE_SELF_WEIGHT:
+        raise ValueError(f"self_weight must be {BOX_SPLINE_SELF_WEIGHT} (the edge rule 3/8, 1/8 of Loop's scheme) "
+                         f"with rule {rule!r}; got {self_weight}")
+    return rule
+
+
+def _rule_beta(rule, n):
+    return loop_beta(n) if rule == "loop" else warren_beta(n)
+
 
 def quad_vertex_stencil(valence: int) -> tuple[float, float, float]:
     """Weights of the vertex stencil of quadrilateral centroid averaging (Goldman §30.3.2).
@@ -799,19 +898,28 @@ def quad_face_stencil(sides: int = 4) -> float:
     return 1 / k
 
 
-def triangle_vertex_stencil(valence: int, self_weight: float = BOX_SPLINE_SELF_WEIGHT) -> tuple[float, float]:
+def triangle_vertex_stencil(valence: int, self_weight: float = BOX_SPLINE_SELF_WEIGHT,
+                            rule: str = "centroid") -> tuple[float, float]:
     """Weights of the vertex stencil of triangle centroid averaging (Goldman §30.4.2).
 
-    A vertex of valence n moves to ``a v + b (sum of its n neighbours)`` with
-    ``a = w + (1-w)/2`` and ``b = (1-w)/(2n)`` for the centroid weight ``w = self_weight``.
-    With the default ``w = 1/4``: ``(5/8, 3/(8n))``; at n = 6 that is Loop's regular stencil
-    ``(10/16, 1/16)``.
+    A vertex of valence n moves to ``a v + b (sum of its n neighbours)``.  rule ``"centroid"`` (the
+    book's): ``a = w + (1-w)/2`` and ``b = (1-w)/(2n)`` for the centroid weight ``w = self_weight``;
+    with the default ``w = 1/4``: ``(5/8, 3/(8n))``; at n = 6 that is Loop's regular stencil
+    ``(10/16, 1/16)``.  rule ``"warren"`` or ``"loop"``: ``b = beta(n)`` (:func:`warren_beta`,
+    :func:`loop_beta`) and ``a = 1 - n b``, smooth at every valence (these need the default
+    self_weight, whose edge stencil 3/8, 1/8 is Loop's).
+    Raises ValueError for a valence below 3, an unknown rule, or a rule with another self_weight.
 
     >>> triangle_vertex_stencil(6)
     (0.625, 0.0625)
+    >>> triangle_vertex_stencil(3, rule="warren")
+    (0.4375, 0.1875)
     """
     n = within_budget(valence, "valence", cost=lambda v: v, what="the stencil", unit="neighbours", minimum=3)
     w = _self_weight(self_weight)
+    if _rule(rule, w) != "centroid":
+        b = _rule_beta(rule, n)
+        return 1 - n * b, b
     return w + (1 - w) / 2, (1 - w) / (2 * n)
 
 
@@ -829,13 +937,15 @@ def triangle_edge_stencil(self_weight: float = BOX_SPLINE_SELF_WEIGHT) -> tuple[
     return w / 2 + (1 - w) / 3, (1 - w) / 6
 
 
-def apply_stencils(mesh: Mesh, scheme: str | None = None, self_weight: float = BOX_SPLINE_SELF_WEIGHT) -> np.ndarray:
+def apply_stencils(mesh: Mesh, scheme: str | None = None, self_weight: float = BOX_SPLINE_SELF_WEIGHT,
+                   rule: str = "centroid") -> np.ndarray:
     """One level of centroid averaging computed directly from the stencils (Goldman §30.3.2, §30.4.2).
 
     Returns the new vertex positions in the numbering of :func:`centroid_averaging`: the vertex
     points, then the edge points, then (quadrilateral scheme) the face points.  The stencils hold
     for interior vertices and edges, so the mesh must be closed; the quadrilateral scheme needs
-    a quadrilateral mesh and the triangle scheme a triangle mesh.
+    a quadrilateral mesh and the triangle scheme a triangle mesh.  rule: the triangle scheme's
+    vertex rule (:data:`VERTEX_RULES`, see :func:`triangle_vertex_stencil`).
     Raises ValueError otherwise.
 
     >>> m = cube()
@@ -847,6 +957,8 @@ def apply_stencils(mesh: Mesh, scheme: str | None = None, self_weight: float = B
         scheme = "triangle" if mesh.is_triangle else "quad"
     if scheme not in ("quad", "triangle"):
         raise ValueError(f"scheme must be 'quad' or 'triangle'; got {scheme!r}")
+    if scheme == "quad" and rule != "centroid":
+        raise ValueError(f"rule {rule!r} is a vertex rule of the triangle scheme; the quad scheme has rule 'centroid' only")
     if not mesh.is_closed:
         raise ValueError("mesh must be closed for apply_stencils: the stencils are those of interior vertices and edges")
     V, C, nxt = mesh._vertices, mesh._corners, mesh._next
@@ -870,8 +982,12 @@ def apply_stencils(mesh: Mesh, scheme: str | None = None, self_weight: float = B
     if not mesh.is_triangle:
         raise ValueError("scheme 'triangle' stencils need a triangle mesh; triangulate it first")
     w = _self_weight(self_weight)
-    a = w + (1 - w) / 2
-    b = (1 - w) / (2 * n)
+    if _rule(rule, w) != "centroid":
+        b = _rule_beta(rule, n)
+        a = (1 - n * b)[:, None]
+    else:
+        a = w + (1 - w) / 2
+        b = (1 - w) / (2 * n)
     vertex_pts = a * V + b[:, None] * nbr_sum
     ea, eb = triangle_edge_stencil(w)
     return np.concatenate([vertex_pts, ea * ends + eb * wings])
@@ -882,7 +998,7 @@ def apply_stencils(mesh: Mesh, scheme: str | None = None, self_weight: float = B
 # --------------------------------------------------------------------------------------------
 
 def local_subdivision_matrix(valence: int, scheme: str = "triangle",
-                             self_weight: float = BOX_SPLINE_SELF_WEIGHT) -> np.ndarray:
+                             self_weight: float = BOX_SPLINE_SELF_WEIGHT, rule: str = "centroid") -> np.ndarray:
     """The matrix of one level of centroid averaging around a vertex of valence n (Goldman §30.3.2,
     §30.4.2): the stencils, written as one linear map from a vertex's ring to its new ring.
 
@@ -890,7 +1006,7 @@ def local_subdivision_matrix(valence: int, scheme: str = "triangle",
     cyclic order (triangles ``(v, u_i, u_{i+1})``), go to ``[v', e_1, ..., e_n]``: the new vertex
     point and the new edge points of the edges ``(v, u_i)``, whose opposite vertices are
     ``u_{i-1}`` and ``u_{i+1}``.  Shape ``(n+1, n+1)``; weights from :func:`triangle_vertex_stencil`
-    and :func:`triangle_edge_stencil` (with ``self_weight``).
+    (with ``self_weight`` and the vertex ``rule``) and :func:`triangle_edge_stencil`.
 
     scheme ``"quad"``: ``[v, u_1..u_n, d_1..d_n]`` with faces ``(v, u_i, d_i, u_{i+1})`` go to
     ``[v', e_1..e_n, f_1..f_n]``: the vertex point, the edge points of ``(v, u_i)`` and the face
@@ -900,7 +1016,8 @@ def local_subdivision_matrix(valence: int, scheme: str = "triangle",
     The new ring has the same structure as the old one (v' has valence n again), so ``S^k @ ring``
     is the ring after k levels: the eigenvalues of S (:func:`local_eigenvalues`) decide how the
     surface behaves at the vertex.  Rows sum to one.
-    Raises ValueError for a valence below 3 (or beyond the work budget) or an unknown scheme.
+    Raises ValueError for a valence below 3 (or beyond the work budget), an unknown scheme or rule,
+    or a rule other than ``"centroid"`` with the quad scheme.
 
     >>> (local_subdivision_matrix(3) * 8).tolist()
     [[5.0, 1.0, 1.0, 1.0], [3.0, 3.0, 1.0, 1.0], [3.0, 1.0, 3.0, 1.0], [3.0, 1.0, 1.0, 3.0]]
@@ -909,9 +1026,11 @@ def local_subdivision_matrix(valence: int, scheme: str = "triangle",
                       unit="entries", minimum=3)
     if scheme not in ("quad", "triangle"):
         raise ValueError(f"scheme must be 'quad' or 'triangle'; got {scheme!r}")
+    if scheme == "quad" and rule != "centroid":
+        raise ValueError(f"rule {rule!r} is a vertex rule of the triangle scheme; the quad scheme has rule 'centroid' only")
     i = np.arange(n)
     if scheme == "triangle":
-        a, b = triangle_vertex_stencil(n, self_weight)
+        a, b = triangle_vertex_stencil(n, self_weight, rule)
         ea, eb = triangle_edge_stencil(self_weight)
         S = np.zeros((n + 1, n + 1))
         S[0, 0], S[0, 1:] = a, b
@@ -937,7 +1056,7 @@ def local_subdivision_matrix(valence: int, scheme: str = "triangle",
 
 
 def local_eigenvalues(valence: int, scheme: str = "triangle",
-                      self_weight: float = BOX_SPLINE_SELF_WEIGHT) -> np.ndarray:
+                      self_weight: float = BOX_SPLINE_SELF_WEIGHT, rule: str = "centroid") -> np.ndarray:
     """Eigenvalues of :func:`local_subdivision_matrix`, sorted by decreasing modulus (Goldman §30.4.2).
 
     The first is 1 (rows sum to one: the ring converges to a limit point).  The ring's shape near
@@ -950,8 +1069,103 @@ def local_eigenvalues(valence: int, scheme: str = "triangle",
     [1.0, 0.5, 0.5, 0.25]
     >>> local_eigenvalues(3).round(4).tolist()
     [1.0, 0.25, 0.25, 0.25]
+    >>> local_eigenvalues(3, rule="warren").round(4).tolist()
+    [1.0, 0.25, 0.25, 0.0625]
     """
-    S = local_subdivision_matrix(valence, scheme, self_weight)
+    S = local_subdivision_matrix(valence, scheme, self_weight, rule)
     ev = np.linalg.eigvals(S)
     ev = ev[np.lexsort((-ev.real, -np.round(np.abs(ev), 12)))]
     return ev.real
+
+
+def tangent_plane_condition(valence: int, scheme: str = "triangle", rule: str = "centroid",
+                            self_weight: float = BOX_SPLINE_SELF_WEIGHT, tol: float = 1e-9) -> bool:
+    """Whether one level around a vertex of valence n meets the eigenvalue condition for a tangent
+    plane (Goldman §30.4.2): ``1 > lambda_1 = lambda_2 > |lambda_3|`` for the eigenvalues of
+    :func:`local_subdivision_matrix` (equal and strictly larger up to ``tol``).  Necessary, not
+    sufficient: Reif's characteristic-map test is not made here.
+
+    >>> tangent_plane_condition(3), tangent_plane_condition(3, rule="loop")
+    (False, True)
+    """
+    tol = as_float(tol, "tol")
+    if not 0 <= tol < 0.5:
+        raise ValueError(f"tol must lie in [0, 0.5); got {tol}")
+    ev = np.abs(local_eigenvalues(valence, scheme, self_weight, rule))
+    return bool(abs(ev[0] - 1) <= tol and ev[1] < 1 - tol and abs(ev[1] - ev[2]) <= tol and ev[2] > ev[3] + tol)
+
+
+def valence_table(valences=range(3, 9)) -> list[dict]:
+    """The eigen-analysis of one level around an extraordinary vertex, valence by valence, for the
+    quad scheme and the triangle scheme under each vertex rule (Goldman §30.3.2, §30.4.2).
+
+    Returns one row per valence: ``{"valence": n, "quad": (l1, l2, l3, ok), "centroid": ...,
+    "warren": ..., "loop": ...}`` with the subdominant eigenvalues ``lambda_1, lambda_2, lambda_3``
+    (:func:`local_eigenvalues`) and ``ok`` the verdict of :func:`tangent_plane_condition`.
+    valences: integers >= 3 (at most 64 of them, each within the work budget of the matrix).
+
+    >>> row = valence_table([3])[0]
+    >>> row["centroid"][3], row["warren"][3], row["loop"][3], row["quad"][3]
+    (False, True, True, True)
+    """
+    ns = np.atleast_1d(_valences(valences, "valences", cost=lambda m: (2 * m + 1) ** 2,
+                                 what="the local subdivision matrix", unit="entries")).tolist()
+    if len(ns) > 64:
+        raise ValueError(f"valences must hold at most 64 valences; got {len(ns)}")
+    rows = []
+    for n in ns:
+        row = {"valence": n}
+        for key, scheme, rule in (("quad", "quad", "centroid"), ("centroid", "triangle", "centroid"),
+                                  ("warren", "triangle", "warren"), ("loop", "triangle", "loop")):
+            ev = local_eigenvalues(n, scheme, rule=rule)
+            row[key] = (float(ev[1]), float(ev[2]), float(ev[3]), tangent_plane_condition(n, scheme, rule))
+        rows.append(row)
+    return rows
+
+
+def ring_height_ratio(mesh: Mesh, vertex: int) -> float:
+    """How pointed a mesh is at a vertex: the height of the vertex above the plane of its 1-ring
+    (least-squares plane through the neighbours' centroid), over the ring's mean radius about that
+    centroid (Goldman §30.4.2, a measure for the cone of the eigen-analysis).
+
+    At a point where the limit surface has a tangent plane the ratio falls towards 0 level after
+    level (height ~ curvature r^2 against radius r); at a cone it stays.  The tetrahedron's corner:
+    sqrt(2).
+
+    >>> round(ring_height_ratio(tetrahedron(), 0), 4)
+    1.4142
+    """
+    mesh = _check_mesh(mesh)
+    v = as_int(vertex, "vertex", minimum=0, maximum=mesh.n_vertices - 1)
+    ring = mesh._vertices[mesh.neighbours(v)]
+    if mesh._vertices.shape[1] != 3:
+        raise ValueError(f"mesh must have vertices in space (d = 3) for ring_height_ratio; got d = {mesh._vertices.shape[1]}")
+    c = ring.mean(axis=0)
+    normal = np.linalg.svd(ring - c)[2][-1]
+    radius = float(np.linalg.norm(ring - c, axis=1).mean())
+    if radius == 0:
+        raise ValueError(f"mesh has a degenerate ring at vertex {v} (all its neighbours coincide)")
+    return abs(float((mesh._vertices[v] - c) @ normal)) / radius
+
+
+def cone_ratios(mesh: Mesh, levels: int, vertex: int = 0, scheme: str | None = None, rule: str = "centroid",
+                self_weight: float = BOX_SPLINE_SELF_WEIGHT) -> np.ndarray:
+    """:func:`ring_height_ratio` of one original vertex after 0, 1, ..., ``levels`` levels of
+    :func:`centroid_averaging` (old vertices keep their numbers, so vertex ``vertex`` is followed
+    through the levels).  Constant ratios mean a cone; falling ratios a tangent plane.
+    Returns ``(levels + 1,)``.  Raises as :func:`centroid_averaging` and :func:`ring_height_ratio`.
+
+    >>> cone_ratios(tetrahedron(), 3).round(4).tolist()
+    [1.4142, 1.4142, 1.4142, 1.4142]
+    >>> bool(cone_ratios(tetrahedron(), 3, rule="loop")[-1] < 0.2)
+    True
+    """
+    mesh = _check_mesh(mesh)
+    corners = int(mesh._corners.size)
+    levels = within_budget(levels, "levels", cost=lambda v: 4 ** v * corners, what="the subdivided mesh",
+                           unit="face corners", limit=MAX_ITEMS // 4)
+    out = [ring_height_ratio(mesh, vertex)]
+    for _ in range(levels):
+        mesh = centroid_averaging(mesh, 1, scheme, self_weight, rule)
+        out.append(ring_height_ratio(mesh, vertex))
+    return np.array(out)

@@ -23,7 +23,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.interpolate import BSpline
 
-from goldman_lib import bezier
+from goldman_lib import bezier, bspline
 from goldman_lib import knot_insertion as ki
 
 FAST = settings(max_examples=40, deadline=None, derandomize=True)
@@ -442,9 +442,51 @@ def cubic_blossom(spl, at, lab):
     return c[0] + c[1] * e1 / 3 + c[2] * e2 / 3 + c[3] * e3
 
 
-def test_schaefer_rejects_repeated_interior_knots():
-    with pytest.raises(ValueError, match="simple interior knots"):
-        ki.schaefer([[0, 0], [1, 1], [2, 0], [3, 1], [4, 0]], [0, 0, 0, 0.5, 0.5, 1, 1, 1], 2)
+@pytest.mark.parametrize("p, knots", [
+    (2, [0, 0, 0, 0.5, 0.5, 1, 1, 1]),                         # double knot, 2m - 1 = 3 = p + 1
+    (3, [0, 0, 0, 0, 1, 1, 2, 3, 3, 3, 3]),
+    (3, [0, 0, 0, 0, 1, 1, 1, 2, 3, 3, 3, 3]),                 # triple knot: 5 > p + 1, one point dropped
+    (3, [0, 0, 0, 0, 1, 2, 2, 2, 2, 3, 4, 4, 4, 4]),           # multiplicity p + 1: a discontinuity
+    (2, [0, 0, 0, 1, 2, 2, 2, 3, 3, 3]),
+    (5, [0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 2, 3, 3, 3, 3, 3, 3]),
+    (2, [-1, 0, 0, 1, 1, 2, 3, 3]),                            # floating ends with repeats outside and at the ends
+    (1, [0, 0, 1, 1, 2, 2]),
+])
+def test_schaefer_on_repeated_knots_is_oslo_insertion_of_the_midpoints(p, knots):
+    """Repeated knots: Schaefer's result is the Boehm/Oslo insertion of every midpoint (the midpoint
+    of a zero-length interval is the knot itself), and B-splines of zero support are dropped."""
+    knots = np.asarray(knots, float)
+    n1 = len(knots) - p - 1
+    ctrl = np.random.default_rng(n1 * 10 + p).uniform(-5, 5, (n1, 2))
+    Q, tau = ki.schaefer(ctrl, knots, p, 1)
+    assert len(Q) + p + 1 == len(tau)
+    assert np.unique(tau, return_counts=True)[1].max() <= p + 1
+    np.testing.assert_allclose(Q, ki.oslo(ctrl, knots, p, tau) if knots[0] == knots[p] and knots[-1] == knots[-p - 1]
+                               else Q, atol=1e-12)
+    # the independent route for every case: Boehm's algorithm, one midpoint at a time, on the clamped
+    # curve's knots; and the curve itself through scipy
+    if knots[0] == knots[p] and knots[-1] == knots[-p - 1]:
+        P, t = ctrl, knots
+        inner = tau[p + 1:len(tau) - p - 1]
+        extra = list(inner)
+        for x in t[p + 1:len(t) - p - 1]:
+            extra.remove(x)
+        for x in extra:
+            P, t = ki.boehm_insert(P, t, p, x)
+        np.testing.assert_allclose(t, tau)
+        np.testing.assert_allclose(Q, P, atol=1e-12)
+    same_curve(ctrl, knots, p, Q, tau, atol=1e-9)
+    steps = ki.schaefer_steps(ctrl, knots, p)
+    np.testing.assert_allclose(steps["ctrl"], Q)
+
+
+@FAST
+@given(curves(simple=False), st.integers(1, 2))
+def test_schaefer_leaves_the_curve_unchanged_with_repeated_knots(curve, levels):
+    ctrl, knots, p = curve
+    Q, tau = ki.schaefer(ctrl, knots, p, levels)
+    assert len(Q) + p + 1 == len(tau)
+    same_curve(ctrl, knots, p, Q, tau, atol=1e-8)
 
 
 # ------------------------------------------------------------------ §28.4.3 convergence
@@ -626,3 +668,17 @@ def test_intersect_at_a_knot_is_reported_once():
     assert len(points) == 1
     np.testing.assert_allclose(points[0], [1, 2], atol=1e-9)
     np.testing.assert_allclose(params[0], [0.5, 0.75], atol=1e-9)
+
+
+def test_oslo_pyramid_labels_are_blossom_arguments():
+    """Every point of every Oslo pyramid is the blossom (bspline.blossom, another route) at its label."""
+    rng = np.random.default_rng(28)
+    ctrl = rng.uniform(-3, 3, (7, 2))
+    knots = np.array([0, 0, 0, 0, 0.2, 0.5, 0.7, 1, 1, 1, 1.0])
+    tau = np.sort(np.r_[knots, [0.1, 0.35, 0.5, 0.9]])
+    for step in ki.oslo_steps(ctrl, knots, 3, tau):
+        assert step["labels"][-1][0] == tuple(step["label"].tolist())
+        for pts, labels in zip(step["levels"], step["labels"]):
+            assert len(pts) == len(labels)
+            for x, lab in zip(pts, labels):
+                np.testing.assert_allclose(x, bspline.blossom(ctrl, knots, 3, lab, span=step["span"]), atol=1e-12)

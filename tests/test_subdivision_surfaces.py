@@ -546,3 +546,124 @@ def test_local_matrix_validation():
         ss.local_subdivision_matrix(5, "loop")
     with pytest.raises(ValueError, match="valence must be <="):
         ss.local_subdivision_matrix(10 ** 6)
+
+
+# ------------------------------------------------------------------ vertex rules smooth at every valence
+
+def icosahedron():
+    """An icosahedron built independently of the library (valence 5 everywhere), outward faces."""
+    g = (1 + 5 ** 0.5) / 2
+    V = np.array([[-1, g, 0], [1, g, 0], [-1, -g, 0], [1, -g, 0], [0, -1, g], [0, 1, g],
+                  [0, -1, -g], [0, 1, -g], [g, 0, -1], [g, 0, 1], [-g, 0, -1], [-g, 0, 1]], float)
+    F = [[0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11], [1, 5, 9], [5, 11, 4], [11, 10, 2],
+         [10, 7, 6], [7, 1, 8], [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9], [4, 9, 5],
+         [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1]]
+    return ss.Mesh(V, F)
+
+
+def jittered_icosahedron():
+    m = icosahedron()
+    return m.with_vertices(m.vertices + np.random.default_rng(13).normal(scale=0.1, size=(12, 3)))
+
+
+def test_loop_weights_match_trimesh_vertex_for_vertex():
+    """One level of the triangle scheme with Loop's weights against trimesh.remesh.subdivide_loop,
+    an independent implementation of Loop's scheme with Loop's original beta."""
+    trimesh_remesh = pytest.importorskip("trimesh.remesh")
+    from scipy.spatial import cKDTree
+    meshes = {"tetrahedron": ss.tetrahedron(), "octahedron": ss.octahedron(), "icosahedron": jittered_icosahedron(),
+              "bipyramid 7": bipyramid(7)}
+    for name, mesh in meshes.items():
+        ours = ss.centroid_averaging(mesh, 1, rule="loop")
+        V, F = trimesh_remesh.subdivide_loop(mesh.vertices, mesh.faces, iterations=1)
+        assert V.shape == ours.vertices.shape, name
+        # the old vertices keep their numbers in both; the edge points come in another order: match by position
+        assert np.allclose(ours.vertices[:mesh.n_vertices], V[:mesh.n_vertices], atol=1e-12), name
+        dist, idx = cKDTree(V).query(ours.vertices)
+        assert dist.max() < 1e-12 and len(set(idx.tolist())) == len(V), name
+        # and the same triangles, once the numbering is translated
+        ours_tris = {tuple(sorted(idx[t].tolist())) for t in ours.faces}
+        assert ours_tris == {tuple(sorted(t)) for t in F.tolist()}, name
+        # the book's rule differs from Loop's wherever beta differs (every valence but 6)
+        plain = ss.centroid_averaging(mesh, 1)
+        assert not np.allclose(plain.vertices[:mesh.n_vertices], V[:mesh.n_vertices]), name
+
+
+@pytest.mark.parametrize("n", [3, 4, 5, 6, 7, 8, 12])
+def test_loop_and_warren_beta_by_hand(n):
+    # Loop's formula as trimesh writes it, simplified: (40 - (2 cos(2 pi/n) + 3)^2) / (64 n)
+    assert ss.loop_beta(n) == pytest.approx((40 - (2 * np.cos(2 * np.pi / n) + 3) ** 2) / (64 * n), abs=1e-15)
+    assert ss.warren_beta(n) == pytest.approx(3 / 16 if n == 3 else 3 / (8 * n))
+    a, b = ss.triangle_vertex_stencil(n, rule="loop")
+    assert b == pytest.approx(ss.loop_beta(n)) and a + n * b == pytest.approx(1)
+    # the book's rule is Warren's above valence 3
+    assert (ss.triangle_vertex_stencil(n, rule="warren") == pytest.approx(ss.triangle_vertex_stencil(n))) == (n != 3)
+    np.testing.assert_allclose(ss.loop_beta(np.array([n, 6])), [ss.loop_beta(n), 1 / 16])
+
+
+@pytest.mark.parametrize("n", [3, 4, 5, 6, 7, 8, 11])
+def test_loop_eigenvalues_by_hand(n):
+    """Loop's choice: the Fourier modes 3/8 + 1/4 cos(2 pi k/n) of the ring and the centre's
+    5/8 - n beta; the subdominant pair 3/8 + 1/4 cos(2 pi/n) lies strictly above all the rest."""
+    for rule, beta in (("loop", ss.loop_beta(n)), ("warren", ss.warren_beta(n))):
+        modes = sorted([1.0, 5 / 8 - n * beta] + [3 / 8 + np.cos(2 * np.pi * k / n) / 4 for k in range(1, n)],
+                       key=lambda x: -abs(x))
+        np.testing.assert_allclose(ss.local_eigenvalues(n, rule=rule), modes, atol=1e-12)
+        assert ss.tangent_plane_condition(n, rule=rule)
+    assert ss.tangent_plane_condition(n) == (n != 3)
+    assert ss.tangent_plane_condition(n, "quad")
+
+
+def test_local_matrix_with_a_rule_is_the_stencils_of_a_closed_mesh():
+    for n in (3, 5, 7):
+        mesh = bipyramid(n)
+        for rule in ("loop", "warren"):
+            new = ss.apply_stencils(mesh, rule=rule)
+            assert np.allclose(new, ss.centroid_averaging(mesh, 1, rule=rule).vertices, atol=1e-12)
+            us, _, _ = _ring(mesh, 0)
+            got = ss.local_subdivision_matrix(n, rule=rule) @ mesh.vertices[[0] + us]
+            want = np.vstack([new[0]] + [new[mesh.n_vertices + _edge_index(mesh, 0, u)] for u in us])
+            assert np.allclose(got, want, atol=1e-12)
+
+
+def test_valence_table_and_cone_ratios():
+    rows = ss.valence_table(range(3, 9))
+    assert [r["valence"] for r in rows] == list(range(3, 9))
+    assert [r["centroid"][3] for r in rows] == [False] + [True] * 5
+    assert all(r["warren"][3] and r["loop"][3] and r["quad"][3] for r in rows)
+    # the cone of the book's rule on the tetrahedron: height over ring radius sqrt(2) at every level;
+    # Loop and Warren (the same beta = 3/16 at valence 3) flatten it by lambda_3 / lambda_1 = 1/4 a level
+    np.testing.assert_allclose(ss.cone_ratios(ss.tetrahedron(), 4), 2 ** 0.5, atol=1e-12)
+    for rule in ("loop", "warren"):
+        r = ss.cone_ratios(ss.tetrahedron(), 4, rule=rule)
+        np.testing.assert_allclose(r[2:] / r[1:-1], 0.25, atol=1e-9)
+    # the octahedron (valence 4) flattens under every rule; the cube under the quad scheme
+    for rule in ss.VERTEX_RULES:
+        r = ss.cone_ratios(ss.octahedron(), 4, rule=rule)
+        assert (np.diff(r) < 0).all()
+    assert (np.diff(ss.cone_ratios(ss.cube(), 4)) < 0).all()
+
+
+def test_rule_argument_rules():
+    with pytest.raises(ValueError, match="rule must be one of"):
+        ss.centroid_averaging(ss.tetrahedron(), 1, rule="butterfly")
+    with pytest.raises(ValueError, match="quad scheme has rule 'centroid' only"):
+        ss.centroid_averaging(ss.cube(), 1, rule="loop")
+    with pytest.raises(ValueError, match="quad scheme has rule 'centroid' only"):
+        ss.local_subdivision_matrix(4, "quad", rule="warren")
+    with pytest.raises(ValueError, match="self_weight must be 0.25"):
+        ss.centroid_averaging(ss.tetrahedron(), 1, self_weight=1 / 3, rule="loop")
+    with pytest.raises(ValueError, match="valence must be >= 3"):
+        ss.loop_beta(2)
+    with pytest.raises(ValueError, match=r"valence\[0\] must be >= 3"):
+        ss.warren_beta(np.array([2, 3]))
+    with pytest.raises(TypeError, match="valences must be"):
+        ss.valence_table([[3], [4, 5]])
+    with pytest.raises(ValueError, match="d = 3"):
+        ss.ring_height_ratio(ss.quad_grid(np.zeros((3, 3, 2))), 4)
+    # an open mesh: the boundary vertices keep the averaging's points, the interior ones move by the rule
+    grid = ss.triangle_grid(np.random.default_rng(3).normal(size=(4, 4, 3)))
+    plain, loop = ss.centroid_averaging(grid, 1), ss.centroid_averaging(grid, 1, rule="loop")
+    b = grid.boundary_vertices
+    assert np.allclose(plain.vertices[:16][b], loop.vertices[:16][b])
+    assert np.allclose(plain.vertices[16:], loop.vertices[16:])

@@ -114,3 +114,27 @@ def test_render_view_draws_near_the_curve_and_marks_true_intersections(method, s
     yb = np.interp(x, ob[:, 0], ob[:, 1])
     diff = BSpline(T, P, D)(ua)[:, 1] - yb
     assert len(result["points"]) == int(np.count_nonzero(np.sign(diff[1:]) != np.sign(diff[:-1])))
+
+
+def test_figures_carry_the_library_blossom_labels():
+    """Boehm, Oslo and Schaefer figures write the blossom labels from the library beside the points."""
+    from goldman_lib import bspline
+    boehm = views.boehm_view()
+    r = boehm.set_values(u=0.4, times=1)
+    labels = bspline.control_point_labels(r["knots"], views.DEFAULT_DEGREE)
+    assert r["new_labels"] == [labels[i] for i in range(2, 5)] and len(r["replaced_labels"]) == 2
+    texts = [t.get_text() for t in boehm.figure.axes[0].texts]
+    assert "b(0.25, 0.4, 0.5)" in texts and "b(0, 0.25, 0.5)" in texts
+    oslo = views.oslo_view()
+    r = oslo.set_values(count=4, step=3)
+    assert r["labels"][-1] == [tuple(r["label"].tolist())]
+    texts = [t.get_text() for t in oslo.figure.axes[0].texts]
+    assert "b(" + ", ".join(f"{x:.3g}" for x in r["label"]) + ")" in texts
+    sub = views.subdivision_view()
+    r = sub.set_values(algorithm="Schaefer (clamped)", degree=3, level=1, round=2)
+    want = ki.schaefer_labels(bspline.clamped_knots(len(views.DEFAULT_POLYGON), 3), 3, 2)
+    assert r["labels"] == want and len(sub.figure.axes[0].texts) == len(want)
+    # Lane-Riesenfeld's rounds are lower-degree splines: no labels; many points: no labels drawn
+    assert sub.set_values(algorithm="Lane-Riesenfeld (uniform)")["labels"] == []
+    sub.set_values(algorithm="Schaefer (clamped)", level=3)
+    assert len(sub.figure.axes[0].texts) == 0

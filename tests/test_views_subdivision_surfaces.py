@@ -58,3 +58,27 @@ def test_factories_reject_bad_arguments():
         views.subdivision_viewer(scheme="loop")
     with pytest.raises(ValueError, match="level must be <= 4"):
         views.subdivision_viewer(level=7)
+
+
+def test_viewer_rule_picker_draws_the_library_rule():
+    view = views.subdivision_viewer(mesh="tetrahedron", scheme="triangle", level=2)
+    for rule in ss.VERTEX_RULES:
+        result = view.set_values(rule=rule)
+        expected = ss.centroid_averaging(ss.tetrahedron(), 2, scheme="triangle", rule=rule)
+        np.testing.assert_allclose(result["vertices"], expected.vertices)
+        assert f"({rule} vertex rule)" in result["status"]
+    # the quad scheme has one rule: the picker leaves it alone and says so
+    quad = view.set_values(scheme="quad", rule="loop")
+    np.testing.assert_allclose(quad["vertices"], ss.centroid_averaging(ss.tetrahedron(), 2, scheme="quad").vertices)
+    assert "vertex rules are the triangle scheme's" in quad["status"]
+    with pytest.raises(ValueError, match="rule must be one of"):
+        views.subdivision_viewer(rule="butterfly")
+
+
+def test_cone_pictures_are_the_library_ratios():
+    ratios = views.plot_cone_ratios(3)
+    assert set(ratios) == set(views.CONE_CASES)
+    for label, (make, scheme, rule) in views.CONE_CASES.items():
+        np.testing.assert_allclose(ratios[label], ss.cone_ratios(make(), 3, 0, scheme=scheme, rule=rule))
+    fig = views.plot_rule_comparison(level=2)
+    assert len(fig.axes) == len(ss.VERTEX_RULES)

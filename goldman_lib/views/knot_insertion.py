@@ -7,7 +7,7 @@ Plot functions take ``ax=None`` and return their artists; widget factories retur
 
 >>> view = subdivision_view()
 >>> sorted(view.update(**view.values()))
-['curve', 'distance', 'polygon', 'status']
+['curve', 'distance', 'labels', 'polygon', 'status']
 """
 
 from __future__ import annotations
@@ -70,6 +70,27 @@ def _polygon_gap(Q, p, closed=False, knots=None) -> float:
     return float(np.linalg.norm(ext[inside] - C, axis=1).max())
 
 
+_LABEL_LIMIT = 16      # more points than this get no blossom labels (they would overlap)
+
+
+def _label_text(label) -> str:
+    """``b(0.25, 0.5, 0.5)``: a blossom label as the book writes it (arguments to 3 digits)."""
+    return "b(" + ", ".join(f"{float(x):.3g}" for x in label) + ")"
+
+
+def _put_labels(ax, store: list, points, labels, colour, offset=(5, 5), ha="left"):
+    """Write the blossom labels beside the points (appending the texts to ``store``)."""
+    for q, lab in zip(np.asarray(points, dtype=float).reshape(-1, 2), labels):
+        store.append(ax.annotate(_label_text(lab), (float(q[0]), float(q[1])), textcoords="offset points",
+                                 xytext=offset, fontsize=6.5, color=colour, ha=ha, zorder=6))
+
+
+def _clear_labels(store: list):
+    for text in store:
+        text.remove()
+    store.clear()
+
+
 def _limits(ax, pts, pad=0.4):
     ax.set_xlim(pts[:, 0].min() - pad, pts[:, 0].max() + pad)
     ax.set_ylim(pts[:, 1].min() - pad, pts[:, 1].max() + pad)
@@ -129,8 +150,11 @@ def boehm_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT_
     """Step through Boehm's algorithm (Goldman §28.3.1): pick the knot ``u`` to insert and how
     many times; the view shows the old polygon, the new one, the p-1 old points that are replaced
     (crossed out) and the p new points on the old legs.  The curve does not move.
+    Beside the new points stand their blossom labels (the new knots ``tau_{i+1..i+p}``), beside
+    the replaced points their old labels.
 
-    ``update(u, times)`` returns the new polygon, the replaced and the new points, and the curve.
+    ``update(u, times)`` returns the new polygon, the replaced and the new points with their labels,
+    and the curve.
     Inserting more often than the multiplicity rule allows (at most degree+1 equal knots) stops
     at the limit and says so.
     """
@@ -151,6 +175,7 @@ def boehm_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT_
     ax.legend(loc="lower right", fontsize=7, frameon=False)
     _limits(ax, np.vstack([ctrl, crv]))
     ax.set_title("Boehm's algorithm", fontsize=10)
+    texts: list = []
 
     def update(u, times):
         u = float(min(max(u, lo), hi))
@@ -167,11 +192,17 @@ def boehm_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT_
         fresh.set_data(new[:, 0], new[:, 1])
         c = bspline.de_boor(ctrl, knots, p, u)
         at_u.set_data([c[0]], [c[1]])
+        _clear_labels(texts)
+        new_labels = [bspline.control_point_labels(last["knots"], p)[i] for i in last["new"]] if allowed else []
+        old_labels = [bspline.control_point_labels(steps[-2]["knots"], p)[i] for i in last["replaced"]] if allowed else []
+        _put_labels(ax, texts, new, new_labels, style.PALETTE["good"], (9, -3))
+        _put_labels(ax, texts, gone, old_labels, style.PALETTE["point"], (-9, -3), ha="right")
         note = "" if allowed == int(times) else f" (u already has multiplicity {s}: at most {p + 1 - s} more)"
         alphas = ", ".join(f"{a:.2f}" for a in last["alphas"]) if allowed else "-"
         status = (f"insert u = {u:.2f} x{allowed}{note}: {len(ctrl)} -> {len(Q)} points; "
                   f"last step replaced {len(gone)} point(s) by {len(new)}, weights a_i = [{alphas}]")
-        return {"polygon": Q, "replaced": gone, "new": new, "curve": crv, "knots": last["knots"], "status": status}
+        return {"polygon": Q, "replaced": gone, "new": new, "curve": crv, "knots": last["knots"], "status": status,
+                "new_labels": new_labels, "replaced_labels": old_labels}
 
     controls = {"u": float_slider("u", u, float(lo), float(hi), 0.01),
                 "times": int_slider("times", times, 0, p + 1)}
@@ -186,8 +217,12 @@ def oslo_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT_D
     view draws its de Boor pyramid with the new knots as arguments (the blossom
     ``b(tau_{j+1}, ..., tau_{j+p})``), the new points computed so far, and the old polygon.
 
+    Every point of the pyramid carries its blossom label (from
+    :func:`goldman_lib.knot_insertion.oslo_steps`): the old points their knots, each level one more
+    new knot.
+
     ``update(count, step)`` returns the new polygon, the points done so far, the pyramid levels
-    and the label of ``Q_j``.
+    with their labels and the label of ``Q_j``.
     """
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
     p = as_int(degree, "degree", minimum=1)
@@ -205,6 +240,7 @@ def oslo_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT_D
     (current,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=10, zorder=5)
     _limits(ax, np.vstack([ctrl, crv]))
     ax.set_title("the Oslo algorithm: every new point is a blossom value", fontsize=10)
+    texts: list = []
 
     def new_knots(count):
         extra = lo + (hi - lo) * (np.arange(1, count + 1) / (count + 1))
@@ -224,11 +260,23 @@ def oslo_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT_D
             line.set_data(pts[:, 0], pts[:, 1])
         q = steps[j]["point"]
         current.set_data([q[0]], [q[1]])
+        _clear_labels(texts)
+        # Q_j first, then the old points, then the levels between; a label whose point crowds one
+        # already labelled is left out of the picture (it stays in update()["labels"])
+        placed = []
+        room = 0.06 * float(np.ptp(ax.get_xlim()))
+        for r in [p] + list(range(p)):
+            colour = "#555555" if r == 0 else style.PALETTE["point"] if r == p else style.level_colour(r)
+            offset, ha = ((9, 6), "left") if r == p else ((-7, 5), "right") if r % 2 else ((7, -8), "left")
+            for pt, lab in zip(pyramid[r], steps[j]["labels"][r]):
+                if all(np.hypot(*(pt - o)) > room for o in placed):
+                    placed.append(pt)
+                    _put_labels(ax, texts, pt, [lab], colour, offset, ha)
         label = ", ".join(f"{x:.2f}" for x in steps[j]["label"])
         status = (f"{count} new knots: {len(ctrl)} -> {len(Q)} points. Q_{j} = b({label}) "
                   f"from P_{steps[j]['span'] - p}..P_{steps[j]['span']} = ({q[0]:.3f}, {q[1]:.3f})")
         return {"polygon": Q, "done": Q[:j + 1], "levels": pyramid, "point": q, "label": steps[j]["label"],
-                "knots": tau, "status": status}
+                "labels": steps[j]["labels"], "knots": tau, "status": status}
 
     n_max = len(ctrl) + max_count - 1
     controls = {"count": int_slider("knots", count, 1, max_count),
@@ -248,9 +296,12 @@ def subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: 
     round 0 is the doubled polygon, round r after r averaging steps (round = degree is the level
     finished).  Three algorithms: Lane-Riesenfeld on an open uniform curve, on a closed (periodic)
     one, and Schaefer's on the clamped curve with uniform interior knots.  The status line shows
-    the distance of the polygon to the curve (§28.4.3), which drops by about 4 per level.
+    the distance of the polygon to the curve (§28.4.3), which drops by about 4 per level.  For
+    Schaefer's algorithm every point drawn is a blossom value of the curve, and while there are at
+    most 16 points its label stands beside it (:func:`goldman_lib.knot_insertion.schaefer_labels`).
 
-    ``update(algorithm, degree, level, round)`` returns the polygon drawn, the curve and the distance.
+    ``update(algorithm, degree, level, round)`` returns the polygon drawn, the curve, the distance
+    and the labels (empty for Lane-Riesenfeld).
     """
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
     max_degree = as_int(max_degree, "max_degree", minimum=1, maximum=len(ctrl) - 1)
@@ -269,6 +320,7 @@ def subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: 
     _limits(ax, ctrl)
     ax.set_title("subdivision = inserting every midpoint", fontsize=10)
     cache: dict = {}
+    texts: list = []
 
     def curve_of(alg, p):
         key = ("curve", alg, p)
@@ -302,9 +354,16 @@ def subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: 
             if L >= 1:
                 steps = ki.schaefer_steps(before, tk, p)
                 rounds, knots_now = steps["rounds"], steps["knots"]
+                round_labels = steps["labels"]
             else:
                 rounds, knots_now = [before], tk
+                round_labels = [bspline.control_point_labels(tk, p)]
         P = rounds[min(r, len(rounds) - 1)]
+        labels = round_labels[min(r, len(rounds) - 1)] if not alg.startswith("Lane") else []
+        _clear_labels(texts)
+        if len(labels) <= _LABEL_LIMIT:
+            for k, (pt, lab) in enumerate(zip(P, labels)):
+                _put_labels(ax, texts, pt, [lab], "#7a4a00", (4, 5) if k % 2 else (4, -10))
         finished = rounds[-1]
         shown = np.vstack([P, P[:1]]) if closed else P
         poly.set_data(shown[:, 0], shown[:, 1])
@@ -318,7 +377,7 @@ def subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: 
         else:
             dist_text = f"farthest control point {d:.4f} from the curve"
         status = f"{alg}, degree {p}, level {L}: {len(P)} points; {dist_text}"
-        return {"polygon": P, "curve": crv, "distance": d, "status": status}
+        return {"polygon": P, "curve": crv, "distance": d, "status": status, "labels": labels}
 
     controls = {"algorithm": widgets.Dropdown(options=list(_ALGORITHMS), value=algorithm, description="algorithm",
                                               style={"description_width": "70px"},

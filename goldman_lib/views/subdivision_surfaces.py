@@ -20,7 +20,8 @@ from goldman_lib.views.interactive import InteractiveView, figure_widget, int_sl
 from goldman_lib.views.three import SceneView
 
 __all__ = ["MESHES", "DEFAULT_POLYGON", "plot_polygon_levels", "plot_mesh", "plot_quad_stencils",
-           "plot_triangle_stencils", "split_and_average_view", "subdivision_viewer"]
+           "plot_triangle_stencils", "plot_cone_ratios", "plot_rule_comparison", "split_and_average_view",
+           "subdivision_viewer", "CONE_CASES"]
 
 #: The meshes of the viewer, by the name the picker shows.
 MESHES = {
@@ -148,6 +149,53 @@ def plot_triangle_stencils(valence: int = 6, ax=None, self_weight: float = ss.BO
     return ax
 
 
+#: The cases of :func:`plot_cone_ratios`: label -> (mesh factory, scheme, vertex rule).
+CONE_CASES = {
+    "tetrahedron, book's rule (valence 3)": (ss.tetrahedron, "triangle", "centroid"),
+    "tetrahedron, Warren = Loop at valence 3": (ss.tetrahedron, "triangle", "loop"),
+    "octahedron, book's rule = Warren (valence 4)": (ss.octahedron, "triangle", "centroid"),
+    "octahedron, Loop (valence 4)": (ss.octahedron, "triangle", "loop"),
+    "cube, quad scheme (valence 3)": (ss.cube, "quad", "centroid"),
+}
+
+
+def plot_cone_ratios(levels: int = 6, ax=None, cases=None):
+    """The cone made visible (Goldman §30.4.2): for an original vertex, the height above its 1-ring
+    over the ring's radius (:func:`goldman_lib.subdivision_surfaces.cone_ratios`) level after level,
+    on a log scale, for the meshes and rules of :data:`CONE_CASES`.  A flat line is a cone that
+    never flattens; a falling line a tangent plane.  Returns ``{label: ratios}``."""
+    levels = as_int(levels, "levels", minimum=1, maximum=7)
+    ax = style.get_axes(ax)
+    cases = CONE_CASES if cases is None else cases
+    out = {}
+    styles = ["o-", "s--", "^-", "v--", "d-"]
+    for k, (label, (make, scheme, rule)) in enumerate(cases.items()):
+        r = ss.cone_ratios(make(), levels, 0, scheme=scheme, rule=rule)
+        out[label] = r
+        ax.semilogy(np.arange(levels + 1), r, styles[k % len(styles)], color=style.level_colour(k + 1),
+                    markersize=5, linewidth=1.5, label=label)
+    ax.set_xlabel("level")
+    ax.set_ylabel("height above the 1-ring / ring radius")
+    ax.set_title("a cone keeps its ratio; a tangent plane drives it to 0", fontsize=10)
+    ax.legend(fontsize=7, frameon=False, loc="lower left")
+    return out
+
+
+def plot_rule_comparison(mesh: ss.Mesh | None = None, level: int = 4, fig=None, control: bool = False):
+    """The same triangle mesh (default: the tetrahedron) after ``level`` levels under each vertex
+    rule of :data:`~goldman_lib.subdivision_surfaces.VERTEX_RULES`, side by side (with the control
+    mesh if ``control``); the book's rule keeps the corners of valence 3 pointed.  Returns the figure."""
+    mesh = ss.tetrahedron() if mesh is None else mesh
+    level = as_int(level, "level", minimum=0, maximum=5)
+    fig = style.new_figure(figsize=style.WIDE_FIGSIZE) if fig is None else fig
+    names = {"centroid": "book's rule 5/8, 3/(8n)", "warren": "Warren: 3/16 at n = 3", "loop": "Loop's beta(n)"}
+    for k, rule in enumerate(ss.VERTEX_RULES):
+        ax = fig.add_subplot(1, len(ss.VERTEX_RULES), k + 1, projection="3d")
+        plot_mesh(ss.centroid_averaging(mesh, level, "triangle", rule=rule), ax, control=mesh if control else None)
+        ax.set_title(f"{names[rule]}\nlevel {level}", fontsize=9)
+    return fig
+
+
 # -- widgets ------------------------------------------------------------------------------------
 def split_and_average_view(ctrl=DEFAULT_POLYGON, degree: int = 3, levels: int = 3, max_degree: int = 6,
                            max_levels: int = 6) -> InteractiveView:
@@ -184,14 +232,16 @@ def split_and_average_view(ctrl=DEFAULT_POLYGON, degree: int = 3, levels: int = 
 
 
 def subdivision_viewer(mesh: str = "cube", scheme: str = "quad", level: int = 2, max_level: int = 4,
-                       width: int = 480, height: int = 360) -> InteractiveView:
+                       width: int = 480, height: int = 360, rule: str = "centroid") -> InteractiveView:
     """A three.js view of centroid averaging (Goldman §30.3-30.4): pick a mesh, a scheme (quad or
     triangle) and a level; the subdivided mesh is drawn over its control mesh (grey segments).
 
-    The triangle scheme triangulates a mesh with other faces first.  Levels are computed once and
-    cached, so moving the slider only swaps the geometry (:meth:`SceneView.replace_mesh`).
-    ``update(mesh, scheme, level)`` returns the drawn vertices and triangles, the control-mesh
-    segments and ``V - E + F``.
+    The triangle scheme triangulates a mesh with other faces first, and moves the old vertices by
+    the vertex ``rule`` picked (:data:`~goldman_lib.subdivision_surfaces.VERTEX_RULES`: the book's
+    centroid rule, Warren's or Loop's weights; the quad scheme has one rule).  Levels are computed
+    once and cached, so moving the slider only swaps the geometry (:meth:`SceneView.replace_mesh`).
+    ``update(mesh, scheme, level, rule="centroid")`` returns the drawn vertices and triangles, the
+    control-mesh segments and ``V - E + F``.
     """
     import ipywidgets as widgets
 
@@ -199,32 +249,37 @@ def subdivision_viewer(mesh: str = "cube", scheme: str = "quad", level: int = 2,
         raise ValueError(f"mesh must be one of {sorted(MESHES)}; got {mesh!r}")
     if scheme not in ("quad", "triangle"):
         raise ValueError(f"scheme must be 'quad' or 'triangle'; got {scheme!r}")
+    if rule not in ss.VERTEX_RULES:
+        raise ValueError(f"rule must be one of {ss.VERTEX_RULES}; got {rule!r}")
     max_level = as_int(max_level, "max_level", minimum=1, maximum=5)
     level = as_int(level, "level", minimum=0, maximum=max_level)
     controls_mesh = {name: make() for name, make in MESHES.items()}
     cache: dict[tuple, ss.Mesh] = {}
 
-    def subdivided(name, sch, lvl):
-        key = (name, sch, lvl)
+    def subdivided(name, sch, lvl, rl="centroid"):
+        rl = rl if sch == "triangle" else "centroid"
+        key = (name, sch, lvl, rl)
         if key not in cache:
             if lvl == 0:
                 base = controls_mesh[name]
                 cache[key] = ss.triangulate(base) if sch == "triangle" else base
             else:
-                cache[key] = ss.centroid_averaging(subdivided(name, sch, lvl - 1), 1, scheme=sch)
+                cache[key] = ss.centroid_averaging(subdivided(name, sch, lvl - 1, rl), 1, scheme=sch, rule=rl)
         return cache[key]
 
     scene = SceneView(width=width, height=height, camera_position=(3.2, -4.2, 3.0), target=(0.0, 0.0, 0.0), axes=0)
-    first = subdivided(mesh, scheme, level)
+    first = subdivided(mesh, scheme, level, rule)
     ctrl = subdivided(mesh, scheme, 0)
     scene.add_mesh("surface", first.vertices, first.triangles(), color=style.PALETTE["surface"])
     scene.add_segments("control mesh", ctrl.vertices, ctrl.edges, color="#444444")
 
-    def update(mesh, scheme, level):
+    def update(mesh, scheme, level, rule="centroid"):
         level = as_int(level, "level", minimum=0, maximum=max_level)
         if mesh not in MESHES:
             raise ValueError(f"mesh must be one of {sorted(MESHES)}; got {mesh!r}")
-        m = subdivided(mesh, scheme, level)
+        if rule not in ss.VERTEX_RULES:
+            raise ValueError(f"rule must be one of {ss.VERTEX_RULES}; got {rule!r}")
+        m = subdivided(mesh, scheme, level, rule)
         c = subdivided(mesh, scheme, 0)
         V, T = m.vertices, m.triangles()
         scene.replace_mesh("surface", V, T)
@@ -233,8 +288,10 @@ def subdivision_viewer(mesh: str = "cube", scheme: str = "quad", level: int = 2,
         odd = [f"{int(k)}" for k in np.flatnonzero(counts) if k != (4 if scheme == "quad" else 6)]
         extra = f"; extraordinary valences {', '.join(odd)}" if odd else "; no extraordinary vertices"
         euler = m.euler_characteristic()
+        how = (f"triangle scheme ({rule} vertex rule)" if scheme == "triangle" else
+               "quad scheme" + ("" if rule == "centroid" else " (vertex rules are the triangle scheme's)"))
         return {"vertices": V, "triangles": T, "control": c.vertices[c.edges], "euler": euler,
-                "status": f"{scheme} scheme, level {level}: V={m.n_vertices}, E={m.n_edges}, F={m.n_faces}, "
+                "status": f"{how}, level {level}: V={m.n_vertices}, E={m.n_edges}, F={m.n_faces}, "
                           f"V-E+F={euler}{extra}"}
 
     controls = {
@@ -243,6 +300,8 @@ def subdivision_viewer(mesh: str = "cube", scheme: str = "quad", level: int = 2,
         "scheme": widgets.ToggleButtons(options=["quad", "triangle"], value=scheme, description="scheme",
                                         style={"description_width": "48px", "button_width": "80px"}),
         "level": int_slider("level", level, 0, max_level),
+        "rule": widgets.ToggleButtons(options=list(ss.VERTEX_RULES), value=rule, description="rule",
+                                      style={"description_width": "48px", "button_width": "80px"}),
     }
     view = InteractiveView(controls=controls, views=[scene.widget], update=update, static=scene.to_png,
                            title="centroid averaging", side=True)
