@@ -31,8 +31,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import affine
-from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_int, as_points, as_tolerance, check_finite,
-                         within_budget, finite_result)
+from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points, as_tolerance,
+                         check_finite, finite_result, within_budget)
 
 __all__ = ["MAX_PAIRS", "Convergence", "ConvergenceError", "fixed_point_iteration", "newton", "newton_steps", "jacobi",
            "gauss_seidel", "is_diagonally_dominant", "contraction_factor", "hausdorff_distance",
@@ -123,7 +123,7 @@ def fixed_point_iteration(F, x0, *, tol: float = 1e-12, max_iter: int = 1000, fu
     0.7390851332
     """
     F = _callable(F, "F")
-    x = check_finite(as_float_array_x0(x0), "x0")
+    x = check_finite(_as_x0(x0), "x0")
     scalar = x.ndim == 0
     if x.size == 0:
         raise ValueError(f"x0 must hold at least one number; got shape {x.shape}")
