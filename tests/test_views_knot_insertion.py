@@ -37,7 +37,7 @@ def test_boehm_view_with_multiplicity_limit_says_so():
     assert "at most 3 more" in result["status"]
 
 
-@pytest.mark.parametrize("count,step", [(1, 0), (4, 3), (8, 14), (3, 100)])
+@pytest.mark.parametrize("count,step", [(1, 0), (4, 3), (8, 14), (3, 14)])
 def test_oslo_view_draws_the_refined_polygon_and_a_pyramid(count, step):
     result = views.oslo_view().update(count=count, step=step)
     tau = result["knots"]
@@ -45,6 +45,11 @@ def test_oslo_view_draws_the_refined_polygon_and_a_pyramid(count, step):
     same_curve(P, T, D, result["polygon"], tau)
     np.testing.assert_allclose(result["done"][-1], result["point"])
     assert [len(lv) for lv in result["levels"]] == [D + 1, D, D - 1, 1][:D + 1]
+
+
+def test_oslo_view_refuses_a_step_its_slider_cannot_reach():
+    with pytest.raises(ValueError, match=r"step must be <= 14; got 100"):
+        views.oslo_view().update(count=3, step=100)
 
 
 @pytest.mark.parametrize("p", [1, 2, 3, 5])

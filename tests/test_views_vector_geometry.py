@@ -3,6 +3,7 @@ closest points of two lines, the point of three planes, the volumes, the winding
 polygon (also when its points are dragged with the mouse) and slerp beside nlerp; degenerate
 positions are reported in the status line, never raised."""
 
+import inspect
 import time
 
 import numpy as np
@@ -27,7 +28,7 @@ def test_point_plane_view_draws_the_foot_and_the_perpendicular():
 
 def _scene(view):
     """The VectorScene behind a three.js view (its renderer is the first displayed widget)."""
-    for cell in view.update.__closure__:
+    for cell in inspect.unwrap(view.update).__closure__:
         obj = cell.cell_contents
         if hasattr(obj, "data") and hasattr(obj, "set_points"):
             return obj

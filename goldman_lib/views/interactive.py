@@ -31,6 +31,7 @@ import ipywidgets as widgets
 import numpy as np
 
 __all__ = ["InteractiveView", "figure_widget", "figure_png", "control_grid", "float_slider", "int_slider",
+           "check_control_values",
            "discover_factories"]
 
 
@@ -130,7 +131,7 @@ class InteractiveView(widgets.VBox):
                  figure=None, static: Callable[[], bytes] | None = None, title: str = "",
                  side: bool = False, extra: list | None = None, arrange: list | None = None):
         self.controls = dict(controls)
-        self.update = update
+        self.update = _checked(update, self.controls)
         self.figure = figure
         self._static = static
         self.title = title
@@ -230,6 +231,44 @@ class InteractiveView(widgets.VBox):
             data["image/png"] = base64.b64encode(png).decode("ascii")
         data["text/plain"] = f"[interactive view{': ' + self.title if self.title else ''}; run the notebook to use it]"
         return data
+
+
+def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping) -> None:
+    """Raise ValueError/TypeError naming the control if a value is one its widget cannot hold: a
+    number outside a slider's range (or not a finite real number), an option a picker does not
+    offer.  Values set through the widgets always pass; values passed to ``update`` by code (a
+    notebook, a test, a saved state) are checked here before any work starts (issue 10).
+
+    >>> check_control_values({"t": float_slider("t", 0.5, 0.0, 1.0)}, {"t": 2.0})
+    Traceback (most recent call last):
+    ...
+    ValueError: t must lie in [0, 1]; got 2
+    """
+    from goldman_lib.views import _checks
+
+    for name, value in values.items():
+        w = controls.get(name)
+        if w is None:
+            continue
+        if isinstance(w, (widgets.IntSlider, widgets.BoundedIntText)):
+            _checks.integer(value, name, w.min, w.max)
+        elif isinstance(w, (widgets.FloatSlider, widgets.BoundedFloatText)):
+            _checks.number(value, name, w.min, w.max)
+        elif isinstance(w, (widgets.Dropdown, widgets.ToggleButtons, widgets.RadioButtons, widgets.SelectionSlider)):
+            _checks.option([v for _, v in _options(w)], value, name)
+
+
+def _checked(update: Callable[..., dict], controls: Mapping[str, widgets.Widget]) -> Callable[..., dict]:
+    """``update`` with its keyword values checked by :func:`check_control_values` first."""
+    import functools
+
+    @functools.wraps(update)
+    def checked(*args, **values):
+        check_control_values(controls, values)
+        return update(*args, **values)
+
+    checked.unchecked = update
+    return checked
 
 
 def discover_factories() -> list[tuple[str, Callable[[], "InteractiveView"]]]:
