@@ -34,6 +34,7 @@ import math
 
 import numpy as np
 
+from goldman_lib import affine, transforms
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points,
                                      finite_result, within_budget)
 
@@ -121,14 +122,6 @@ def _bernstein_rows(n: int, t: np.ndarray) -> np.ndarray:
     tp *= binom[:, None]
     tp *= sp[::-1]
     return tp
-
-
-def _falling(n: int, r: int) -> int:
-    """n (n-1) ... (n-r+1)."""
-    out = 1
-    for j in range(r):
-        out *= n - j
-    return out
 
 
 # --------------------------------------------------------------------------------------------
@@ -312,7 +305,7 @@ def derivative(ctrl, t, order=1) -> np.ndarray:
     n = P.shape[0] - 1
     if order > n:
         return np.zeros(t.shape + (P.shape[1],))
-    D = np.diff(P, n=order, axis=0) * float(_falling(n, order)) if order else P
+    D = np.diff(P, n=order, axis=0) * float(math.perm(n, order)) if order else P
     return finite_result(_curve_points(D, t), "t", t)
 
 
@@ -449,7 +442,7 @@ def join_continuity(a, b, tol=1e-9, ratio=1.0) -> dict[str, bool]:
         n = P.shape[0] - 1
         if r > n:
             return np.zeros(P.shape[1])
-        D = np.diff(P, n=r, axis=0) * float(_falling(n, r))
+        D = np.diff(P, n=r, axis=0) * float(math.perm(n, r))
         return D[-1] if end else D[0]
 
     c0 = close(A[-1], B[0])
@@ -616,11 +609,12 @@ def apply_affine(points, M) -> np.ndarray:
     """Apply an affine map in the book's row-vector convention, ``Q = [P, 1] @ M`` (Goldman §24.4).
 
     Affine invariance (§24.4): the Bezier curve of the mapped control points is the mapped
-    Bezier curve.  (Kept here with the property it illustrates until a transformations module
-    exists.)
+    Bezier curve.  One rule with the transformation modules: planar points go to
+    :func:`goldman_lib.affine.apply` (chapter 4), points in space to
+    :func:`goldman_lib.transforms.apply` (chapter 13) after checking that M is affine.
 
-    points: (..., d) with d = 2 or 3.  M: (d+1, d+1) whose last column is (0, ..., 0, 1) (an
-    affine, not projective, map); the last row is the translation.
+    points: (..., d) with d = 2 or 3.  M: (d+1, d+1) whose last column is (0, ..., 0, 1) within
+    1e-12 (an affine, not projective, map); the last row is the translation.
     Returns the mapped points, same shape as ``points``.
     Raises ValueError if M has the wrong shape, is not affine, or is not finite.
 
@@ -630,14 +624,15 @@ def apply_affine(points, M) -> np.ndarray:
            [3., 0.]])
     """
     P = as_points(points, "points", ndim=None, dim=(2, 3))
-    d = P.shape[-1]
-    A = as_points(M, "M", ndim=2, dim=d + 1)
-    if A.shape != (d + 1, d + 1):
-        raise ValueError(f"M must have shape ({d + 1}, {d + 1}) for {d}-dimensional points; got shape {A.shape}")
-    last = A[:, -1]
-    if not (np.all(last[:-1] == 0) and last[-1] == 1):
-        raise ValueError(f"M must be affine: its last column must be (0, ..., 0, 1); got {last.tolist()}")
-    return P @ A[:d, :d] + A[d, :d]
+    if P.shape[-1] == 2:
+        return affine.apply(P, M)
+    A = as_points(M, "M", ndim=2, dim=4)
+    if A.shape != (4, 4):
+        raise ValueError(f"M must have shape (4, 4) for 3-dimensional points; got shape {A.shape}")
+    if not np.allclose(A[:, 3], [0.0, 0.0, 0.0, 1.0], rtol=0.0, atol=1e-12):
+        raise ValueError(f"M must be affine: its last column must be (0, 0, 0, 1) (row-vector convention: the "
+                         f"translation is the last row); got {A[:, 3].tolist()}")
+    return transforms.apply(P, A)
 
 
 # --------------------------------------------------------------------------------------------
