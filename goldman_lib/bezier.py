@@ -35,6 +35,7 @@ import math
 import numpy as np
 
 from goldman_lib import affine, transforms
+from goldman_lib._kernels import flatness as _flatness, split as _split
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points,
                                      finite_result, within_budget)
 
@@ -891,25 +892,6 @@ __all__ += [
 ]
 
 
-def _split(P: np.ndarray, t, axis: int = 0) -> tuple[np.ndarray, np.ndarray]:
-    """de Casteljau subdivision of validated control points along ``axis`` (no validation).
-
-    The left piece keeps the first point of every level of the pyramid, the right piece the
-    last point of every level (in reverse order).  Works on stacks: any other axes ride along.
-    """
-    cur = np.moveaxis(P, axis, 0)
-    n1 = cur.shape[0]
-    left = np.empty_like(cur)
-    right = np.empty_like(cur)
-    s = 1.0 - t
-    for k in range(n1):
-        left[k] = cur[0]
-        right[n1 - 1 - k] = cur[-1]
-        if k < n1 - 1:
-            cur = s * cur[:-1] + t * cur[1:]
-    return np.moveaxis(left, 0, axis), np.moveaxis(right, 0, axis)
-
-
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     """Split a Bezier curve at ``t`` into two Bezier curves by the de Casteljau algorithm (Goldman §25.2).
@@ -937,10 +919,12 @@ def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     return finite_result(left, "t", t), finite_result(right, "t", t)
 
 
-def subdivide_uniform(ctrl, depth) -> np.ndarray:
-    """Subdivide a Bezier curve ``depth`` times at the midpoints: 2**depth control polygons (Goldman §25.2, §25.4).
+def subdivide_uniform(ctrl, depth, t=0.5) -> np.ndarray:
+    """Subdivide a Bezier curve ``depth`` times, every piece at ``t``: 2**depth control polygons (Goldman §25.2, §25.4).
 
-    Piece ``k`` is the curve over ``[k / 2**depth, (k+1) / 2**depth]``.  As the depth grows the
+    With the default ``t = 1/2`` piece ``k`` is the curve over ``[k / 2**depth, (k+1) / 2**depth]``;
+    another ``t`` (a finite scalar) splits every piece at its own parameter t, pieces in order
+    along the curve.  As the depth grows the
     polygons converge to the curve (the distance shrinks by about 4 with each level), which is
     the basis of rendering by subdivision and of the proof of variation diminishing.
 
@@ -949,39 +933,26 @@ def subdivide_uniform(ctrl, depth) -> np.ndarray:
     a planar cubic).
     Returns (2**depth, n+1, d).
     Raises TypeError if depth is not an integer, ValueError if it is negative or over the budget,
-    or ctrl is bad.
+    ctrl is bad, or t is not a finite scalar.
 
     >>> subdivide_uniform([[0, 0], [1, 2], [2, 0]], 1)[1].tolist()
     [[1.0, 1.0], [1.5, 1.0], [2.0, 0.0]]
     """
     P = _ctrl(ctrl)
+    t = as_parameter(t, "t")
+    if t.ndim != 0:
+        raise ValueError(f"t must be a scalar for subdivide_uniform; got shape {t.shape}")
+    t = float(t)
     depth = within_budget(depth, "depth", cost=lambda v: 2 ** v * P.size, what="the subdivided curve",
                           unit="coordinates")
     pieces = P[None]
     for _ in range(depth):
-        left, right = _split(pieces, 0.5, axis=1)
+        left, right = _split(pieces, t, axis=1)
         pieces = np.stack([left, right], axis=1).reshape((-1,) + P.shape)
     return pieces.copy() if depth == 0 else pieces
 
 
-def _flatness(P: np.ndarray, even: bool = True) -> np.ndarray:
-    """Flatness of a stack of polygons (..., n+1, d) (no validation); returns (...,)."""
-    n = P.shape[-2] - 1
-    if n <= 0:
-        return np.zeros(P.shape[:-2])
-    a = P[..., :1, :]
-    b = P[..., -1:, :]
-    if even:
-        w = (np.arange(n + 1) / n)[:, None]
-        return np.linalg.norm(P - ((1.0 - w) * a + w * b), axis=-1).max(axis=-1)
-    chord = b - a
-    length2 = (chord ** 2).sum(-1, keepdims=True)
-    safe = np.where(length2 > 0, length2, 1.0)
-    along = np.clip(((P - a) * chord).sum(-1, keepdims=True) / safe, 0.0, 1.0)
-    return np.linalg.norm(P - (a + along * chord), axis=-1).max(axis=-1)
-
-
-def flatness(ctrl, even=True) -> float:
+def flatness(ctrl, even=True):
     """How far a Bezier curve can be from the segment between its end points (Goldman §25.3).
 
     With ``even=True`` (the default) this is ``max_k |P_k - L_k|`` with ``L_k = (1 - k/n) P_0 +
@@ -993,16 +964,22 @@ def flatness(ctrl, even=True) -> float:
     straight but unevenly parametrised polygon then counts as flat, which is enough for
     drawing but not for locating parameters (see :func:`intersect_curves`).
 
-    ctrl: (n+1, d).  even: bool.  Returns a float >= 0 (0 for a degree-0 curve).
+    ctrl: (n+1, d), or a stack (..., n+1, d) of polygons.  even: bool.  Returns a float >= 0 (0
+    for a degree-0 curve), or an array (...) for a stack.
     Raises ValueError/TypeError for a bad ctrl.
 
     >>> flatness([[0, 0], [1, 2], [2, 0]])
     2.0
     >>> flatness([[0, 0], [1.8, 0], [2, 0]]), flatness([[0, 0], [1.8, 0], [2, 0]], even=False)
     (0.8, 0.0)
+    >>> flatness([[[0, 0], [1, 2], [2, 0]], [[0, 0], [1, 0], [2, 0]]]).tolist()   # a stack of polygons
+    [2.0, 0.0]
     """
-    P = _ctrl(ctrl)
-    return float(_flatness(P, bool(even)))
+    P = as_points(ctrl, "ctrl", ndim=None)
+    if P.ndim < 2:
+        raise ValueError(f"ctrl must have shape (n+1, d) or a stack (..., n+1, d); got shape {P.shape}")
+    out = _flatness(P, bool(even))
+    return float(out) if P.ndim == 2 else out
 
 
 def is_flat(ctrl, tol, even=True) -> bool:

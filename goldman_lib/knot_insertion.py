@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib import bezier, bspline
+from goldman_lib import _kernels, bezier, bspline
 from goldman_lib.validation import as_float, as_int, as_parameter, as_points, within_budget
 
 __all__ = [
@@ -77,30 +77,13 @@ def _domain_spans(t: np.ndarray, p: int, x: np.ndarray) -> np.ndarray:
     return np.clip(np.searchsorted(t, x, side="right") - 1, lo_k, hi_k)
 
 
-def _blossom_many(P: np.ndarray, t: np.ndarray, p: int, spans: np.ndarray, args: np.ndarray) -> np.ndarray:
-    """Blossoms b_k(args[m, 0], ..., args[m, p-1]) of the pieces k = spans[m]: (N, d).
-
-    de Boor's pyramid with a different argument on each level, for all N label sets at once:
-    level r replaces the label t_i of P_i (or t_{i+p+1-r}) by args[:, r-1].
-    """
-    rows = [P[spans - p + j] for j in range(p + 1)]            # each (N, d)
-    for r in range(1, p + 1):
-        x = args[:, r - 1][:, None]
-        for j in range(p, r - 1, -1):
-            i = spans - p + j
-            lo, hi = t[i][:, None], t[i + p + 1 - r][:, None]
-            alpha = (x - lo) / (hi - lo)
-            rows[j] = rows[j - 1] + alpha * (rows[j] - rows[j - 1])
-    return rows[p]
-
-
 def _refinement_spans(t: np.ndarray, tau: np.ndarray, p: int) -> np.ndarray:
     """For every new control point j, a span k of the old knots inside the support of the new
     B-spline N_j and inside the domain (so that Q_j = b_k(tau_{j+1..j+p}))."""
     n_new = tau.size - p - 2
     j = np.arange(n_new + 1)
     m = np.full(j.shape, -1)
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     for off in range(p + 1):                         # first non-empty new span tau_m < tau_{m+1} with j <= m <= j+p
         cand = j + off
         ok = (m < 0) & (cand >= p) & (cand <= n_new)
@@ -127,7 +110,7 @@ def _check_refinement(t: np.ndarray, tau: np.ndarray, p: int) -> None:
     if i < t.size:
         raise ValueError(f"new_knots must contain every old knot; knots[{i}]={_fmt(t[i])} is missing in new_knots")
     extra.extend(tau[j:])
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     for x in extra:
         if not lo <= x <= hi:
             raise ValueError(f"new_knots may only add knots inside the domain [{_fmt(lo)}, {_fmt(hi)}]; "
@@ -156,7 +139,7 @@ def _boehm_once(P: np.ndarray, t: np.ndarray, p: int, u: float):
 
 
 def _check_insert(t: np.ndarray, p: int, u: float, times: int) -> None:
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     if not lo <= u <= hi:
         raise ValueError(f"u must lie in the domain [knots[{p}], knots[{t.size - p - 1}]] = [{_fmt(lo)}, {_fmt(hi)}]; "
                          f"u is {_fmt(u)}")
@@ -252,7 +235,7 @@ def _oslo(P, t, p, tau):
     n_new = tau.size - p - 2
     spans = _refinement_spans(t, tau, p)
     idx = np.arange(n_new + 1)[:, None] + np.arange(1, p + 1)[None, :]
-    return _blossom_many(P, t, p, spans, tau[idx])
+    return _kernels.blossom(P, t, p, spans, tau[idx])
 
 
 def oslo_steps(ctrl, knots, degree, new_knots) -> list[dict]:
@@ -312,7 +295,7 @@ def to_piecewise_bezier(ctrl, knots, degree):
     [0.0, 0.5, 1.0]
     """
     P, t, p = _curve(ctrl, knots, degree)
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     breaks = np.unique(t[(t >= lo) & (t <= hi)])
     a, b = breaks[:-1], breaks[1:]
     m = a.size
@@ -321,7 +304,7 @@ def to_piecewise_bezier(ctrl, knots, degree):
     # args[piece, i, level]: p - i copies of a, then i copies of b
     lev = np.arange(p)[None, None, :]
     args = np.where(lev < (p - i)[None, :, None], a[:, None, None], b[:, None, None])
-    flat = _blossom_many(P, t, p, np.repeat(spans, p + 1), args.reshape(m * (p + 1), p))
+    flat = _kernels.blossom(P, t, p, np.repeat(spans, p + 1), args.reshape(m * (p + 1), p))
     return flat.reshape(m, p + 1, P.shape[1]), breaks
 
 
@@ -350,7 +333,7 @@ def variation_diminishing(ctrl, knots, degree, line_point, line_normal, samples=
     samples = within_budget(samples, "samples", cost=lambda v: v * P.shape[1], what="the sampled curve",
                             unit="coordinates", minimum=2)
     poly = bezier.variation_count(P, line_point, line_normal)
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     pts = bspline.de_boor(P, t, p, np.linspace(lo, hi, samples))
     # crossings of the sampled curve: sign changes of the signed distances
     nrm = np.asarray(line_normal, dtype=float)
@@ -495,7 +478,7 @@ def midpoint_knots(knots) -> np.ndarray:
 def _schaefer_check(t: np.ndarray, p: int) -> None:
     """Interior knots must be simple and repeated knots only the clamped ends: the midpoints of
     zero-length intervals would repeat a knot beyond degree+1 times."""
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     inner = t[(t > lo) & (t < hi)]
     dup = inner[1:][inner[1:] == inner[:-1]]
     if dup.size:
@@ -650,7 +633,7 @@ def control_polygon_distance(ctrl, knots, degree) -> float:
     P, t, p = _curve(ctrl, knots, degree)
     if p < 1:
         raise ValueError("degree must be >= 1 for control_polygon_distance (Greville abscissae need a knot)")
-    xi = np.clip(greville(t, p), t[p], t[t.size - p - 1])
+    xi = np.clip(greville(t, p), *_kernels.domain(t, p))
     C = bspline.de_boor(P, t, p, xi)
     return float(np.linalg.norm(P - C, axis=1).max())
 
@@ -717,7 +700,7 @@ def split(ctrl, knots, degree, u):
     if p < 1:
         raise ValueError("degree must be >= 1 to split a curve by knot insertion")
     u = as_float(u, "u")
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     if not lo < u < hi:
         raise ValueError(f"u must lie strictly inside the domain ({_fmt(lo)}, {_fmt(hi)}); u is {_fmt(u)}")
     s = int(np.count_nonzero(t == u))
@@ -782,10 +765,10 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     pieces, _ = to_piecewise_bezier(P, t, p)
     level = 0
     while True:
-        flat = _flatness_many(pieces) <= tol
+        flat = _kernels.flatness(pieces, even=False) <= tol
         if flat.all() or level >= max_levels:
             break
-        left, right = _halves_many(pieces[~flat])
+        left, right = _kernels.split(pieces[~flat], 0.5, axis=1)
         counts = np.where(flat, 1, 2)
         start = np.cumsum(counts) - counts
         new = np.empty((int(counts.sum()),) + pieces.shape[1:])
@@ -795,29 +778,6 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
         pieces = new
         level += 1
     return np.vstack([pieces[:, 0], pieces[-1:, -1]]), level
-
-
-def _flatness_many(pieces: np.ndarray) -> np.ndarray:
-    """Largest distance of the points of each polygon from its chord, for a stack (m, k, d): (m,)."""
-    a = pieces[:, :1]
-    ab = pieces[:, -1:] - a
-    L2 = (ab * ab).sum(-1)                                   # (m, 1)
-    w = pieces - a
-    s = np.clip(np.where(L2 > 0, (w * ab).sum(-1) / np.where(L2 > 0, L2, 1.0), 0.0), 0.0, 1.0)
-    return np.linalg.norm(w - s[..., None] * ab, axis=-1).max(-1)
-
-
-def _halves_many(pieces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Both halves at t = 1/2 of a stack of Bezier polygons (m, k, d), by de Casteljau."""
-    k = pieces.shape[1]
-    left = np.empty_like(pieces)
-    right = np.empty_like(pieces)
-    cur = pieces
-    for j in range(k):
-        left[:, j] = cur[:, 0]
-        right[:, k - 1 - j] = cur[:, -1]
-        cur = 0.5 * (cur[:, :-1] + cur[:, 1:])
-    return left, right
 
 
 def intersect(a, b, tol=1e-10):

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib import ifs
+from goldman_lib import bezier, ifs
 from goldman_lib import subdivision_matrices as sm
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_points, check_finite, finite_result,
                                      within_budget)
@@ -93,10 +93,7 @@ def curve_attractor_view(ctrl=DEFAULT_CUBIC, levels: int = 2, max_levels: int = 
         c = dense[kind]
         curve.set_data(c[:, 0], c[:, 1])
         # flatness: how far each piece's control points stray from the chord of their piece
-        a, b = blocks[:, :1], blocks[:, -1:]
-        d = b - a
-        cross = np.abs(d[..., 0] * (blocks[..., 1] - a[..., 1]) - d[..., 1] * (blocks[..., 0] - a[..., 0]))
-        flat = float((cross / np.maximum(np.linalg.norm(d, axis=-1), 1e-300)).max())
+        flat = float(bezier.flatness(blocks, even=False).max())
         return {"polygons": pts, "flatness": flat,
                 "status": f"{kind}: {len(blocks)} polygons after {levels} level(s); each within {flat:.4f} of its chord"}
 
