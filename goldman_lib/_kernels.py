@@ -76,3 +76,13 @@ def blossom(P: np.ndarray, t: np.ndarray, p: int, spans: np.ndarray, args: np.nd
             alpha = (x - lo) / (hi - lo)
             rows[j] = rows[j - 1] + alpha * (rows[j] - rows[j - 1])
     return rows[p]
+
+
+def iterate_maps(X: np.ndarray, M: np.ndarray, levels: int) -> np.ndarray:
+    """The deterministic algorithm on homogeneous rows (Goldman §6.1, §29.3-29.4): every matrix of
+    the stack M (k, D, D) applied to every row of X (m, D), ``levels`` times.  Returns
+    ``(m k^levels, D)`` in blocks of m rows; block ``i_L ... i_1`` read in base k is
+    ``X @ M_{i_1} @ ... @ M_{i_L}``."""
+    for _ in range(levels):
+        X = np.matmul(X[None], M).reshape(-1, M.shape[-1])
+    return X
