@@ -5,6 +5,9 @@ For a matplotlib view the cost of a slider move is ``update`` (the library call 
 picture; both are printed.  For a three.js view it is ``update`` alone (the browser renders).
 Each callback is timed while cycling through values from its own slider ranges, so no cache of
 a single position flatters it.
+
+Absolute times move about 2x between machines, so each callback is also printed as a multiple of
+an empty 560x420 Agg figure redraw timed in the same run (target: at most 4x).
 """
 
 from __future__ import annotations
@@ -19,6 +22,20 @@ from benchmarks.timing import best_time, fmt_time  # noqa: E402
 from goldman_lib.views.interactive import discover_factories  # noqa: E402
 
 TARGET = 0.050  # seconds
+#: Each callback (update + redraw) at most this multiple of an empty 560x420 Agg redraw, same run.
+REDRAW_TARGET = 4.0
+
+
+def empty_redraw_time() -> float:
+    """Seconds for one full Agg redraw of an empty 560x420 figure (5.6 x 4.2 inches at 100 dpi)."""
+    import matplotlib.pyplot as plt
+
+    fig = plt.figure(figsize=(5.6, 4.2), dpi=100)
+    fig.add_subplot()
+    try:
+        return best_time(fig.canvas.draw, repeat=7)
+    finally:
+        plt.close(fig)
 
 
 def _factories():
@@ -43,6 +60,9 @@ def time_callback(view) -> tuple[float, float | None]:
 
 def main(only: str | None = None):
     worst = 0.0
+    base = empty_redraw_time()
+    print(f"empty 560x420 Agg redraw: {fmt_time(base)} (the unit of the multiples below; target {REDRAW_TARGET:g}x)")
+    ratios = {}
     for name, factory in _factories():
         if only and only not in name:
             continue
@@ -50,14 +70,20 @@ def main(only: str | None = None):
         alone, drawn = time_callback(view)
         total = drawn if drawn is not None else alone
         worst = max(worst, total)
+        ratios[name] = total / base
         drawn_text = f"update + redraw {fmt_time(drawn):>10}" if drawn is not None else "(rendered by the browser)"
         verdict = "ok" if total < TARGET else "OVER 50 ms"
-        print(f"{name:<36} update {fmt_time(alone):>10}   {drawn_text}   {verdict}")
+        multiple = f"{total / base:5.1f}x redraw {'met' if total / base <= REDRAW_TARGET else 'MISSED'}"
+        print(f"{name:<36} update {fmt_time(alone):>10}   {drawn_text}   {verdict}   {multiple}")
         if view.figure is not None:  # one figure at a time: a benchmark of 40+ views must not pile them up
             import matplotlib.pyplot as plt
 
             plt.close(view.figure)
     print(f"slowest callback: {fmt_time(worst)} (target {fmt_time(TARGET)})")
+    missed = sorted((r, n) for n, r in ratios.items() if r > REDRAW_TARGET)
+    print(f"target every callback <= {REDRAW_TARGET:g}x an empty redraw: "
+          + ("met" if not missed else "MISSED by " + ", ".join(f"{n} ({r:.1f}x)" for r, n in reversed(missed))))
+    return ratios
 
 
 if __name__ == "__main__":

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib import _kernels, bezier, bspline
+from goldman_lib import _kernels, bezier, bezier_intersection, bspline
 from goldman_lib.validation import as_float, as_int, as_parameter, as_points, within_budget
 
 __all__ = [
@@ -785,7 +785,7 @@ def intersect(a, b, tol=1e-10):
 
     Both curves are converted to piecewise Bezier form by knot insertion (§28.3.3); every pair of
     Bezier pieces is then intersected by Bezier subdivision with a Newton polish
-    (:func:`goldman_lib.bezier.intersect_curves`: pieces whose control-point boxes miss cannot
+    (:func:`goldman_lib.bezier_intersection.intersect_curves`: pieces whose control-point boxes miss cannot
     meet, by the convex hull property), and the piece parameters are mapped back to the knot
     intervals.  A crossing at a knot, found by the two pieces that meet there, is kept once.
 
@@ -822,7 +822,7 @@ def intersect(a, b, tol=1e-10):
         for j, B in enumerate(pb):
             if np.any(lo_a[i] > hi_b[j] + pad) or np.any(lo_b[j] > hi_a[i] + pad):
                 continue                                        # convex hulls apart: no intersection
-            st = bezier.intersect_curves(A, B, tol=tol)
+            st = bezier_intersection.intersect_curves(A, B, tol=tol)
             for s_, t_ in st:
                 hits.append((ba[i] + (ba[i + 1] - ba[i]) * s_, bb[j] + (bb[j + 1] - bb[j]) * t_))
     if not hits:
