@@ -1204,3 +1204,32 @@ def base_case_distances(program, bases, levels, *, per_segment: int = 2) -> np.n
                 raise ValueError(f"bases[{i}] draws nothing (only MOVE and TURN): there is no drawing to compare")
             out[i, j] = hausdorff_distance(ref, points_on(polys, per_segment))
     return out
+
+
+__all__ += ["program_text", "program_codes"]
+
+
+def program_text(commands) -> str:
+    """A recursive turtle program's commands as one line of text (Goldman §2.3): ``FORWARD 1 TURN 60
+    RECURSE ...``, a mirrored recursion (``("RECURSE", -1)``) written ``RECURSE(mirror)``.
+
+    commands: ``(command, value)`` pairs, e.g. a :class:`RecursiveTurtleProgram`'s ``body``.
+
+    >>> program_text([("FORWARD", 1.0), ("TURN", 60.0), ("RECURSE", None), ("RECURSE", -1)])
+    'FORWARD 1 TURN 60 RECURSE RECURSE(mirror)'
+    """
+    return _text(_as_commands(commands, "commands", allow_recurse=True))
+
+
+def program_codes(program) -> tuple[np.ndarray, np.ndarray]:
+    """The command codes and values of a (non-recursive) turtle program, ready for
+    :func:`goldman_lib.turtle.trace_arrays` (Goldman §2.2).
+
+    program: turtle-language text, a parsed :class:`goldman_lib.turtle.Program`, or ``(command,
+    value)`` pairs.  Returns ``(codes int8 (k,), values (k,))``.
+
+    >>> codes, values = program_codes([("FORWARD", 1.0), ("TURN", 90.0)])
+    >>> values.tolist()
+    [1.0, 90.0]
+    """
+    return _flat_program(program, "program")
