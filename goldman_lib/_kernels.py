@@ -12,6 +12,11 @@ from __future__ import annotations
 import numpy as np
 
 
+def number(x) -> str:
+    """A number in error messages and status lines: six significant digits (``0.333333``, ``1e-07``)."""
+    return f"{float(x):.6g}"
+
+
 def domain(t: np.ndarray, p: int) -> tuple[float, float]:
     """The parameter domain ``(t_p, t_{n+1})`` of a B-spline of degree p with knot vector t (§27.2)."""
     return float(t[p]), float(t[t.size - p - 1])

@@ -56,8 +56,7 @@ __all__ = [
 # knot vectors
 # --------------------------------------------------------------------------------------------
 
-def _fmt(x: float) -> str:
-    return f"{float(x):.6g}"
+_fmt = _kernels.number
 
 
 def check_knots(knots, degree, n_ctrl=None, name: str = "knots", *, degree_name: str = "degree",

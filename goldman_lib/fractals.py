@@ -83,10 +83,6 @@ _CODES = {name: code for code, name in enumerate(turtle.COMMANDS)}
 # Recursive turtle programs (§2.3)
 # ---------------------------------------------------------------------------------------------
 
-def _fmt(x) -> str:
-    return turtle.format_number(x)
-
-
 def _as_commands(seq, name: str, *, allow_recurse: bool) -> tuple:
     """Validate a sequence of ``(command, value)`` pairs; return them as a tuple of tuples."""
     if isinstance(seq, (str, bytes)) or not hasattr(seq, "__iter__"):
@@ -132,7 +128,7 @@ def _text(commands) -> str:
         if c == RECURSE:
             parts.append("RECURSE" if v is None else "RECURSE(mirror)")
         else:
-            parts.append(f"{c} {_fmt(v)}")
+            parts.append(f"{c} {turtle.format_number(v)}")
     return " ".join(parts)
 
 
@@ -895,7 +891,7 @@ def similarity_dimension(scales) -> float:
     big = np.flatnonzero(s >= 1)
     if big.size:
         i = int(big[0])
-        others = " + ".join(f"{_fmt(x)}**D" for j, x in enumerate(s) if j != i) or "0"
+        others = " + ".join(f"{turtle.format_number(x)}**D" for j, x in enumerate(s) if j != i) or "0"
         raise ValueError(f"no dimension D solves sum(s_i**D) = 1: scales[{i}] = {s[i]} is not < 1, so the sum "
                          f"is at least 1 + {others} > 1 for every D >= 0 (every copy must be smaller than "
                          f"the whole)")

@@ -65,8 +65,7 @@ def _refined_count(m: int, p: int, levels: int, closed: bool = False) -> int:
     return 2 ** levels * m if closed else 2 ** levels * (m - p) + p
 
 
-def _fmt(x: float) -> str:
-    return f"{float(x):.6g}"
+_fmt = _kernels.number
 
 
 def _domain_spans(t: np.ndarray, p: int, x: np.ndarray) -> np.ndarray:
