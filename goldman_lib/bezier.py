@@ -881,8 +881,24 @@ class BezierPatch:
 # Chapter 25 lives in its own modules; its public names stay importable from here.
 # --------------------------------------------------------------------------------------------
 
-from goldman_lib import bezier_intersection as _intersection, bezier_subdivision as _subdivision  # noqa: E402
-from goldman_lib.bezier_intersection import *  # noqa: E402,F401,F403
-from goldman_lib.bezier_subdivision import *  # noqa: E402,F401,F403
+_CHAPTER_25 = {
+    **dict.fromkeys(["subdivide", "subdivide_uniform", "flatness", "is_flat", "render_by_subdivision",
+                     "subdivide_patch", "patch_flatness", "render_patch_by_subdivision",
+                     "subdivision_variation_counts", "smooth_continuation", "join_order"], "bezier_subdivision"),
+    **dict.fromkeys(["intersect_curves", "intersection_boxes", "intersect_ray_patch", "intersect_patches"],
+                    "bezier_intersection"),
+}
+__all__ += list(_CHAPTER_25)
 
-__all__ += _subdivision.__all__ + _intersection.__all__
+
+def __getattr__(name):
+    """``bezier.subdivide`` and the other chapter-25 names, loaded from their modules on first use
+    (lazily, so that importing ``bezier_subdivision`` or ``bezier_intersection`` first works too)."""
+    home = _CHAPTER_25.get(name)
+    if home is None:
+        raise AttributeError(f"module 'goldman_lib.bezier' has no attribute {name!r}")
+    import importlib
+
+    value = getattr(importlib.import_module(f"goldman_lib.{home}"), name)
+    globals()[name] = value
+    return value
