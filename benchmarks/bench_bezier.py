@@ -6,6 +6,9 @@
   ``patch_de_casteljau`` on the same points) against ``scipy.interpolate.bisplev`` with the
   equivalent B-spline (knots 0,0,0,0,1,1,1,1 in each direction; one call per coordinate);
   target: at least as fast.
+- ``bezier.intersect_curves`` (chapter 25, :mod:`goldman_lib.bezier_intersection`) on six crossing
+  cubic pairs and on a tangential pair against ``bezier.Curve.intersect`` (the cases of
+  ``benchmarks.bench_subdivision.bench_intersect``); target: within 10x, tangential case included.
 
 The results are checked to agree before anything is timed, and ours and the reference are timed
 in interleaved rounds (best of several), so that machine load hits both alike.
@@ -81,8 +84,12 @@ def bench_patch(rng) -> dict[str, float]:
 def main() -> dict[str, float]:
     rng = np.random.default_rng(24)
     ratios = {**bench_curve(rng), **bench_patch(rng)}
-    targets = {"bernstein_evaluate": 3.0, "patch_evaluate_grid": 1.0}
-    report_targets(ratios, targets)
+    from benchmarks.bench_subdivision import bench_intersect
+
+    ratios.update(bench_intersect(np.random.default_rng(25)))
+    targets = {"bernstein_evaluate": 3.0, "patch_evaluate_grid": 1.0,
+               "intersect_cubics": 10.0, "intersect_tangent": 10.0}
+    report_targets(ratios, {k: v for k, v in targets.items() if k in ratios})
     return ratios
 
 

@@ -36,6 +36,7 @@ import math
 
 import numpy as np
 
+from goldman_lib import _kernels
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points, check_finite,
                                      finite_result, within_budget)
 
@@ -57,8 +58,7 @@ __all__ = [
 # knot vectors
 # --------------------------------------------------------------------------------------------
 
-def _fmt(x: float) -> str:
-    return f"{float(x):.6g}"
+_fmt = _kernels.number
 
 
 def check_knots(knots, degree, n_ctrl=None, name: str = "knots", *, degree_name: str = "degree",
@@ -174,8 +174,7 @@ def domain(knots, degree) -> tuple[float, float]:
     (0.0, 1.0)
     """
     t = check_knots(knots, degree)
-    p = int(degree)
-    return float(t[p]), float(t[t.size - p - 1])
+    return _kernels.domain(t, int(degree))
 
 
 def multiplicity(knots, value, tol: float = 0.0) -> int:
@@ -194,7 +193,7 @@ def multiplicity(knots, value, tol: float = 0.0) -> int:
 
 def _check_u(u, t: np.ndarray, p: int, name: str = "u") -> np.ndarray:
     arr = as_parameter(u, name)
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     bad = (arr < lo) | (arr > hi)
     if bad.any():
         flat = int(np.flatnonzero(bad)[0])
@@ -292,21 +291,15 @@ def blossom(ctrl, knots, degree, args, span=None) -> np.ndarray:
     if span is None:
         if p == 0:
             raise ValueError("span must be given for degree 0 (there are no arguments to locate it)")
-        lo, hi = t[p], t[n + 1]
+        lo, hi = _kernels.domain(t, p)
         k = int(_spans(t, p, np.clip(a[0], lo, hi)))
     else:
         k = as_int(span, "span", minimum=p, maximum=n)
         if not t[k] < t[k + 1]:
             raise ValueError(f"span must index a non-empty knot span; knots[{k}] = knots[{k + 1}] = {_fmt(t[k])}")
-    pts = P[k - p:k + 1].copy()
-    for r in range(1, p + 1):
-        x = a[r - 1]
-        for j in range(p, r - 1, -1):
-            i = k - p + j
-            lo, hi = t[i], t[i + p + 1 - r]
-            alpha = (x - lo) / (hi - lo)
-            pts[j] = (1.0 - alpha) * pts[j - 1] + alpha * pts[j]
-    return finite_result(pts[p], "args")
+    with np.errstate(over='ignore', invalid='ignore'):
+        out = _kernels.blossom(P, t, p, np.array([k]), a[None, :])[0]
+    return finite_result(out, "args")
 
 
 def local_de_boor(ctrl, knots, degree, u) -> np.ndarray:
@@ -598,8 +591,9 @@ def derivative_jumps(ctrl, knots, degree, value) -> np.ndarray:
     """
     P, t, p = _curve_args(ctrl, knots, degree)
     x = _check_u(as_float(value, "value"), t, p, "value")
-    if not t[p] < x < t[t.size - p - 1]:
-        raise ValueError(f"value must lie strictly inside the domain ({_fmt(t[p])}, {_fmt(t[t.size - p - 1])}); got {_fmt(x)}")
+    lo, hi = _kernels.domain(t, p)
+    if not lo < x < hi:
+        raise ValueError(f"value must lie strictly inside the domain ({_fmt(lo)}, {_fmt(hi)}); got {_fmt(x)}")
     out = np.empty(p + 1)
     for r in range(p + 1):
         right = derivative(P, t, p, x, r, side="right")
@@ -830,7 +824,8 @@ def affected_span(knots, degree, i) -> tuple[float, float]:
     t = check_knots(knots, degree)
     p = int(degree)
     lo, hi = support(t, p, i)
-    return max(lo, float(t[p])), min(hi, float(t[t.size - p - 1]))
+    dlo, dhi = _kernels.domain(t, p)
+    return max(lo, dlo), min(hi, dhi)
 
 
 # --------------------------------------------------------------------------------------------
@@ -1069,7 +1064,7 @@ class BSplineCurve:
 
     @property
     def domain(self) -> tuple[float, float]:
-        return float(self.knots[self.degree]), float(self.knots[self.ctrl.shape[0]])
+        return _kernels.domain(self.knots, self.degree)
 
     def evaluate(self, u) -> np.ndarray:
         """Points ``C(u)`` by :func:`de_boor`."""

@@ -83,10 +83,6 @@ _CODES = {name: code for code, name in enumerate(turtle.COMMANDS)}
 # Recursive turtle programs (§2.3)
 # ---------------------------------------------------------------------------------------------
 
-def _fmt(x) -> str:
-    return turtle.format_number(x)
-
-
 def _as_commands(seq, name: str, *, allow_recurse: bool) -> tuple:
     """Validate a sequence of ``(command, value)`` pairs; return them as a tuple of tuples."""
     if isinstance(seq, (str, bytes)) or not hasattr(seq, "__iter__"):
@@ -132,7 +128,7 @@ def _text(commands) -> str:
         if c == RECURSE:
             parts.append("RECURSE" if v is None else "RECURSE(mirror)")
         else:
-            parts.append(f"{c} {_fmt(v)}")
+            parts.append(f"{c} {turtle.format_number(v)}")
     return " ".join(parts)
 
 
@@ -904,7 +900,7 @@ def similarity_dimension(scales) -> float:
     big = np.flatnonzero(s >= 1)
     if big.size:
         i = int(big[0])
-        rest = [f"{_fmt(x)}**D" for j, x in enumerate(s[:5]) if j != i]
+        rest = [f"{turtle.format_number(x)}**D" for j, x in enumerate(s[:5]) if j != i]
         others = " + ".join(rest[:3]) + (" + ..." if s.size > 4 else "") if rest else "0"
         raise ValueError(f"no dimension D solves sum(s_i**D) = 1: scales[{i}] = {s[i]} is not < 1, so the sum "
                          f"is at least 1 + {others} > 1 for every D >= 0 (every copy must be smaller than "
@@ -1220,3 +1216,32 @@ def base_case_distances(program, bases, levels, *, per_segment: int = 2) -> np.n
                 raise ValueError(f"bases[{i}] draws nothing (only MOVE and TURN): there is no drawing to compare")
             out[i, j] = hausdorff_distance(ref, points_on(polys, per_segment))
     return out
+
+
+__all__ += ["program_text", "program_codes"]
+
+
+def program_text(commands) -> str:
+    """A recursive turtle program's commands as one line of text (Goldman §2.3): ``FORWARD 1 TURN 60
+    RECURSE ...``, a mirrored recursion (``("RECURSE", -1)``) written ``RECURSE(mirror)``.
+
+    commands: ``(command, value)`` pairs, e.g. a :class:`RecursiveTurtleProgram`'s ``body``.
+
+    >>> program_text([("FORWARD", 1.0), ("TURN", 60.0), ("RECURSE", None), ("RECURSE", -1)])
+    'FORWARD 1 TURN 60 RECURSE RECURSE(mirror)'
+    """
+    return _text(_as_commands(commands, "commands", allow_recurse=True))
+
+
+def program_codes(program) -> tuple[np.ndarray, np.ndarray]:
+    """The command codes and values of a (non-recursive) turtle program, ready for
+    :func:`goldman_lib.turtle.trace_arrays` (Goldman §2.2).
+
+    program: turtle-language text, a parsed :class:`goldman_lib.turtle.Program`, or ``(command,
+    value)`` pairs.  Returns ``(codes int8 (k,), values (k,))``.
+
+    >>> codes, values = program_codes([("FORWARD", 1.0), ("TURN", 90.0)])
+    >>> values.tolist()
+    [1.0, 90.0]
+    """
+    return _flat_program(program, "program")

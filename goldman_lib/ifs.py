@@ -39,7 +39,7 @@ from . import affine
 from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points, check_finite,
                          finite_result, within_budget)
 
-__all__ = ["IFS", "deterministic", "chaos_game", "chaos_game_with_maps", "map_images", "set_map", "iterate_map", "UNIT_SQUARE", "MAX_POINTS", "STANDARD",
+__all__ = ["IFS", "deterministic", "deterministic_count", "chaos_game", "chaos_game_with_maps", "map_images", "set_map", "iterate_map", "UNIT_SQUARE", "MAX_POINTS", "STANDARD",
            "sierpinski", "koch", "barnsley_fern", "dragon", "c_curve", "tree", "sierpinski_carpet", "cantor",
            "grid_fractal", "ifs_from_points"]
 
@@ -218,10 +218,19 @@ def deterministic(system, levels, start=None) -> np.ndarray:
     return pts
 
 
-def _size(level: int, k: int, m: int, c: int) -> int:
-    """Points of level ``level`` of the deterministic algorithm: ``m k^level`` plus the copies of
-    a condensation set of ``c`` points."""
-    return m * k ** level + c * sum(k ** j for j in range(level)) if k > 1 else m + c * level
+def deterministic_count(levels: int, k: int, m: int, condensation: int = 0) -> int:
+    """How many points :func:`deterministic` returns (Goldman §6.1, §6.4): ``m k^levels`` for ``k``
+    maps and ``m`` start points, plus ``c (1 + k + ... + k^(levels-1))`` copies of a condensation
+    set of ``c = condensation`` points.  (From the condensation set itself, ``m = c``.)
+
+    >>> deterministic_count(3, 3, 1), deterministic_count(2, 2, 4, condensation=4)
+    (27, 28)
+    """
+    k, m, c = int(k), int(m), int(condensation)
+    return m * k ** levels + c * sum(k ** j for j in range(levels)) if k > 1 else m + c * levels
+
+
+_size = deterministic_count
 
 
 def _work(level: int, k: int, m: int, c: int) -> int:

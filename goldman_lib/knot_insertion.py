@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib import bezier, bspline
+from goldman_lib import _kernels, bezier, bezier_intersection, bezier_subdivision, bspline
 from goldman_lib.validation import as_float, as_int, as_parameter, as_points, within_budget
 
 __all__ = [
@@ -65,8 +65,7 @@ def _refined_count(m: int, p: int, levels: int, closed: bool = False) -> int:
     return 2 ** levels * m if closed else 2 ** levels * (m - p) + p
 
 
-def _fmt(x: float) -> str:
-    return f"{float(x):.6g}"
+_fmt = _kernels.number
 
 
 def _domain_spans(t: np.ndarray, p: int, x: np.ndarray) -> np.ndarray:
@@ -77,30 +76,13 @@ def _domain_spans(t: np.ndarray, p: int, x: np.ndarray) -> np.ndarray:
     return np.clip(np.searchsorted(t, x, side="right") - 1, lo_k, hi_k)
 
 
-def _blossom_many(P: np.ndarray, t: np.ndarray, p: int, spans: np.ndarray, args: np.ndarray) -> np.ndarray:
-    """Blossoms b_k(args[m, 0], ..., args[m, p-1]) of the pieces k = spans[m]: (N, d).
-
-    de Boor's pyramid with a different argument on each level, for all N label sets at once:
-    level r replaces the label t_i of P_i (or t_{i+p+1-r}) by args[:, r-1].
-    """
-    rows = [P[spans - p + j] for j in range(p + 1)]            # each (N, d)
-    for r in range(1, p + 1):
-        x = args[:, r - 1][:, None]
-        for j in range(p, r - 1, -1):
-            i = spans - p + j
-            lo, hi = t[i][:, None], t[i + p + 1 - r][:, None]
-            alpha = (x - lo) / (hi - lo)
-            rows[j] = rows[j - 1] + alpha * (rows[j] - rows[j - 1])
-    return rows[p]
-
-
 def _refinement_spans(t: np.ndarray, tau: np.ndarray, p: int) -> np.ndarray:
     """For every new control point j, a span k of the old knots inside the support of the new
     B-spline N_j and inside the domain (so that Q_j = b_k(tau_{j+1..j+p}))."""
     n_new = tau.size - p - 2
     j = np.arange(n_new + 1)
     m = np.full(j.shape, -1)
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     for off in range(p + 1):                         # first non-empty new span tau_m < tau_{m+1} with j <= m <= j+p
         cand = j + off
         ok = (m < 0) & (cand >= p) & (cand <= n_new)
@@ -127,7 +109,7 @@ def _check_refinement(t: np.ndarray, tau: np.ndarray, p: int) -> None:
     if i < t.size:
         raise ValueError(f"new_knots must contain every old knot; knots[{i}]={_fmt(t[i])} is missing in new_knots")
     extra.extend(tau[j:])
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     for x in extra:
         if not lo <= x <= hi:
             raise ValueError(f"new_knots may only add knots inside the domain [{_fmt(lo)}, {_fmt(hi)}]; "
@@ -156,7 +138,7 @@ def _boehm_once(P: np.ndarray, t: np.ndarray, p: int, u: float):
 
 
 def _check_insert(t: np.ndarray, p: int, u: float, times: int) -> None:
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     if not lo <= u <= hi:
         raise ValueError(f"u must lie in the domain [knots[{p}], knots[{t.size - p - 1}]] = [{_fmt(lo)}, {_fmt(hi)}]; "
                          f"u is {_fmt(u)}")
@@ -252,7 +234,7 @@ def _oslo(P, t, p, tau):
     n_new = tau.size - p - 2
     spans = _refinement_spans(t, tau, p)
     idx = np.arange(n_new + 1)[:, None] + np.arange(1, p + 1)[None, :]
-    return _blossom_many(P, t, p, spans, tau[idx])
+    return _kernels.blossom(P, t, p, spans, tau[idx])
 
 
 def oslo_steps(ctrl, knots, degree, new_knots) -> list[dict]:
@@ -318,7 +300,7 @@ def to_piecewise_bezier(ctrl, knots, degree):
     [0.0, 0.5, 1.0]
     """
     P, t, p = _curve(ctrl, knots, degree)
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     breaks = np.unique(t[(t >= lo) & (t <= hi)])
     a, b = breaks[:-1], breaks[1:]
     m = a.size
@@ -327,7 +309,7 @@ def to_piecewise_bezier(ctrl, knots, degree):
     # args[piece, i, level]: p - i copies of a, then i copies of b
     lev = np.arange(p)[None, None, :]
     args = np.where(lev < (p - i)[None, :, None], a[:, None, None], b[:, None, None])
-    flat = _blossom_many(P, t, p, np.repeat(spans, p + 1), args.reshape(m * (p + 1), p))
+    flat = _kernels.blossom(P, t, p, np.repeat(spans, p + 1), args.reshape(m * (p + 1), p))
     return flat.reshape(m, p + 1, P.shape[1]), breaks
 
 
@@ -356,7 +338,7 @@ def variation_diminishing(ctrl, knots, degree, line_point, line_normal, samples=
     samples = within_budget(samples, "samples", cost=lambda v: v * P.shape[1], what="the sampled curve",
                             unit="coordinates", minimum=2)
     poly = bezier.variation_count(P, line_point, line_normal)
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     pts = bspline.de_boor(P, t, p, np.linspace(lo, hi, samples))
     # crossings of the sampled curve: sign changes of the signed distances
     nrm = np.asarray(line_normal, dtype=float)
@@ -678,7 +660,7 @@ def control_polygon_distance(ctrl, knots, degree) -> float:
     bezier._moderate(P)
     if p < 1:
         raise ValueError("degree must be >= 1 for control_polygon_distance (Greville abscissae need a knot)")
-    xi = np.clip(greville(t, p), t[p], t[t.size - p - 1])
+    xi = np.clip(greville(t, p), *_kernels.domain(t, p))
     C = bspline.de_boor(P, t, p, xi)
     return float(np.linalg.norm(P - C, axis=1).max())
 
@@ -744,7 +726,7 @@ def split(ctrl, knots, degree, u):
     if p < 1:
         raise ValueError("degree must be >= 1 to split a curve by knot insertion")
     u = as_float(u, "u")
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = _kernels.domain(t, p)
     if not lo < u < hi:
         raise ValueError(f"u must lie strictly inside the domain ({_fmt(lo)}, {_fmt(hi)}); u is {_fmt(u)}")
     s = int(np.count_nonzero(t == u))
@@ -795,25 +777,25 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     P, t, p = _curve(ctrl, knots, degree)
     if p < 1:
         raise ValueError("degree must be >= 1 to render by subdivision")
-    tol = bezier._resolvable(as_float(tol, "tol", positive=True), bezier._moderate(P))
+    tol = bezier_subdivision._resolvable(as_float(tol, "tol", positive=True), bezier._moderate(P))
     max_levels = as_int(max_levels, "max_levels", minimum=0, maximum=20)
     if method not in ("bezier", "subdivision"):
         raise ValueError(f"method must be 'bezier' or 'subdivision'; got {method!r}")
     if method == "subdivision":
         level = 0
         while level < max_levels and _corner_flatness(P) > tol:
-            bezier._check_pieces(_refined_count(P.shape[0], p, 1), P.shape[1] * (p + 1), tol, "max_levels")
+            bezier_subdivision._check_pieces(_refined_count(P.shape[0], p, 1), P.shape[1] * (p + 1), tol, "max_levels")
             _, P, t = _schaefer_refine(P, t, p)
             level += 1
         return P.copy(), level
     pieces, _ = to_piecewise_bezier(P, t, p)
     level = 0
     while True:
-        flat = _flatness_many(pieces) <= tol
+        flat = _kernels.flatness(pieces, even=False) <= tol
         if flat.all() or level >= max_levels:
             break
-        bezier._check_pieces(len(pieces) + int(np.count_nonzero(~flat)), pieces[0].size, tol, "max_levels")
-        left, right = _halves_many(pieces[~flat])
+        bezier_subdivision._check_pieces(len(pieces) + int(np.count_nonzero(~flat)), pieces[0].size, tol, "max_levels")
+        left, right = _kernels.split(pieces[~flat], 0.5, axis=1)
         counts = np.where(flat, 1, 2)
         start = np.cumsum(counts) - counts
         new = np.empty((int(counts.sum()),) + pieces.shape[1:])
@@ -825,35 +807,12 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     return np.vstack([pieces[:, 0], pieces[-1:, -1]]), level
 
 
-def _flatness_many(pieces: np.ndarray) -> np.ndarray:
-    """Largest distance of the points of each polygon from its chord, for a stack (m, k, d): (m,)."""
-    a = pieces[:, :1]
-    ab = pieces[:, -1:] - a
-    L2 = (ab * ab).sum(-1)                                   # (m, 1)
-    w = pieces - a
-    s = np.clip(np.where(L2 > 0, (w * ab).sum(-1) / np.where(L2 > 0, L2, 1.0), 0.0), 0.0, 1.0)
-    return np.linalg.norm(w - s[..., None] * ab, axis=-1).max(-1)
-
-
-def _halves_many(pieces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Both halves at t = 1/2 of a stack of Bezier polygons (m, k, d), by de Casteljau."""
-    k = pieces.shape[1]
-    left = np.empty_like(pieces)
-    right = np.empty_like(pieces)
-    cur = pieces
-    for j in range(k):
-        left[:, j] = cur[:, 0]
-        right[:, k - 1 - j] = cur[:, -1]
-        cur = 0.5 * (cur[:, :-1] + cur[:, 1:])
-    return left, right
-
-
 def intersect(a, b, tol=1e-10):
     """Intersection points of two planar B-spline curves (Goldman §28.3.5, §28.4.4).
 
     Both curves are converted to piecewise Bezier form by knot insertion (§28.3.3); every pair of
     Bezier pieces is then intersected by Bezier subdivision with a Newton polish
-    (:func:`goldman_lib.bezier.intersect_curves`: pieces whose control-point boxes miss cannot
+    (:func:`goldman_lib.bezier_intersection.intersect_curves`: pieces whose control-point boxes miss cannot
     meet, by the convex hull property), and the piece parameters are mapped back to the knot
     intervals.  A crossing at a knot, found by the two pieces that meet there, is kept once.
 
@@ -890,7 +849,7 @@ def intersect(a, b, tol=1e-10):
         for j, B in enumerate(pb):
             if np.any(lo_a[i] > hi_b[j] + pad) or np.any(lo_b[j] > hi_a[i] + pad):
                 continue                                        # convex hulls apart: no intersection
-            st = bezier.intersect_curves(A, B, tol=tol)
+            st = bezier_intersection.intersect_curves(A, B, tol=tol)
             for s_, t_ in st:
                 hits.append((ba[i] + (ba[i + 1] - ba[i]) * s_, bb[j] + (bb[j + 1] - bb[j]) * t_))
     if not hits:

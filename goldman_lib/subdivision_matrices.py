@@ -32,14 +32,14 @@ import math
 
 import numpy as np
 
-from goldman_lib import ifs
+from goldman_lib import _kernels, ifs
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points, as_tolerance,
                                      check_finite, finite_result, within_budget)
 
 __all__ = ["bezier_subdivision_matrices", "bspline_subdivision_matrices", "check_rows_sum_to_one",
            "lift_control_points", "curve_ifs", "contraction_factors", "attractor", "curve_as_attractor", "normal_curve",
            "normal_curve_control_points", "fractal_matrices", "sierpinski_matrices", "control_point_ifs",
-           "MAX_POINTS"]
+           "barycentric_attractor", "MAX_POINTS"]
 
 #: The most points :func:`attractor` will produce.
 MAX_POINTS = 2_000_000
@@ -276,14 +276,34 @@ def attractor(maps, levels: int, start) -> np.ndarray:
         raise ValueError(f"start must hold points with {D1 - 1} coordinates (or {D1} homogeneous); got shape {X.shape}")
     levels = within_budget(levels, "levels", cost=lambda v: len(X) * len(M) ** v, what="the attractor",
                            unit="points", limit=MAX_POINTS)
-    for _ in range(levels):
-        X = np.matmul(X[None], M).reshape(-1, D1)
+    X = _kernels.iterate_maps(X, M, levels)
     with np.errstate(all="ignore"):
         out = X[:, :-1] / X[:, -1:]
     if not np.all(np.isfinite(out)):
         raise ValueError("maps must keep the points finite (affine maps, last column (0, ..., 0, 1)); "
                          f"after {levels} levels a point overflows or has homogeneous coordinate 0")
     return out
+
+
+def barycentric_attractor(matrices, levels: int, start_rows=(0, -1)) -> np.ndarray:
+    """The deterministic algorithm on barycentric coordinates: rows of the identity (the control
+    points themselves) mapped by ``x -> x @ M_k``, ``levels`` times (Goldman §29.4).
+
+    Needs no inverse, so it also works for collinear control points: the attractor for control
+    points P is ``barycentric_attractor(...) @ P``.  Returns ``(len(start_rows) k^levels, n+1)``,
+    at most :data:`MAX_POINTS` rows (the work budget).
+
+    >>> L, R = bezier_subdivision_matrices(2)
+    >>> (barycentric_attractor([L, R], 1) @ np.array([[0, 0], [1, 2], [2, 0]])).tolist()
+    [[0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]]
+    """
+    M = check_finite(as_float_array(matrices, "matrices"), "matrices")
+    if M.ndim != 3 or M.shape[1] != M.shape[2] or len(M) < 1:
+        raise ValueError(f"matrices must be a stack (k, n+1, n+1) of square matrices; got shape {M.shape}")
+    X = np.eye(M.shape[1])[list(start_rows)]
+    levels = within_budget(levels, "levels", cost=lambda v: len(X) * len(M) ** v, what="the attractor",
+                           unit="points", limit=MAX_POINTS)
+    return _kernels.iterate_maps(X, M, levels)
 
 
 def curve_as_attractor(ctrl, levels: int = 8, kind: str = "bezier") -> np.ndarray:

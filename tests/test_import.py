@@ -22,3 +22,15 @@ def test_views_import_heavy_libraries_lazily_only_where_needed():
     code = "import sys, goldman_lib.views.three as t; print('pythreejs' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False", "views.three must import pythreejs only when a SceneView is built"
+
+
+def test_chapter_25_modules_import_in_any_order():
+    """bezier re-exports the chapter-25 names lazily, so importing a chapter-25 module first works."""
+    import subprocess
+    import sys
+
+    for first in ("bezier_intersection", "bezier_subdivision", "knot_insertion", "bezier"):
+        code = (f"import goldman_lib.{first}\nfrom goldman_lib import bezier, bezier_intersection\n"
+                "assert bezier.intersect_curves is bezier_intersection.intersect_curves\n"
+                "from goldman_lib.bezier import *\nassert callable(subdivide)")
+        subprocess.run([sys.executable, "-c", code], check=True)

@@ -39,6 +39,28 @@ def test_every_chapter_so_far_has_widget_factories():
     assert {"bezier", "turtle", "ifs_editor", "knot_editor", "fractals", "subdivision_surfaces"} <= ids
 
 
+#: views modules that are helpers, not chapters: they may hold no widget factory.
+HELPER_MODULES = {"interactive", "style", "three", "drag"}
+
+
+def test_every_views_module_has_a_widget_factory():
+    """A chapter's views module whose factory loses its ``-> InteractiveView`` annotation would drop
+    out of the sweeps (and the callback benchmark) silently; here it fails instead."""
+    import pkgutil
+
+    import goldman_lib.views as views_pkg
+
+    modules = {m.name for m in pkgutil.iter_modules(views_pkg.__path__)}
+    ids = {p.id.split(".")[0] for p in FACTORIES}
+    missing = sorted(modules - HELPER_MODULES - ids)
+    assert not missing, f"views modules without a widget factory (annotate it -> InteractiveView): {missing}"
+
+
+def test_dropdown_helper_matches_the_slider_style():
+    w = interactive.dropdown("map", [("one", 1), ("two", 2)])
+    assert w.value == 1 and w.description == "map" and w.style.description_width == "48px"
+
+
 @pytest.mark.parametrize("factory", FACTORIES)
 def test_sweep_over_every_control_range(factory):
     view = factory()

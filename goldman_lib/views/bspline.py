@@ -38,7 +38,7 @@ def plot_bspline_curve(ctrl, knots, degree, ax=None, samples: int = 300, polygon
     ax = style.get_axes(ax)
     if polygon:
         ax.plot(ctrl[:, 0], ctrl[:, 1], "o--", color=style.PALETTE["control"], markersize=5, linewidth=1)
-    u = np.linspace(t[p], t[len(ctrl)], samples)
+    u = np.linspace(*bspline.domain(t, p), samples)
     pts = bspline.de_boor(ctrl, t, p, u)
     (line,) = ax.plot(pts[:, 0], pts[:, 1], color=color or style.PALETTE["curve"], linewidth=2.2, **kwargs)
     if marks:

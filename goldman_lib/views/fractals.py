@@ -131,7 +131,7 @@ def _program_html(prog) -> str:
     import html
 
     def wrap(cmds):
-        words = fractals._text(cmds).replace("RECURSE(mirror)", "MIRROR").split(" ")
+        words = fractals.program_text(cmds).replace("RECURSE(mirror)", "MIRROR").split(" ")
         lines, line = [], ""
         for w in words:
             if len(line) + len(w) > 40:
@@ -183,7 +183,7 @@ def looping_lemma_explorer(angle: float = 150.0, repetitions: int = 12, bend: fl
         a, b, k = round(float(angle), 6), round(float(bend), 6), int(repetitions)
         body = [("FORWARD", 1.0)] + ([("TURN", b), ("FORWARD", 1.0)] if b else []) + [("TURN", a - b)]
         loop = fractals.loop_analysis(body)
-        codes, values = fractals._flat(fractals._as_commands(body, "body", allow_recurse=False), 1.0)
+        codes, values = fractals.program_codes(body)
         t = turtle.trace_arrays(np.tile(codes, k), np.tile(values, k), np.zeros(2), np.array([1.0, 0.0]))
         per = len(t.polylines[0]) // k if t.polylines else 1
         starts = t.polylines[0][::per] if t.polylines else np.zeros((1, 2))

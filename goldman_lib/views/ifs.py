@@ -50,7 +50,7 @@ def plot_copies(system, start, levels: int, ax=None, **kwargs):
 
 
 def _levels_cap(k: int, m: int, level: int) -> int:
-    while level > 0 and m * k ** level > _MAX_POINTS:
+    while level > 0 and ifs.deterministic_count(level, k, m) > _MAX_POINTS:
         level -= 1
     return level
 

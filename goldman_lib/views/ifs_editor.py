@@ -191,9 +191,8 @@ def attractor_points(system, algorithm: str = "chaos game", points: int = 100_00
 
 
 def _count(k, m, C, levels):
-    if C is None:
-        return m * k ** levels
-    return len(C) * sum(k ** j for j in range(levels + 1))
+    c = 0 if C is None else len(C)
+    return ifs.deterministic_count(levels, k, c or m, condensation=c)
 
 
 def _deterministic_labels(n: int, k: int, c: int, levels: int) -> np.ndarray:

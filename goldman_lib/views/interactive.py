@@ -44,6 +44,19 @@ def float_slider(description: str, value: float, low: float, high: float, step: 
                                style={"description_width": label_width}, layout=widgets.Layout(width=width))
 
 
+def dropdown(description: str, options, value=None, *, width: str = "290px",
+             label_width: str = "48px") -> widgets.Dropdown:
+    """A compact dropdown in the house style (the label width of :func:`float_slider`, so it lines
+    up with a stack of sliders).  options: a list of values or of ``(label, value)`` pairs; value:
+    the one shown first (default the first option)."""
+    options = list(options)
+    if value is None and options:
+        first = options[0]
+        value = first[1] if isinstance(first, tuple) else first
+    return widgets.Dropdown(options=options, value=value, description=description,
+                            style={"description_width": label_width}, layout=widgets.Layout(width=width))
+
+
 def int_slider(description: str, value: int, low: int, high: int, *, width: str = "290px",
                label_width: str = "48px") -> widgets.IntSlider:
     """A compact integer slider in the house style."""

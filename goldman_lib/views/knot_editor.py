@@ -376,7 +376,7 @@ def plot_knot_marks(ctrl, knots, degree, ax=None, weights=None):
 
 
 def _knot_points(ctrl, knots, degree, weights=None):
-    lo, hi = knots[degree], knots[len(knots) - degree - 1]
+    lo, hi = bspline.domain(knots, degree)
     at = np.unique(knots[(knots >= lo) & (knots <= hi)])
     if weights is None:
         return bspline.de_boor(ctrl, knots, degree, at)
@@ -388,7 +388,7 @@ def plot_basis_functions(knots, degree, ax=None, samples: int = 300):
     t = bspline.check_knots(knots, degree)
     p = int(degree)
     ax = style.get_axes(ax, equal=False)
-    u = np.linspace(t[p], t[t.size - p - 1], samples)
+    u = np.linspace(*bspline.domain(t, p), samples)
     lines = ax.plot(u, bspline.basis(t, p, u), linewidth=1.5)
     ax.set_ylim(-0.03, 1.05)
     ax.set_xlabel("u")

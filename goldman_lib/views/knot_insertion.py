@@ -64,7 +64,7 @@ def _polygon_gap(Q, p, closed=False, knots=None) -> float:
     else:
         ext, t = Q, np.asarray(knots, dtype=float)
     xi = ki.greville(t, p)
-    lo, hi = t[p], t[t.size - p - 1]
+    lo, hi = bspline.domain(t, p)
     inside = (xi >= lo) & (xi <= hi)
     C = bspline.de_boor(ext, t, p, xi[inside])
     return float(np.linalg.norm(ext[inside] - C, axis=1).max())

@@ -117,10 +117,7 @@ def _limits(ax, *point_sets, pad: float = 0.4):
 
 
 def _split_recursively(ctrl: np.ndarray, depth: int, t: float) -> np.ndarray:
-    pieces = [ctrl]
-    for _ in range(depth):
-        pieces = [half for piece in pieces for half in bezier.subdivide(piece, t)]
-    return np.array(pieces)
+    return bezier.subdivide_uniform(ctrl, depth, t)
 
 
 # -- widgets ------------------------------------------------------------------------------------
@@ -199,12 +196,7 @@ def adaptive_rendering_view(ctrl=WAVY, digits: int = 2) -> InteractiveView:
             idx = np.arange(0, len(dense), max(step, 1))
             if idx[-1] != len(dense) - 1:
                 idx = np.append(idx, len(dense) - 1)
-            worst = 0.0
-            for a, b in zip(idx[:-1], idx[1:]):
-                seg = dense_pts[a:b + 1]
-                w = np.linspace(0, 1, len(seg))[:, None]
-                chord = (1 - w) * seg[0] + w * seg[-1]
-                worst = max(worst, float(np.linalg.norm(seg - chord, axis=1).max()))
+            worst = max(bezier.flatness(dense_pts[a:b + 1]) for a, b in zip(idx[:-1], idx[1:]))
             if worst <= tol:
                 return len(idx) - 1
         return len(dense) - 1

@@ -10,43 +10,21 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib import ifs
+from goldman_lib import bezier, ifs
 from goldman_lib import subdivision_matrices as sm
+from goldman_lib.subdivision_matrices import barycentric_attractor  # noqa: F401  (moved to the library)
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_points, check_finite, finite_result,
                                      within_budget)
 from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
-__all__ = ["DEFAULT_TRIANGLE", "DEFAULT_CUBIC", "barycentric_attractor", "plot_attractor_levels",
+__all__ = ["DEFAULT_TRIANGLE", "DEFAULT_CUBIC", "plot_attractor_levels",
            "curve_attractor_view", "fractal_editor"]
 
 #: The three control points of the fractal editor.
 DEFAULT_TRIANGLE = np.array([[0.0, 0.0], [1.5, 2.5], [4.0, 0.0]])
 #: The cubic of the attractor view.
 DEFAULT_CUBIC = np.array([[0.0, 0.0], [1.0, 2.5], [3.0, 2.5], [4.0, 0.0]])
-
-
-def barycentric_attractor(matrices, levels: int, start_rows=(0, -1)) -> np.ndarray:
-    """The deterministic algorithm on barycentric coordinates: rows of the identity (the control
-    points themselves) mapped by ``x -> x @ M_k``, ``levels`` times (Goldman §29.4).
-
-    Needs no inverse, so it also works for collinear control points: the attractor for control
-    points P is ``barycentric_attractor(...) @ P``.  Returns ``(len(start_rows) k^levels, n+1)``,
-    at most :data:`goldman_lib.subdivision_matrices.MAX_POINTS` rows (the work budget).
-
-    >>> L, R = sm.bezier_subdivision_matrices(2)
-    >>> (barycentric_attractor([L, R], 1) @ np.array([[0, 0], [1, 2], [2, 0]])).tolist()
-    [[0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]]
-    """
-    M = check_finite(as_float_array(matrices, "matrices"), "matrices")
-    if M.ndim != 3 or M.shape[1] != M.shape[2] or len(M) < 1:
-        raise ValueError(f"matrices must be a stack (k, n+1, n+1) of square matrices; got shape {M.shape}")
-    X = np.eye(M.shape[1])[list(start_rows)]
-    levels = within_budget(levels, "levels", cost=lambda v: len(X) * len(M) ** v, what="the attractor",
-                           unit="points", limit=sm.MAX_POINTS)
-    for _ in range(levels):
-        X = np.matmul(X[None], M).reshape(-1, M.shape[1])
-    return X
 
 
 def plot_attractor_levels(ctrl, levels=(0, 1, 2, 4), ax=None, kind: str = "bezier"):
@@ -93,10 +71,7 @@ def curve_attractor_view(ctrl=DEFAULT_CUBIC, levels: int = 2, max_levels: int = 
         c = dense[kind]
         curve.set_data(c[:, 0], c[:, 1])
         # flatness: how far each piece's control points stray from the chord of their piece
-        a, b = blocks[:, :1], blocks[:, -1:]
-        d = b - a
-        cross = np.abs(d[..., 0] * (blocks[..., 1] - a[..., 1]) - d[..., 1] * (blocks[..., 0] - a[..., 0]))
-        flat = float((cross / np.maximum(np.linalg.norm(d, axis=-1), 1e-300)).max())
+        flat = float(bezier.flatness(blocks, even=False).max())
         return {"polygons": pts, "flatness": flat,
                 "status": f"{kind}: {len(blocks)} polygons after {levels} level(s); each within {flat:.4f} of its chord"}
 
@@ -148,7 +123,7 @@ def fractal_editor(ctrl=DEFAULT_TRIANGLE, middle: float = -0.3, levels: int = 10
             pts = ifs.deterministic(system, levels, start=P[[0, 2]])
             how = "ifs.deterministic on {P^-1 L P, P^-1 R P}"
         except ValueError:
-            pts = barycentric_attractor(mats, levels) @ P
+            pts = sm.barycentric_attractor(mats, levels) @ P
             how = "control points collinear (no P^-1): drawn from barycentric coordinates"
         finite_result(pts, "middle", middle, why="is too far from [-1, 1]")
         u = (1 - middle) / 2

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from goldman_lib import shading
 from goldman_lib import subdivision_surfaces as ss
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
@@ -56,7 +57,7 @@ def plot_polygon_levels(ctrl, degree: int, levels: int, ax=None, closed: bool = 
 def plot_mesh(mesh: ss.Mesh, ax=None, color=None, edges: bool = True, control: ss.Mesh | None = None):
     """Draw a 3D mesh with matplotlib (flat-shaded faces, optional edges and control mesh); returns
     the axes.  For static pictures; the live view is :func:`subdivision_viewer`."""
-    from matplotlib.colors import LightSource, to_rgb
+    from matplotlib.colors import to_rgb
     from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
     if ax is None:
@@ -65,12 +66,10 @@ def plot_mesh(mesh: ss.Mesh, ax=None, color=None, edges: bool = True, control: s
     V = mesh.vertices
     faces = mesh.faces if mesh.face_size else list(mesh.faces)
     polys = [V[f] for f in faces]
-    tris = V[mesh.triangles()]
-    normals = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
+    normals = shading.face_normals(V, mesh.triangles())
     first_tri = np.concatenate([[0], np.cumsum(mesh.face_sizes - 2)[:-1]])
-    shade = LightSource(azdeg=315, altdeg=45).shade_normals(normals[first_tri], fraction=0.9)
-    base = np.asarray(to_rgb(color or style.PALETTE["surface"]))
-    colours = np.clip(base[None] * (0.45 + 0.55 * shade[:, None]), 0, 1)
+    intensity = shading.diffuse(normals[first_tri], shading.light_direction(315, 45), fraction=0.9)
+    colours = shading.shade(to_rgb(color or style.PALETTE["surface"]), intensity)
     ax.add_collection3d(Poly3DCollection(polys, facecolors=colours, edgecolors="#33333355" if edges else "none",
                                          linewidths=0.3))
     pts = V

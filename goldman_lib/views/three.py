@@ -22,6 +22,8 @@ import io
 
 import numpy as np
 
+from goldman_lib import shading
+from goldman_lib.shading import vertex_normals
 from goldman_lib.validation import as_points, within_budget
 
 __all__ = ["SceneView", "grid_triangles", "vertex_normals"]
@@ -45,21 +47,6 @@ def grid_triangles(rows: int, cols: int) -> np.ndarray:
     a = (r * cols + c).ravel()
     b, d, e = a + 1, a + cols, a + cols + 1
     return np.concatenate([np.stack([a, d, b], 1), np.stack([b, d, e], 1)]).reshape(2, -1, 3).transpose(1, 0, 2).reshape(-1, 3)
-
-
-def vertex_normals(positions: np.ndarray, triangles: np.ndarray) -> np.ndarray:
-    """Unit vertex normals: area-weighted sums of the face normals around each vertex.
-
-    >>> vertex_normals(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0]]), np.array([[0, 1, 2]])).tolist()
-    [[0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0]]
-    """
-    p = positions[triangles]
-    fn = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-    n = np.zeros_like(positions)
-    for k in range(3):
-        np.add.at(n, triangles[:, k], fn)
-    length = np.linalg.norm(n, axis=1, keepdims=True)
-    return np.divide(n, length, out=np.zeros_like(n) + [0.0, 0.0, 1.0], where=length > 1e-300)
 
 
 class SceneView:
@@ -222,7 +209,7 @@ class SceneView:
         net lying on its surface.  Degenerate triangles and zero-length segments (the padding of a
         view whose geometry shrank) are left out.  Axes have equal scales.
         """
-        from matplotlib.colors import LightSource, to_rgb
+        from matplotlib.colors import to_rgb
         from matplotlib.figure import Figure
         from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
@@ -230,19 +217,18 @@ class SceneView:
         ax = fig.add_subplot(1, 1, 1, projection="3d", computed_zorder=False)
         d = np.subtract(self.camera_position, self.target)
         ax.view_init(elev=np.degrees(np.arctan2(d[2], np.hypot(d[0], d[1]))), azim=np.degrees(np.arctan2(d[1], d[0])))
-        light = LightSource(azdeg=315, altdeg=45)
+        light = shading.light_direction(315, 45)
         everything = []
         for order, item in enumerate(self._items.values()):
             pos = item["positions"]
             if item["kind"] == "mesh":
                 tris = pos[item["triangles"]]
-                normals = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
+                normals = shading.face_normals(pos, item["triangles"])
                 keep = np.linalg.norm(normals, axis=1) > 1e-12
                 if not keep.any():
                     continue
                 tris, normals = tris[keep], normals[keep]
-                shade = light.shade_normals(normals, fraction=0.9)
-                colors = np.clip(np.asarray(to_rgb(item["color"]))[None] * (0.45 + 0.55 * shade[:, None]), 0, 1)
+                colors = shading.shade(to_rgb(item["color"]), shading.diffuse(normals, light, fraction=0.9))
                 ax.add_collection3d(Poly3DCollection(tris, facecolors=colors, edgecolors="none",
                                                      alpha=min(1.0, item["opacity"] + 0.15), zorder=order))
                 everything.append(tris.reshape(-1, 3))

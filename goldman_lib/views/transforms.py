@@ -25,7 +25,7 @@ import html
 import numpy as np
 
 from goldman_lib import transforms, vector_geometry, vectors
-from goldman_lib.views.interactive import InteractiveView, float_slider
+from goldman_lib.views.interactive import InteractiveView, dropdown, float_slider
 from goldman_lib.views.vectors3d import COLOURS, VectorScene
 
 __all__ = ["letter_f", "rotation_view", "mirror_view", "scaling_view", "projection_view", "matrix_html", "MAPS",
@@ -381,9 +381,8 @@ def composition_view(first="translate by (t, 0, 0)", second="rotate about the ve
     scene.add_segments("other:edges", F_VERTICES, F_EDGES, color=COLOURS["w"], width=0.6)
     _add_image(scene)
     names = list(MAPS)
-    pick = dict(layout=widgets.Layout(width="330px"), style={"description_width": "50px"})
-    controls = {"first": widgets.Dropdown(options=names, value=first, description="first", **pick),
-                "second": widgets.Dropdown(options=names, value=second, description="then", **pick),
+    controls = {"first": dropdown("first", names, first, width="330px", label_width="50px"),
+                "second": dropdown("then", names, second, width="330px", label_width="50px"),
                 "angle": float_slider("angle", angle, -180, 180, 5, width="250px", label_width="40px", readout=".0f"),
                 "m": float_slider("m", m, -1.0, 2.0, 0.05, width="250px", label_width="40px"),
                 "s": float_slider("s", s, -1.5, 2.5, 0.05, width="250px", label_width="40px"),

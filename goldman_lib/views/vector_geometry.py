@@ -30,7 +30,7 @@ from goldman_lib import vector_geometry as vg
 from goldman_lib import vectors
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
+from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider
 from goldman_lib.views.vectors3d import COLOURS, VectorScene
 
 __all__ = ["point_plane_view", "skew_lines_view", "three_planes_view", "volume_view", "inside_outside_view",
@@ -345,8 +345,7 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
               handlelength=1.0, columnspacing=0.8)
     ax.set_title("winding numbers of the polygon (drag the vertices and the ★)", fontsize=9)
 
-    controls = {"mode": widgets.Dropdown(options=list(_MODES.items()), value="winding", description="colour",
-                                         style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+    controls = {"mode": dropdown("colour", _MODES.items(), "winding"),
                 "qx": float_slider("qx", float(query[0]), -box, box, 0.05),
                 "qy": float_slider("qy", float(query[1]), -box, box, 0.05)}
     for k, (x, y) in enumerate(poly):

@@ -1,0 +1,642 @@
+"""Intersection by Bezier subdivision (Goldman chapter 25, §25.3.1-25.3.2).
+
+:func:`intersect_curves` and :func:`intersection_boxes` (§25.3.1, curve-curve), and for surfaces
+:func:`intersect_ray_patch` and :func:`intersect_patches` (§25.3.2).  They prune pairs of pieces
+by the convex hull property (bounding boxes) and polish by Newton's method.  B-spline curves are
+intersected by converting to Bezier pieces first (:func:`goldman_lib.knot_insertion.intersect`,
+which calls :func:`intersect_curves`).  Every public name here is also importable as
+``goldman_lib.bezier.<name>``.
+
+>>> intersect_curves([[0, 0], [1, 2], [2, 0]], [[0, 0.75], [2, 0.75]]).round(12).tolist()
+[[0.25, 0.25], [0.75, 0.75]]
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from goldman_lib._kernels import flatness as _flatness, split as _split
+from goldman_lib.bezier import _curve_points, _moderate, _patch_points
+from goldman_lib.bezier_subdivision import _patch_flatness, _quarter, _tolerance
+from goldman_lib.validation import as_int, as_points
+
+__all__ = ["intersect_curves", "intersection_boxes", "intersect_ray_patch", "intersect_patches"]
+
+# -- §25.3.1 curve-curve intersection ----------------------------------------------------------
+
+def _boxes(P: np.ndarray) -> np.ndarray:
+    """Axis-aligned bounding boxes of a stack of polygons (N, n+1, d): (N, 2, d) [min; max]."""
+    return np.stack([P.min(axis=1), P.max(axis=1)], axis=1)
+
+
+def _overlap(ba: np.ndarray, bb: np.ndarray, pad: float) -> np.ndarray:
+    return np.all((ba[:, 0] <= bb[:, 1] + pad) & (bb[:, 0] <= ba[:, 1] + pad), axis=-1)
+
+
+def _pair_levels(A: np.ndarray, B: np.ndarray, pad: float, flat_tol: float, max_depth: int, max_pairs: int):
+    """Breadth-first subdivision of a pair of curves (Goldman §25.3.1), yielding one level at a time.
+
+    Yields ``(level, a_pieces, b_pieces, a_intervals, b_intervals, flat)`` for the pairs whose
+    bounding boxes overlap at that level; ``flat`` marks the pairs where both pieces are flat
+    (they are not subdivided further).  Stops when no pair is left, at ``max_depth``, or
+    when more than ``max_pairs`` pairs would be kept (then every kept pair is marked flat).
+    """
+    pa, pb = A[None], B[None]
+    ia = np.array([[0.0, 1.0]])
+    ib = np.array([[0.0, 1.0]])
+    for level in range(max_depth + 1):
+        keep = _overlap(_boxes(pa), _boxes(pb), pad)
+        pa, pb, ia, ib = pa[keep], pb[keep], ia[keep], ib[keep]
+        flat = (_flatness(pa) <= flat_tol) & (_flatness(pb) <= flat_tol)
+        if level == max_depth or 4 * np.count_nonzero(~flat) > max_pairs:
+            flat[:] = True
+        yield level, pa, pb, ia, ib, flat
+        pa, pb, ia, ib = pa[~flat], pb[~flat], ia[~flat], ib[~flat]
+        if len(pa) == 0:
+            return
+        # both pieces of every pair are halved: four child pairs
+        al, ar = _split(pa, 0.5, axis=1)
+        bl, br = _split(pb, 0.5, axis=1)
+        am = ia.mean(axis=1)
+        bm = ib.mean(axis=1)
+        ial = np.stack([ia[:, 0], am], 1)
+        iar = np.stack([am, ia[:, 1]], 1)
+        ibl = np.stack([ib[:, 0], bm], 1)
+        ibr = np.stack([bm, ib[:, 1]], 1)
+        pa = np.concatenate([al, al, ar, ar])
+        pb = np.concatenate([bl, br, bl, br])
+        ia = np.concatenate([ial, ial, iar, iar])
+        ib = np.concatenate([ibl, ibr, ibl, ibr])
+
+
+def _chord_guesses(pa, pb, ia, ib) -> np.ndarray:
+    """Parameter guesses (N, 2) from intersecting the chords of flat piece pairs.
+
+    The chord of a flat piece, parametrised uniformly, is within the flatness of the piece, so
+    the chords' intersection parameters approximate the curves'.  Parallel chords (no single
+    intersection) give the middle of both pieces; guesses are clipped to the pieces.
+    """
+    a0, a1 = pa[:, 0], pa[:, -1]
+    b0, b1 = pb[:, 0], pb[:, -1]
+    da, db, r = a1 - a0, b1 - b0, b0 - a0
+    det = da[:, 0] * (-db[:, 1]) - da[:, 1] * (-db[:, 0])
+    scale = np.linalg.norm(da, axis=1) * np.linalg.norm(db, axis=1)
+    ok = np.abs(det) > 1e-12 * np.maximum(scale, 1e-300)
+    safe = np.where(ok, det, 1.0)
+    sig = (r[:, 0] * (-db[:, 1]) - r[:, 1] * (-db[:, 0])) / safe
+    tau = (da[:, 0] * r[:, 1] - da[:, 1] * r[:, 0]) / safe
+    sig = np.clip(np.where(ok, sig, 0.5), 0.0, 1.0)
+    tau = np.clip(np.where(ok, tau, 0.5), 0.0, 1.0)
+    s = ia[:, 0] + sig * (ia[:, 1] - ia[:, 0])
+    t = ib[:, 0] + tau * (ib[:, 1] - ib[:, 0])
+    return np.stack([s, t], axis=1)
+
+
+def _solve2(J: np.ndarray, F: np.ndarray) -> np.ndarray:
+    """Newton steps ``-J^+ F`` for a stack of 2x2 systems, (N, 2, 2) and (N, 2) -> (N, 2).
+
+    Cramer's rule where J is comfortably invertible; elsewhere (a tangential intersection makes
+    J singular) the least-squares step of the regularised normal equations, which tends to the
+    minimum-norm (pseudo-inverse) step.
+    """
+    a, b, c, d = J[:, 0, 0], J[:, 0, 1], J[:, 1, 0], J[:, 1, 1]
+    det = a * d - b * c
+    size = a * a + b * b + c * c + d * d
+    good = np.abs(det) > 1e-12 * size
+    safe = np.where(good, det, 1.0)
+    x = (d * F[:, 0] - b * F[:, 1]) / safe
+    y = (a * F[:, 1] - c * F[:, 0]) / safe
+    if not good.all():
+        # (J^T J + lam I) step = J^T F
+        g0 = a * F[:, 0] + c * F[:, 1]
+        g1 = b * F[:, 0] + d * F[:, 1]
+        lam = 1e-14 * size + 1e-300
+        m00 = a * a + c * c + lam
+        m01 = a * b + c * d
+        m11 = b * b + d * d + lam
+        mdet = m00 * m11 - m01 * m01
+        x = np.where(good, x, (m11 * g0 - m01 * g1) / mdet)
+        y = np.where(good, y, (m00 * g1 - m01 * g0) / mdet)
+    return -np.stack([x, y], axis=1)
+
+
+def _newton_pairs(A: np.ndarray, B: np.ndarray, st: np.ndarray, iterations: int = 100) -> tuple[np.ndarray, np.ndarray]:
+    """Newton's method on a(s) - b(t) = 0 for many starting pairs at once, kept inside [0, 1]^2.
+
+    The Jacobian [a'(s), -b'(t)] is singular at a tangential intersection, so there each step is
+    the least-squares (minimum-norm) step, and the iterate is clipped to the unit square: at a
+    tangency or at a smooth end-to-end join this converges linearly rather than quadratically,
+    which is still ample for the tolerances asked.  A start still far from any solution after
+    a dozen steps is dropped.  Returns (st, residual norms).
+    """
+    n, m = A.shape[0] - 1, B.shape[0] - 1
+    HA = n * np.diff(A, axis=0) if n else np.zeros_like(A)
+    HB = m * np.diff(B, axis=0) if m else np.zeros_like(B)
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    st = st.copy()
+    active = np.ones(len(st), dtype=bool)
+    for it in range(iterations):
+        idx = np.flatnonzero(active)
+        if idx.size == 0:
+            break
+        s, t = st[idx, 0], st[idx, 1]
+        F = _curve_points(A, s) - _curve_points(B, t)
+        if it == 12:
+            hopeless = np.linalg.norm(F, axis=1) > 1e-3 * scale
+            active[idx[hopeless]] = False
+            keep = ~hopeless
+            idx, s, t, F = idx[keep], s[keep], t[keep], F[keep]
+        exact = np.linalg.norm(F, axis=1) <= 4e-16 * scale      # nothing left to improve
+        active[idx[exact]] = False
+        idx, s, t, F = idx[~exact], s[~exact], t[~exact], F[~exact]
+        J = np.stack([_curve_points(HA, s), -_curve_points(HB, t)], axis=-1)   # (N, 2, 2)
+        new = np.clip(st[idx] + _solve2(J, F), 0.0, 1.0)
+        moved = np.abs(new - st[idx]).max(axis=1)
+        st[idx] = new
+        active[idx[moved <= 1e-15]] = False
+    res = np.linalg.norm(_curve_points(A, st[:, 0]) - _curve_points(B, st[:, 1]), axis=1)
+    return st, res
+
+
+def _merge_solutions(st: np.ndarray, res: np.ndarray, meet, tol_abs: float, close: float = 1e-3) -> np.ndarray:
+    """Deduplicate converged parameter points: two solutions are one if they are within 1e-9,
+    or within ``close`` and the curves still meet half way between them (a tangential contact
+    approached from several candidates).  Each cluster is represented by its best residual."""
+    order = np.argsort(res, kind="stable")
+    kept: list[np.ndarray] = []
+    for i in order:
+        p = st[i]
+        same = False
+        for q in kept:
+            gap = np.abs(p - q).max()
+            if gap <= 1e-9 or (gap <= close and meet((p + q) / 2) <= tol_abs):
+                same = True
+                break
+        if not same:
+            kept.append(p)
+    if not kept:
+        return np.zeros((0, st.shape[1]))
+    out = np.array(kept)
+    return out[np.lexsort(out.T[::-1])]
+
+
+def _curves_pair(a, b, moderate: bool = False):
+    A = as_points(a, "a", ndim=2, dim=2)
+    B = as_points(b, "b", ndim=2, dim=2)
+    return (_moderate(A, "a"), _moderate(B, "b")) if moderate else (A, B)
+
+
+def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
+    """The parameter pairs ``(s, t)`` with ``a(s) = b(t)`` of two planar Bezier curves, by subdivision (Goldman §25.3.1).
+
+    Subdivision finds where to look, Newton's method says exactly where:
+
+    1. Keep a list of pairs of pieces, starting with the two whole curves.  Discard every pair
+       whose control-point bounding boxes do not overlap: by the convex-hull property the
+       pieces cannot meet.
+    2. When both pieces of a pair are flat -- close to their chords *and* evenly parametrised,
+       :func:`flatness` with ``even=True``, relative tolerance 1e-3 -- intersect the chords;
+       the chord parameters approximate the curves'.  Otherwise halve both pieces and go on.
+    3. Polish every guess by Newton's method on ``a(s) - b(t) = 0`` over the whole curves
+       (least-squares steps kept inside [0, 1]^2, so tangential contacts converge too), keep
+       the guesses where the curves meet within ``tol`` (relative to the size of the control
+       points), and merge guesses that are the same intersection.
+
+    The flatness test must ask for evenly spaced control points: a nearly straight curve with
+    an uneven parametrisation has a straight polygon, but its chord's parameters are far from
+    the curve's.
+
+    a: (n+1, 2), b: (m+1, 2) control points.  tol: positive float, how close (relative to the
+    size of the control points, at least 1) the curves must come to count as meeting.
+    max_depth: int in [1, 60], the deepest subdivision.
+    Returns (k, 2) parameter pairs ``[s, t]`` sorted by s; k = 0 if the curves do not meet.
+    Transversal intersections are accurate to about 1e-15; tangential ones (double roots) to
+    about 1e-8 and triple roots to about 1e-5.  A degree-0 curve (one point) gets parameter 0.
+    Curves that overlap along a piece (infinitely many intersections) are not handled: a sample
+    of points along the overlap is returned.
+    Raises ValueError if a or b is not (k, 2) finite points, for a non-positive tol or a bad
+    max_depth.
+
+    >>> intersect_curves([[0, 0], [1, 2], [2, 0]], [[0, 0.75], [2, 0.75]]).round(12).tolist()
+    [[0.25, 0.25], [0.75, 0.75]]
+    >>> intersect_curves([[0, 0], [1, 0]], [[0, 1], [1, 1]]).shape
+    (0, 2)
+    """
+    A, B = _curves_pair(a, b, moderate=True)
+    tol = _tolerance(tol)
+    max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=60)
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    guesses = [np.array([[0.0, 0.0], [0.0, 1.0], [1.0, 0.0], [1.0, 1.0]])]
+    for _, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-3 * scale,
+                                                  max_depth=max_depth, max_pairs=20000):
+        if flat.any():
+            guesses.append(_chord_guesses(pa[flat], pb[flat], ia[flat], ib[flat]))
+    st = np.concatenate(guesses)
+    st = np.unique(np.round(st, 12), axis=0)
+    st, res = _newton_pairs(A, B, st)
+    for axis, P in ((0, A), (1, B)):
+        if len(P) == 1:          # a degree-0 "curve" is one point: its parameter is immaterial, call it 0
+            st[:, axis] = 0.0
+    tol_abs = tol * scale
+    good = res <= tol_abs
+
+    def meet(p):
+        return float(np.linalg.norm(_curve_points(A, np.array(p[0])) - _curve_points(B, np.array(p[1]))))
+
+    return _merge_solutions(st[good], res[good], meet, tol_abs)
+
+
+def intersection_boxes(a, b, level) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The pieces of two curves still in play at one level of subdivision intersection (Goldman §25.3.1).
+
+    For the picture of :func:`intersect_curves`: at ``level`` (0 = the whole curves) both curves
+    have been halved ``level`` times and only the pairs of pieces whose bounding boxes overlap
+    are kept.  Pairs that became flat at an earlier level stopped being split there; they are
+    included as they were (their chords gave the first guesses of the intersections).
+
+    a: (n+1, 2), b: (m+1, 2).  level: int in [0, 30].
+    Returns ``(boxes_a, boxes_b, intervals_a, intervals_b)``: the distinct bounding boxes of the
+    kept pieces of each curve, (k, 2, 2) as ``[[xmin, ymin], [xmax, ymax]]``, and their
+    parameter intervals (k, 2).  Empty (0, 2, 2) arrays when no pair is left.
+    Raises ValueError for bad curves or level.
+
+    >>> ba, bb, ia, ib = intersection_boxes([[0, 0], [1, 2], [2, 0]], [[0, 1], [2, 1]], 1)
+    >>> ia.tolist(), ib.tolist()
+    ([[0.0, 0.5], [0.5, 1.0]], [[0.0, 0.5], [0.5, 1.0]])
+    """
+    A, B = _curves_pair(a, b, moderate=True)
+    level = as_int(level, "level", minimum=0, maximum=30)
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    kept_a, kept_b, kept_ia, kept_ib = [], [], [], []
+    for lv, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-3 * scale,
+                                                   max_depth=level, max_pairs=20000):
+        take = slice(None) if lv == level else flat
+        kept_a.append(pa[take])
+        kept_b.append(pb[take])
+        kept_ia.append(ia[take])
+        kept_ib.append(ib[take])
+    pa, pb = np.concatenate(kept_a), np.concatenate(kept_b)
+    ia, ib = np.concatenate(kept_ia), np.concatenate(kept_ib)
+    if len(pa) == 0:
+        return np.zeros((0, 2, 2)), np.zeros((0, 2, 2)), np.zeros((0, 2)), np.zeros((0, 2))
+    ua, ka = np.unique(ia, axis=0, return_index=True)
+    ub, kb = np.unique(ib, axis=0, return_index=True)
+    return _boxes(pa[ka]), _boxes(pb[kb]), ua, ub
+
+
+def _ray_hits_boxes(boxes: np.ndarray, o: np.ndarray, d: np.ndarray, pad: float) -> np.ndarray:
+    """Slab test of the ray o + s d, s >= 0, against boxes (N, 2, 3)."""
+    lo = boxes[:, 0] - pad
+    hi = boxes[:, 1] + pad
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = 1.0 / d
+        t1 = (lo - o) * inv
+        t2 = (hi - o) * inv
+    tmin = np.where(d == 0, np.where((o >= lo) & (o <= hi), -np.inf, np.inf), np.minimum(t1, t2))
+    tmax = np.where(d == 0, np.where((o >= lo) & (o <= hi), np.inf, -np.inf), np.maximum(t1, t2))
+    enter = tmin.max(axis=1)
+    leave = tmax.min(axis=1)
+    return (enter <= leave) & (leave >= 0)
+
+
+def intersect_ray_patch(ctrl, origin, direction, tol=1e-10, max_depth=16) -> np.ndarray:
+    """Where a ray meets a Bezier patch, by subdivision and Newton's method (Goldman §25.3.2).
+
+    Split the patch into four, keep the pieces whose control-point bounding boxes the ray
+    ``origin + s direction`` (s >= 0) passes through, until the pieces are flat; then polish
+    each flat piece's centre by Newton's method on ``S(u, v) - origin - s direction = 0``
+    (three equations, three unknowns, kept inside [0, 1]^2) and merge repeated solutions.
+
+    ctrl: (m+1, n+1, 3).  origin: (3,).  direction: (3,), nonzero.  tol: positive float, how
+    close (relative to the size of the net, at least 1) a solution must be.  max_depth: int in
+    [1, 24].
+    Returns (k, 3) rows ``[u, v, s]`` sorted by s (the nearest hit first); k = 0 if the ray
+    misses.  A ray lying in a flat patch (infinitely many hits) is not handled.
+    Raises ValueError for a net that is not 3D, a zero direction, a non-positive tol or a bad
+    max_depth.
+
+    >>> net = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]]   # the unit square in z = 0
+    >>> intersect_ray_patch(net, [0.25, 0.5, 1.0], [0, 0, -1]).tolist()
+    [[0.25, 0.5, 1.0]]
+    """
+    P = _moderate(as_points(ctrl, "ctrl", ndim=3, dim=3))
+    o = _moderate(as_points(origin, "origin", ndim=1, dim=3), "origin")
+    d = _moderate(as_points(direction, "direction", ndim=1, dim=3), "direction")
+    if not np.any(d):
+        raise ValueError("direction must be a nonzero vector; got all zeros")
+    tol = _tolerance(tol)
+    max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=24)
+    scale = max(1.0, float(np.abs(P).max()), float(np.abs(o).max()))
+    flat_tol = 1e-3 * scale
+    nets = P[None]
+    dom = np.array([[0.0, 1.0, 0.0, 1.0]])
+    guesses = []
+    for depth in range(max_depth + 1):
+        boxes = np.stack([nets.min(axis=(1, 2)), nets.max(axis=(1, 2))], axis=1)
+        keep = _ray_hits_boxes(boxes, o, d, 1e-12 * scale)
+        nets, dom = nets[keep], dom[keep]
+        if len(nets) == 0:
+            break
+        flat = _patch_flatness(nets) <= flat_tol
+        if depth == max_depth or 4 * np.count_nonzero(~flat) > 20000:
+            flat[:] = True
+        guesses.append(np.stack([(dom[flat, 0] + dom[flat, 1]) / 2, (dom[flat, 2] + dom[flat, 3]) / 2], 1))
+        nets, dom = nets[~flat], dom[~flat]
+        if len(nets) == 0:
+            break
+        nets, dom = _quarter(nets, dom)
+    if not guesses:
+        return np.zeros((0, 3))
+    uv = np.concatenate(guesses)
+    if len(uv) == 0:
+        return np.zeros((0, 3))
+    uvs, res = _newton_ray(P, o, d, uv)
+    tol_abs = tol * scale
+    good = (res <= tol_abs) & (uvs[:, 2] >= -tol)
+
+    def meet(p):
+        return float(np.linalg.norm(_patch_points(P, np.array([p[0]]), np.array([p[1]]))[:, 0] - o - p[2] * d))
+
+    out = _merge_solutions(uvs[good], res[good], meet, tol_abs)
+    return out[np.argsort(out[:, 2], kind="stable")] if len(out) else out
+
+
+def _newton_ray(P, o, d, uv, iterations=60):
+    """Newton on S(u, v) - o - s d = 0 from many (u, v) starts (s starts at the projection)."""
+    m, n = P.shape[0] - 1, P.shape[1] - 1
+    Du = m * np.diff(P, axis=0) if m else np.zeros_like(P)
+    Dv = n * np.diff(P, axis=1) if n else np.zeros_like(P)
+    u, v = uv[:, 0].copy(), uv[:, 1].copy()
+    S = _patch_points(P, u, v).T
+    s = (S - o) @ d / (d @ d)
+    x = np.stack([u, v, s], 1)
+    for _ in range(iterations):
+        S = _patch_points(P, x[:, 0], x[:, 1]).T
+        F = S - o - x[:, 2:3] * d
+        J = np.stack([_patch_points(Du, x[:, 0], x[:, 1]).T, _patch_points(Dv, x[:, 0], x[:, 1]).T,
+                      np.broadcast_to(-d, F.shape)], axis=-1)
+        step = -(np.linalg.pinv(J, rcond=1e-13) @ F[:, :, None])[:, :, 0]
+        new = x + step
+        new[:, :2] = np.clip(new[:, :2], 0.0, 1.0)
+        moved = np.abs(new - x).max()
+        x = new
+        if moved <= 1e-15:
+            break
+    S = _patch_points(P, x[:, 0], x[:, 1]).T
+    res = np.linalg.norm(S - o - x[:, 2:3] * d, axis=1)
+    return x, res
+
+
+__all__ += ["intersect_patches"]
+
+
+def _triangle_pair_segments(T, S, TP, SP, eps=1e-9):
+    """Intersection segments of triangle pairs (no validation).
+
+    T, S: (N, 3, 3) vertices; TP, SP: (N, 3, 2) the (u, v) parameters at those vertices.
+    Every edge of S is cut with the plane of T (and every edge of T with the plane of S); the
+    cut points inside the other triangle are where the triangles meet, and the two farthest
+    apart are the ends of the segment.  Returns ``(ends (N, 2, 3), params (N, 2, 4), hit (N,))``
+    with params ``[u_T, v_T, u_S, v_S]``.  Coplanar triangles give no segment.
+    """
+    def cuts(X, Y, XP, YP):
+        # points where the edges of Y cross the plane of X and lie inside X
+        n = np.cross(X[:, 1] - X[:, 0], X[:, 2] - X[:, 0])
+        d = ((Y - X[:, None, 0]) * n[:, None]).sum(-1)                      # (N, 3)
+        d0, d1 = d, np.roll(d, -1, axis=1)
+        y0, y1 = Y, np.roll(Y, -1, axis=1)
+        p0, p1 = YP, np.roll(YP, -1, axis=1)
+        cross = ((d0 <= 0) & (d1 >= 0) | (d0 >= 0) & (d1 <= 0)) & (d0 != d1)
+        lam = np.clip(d0 / np.where(d0 != d1, d0 - d1, 1.0), 0.0, 1.0)[..., None]
+        pts = y0 + lam * (y1 - y0)
+        par_y = p0 + lam * (p1 - p0)
+        # barycentric coordinates of the cut points in X
+        e1, e2 = X[:, 1] - X[:, 0], X[:, 2] - X[:, 0]
+        w = pts - X[:, None, 0]
+        d11, d12, d22 = (e1 * e1).sum(-1), (e1 * e2).sum(-1), (e2 * e2).sum(-1)
+        den = d11 * d22 - d12 * d12
+        ok = den > 1e-30 * np.maximum(d11 * d22, 1e-300)
+        den = np.where(ok, den, 1.0)[:, None]
+        w1, w2 = (w * e1[:, None]).sum(-1), (w * e2[:, None]).sum(-1)
+        b1 = (d22[:, None] * w1 - d12[:, None] * w2) / den
+        b2 = (d11[:, None] * w2 - d12[:, None] * w1) / den
+        b0 = 1.0 - b1 - b2
+        inside = cross & ok[:, None] & (b0 >= -eps) & (b1 >= -eps) & (b2 >= -eps)
+        bary = np.clip(np.stack([b0, b1, b2], -1), 0.0, 1.0)
+        bary /= bary.sum(-1, keepdims=True)
+        par_x = (bary[..., :, None] * XP[:, None]).sum(-2)
+        return pts, par_x, par_y, inside
+
+    pa, ta, sa, ina = cuts(T, S, TP, SP)          # edges of S: params on T, on S
+    pb, sb, tb, inb = cuts(S, T, SP, TP)          # edges of T: params on S, on T
+    pts = np.concatenate([pa, pb], axis=1)                                            # (N, 6, 3)
+    par = np.concatenate([np.concatenate([ta, sa], -1), np.concatenate([tb, sb], -1)], axis=1)
+    ok = np.concatenate([ina, inb], axis=1)
+    dist = np.linalg.norm(pts[:, :, None] - pts[:, None, :], axis=-1)
+    dist = np.where(ok[:, :, None] & ok[:, None, :], dist, -1.0)
+    flat_idx = dist.reshape(len(T), -1).argmax(axis=1)
+    i, j = np.divmod(flat_idx, 6)
+    rows = np.arange(len(T))
+    ends = np.stack([pts[rows, i], pts[rows, j]], axis=1)
+    params = np.stack([par[rows, i], par[rows, j]], axis=1)
+    return ends, params, ok.any(axis=1)
+
+
+def _corner_triangles(nets: np.ndarray, dom: np.ndarray):
+    """The two corner triangles of each net, P00 Pm0 Pmn and P00 Pmn P0n, with their parameters:
+    (2N, 3, 3) and (2N, 3, 2), first triangles then second."""
+    c = np.stack([nets[:, 0, 0], nets[:, -1, 0], nets[:, -1, -1], nets[:, 0, -1]], axis=1)
+    u0, u1, v0, v1 = dom.T
+    p = np.stack([np.stack([u0, v0], 1), np.stack([u1, v0], 1), np.stack([u1, v1], 1), np.stack([u0, v1], 1)], 1)
+    tri = np.concatenate([c[:, [0, 1, 2]], c[:, [0, 2, 3]]])
+    par = np.concatenate([p[:, [0, 1, 2]], p[:, [0, 2, 3]]])
+    return tri, par
+
+
+def _patch_pair_segments(A: np.ndarray, B: np.ndarray, tol: float, max_depth: int, max_pairs: int = 40000):
+    """Subdivide two nets in pairs until both pieces are flat to ``tol`` (or boxes miss); intersect the
+    corner triangles of the flat pairs.  Returns segment ends (k, 2, 3) and their params (k, 2, 4)."""
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    pad = 1e-12 * scale
+    na, nb = A[None], B[None]
+    da = db = np.array([[0.0, 1.0, 0.0, 1.0]])
+    flat_a, flat_b = [], []
+    for depth in range(max_depth + 1):
+        ba = np.stack([na.min(axis=(1, 2)), na.max(axis=(1, 2))], axis=1)
+        bb = np.stack([nb.min(axis=(1, 2)), nb.max(axis=(1, 2))], axis=1)
+        keep = _overlap(ba, bb, pad)
+        na, da, nb, db = na[keep], da[keep], nb[keep], db[keep]
+        if len(na) == 0:
+            break
+        fa = _patch_flatness(na) <= tol
+        fb = _patch_flatness(nb) <= tol
+        done = fa & fb
+        growth = np.where(fa | fb, 4, 16)[~done].sum()
+        if depth == max_depth or growth > max_pairs:
+            done[:] = True
+        flat_a.append((na[done], da[done]))
+        flat_b.append((nb[done], db[done]))
+        rest = ~done
+        na, da, nb, db, fa, fb = na[rest], da[rest], nb[rest], db[rest], fa[rest], fb[rest]
+        if len(na) == 0:
+            break
+        parts = []
+        for split_a, split_b in ((True, True), (True, False), (False, True)):
+            g = (~fa == split_a) & (~fb == split_b)
+            if not g.any():
+                continue
+            ga, gda, gb, gdb = na[g], da[g], nb[g], db[g]
+            ka = kb = 1
+            if split_a:
+                ga, gda = _quarter(ga, gda)
+                ka = 4
+            if split_b:
+                gb, gdb = _quarter(gb, gdb)
+                kb = 4
+            k = len(na[g])
+            # every child of the piece of a meets every child of the piece of b
+            ia = np.repeat(np.arange(k * ka).reshape(k, ka), kb, axis=1).ravel()
+            ib = np.tile(np.arange(k * kb).reshape(k, kb), (1, ka)).ravel()
+            parts.append((ga[ia], gda[ia], gb[ib], gdb[ib]))
+        na = np.concatenate([p[0] for p in parts])
+        da = np.concatenate([p[1] for p in parts])
+        nb = np.concatenate([p[2] for p in parts])
+        db = np.concatenate([p[3] for p in parts])
+    if not flat_a or sum(len(x[0]) for x in flat_a) == 0:
+        return np.zeros((0, 2, 3)), np.zeros((0, 2, 4))
+    na = np.concatenate([x[0] for x in flat_a])
+    da = np.concatenate([x[1] for x in flat_a])
+    nb = np.concatenate([x[0] for x in flat_b])
+    db = np.concatenate([x[1] for x in flat_b])
+    ta, pa = _corner_triangles(na, da)          # (2N, ...): triangle 1 of every piece, then triangle 2
+    tb, pb = _corner_triangles(nb, db)
+    N = len(na)
+    ia = np.concatenate([np.arange(N), np.arange(N), np.arange(N) + N, np.arange(N) + N])
+    ib = np.concatenate([np.arange(N), np.arange(N) + N, np.arange(N), np.arange(N) + N])
+    ends, params, hit = _triangle_pair_segments(ta[ia], tb[ib], pa[ia], pb[ib])
+    return ends[hit], params[hit]
+
+
+def _newton_patches(A: np.ndarray, B: np.ndarray, x: np.ndarray, iterations: int = 30):
+    """Gauss-Newton on A(u, v) - B(s, t) = 0 (3 equations, 4 unknowns) from many starts (N, 4).
+
+    Each step is the least-norm solution of the linearised system, ``-J^+ F`` with J the 3x4
+    Jacobian ``[A_u, A_v, -B_s, -B_t]``: it moves the parameters as little as possible, so each
+    start lands on the intersection curve near where it began.  Parameters are kept in [0, 1].
+    Returns (x, residual norms).
+    """
+    def derivs(P):
+        m, n = P.shape[0] - 1, P.shape[1] - 1
+        return (m * np.diff(P, axis=0) if m else np.zeros_like(P)), (n * np.diff(P, axis=1) if n else np.zeros_like(P))
+
+    Au, Av = derivs(A)
+    Bs, Bt = derivs(B)
+    x = x.copy()
+    for _ in range(iterations):
+        F = _patch_points(A, x[:, 0], x[:, 1]).T - _patch_points(B, x[:, 2], x[:, 3]).T
+        J = np.stack([_patch_points(Au, x[:, 0], x[:, 1]).T, _patch_points(Av, x[:, 0], x[:, 1]).T,
+                      -_patch_points(Bs, x[:, 2], x[:, 3]).T, -_patch_points(Bt, x[:, 2], x[:, 3]).T], axis=-1)
+        step = -(np.linalg.pinv(J, rcond=1e-12) @ F[:, :, None])[:, :, 0]
+        new = np.clip(x + step, 0.0, 1.0)
+        moved = float(np.abs(new - x).max()) if len(x) else 0.0
+        x = new
+        if moved <= 1e-15:
+            break
+    res = np.linalg.norm(_patch_points(A, x[:, 0], x[:, 1]).T - _patch_points(B, x[:, 2], x[:, 3]).T, axis=1)
+    return x, res
+
+
+def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True, segments=False) -> tuple[np.ndarray, ...]:
+    """Sample points of the curve where two Bezier patches meet, by subdivision (Goldman §25.3.2).
+
+    The surface version of curve-curve intersection (:func:`intersect_curves`):
+
+    1. Keep a list of pairs of pieces, starting with the two whole patches; discard every pair
+       whose control-point bounding boxes do not overlap (by the convex-hull property the pieces
+       cannot meet).
+    2. Split into four (:func:`subdivide_patch`) every piece of a pair that is not yet flat to
+       ``tol`` (:func:`patch_flatness`: within ``tol`` of the two triangles on its corners), and
+       pair the children.
+    3. When both pieces of a pair are flat, intersect their corner triangles (four triangle
+       pairs); each crossing gives a short segment whose ends, with their parameters, sample
+       the intersection curve to within about ``tol``.
+    4. With ``polish=True`` move every sample onto both surfaces by Newton's method on
+       ``a(u, v) - b(s, t) = 0`` -- three equations in four unknowns, so each step is the
+       least-norm (Gauss-Newton, pseudo-inverse) step, which slides the sample as little as
+       possible -- and merge samples that coincide.
+
+    Consecutive samples along the curve are at most one flat piece apart, so a smaller ``tol``
+    gives a denser sampling.  Patches that overlap in a region (coplanar pieces) are not handled.
+
+    a: (m+1, n+1, 3), b: (p+1, q+1, 3) control nets.  tol: positive float, the flatness
+    tolerance (an absolute distance).  max_depth: int in [0, 12], the deepest subdivision.
+    polish: bool.  segments: bool, also return how the samples join up.
+    Returns ``(points, params)``: (k, 3) points and (k, 4) parameters ``[u, v, s, t]`` with
+    ``points ~ a(u, v) ~ b(s, t)``, sorted by the parameters on a; k = 0 if the patches do not
+    meet.  A sample whose Newton iteration fails keeps its unpolished value.  With
+    ``segments=True``, ``(points, params, pairs)``: pairs (j, 2) are the indices of the samples
+    joined by a triangle-triangle segment -- the intersection curve as a polyline.
+    Raises ValueError if a or b is not a finite (m+1, n+1, 3) net, for a non-positive tol or a
+    bad max_depth; TypeError if max_depth is not an integer.
+
+    >>> floor = [[[0, 0, 0], [0, 2, 0]], [[2, 0, 0], [2, 2, 0]]]          # z = 0 over [0, 2]^2
+    >>> ramp = [[[0, 0.5, -1], [0, 1.5, -1]], [[2, 0.5, 1], [2, 1.5, 1]]]  # z = x - 1
+    >>> points, params = intersect_patches(floor, ramp)
+    >>> points.round(12).tolist()
+    [[1.0, 0.5, 0.0], [1.0, 1.0, 0.0], [1.0, 1.5, 0.0]]
+    >>> params[0].round(12).tolist()
+    [0.5, 0.25, 0.5, 0.0]
+    """
+    A = _moderate(as_points(a, "a", ndim=3, dim=3), "a")
+    B = _moderate(as_points(b, "b", ndim=3, dim=3), "b")
+    tol = _tolerance(tol)
+    max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=12)
+    ends, params = _patch_pair_segments(A, B, tol, max_depth)
+    if len(ends) == 0:
+        return (np.zeros((0, 3)), np.zeros((0, 4))) + ((np.zeros((0, 2), dtype=int),) if segments else ())
+    pts = ends.reshape(-1, 3)
+    x = params.reshape(-1, 4)
+    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    if polish:
+        x0 = x
+        x, res = _newton_patches(A, B, x0)
+        res0 = np.linalg.norm(_patch_points(A, x0[:, 0], x0[:, 1]).T - _patch_points(B, x0[:, 2], x0[:, 3]).T, axis=1)
+        better = res <= res0
+        x = np.where(better[:, None], x, x0)
+        pa = _patch_points(A, x[:, 0], x[:, 1]).T
+        pb = _patch_points(B, x[:, 2], x[:, 3]).T
+        pts = np.where(better[:, None], (pa + pb) / 2, pts)
+    # merge repeated samples (segment ends shared by neighbouring triangles and pieces)
+    key = np.round(np.concatenate([pts / scale, x], axis=1), 9)
+    _, first, which = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    pts, x = pts[first], x[first]
+    order = np.lexsort(x[:, ::-1].T)
+    if not segments:
+        return pts[order], x[order]
+    rank = np.empty_like(order)
+    rank[order] = np.arange(len(order))
+    pairs = np.sort(rank[np.asarray(which).reshape(-1, 2)], axis=1)
+    pairs = np.unique(pairs[pairs[:, 0] != pairs[:, 1]], axis=0)
+    return pts[order], x[order], _bridge_cracks(pts[order], x[order], pairs)
+
+
+def _bridge_cracks(pts: np.ndarray, x: np.ndarray, pairs: np.ndarray) -> np.ndarray:
+    """Join the loose ends of a sampled intersection polyline across the cracks between flat pieces
+    of different sizes: an end inside both parameter squares (the curve cannot end there) is
+    joined to the nearest other such end, if it is no farther than the longest segment."""
+    if len(pairs) == 0:
+        return pairs
+    degree = np.bincount(pairs.ravel(), minlength=len(pts))
+    inside = np.all((x > 1e-9) & (x < 1 - 1e-9), axis=1)
+    loose = list(np.flatnonzero((degree == 1) & inside))
+    reach = float(np.linalg.norm(pts[pairs[:, 0]] - pts[pairs[:, 1]], axis=1).max())
+    extra = []
+    while len(loose) >= 2:
+        i = loose.pop(0)
+        d = np.linalg.norm(pts[loose] - pts[i], axis=1)
+        k = int(np.argmin(d))
+        if d[k] <= reach:
+            extra.append(sorted((i, loose.pop(k))))
+    if not extra:
+        return pairs
+    return np.unique(np.concatenate([pairs, np.array(extra)]), axis=0)
