@@ -52,6 +52,7 @@ def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     return finite_result(left, *_blame(t)), finite_result(right, *_blame(t))
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def subdivide_uniform(ctrl, depth, t=0.5) -> np.ndarray:
     """Subdivide a Bezier curve ``depth`` times, every piece at ``t``: 2**depth control polygons (Goldman §25.2, §25.4).
 
@@ -82,7 +83,7 @@ def subdivide_uniform(ctrl, depth, t=0.5) -> np.ndarray:
     for _ in range(depth):
         left, right = _split(pieces, t, axis=1)
         pieces = np.stack([left, right], axis=1).reshape((-1,) + P.shape)
-    return pieces.copy() if depth == 0 else pieces
+    return finite_result(pieces.copy() if depth == 0 else pieces, *_blame(np.asarray(t)))
 
 
 def flatness(ctrl, even=True):

@@ -223,11 +223,16 @@ def deterministic_count(levels: int, k: int, m: int, condensation: int = 0) -> i
     maps and ``m`` start points, plus ``c (1 + k + ... + k^(levels-1))`` copies of a condensation
     set of ``c = condensation`` points.  (From the condensation set itself, ``m = c``.)
 
+    levels: 0..10,000 (the count is an exact Python int; larger levels are refused by name).
+
     >>> deterministic_count(3, 3, 1), deterministic_count(2, 2, 4, condensation=4)
     (27, 28)
     """
-    k, m, c = int(k), int(m), int(condensation)
-    return m * k ** levels + c * sum(k ** j for j in range(levels)) if k > 1 else m + c * levels
+    levels = as_int(levels, "levels", minimum=0, maximum=10_000)
+    k = as_int(k, "k", minimum=1, maximum=10_000)
+    m = as_int(m, "m", minimum=0)
+    c = as_int(condensation, "condensation", minimum=0)
+    return m * k ** levels + c * (k ** levels - 1) // (k - 1) if k > 1 else m + c * levels
 
 
 _size = deterministic_count
@@ -436,12 +441,19 @@ def ifs_from_points(reference, images, probabilities=None, name: str = "") -> IF
     R = as_points(reference, "reference", dim=2)
     if R.shape != (3, 2):
         raise ValueError(f"reference must be three 2D points, shape (3, 2); got {R.shape}")
-    Q = np.asarray(images, dtype=float)
+    Q = check_finite(as_float_array(images, "images"), "images")
     if Q.ndim != 3 or Q.shape[1:] != (3, 2) or len(Q) == 0:
         raise ValueError(f"images must hold one triangle per map, shape (k, 3, 2) with k >= 1; got {Q.shape}")
-    if not np.all(np.isfinite(Q)):
-        raise ValueError("images must be finite numbers")
-    maps = [affine.affine_from_points(R, T) for T in Q]
+    try:
+        maps = [affine.affine_from_points(R, T) for T in Q]
+    except ValueError as exc:
+        raise ValueError(f"reference: {exc}") from None
+    try:
+        return IFS(maps, probabilities, name=name)
+    except ValueError as exc:
+        if "maps[" in str(exc):
+            raise ValueError(f"images: {exc}") from None
+        raise
     return IFS(maps, probabilities, name=name)
 
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_points
+from goldman_lib.validation import as_float, as_float_array, as_int, as_points, check_finite, finite_result
 
 __all__ = ["newell_normal", "face_normals", "vertex_normals", "light_direction", "diffuse", "shade"]
 
@@ -32,11 +32,27 @@ def newell_normal(polygon) -> np.ndarray:
     """
     P = as_points(polygon, "polygon", dim=3, min_count=3)
     Q = np.roll(P, -1, axis=0)
-    n = np.array([((P[:, 1] - Q[:, 1]) * (P[:, 2] + Q[:, 2])).sum(),
+    with np.errstate(over="ignore", invalid="ignore"):
+        n = finite_result(np.array([((P[:, 1] - Q[:, 1]) * (P[:, 2] + Q[:, 2])).sum(),
                   ((P[:, 2] - Q[:, 2]) * (P[:, 0] + Q[:, 0])).sum(),
-                  ((P[:, 0] - Q[:, 0]) * (P[:, 1] + Q[:, 1])).sum()])
-    length = np.linalg.norm(n)
+                  ((P[:, 0] - Q[:, 0]) * (P[:, 1] + Q[:, 1])).sum()]), "polygon")
+        length = finite_result(np.linalg.norm(n), "polygon")
     return n / length if length > 0 else n
+
+
+def _mesh(positions, triangles) -> tuple[np.ndarray, np.ndarray]:
+    """Validated vertex positions (n, 3) and triangle indices (m, 3) below n."""
+    V = as_points(positions, "positions", dim=3)
+    T = as_float_array(triangles, "triangles")
+    if T.ndim != 2 or T.shape[1] != 3:
+        raise ValueError(f"triangles must have shape (m, 3); got shape {T.shape}")
+    check_finite(T, "triangles")
+    if np.any(T != np.round(T)) or (T.size and T.min() < 0):
+        raise ValueError("triangles must hold non-negative integer vertex indices")
+    if T.size and T.max() >= len(V):
+        raise ValueError(f"positions must hold every vertex the triangles index: {len(V)} positions, "
+                         f"but triangles index vertex {int(T.max())}")
+    return V, T.astype(np.intp)
 
 
 def face_normals(positions, triangles) -> np.ndarray:
@@ -45,9 +61,11 @@ def face_normals(positions, triangles) -> np.ndarray:
     >>> face_normals([[0, 0, 0], [2, 0, 0], [0, 1, 0]], [[0, 1, 2]]).tolist()
     [[0.0, 0.0, 2.0]]
     """
-    V = np.asarray(positions, dtype=float)
-    tris = V[np.asarray(triangles, dtype=int)]
-    return np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
+    V, T = _mesh(positions, triangles)
+    tris = V[T]
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
+    return finite_result(out, "positions", why="are too large in magnitude")
 
 
 def vertex_normals(positions, triangles) -> np.ndarray:
@@ -57,8 +75,7 @@ def vertex_normals(positions, triangles) -> np.ndarray:
     >>> vertex_normals(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0]]), np.array([[0, 1, 2]])).tolist()
     [[0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0]]
     """
-    V = np.asarray(positions, dtype=float)
-    T = np.asarray(triangles, dtype=int)
+    V, T = _mesh(positions, triangles)
     fn = face_normals(V, T)
     n = np.zeros_like(V)
     for k in range(3):
@@ -86,9 +103,11 @@ def diffuse(normals, direction=None, fraction=0.9) -> np.ndarray:
     >>> diffuse([[0, 0, 1], [0, 0, -1], [1, 0, 0]], [0, 0, 1], fraction=1.0).tolist()
     [1.0, 0.0, 0.5]
     """
-    N = np.asarray(normals, dtype=float)
-    L = light_direction() if direction is None else np.asarray(direction, dtype=float)
-    intensity = N.dot(L)
+    N = as_points(normals, "normals", ndim=None, dim=3)
+    L = light_direction() if direction is None else as_points(direction, "direction", ndim=1, dim=3)
+    fraction = as_float(fraction, "fraction")
+    with np.errstate(over="ignore", invalid="ignore"):
+        intensity = finite_result(N @ L, "normals and direction", why="are too large in magnitude")
     imin, imax = intensity.min(), intensity.max()
     intensity *= fraction
     if (imax - imin) > 1e-6:
@@ -103,5 +122,11 @@ def shade(colour, intensity, ambient=0.45, diffuse_weight=0.55) -> np.ndarray:
     >>> shade([1.0, 0.5, 0.0], [0.0, 1.0]).tolist()
     [[0.45, 0.225, 0.0], [1.0, 0.5, 0.0]]
     """
-    base = np.asarray(colour, dtype=float)
-    return np.clip(base[None] * (ambient + diffuse_weight * np.asarray(intensity, dtype=float)[:, None]), 0, 1)
+    base = as_points(colour, "colour", ndim=1, dim=3)
+    level = check_finite(as_float_array(intensity, "intensity"), "intensity")
+    if level.ndim != 1:
+        raise ValueError(f"intensity must be one value per face, shape (m,); got shape {level.shape}")
+    a, w = as_float(ambient, "ambient"), as_float(diffuse_weight, "diffuse_weight")
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = base[None] * (a + w * level[:, None])
+    return np.clip(finite_result(out, "intensity", why="with these weights is too large in magnitude"), 0, 1)

@@ -300,7 +300,11 @@ def barycentric_attractor(matrices, levels: int, start_rows=(0, -1)) -> np.ndarr
     M = check_finite(as_float_array(matrices, "matrices"), "matrices")
     if M.ndim != 3 or M.shape[1] != M.shape[2] or len(M) < 1:
         raise ValueError(f"matrices must be a stack (k, n+1, n+1) of square matrices; got shape {M.shape}")
-    X = np.eye(M.shape[1])[list(start_rows)]
+    rows = check_finite(as_float_array(start_rows, "start_rows"), "start_rows")
+    size = M.shape[1]
+    if rows.ndim != 1 or rows.size == 0 or np.any(rows != np.round(rows)) or np.any((rows < -size) | (rows >= size)):
+        raise ValueError(f"start_rows must be a nonempty list of row indices from {-size} to {size - 1}")
+    X = np.eye(M.shape[1])[rows.astype(np.intp)]
     levels = within_budget(levels, "levels", cost=lambda v: len(X) * len(M) ** v, what="the attractor",
                            unit="points", limit=MAX_POINTS)
     return _kernels.iterate_maps(X, M, levels)

@@ -60,8 +60,8 @@ SKIP_PACKAGES = ("goldman_lib.views", "goldman_lib.exercises")
 def _modules():
     found = []
     for info in pkgutil.walk_packages(goldman_lib.__path__, "goldman_lib."):
-        if info.name.startswith(SKIP_PACKAGES):
-            continue
+        if info.name.startswith(SKIP_PACKAGES) or info.name.rsplit(".", 1)[1].startswith("_"):
+            continue   # private modules (goldman_lib._kernels: unchecked array kernels under the checked API)
         found.append(importlib.import_module(info.name))
     return found
 
@@ -83,6 +83,9 @@ def _public(module) -> dict:
     out = {}
     for name in names:
         obj = getattr(module, name)
+        home = getattr(obj, "__module__", module.__name__) or module.__name__
+        if home != module.__name__ and home.startswith("goldman_lib.") and not home.rsplit(".", 1)[1].startswith("_"):
+            continue   # a re-export (bezier.subdivide is bezier_subdivision.subdivide): fuzzed in its home module
         if inspect.isfunction(obj) or (inspect.isclass(obj) and not _is_record(obj)):
             out[f"{module.__name__[len('goldman_lib.'):]}.{name}"] = obj
     return out
