@@ -39,7 +39,8 @@ def test_every_chapter_so_far_has_widget_factories():
     assert {"bezier", "turtle", "ifs_editor", "knot_editor", "fractals", "subdivision_surfaces"} <= ids
 
 
-#: views modules that are helpers, not chapters: they may hold no widget factory.
+#: views modules that are helpers, not chapters: they may hold no widget factory (private modules,
+#: such as ``_checks``, are helpers too).
 HELPER_MODULES = {"interactive", "style", "three", "drag"}
 
 
@@ -50,7 +51,7 @@ def test_every_views_module_has_a_widget_factory():
 
     import goldman_lib.views as views_pkg
 
-    modules = {m.name for m in pkgutil.iter_modules(views_pkg.__path__)}
+    modules = {m.name for m in pkgutil.iter_modules(views_pkg.__path__) if not m.name.startswith("_")}
     ids = {p.id.split(".")[0] for p in FACTORIES}
     missing = sorted(modules - HELPER_MODULES - ids)
     assert not missing, f"views modules without a widget factory (annotate it -> InteractiveView): {missing}"
