@@ -235,7 +235,9 @@ def deterministic_count(levels: int, k: int, m: int, condensation: int = 0) -> i
     return m * k ** levels + c * (k ** levels - 1) // (k - 1) if k > 1 else m + c * levels
 
 
-_size = deterministic_count
+def _size(levels: int, k: int, m: int, c: int = 0) -> int:
+    """:func:`deterministic_count` without the checks (the budget probes it at large levels)."""
+    return m * k ** levels + c * (k ** levels - 1) // (k - 1) if k > 1 else m + c * levels
 
 
 def _work(level: int, k: int, m: int, c: int) -> int:
