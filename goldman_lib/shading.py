@@ -1,11 +1,7 @@
-"""Normals and flat shading for drawing meshes and patches (used by the 3D views).
+"""Shading polygonal models (Goldman chapter 21): normals of polygons and meshes.
 
-The mathematics the views need to light a surface, in one tested place: the normal of a polygon
-by Newell's formula, area-weighted face and vertex normals of a triangle mesh, a light direction
-from azimuth and elevation (degrees), and an ambient + diffuse shade.  The diffuse term is the
-cosine ``n . l`` rescaled to [0, 1] over the faces drawn (the hill-shading of matplotlib's
-``LightSource.shade_normals``, so faces turned away keep some contrast), then
-``colour * (ambient + diffuse * intensity)``.
+The normal of a polygon by Newell's formula (§21.2) and area-weighted face and vertex normals of a
+triangle mesh, used by every 3D view.  How light meets a surface is :mod:`goldman_lib.lighting`.
 
 >>> newell_normal([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]).tolist()
 [0.0, 0.0, 1.0]
@@ -17,7 +13,7 @@ import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_int, as_points, check_finite, finite_result
 
-__all__ = ["newell_normal", "face_normals", "vertex_normals", "light_direction", "diffuse", "shade"]
+__all__ = ["newell_normal", "face_normals", "vertex_normals"]
 
 
 def newell_normal(polygon) -> np.ndarray:
@@ -82,51 +78,3 @@ def vertex_normals(positions, triangles) -> np.ndarray:
         np.add.at(n, T[:, k], fn)
     length = np.linalg.norm(n, axis=1, keepdims=True)
     return np.divide(n, length, out=np.zeros_like(n) + [0.0, 0.0, 1.0], where=length > 1e-300)
-
-
-def light_direction(azimuth=315.0, elevation=45.0) -> np.ndarray:
-    """The unit vector towards a light at ``azimuth`` degrees (clockwise from north, the y axis)
-    and ``elevation`` degrees above the xy plane.
-
-    >>> light_direction(0, 90).round(12).tolist()
-    [0.0, 0.0, 1.0]
-    """
-    az = np.radians(90 - as_float(azimuth, "azimuth"))
-    alt = np.radians(as_float(elevation, "elevation"))
-    return np.array([np.cos(az) * np.cos(alt), np.sin(az) * np.cos(alt), np.sin(alt)])
-
-
-def diffuse(normals, direction=None, fraction=0.9) -> np.ndarray:
-    """The diffuse (Lambert) term ``n . l`` of each normal, scaled by ``fraction`` and rescaled to
-    [0, 1] over all the normals given when they differ (hill shading), clipped to [0, 1].
-
-    >>> diffuse([[0, 0, 1], [0, 0, -1], [1, 0, 0]], [0, 0, 1], fraction=1.0).tolist()
-    [1.0, 0.0, 0.5]
-    """
-    N = as_points(normals, "normals", ndim=None, dim=3)
-    L = light_direction() if direction is None else as_points(direction, "direction", ndim=1, dim=3)
-    fraction = as_float(fraction, "fraction")
-    with np.errstate(over="ignore", invalid="ignore"):
-        intensity = finite_result(N @ L, "normals and direction", why="are too large in magnitude")
-    imin, imax = intensity.min(), intensity.max()
-    intensity *= fraction
-    if (imax - imin) > 1e-6:
-        intensity -= imin
-        intensity /= (imax - imin)
-    return np.clip(intensity, 0, 1)
-
-
-def shade(colour, intensity, ambient=0.45, diffuse_weight=0.55) -> np.ndarray:
-    """Face colours ``colour * (ambient + diffuse_weight * intensity)``, clipped to [0, 1]: (m, 3).
-
-    >>> shade([1.0, 0.5, 0.0], [0.0, 1.0]).tolist()
-    [[0.45, 0.225, 0.0], [1.0, 0.5, 0.0]]
-    """
-    base = as_points(colour, "colour", ndim=1, dim=3)
-    level = check_finite(as_float_array(intensity, "intensity"), "intensity")
-    if level.ndim != 1:
-        raise ValueError(f"intensity must be one value per face, shape (m,); got shape {level.shape}")
-    a, w = as_float(ambient, "ambient"), as_float(diffuse_weight, "diffuse_weight")
-    with np.errstate(over="ignore", invalid="ignore"):
-        out = base[None] * (a + w * level[:, None])
-    return np.clip(finite_result(out, "intensity", why="with these weights is too large in magnitude"), 0, 1)

@@ -174,7 +174,7 @@ def _run_doctests(modules, functions, found) -> None:
 def _extra_examples() -> dict:
     """Valid example calls of the public functions, classes and methods that no doctest calls (a
     method's arguments start with its instance)."""
-    from goldman_lib import bezier, bspline, ifs, subdivision_surfaces, turtle, vectors
+    from goldman_lib import bezier, bspline, ifs, simple_surfaces, subdivision_surfaces, turtle, vectors
 
     cubic = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
     net = [[[i, j, (i * j) % 2] for j in range(3)] for i in range(3)]
@@ -206,6 +206,12 @@ def _extra_examples() -> dict:
                                                     {}),
         "turtle.Turtle.resize": ((turtle.Turtle(), 2.0), {}),
         "turtle.Turtle.run": ((turtle.Turtle(), "FORWARD 1"), {}),
+        "lighting.Light": (((1.0, 2.0, 5.0), (1.0, 0.9, 0.8), 0.7), {}),
+        "lighting.Material": (((0.8, 0.2, 0.2), 0.1, 0.6, 0.3, 16.0), {}),
+        "simple_surfaces.Surface": ((), {}),
+        "simple_surfaces.Plane": (([0.0, 0.0, 1.0], [0.0, 1.0, 1.0]), {}),
+        "simple_surfaces.Sphere": (([0.0, 0.0, 1.0], 2.0), {}),
+        "simple_surfaces.Surface.contains": ((simple_surfaces.Sphere([0, 0, 0], 1), [[0, 0, 0.5], [0, 2, 0]]), {}),
         "vectors.Point": (([1.0, 2.0, 0.0],), {}),
         "vectors.Vector": (([3.0, 4.0, 0.0],), {}),
         "vectors.Vector.dot": ((vectors.Vector([1.0, 2.0, 3.0]), vectors.Vector([4.0, -5.0, 6.0])), {}),
@@ -249,6 +255,9 @@ CONFIGURATION = {
     "validation.within_budget": {"cost", "what", "unit", "limit", "minimum"},
     "validation.finite_result": {"why"},
 }
+#: Functions and methods (by their last name) whose result may hold +-inf by contract, never NaN: a
+#: ray's parameter is inf where it misses (Part III's ``hits``/``intersect``/``intervals``).
+INF_BY_CONTRACT = {"hits", "intersect", "intervals", "quadratic_roots"}
 #: Functions whose result may hold NaN or infinity by contract (what the docstring says).
 NONFINITE_BY_CONTRACT = {
     "validation.as_float_array": "it converts only; finiteness is check_finite's job (its docstring)",
@@ -302,20 +311,21 @@ def battery(value) -> list[tuple[str, object]]:
 
 
 # -- what counts as a clear answer --------------------------------------------------------------------
-def _nonfinite(result, depth=0, seen=None) -> str | None:
-    """Where ``result`` holds a NaN or an infinity, or None."""
+def _nonfinite(result, depth=0, seen=None, allow_inf=False) -> str | None:
+    """Where ``result`` holds a NaN or an infinity (only a NaN if ``allow_inf``), or None."""
     seen = set() if seen is None else seen
     if depth > 4 or id(result) in seen:
         return None
     if isinstance(result, (bool, str, bytes, int)) or result is None:
         return None
+    bad = np.isnan if allow_inf else (lambda x: ~np.isfinite(x))
     if isinstance(result, (float, complex, np.number)):
-        return None if np.isfinite(result) else repr(result)
+        return repr(result) if bad(result) else None
     if isinstance(result, np.ndarray):
-        if result.dtype.kind in "fc" and not np.all(np.isfinite(result)):
-            return f"array of shape {result.shape} with non-finite entries"
+        if result.dtype.kind in "fc" and np.any(bad(result)):
+            return f"array of shape {result.shape} with {'NaN' if allow_inf else 'non-finite'} entries"
         if result.dtype.kind == "O":
-            return _nonfinite(list(result.flat[:1000]), depth + 1, seen)
+            return _nonfinite(list(result.flat[:1000]), depth + 1, seen, allow_inf)
         return None
     seen.add(id(result))
     if isinstance(result, dict):
@@ -329,7 +339,7 @@ def _nonfinite(result, depth=0, seen=None) -> str | None:
     else:
         return None
     for item in items:
-        where = _nonfinite(item, depth + 1, seen)
+        where = _nonfinite(item, depth + 1, seen, allow_inf)
         if where:
             return where
     return None
@@ -342,7 +352,8 @@ def _names(message: str, param: str) -> bool:
 def judge(call, param: str | None, alias: str | None = None, finite: bool = True):
     """Run ``call()``; return ``"ok"`` or what was wrong.  The message must name ``param`` (or
     ``alias``: the validation helpers name the caller's parameter, which they are given as
-    ``name``).  ``finite``: whether a returned NaN or infinity is a failure."""
+    ``name``).  ``finite``: whether a returned NaN or infinity is a failure (True), only a NaN
+    ("inf allowed"), or nothing (False)."""
     try:
         result = call()
     except (ValueError, TypeError) as exc:
@@ -353,7 +364,7 @@ def judge(call, param: str | None, alias: str | None = None, finite: bool = True
         return f"message does not name {param!r}: {type(exc).__name__}: {str(exc)[:200]}"
     except BaseException as exc:  # noqa: BLE001 - any other exception is the finding
         return f"raised {type(exc).__name__}: {str(exc)[:200]}"
-    where = _nonfinite(result) if finite else None
+    where = _nonfinite(result, allow_inf=finite == "inf allowed") if finite else None
     return "ok" if where is None else f"returned a non-finite result ({where})"
 
 
@@ -434,7 +445,8 @@ def _tasks() -> list[tuple[str, str, object]]:
         bound, params = _bound(key)
         alias = bound.arguments.get("name")
         alias = alias if isinstance(alias, str) and alias else None
-        finite = key not in NONFINITE_BY_CONTRACT
+        finite = key not in NONFINITE_BY_CONTRACT and ("inf allowed" if key.rsplit(".", 1)[-1] in INF_BY_CONTRACT
+                                                        else True)
         for param in params:
             for label, value in battery(bound.arguments.get(param)):
                 call = functools.partial(_call_with, key, param, value)

@@ -1,7 +1,6 @@
-"""goldman_lib.shading: Newell and vertex normals, the light direction, the ambient + diffuse shade."""
+"""goldman_lib.shading: Newell, face and vertex normals."""
 
 import numpy as np
-from matplotlib.colors import LightSource
 
 from goldman_lib import shading
 
@@ -21,18 +20,3 @@ def test_vertex_normals_of_a_closed_cube_point_outwards():
     N = shading.vertex_normals(V, T)
     assert np.allclose(np.linalg.norm(N, axis=1), 1)
     assert np.all((N * (V - 0.5)).sum(1) > 0)       # each vertex normal points away from the centre
-
-
-def test_diffuse_and_light_match_matplotlib_hill_shading():
-    rng = np.random.default_rng(3)
-    N = rng.normal(size=(40, 3))
-    light = LightSource(azdeg=315, altdeg=45)
-    assert np.array_equal(shading.light_direction(315, 45), light.direction)
-    assert np.array_equal(shading.diffuse(N, shading.light_direction(315, 45), fraction=0.9),
-                          light.shade_normals(N.copy(), fraction=0.9))
-
-
-def test_shade_is_ambient_plus_diffuse():
-    c = shading.shade([0.2, 0.4, 0.8], [0.0, 0.5, 1.0], ambient=0.25, diffuse_weight=0.75)
-    assert np.allclose(c[0], [0.05, 0.1, 0.2]) and np.allclose(c[2], [0.2, 0.4, 0.8])
-    assert np.allclose(c[1], np.array([0.2, 0.4, 0.8]) * 0.625)

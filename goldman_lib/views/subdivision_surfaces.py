@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib import shading
+from goldman_lib import lighting, shading
 from goldman_lib import subdivision_surfaces as ss
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
@@ -68,8 +68,10 @@ def plot_mesh(mesh: ss.Mesh, ax=None, color=None, edges: bool = True, control: s
     polys = [V[f] for f in faces]
     normals = shading.face_normals(V, mesh.triangles())
     first_tri = np.concatenate([[0], np.cumsum(mesh.face_sizes - 2)[:-1]])
-    intensity = shading.diffuse(normals[first_tri], shading.light_direction(315, 45), fraction=0.9)
-    colours = shading.shade(to_rgb(color or style.PALETTE["surface"]), intensity)
+    centroids = np.array([V[f].mean(axis=0) for f in faces])
+    azim, elev = np.radians(ax.azim), np.radians(ax.elev)          # where matplotlib's 3D camera looks from
+    eye = centroids.mean(axis=0) + 10 * np.array([np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)])
+    colours = lighting.shade_faces(centroids, normals[first_tri], eye, to_rgb(color or style.PALETTE["surface"]))
     ax.add_collection3d(Poly3DCollection(polys, facecolors=colours, edgecolors="#33333355" if edges else "none",
                                          linewidths=0.3))
     pts = V

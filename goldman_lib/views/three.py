@@ -22,7 +22,7 @@ import io
 
 import numpy as np
 
-from goldman_lib import shading
+from goldman_lib import lighting, shading
 from goldman_lib.shading import vertex_normals
 from goldman_lib.validation import as_points, within_budget
 
@@ -54,21 +54,30 @@ class SceneView:
 
     width, height: canvas size in pixels.  camera_position: where the camera starts (it looks at
     ``target`` and orbits around it with the mouse).  axes: draw x (red), y (green), z (blue) axes
-    of length ``axes`` (0 for none).
+    of length ``axes`` (0 for none).  lights: point lights (:class:`goldman_lib.lighting.Light`,
+    default :func:`~goldman_lib.lighting.default_lights`) fixed in the scene, and ambient_light the
+    ambient intensity: the live view and its static picture (:meth:`to_png`) are lit by the same
+    lights, and :meth:`set_lights` moves them in place (the light-position control does).
     """
 
     def __init__(self, width: int = 480, height: int = 360, camera_position=(3.0, -4.0, 3.0),
-                 target=(0.0, 0.0, 0.0), axes: float = 1.0, background: str = "#ffffff"):
+                 target=(0.0, 0.0, 0.0), axes: float = 1.0, background: str = "#ffffff", lights=None,
+                 ambient_light: float = 0.35):
         import pythreejs as p3
 
         self._p3 = p3
         self._items: dict[str, dict] = {}
         self.target = tuple(float(v) for v in target)
         self.camera_position = tuple(float(v) for v in camera_position)
-        key = p3.DirectionalLight(color="#ffffff", position=[3, 5, 8], intensity=0.7)
+        self.lights = self._check_lights(lighting.default_lights() if lights is None else lights)
+        self.ambient_light = float(ambient_light)
+        self._light_objects = [p3.PointLight(color=self._hex(light.colour), intensity=light.intensity,
+                                             position=list(light.position), distance=0, decay=0)
+                               for light in self.lights]
         self.camera = p3.PerspectiveCamera(position=list(self.camera_position), up=[0, 0, 1],
-                                           aspect=width / height, fov=40, children=[key])
-        children = [self.camera, p3.AmbientLight(color="#ffffff", intensity=0.45)]
+                                           aspect=width / height, fov=40)
+        children = [self.camera, p3.AmbientLight(color="#ffffff", intensity=self.ambient_light),
+                    *self._light_objects]
         if axes:
             children.append(p3.AxesHelper(size=float(axes)))
         self.scene = p3.Scene(children=children, background=background)
@@ -76,6 +85,30 @@ class SceneView:
         self.renderer = p3.Renderer(camera=self.camera, scene=self.scene, controls=[self.controls],
                                     width=width, height=height, antialias=True)
         self.camera.lookAt(list(self.target))
+
+    # -- lights ----------------------------------------------------------------------------------
+    @staticmethod
+    def _hex(rgb) -> str:
+        return "#" + "".join(f"{int(round(255 * c)):02x}" for c in rgb)
+
+    @staticmethod
+    def _check_lights(lights) -> tuple:
+        lights = (lights,) if isinstance(lights, lighting.Light) else tuple(lights)
+        if not all(isinstance(light, lighting.Light) for light in lights):
+            raise TypeError("lights must be a sequence of goldman_lib.lighting.Light")
+        return lights
+
+    def set_lights(self, lights):
+        """Move and recolour the scene's lights in place (as many as it was built with)."""
+        lights = self._check_lights(lights)
+        if len(lights) != len(self._light_objects):
+            raise ValueError(f"lights must hold {len(self._light_objects)} lights (as the scene was built); "
+                             f"got {len(lights)}")
+        for obj, light in zip(self._light_objects, lights):
+            obj.position = tuple(light.position)
+            obj.color = self._hex(light.colour)
+            obj.intensity = light.intensity
+        self.lights = lights
 
     # -- building ------------------------------------------------------------------------------
     def _attr(self, arr, dtype=np.float32):
@@ -204,7 +237,7 @@ class SceneView:
     def to_png(self, figsize=(4.8, 3.6), dpi: int = 100) -> bytes:
         """PNG bytes of the scene drawn by matplotlib from the camera's starting direction.
 
-        Meshes are shaded (translucent if their opacity is below 1); segments and points are drawn
+        Meshes are shaded by the scene's own lights (:func:`goldman_lib.lighting.shade_faces`; translucent if their opacity is below 1); segments and points are drawn
         over them, since matplotlib's depth sorting of polygons against lines would bury a control
         net lying on its surface.  Degenerate triangles and zero-length segments (the padding of a
         view whose geometry shrank) are left out.  Axes have equal scales.
@@ -217,7 +250,6 @@ class SceneView:
         ax = fig.add_subplot(1, 1, 1, projection="3d", computed_zorder=False)
         d = np.subtract(self.camera_position, self.target)
         ax.view_init(elev=np.degrees(np.arctan2(d[2], np.hypot(d[0], d[1]))), azim=np.degrees(np.arctan2(d[1], d[0])))
-        light = shading.light_direction(315, 45)
         everything = []
         for order, item in enumerate(self._items.values()):
             pos = item["positions"]
@@ -228,7 +260,8 @@ class SceneView:
                 if not keep.any():
                     continue
                 tris, normals = tris[keep], normals[keep]
-                colors = shading.shade(to_rgb(item["color"]), shading.diffuse(normals, light, fraction=0.9))
+                colors = lighting.shade_faces(tris.mean(axis=1), normals, self.camera_position, to_rgb(item["color"]),
+                                              self.lights, self.ambient_light)
                 ax.add_collection3d(Poly3DCollection(tris, facecolors=colors, edgecolors="none",
                                                      alpha=min(1.0, item["opacity"] + 0.15), zorder=order))
                 everything.append(tris.reshape(-1, 3))

@@ -1,0 +1,326 @@
+"""Colour and intensity: the one lighting model of the course (Goldman chapter 16).
+
+Where light meets a surface, in one place.  Every renderer of Part III (the ray tracer of
+chapter 17, the rasteriser of chapter 21, the hidden-surface algorithms of chapter 22, the
+radiosity display of chapter 23), the static pictures of every three.js view and the lights of
+:class:`goldman_lib.views.three.SceneView` take their lights from here.
+
+Goldman §16.2-16.4 builds the intensity of light leaving a point ``P`` with unit normal ``N`` seen
+from an eye at ``E`` as the sum of three terms, one colour channel at a time:
+
+* **ambient** (§16.2.1): ``I_a k_a``, light scattered so often it comes from everywhere;
+* **diffuse** (§16.2.2, Lambert's law): ``I_p k_d (L . N)``, ``L`` the unit vector from ``P`` to a
+  point light; a matte surface scatters equally in all directions, so only the angle of
+  incidence matters;
+* **specular** (§16.2.3, Phong's model): ``I_p k_s (R . V)^n``, ``R = 2 (L . N) N - L`` the mirror
+  image of ``L`` about the normal, ``V`` the unit vector from ``P`` to the eye and ``n`` the
+  specular exponent: the larger ``n``, the smaller and sharper the highlight.
+
+Conventions (the tests rely on them): a term is 0 where the light is behind the surface
+(``L . N <= 0``) and the specular term also where ``R . V <= 0``; the specular term has no
+``L . N`` factor; no term is attenuated with distance.  Colours are RGB triples in [0, 1]; a
+material's colour multiplies its ambient and diffuse coefficients (the specular highlight takes
+the light's colour, as on a plastic).  Intensities are returned unclipped; images clip them to
+[0, 1] (:func:`to_image`).
+
+>>> P, N = [[0.0, 0.0, 0.0]], [[0.0, 0.0, 1.0]]
+>>> float(diffuse(P, N, [0, 0, 2], 0.5, 1.0)[0])          # light straight above: cos = 1
+0.5
+>>> round(float(specular(P, N, [1, 0, 1], [-1, 0, 1], 0.8, 10, 1.0)[0]), 12)   # the eye on the mirror ray
+0.8
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
+
+__all__ = ["Light", "Material", "unit_rows", "reflect", "ambient", "diffuse", "specular", "intensity",
+           "to_image", "light_direction", "default_lights", "shade_faces"]
+
+
+def _colour(value, name: str) -> tuple[float, float, float]:
+    c = as_float_array(value, name)
+    if c.shape != (3,):
+        raise ValueError(f"{name} must be an RGB triple (3 numbers in [0, 1]); got shape {c.shape}")
+    check_finite(c, name)
+    if np.any(c < 0) or np.any(c > 1):
+        raise ValueError(f"{name} must hold numbers in [0, 1] (an RGB colour); got {c.tolist()}")
+    return tuple(float(v) for v in c)
+
+
+def _non_negative(value, name: str) -> float:
+    v = as_float(value, name)
+    if v < 0:
+        raise ValueError(f"{name} must be >= 0; got {v}")
+    return v
+
+
+@dataclass(frozen=True)
+class Light:
+    """A point light source (Goldman §16.1): where it is, its colour and its intensity ``I_p``.
+
+    >>> Light((0, 0, 5)).rgb.tolist()
+    [1.0, 1.0, 1.0]
+    >>> Light((1, 2, 3), colour=(1, 0.5, 0), intensity=0.5).rgb.tolist()
+    [0.5, 0.25, 0.0]
+    """
+
+    position: tuple = (0.0, 0.0, 5.0)
+    colour: tuple = (1.0, 1.0, 1.0)
+    intensity: float = 1.0
+
+    def __post_init__(self):
+        p = as_points(self.position, "position", ndim=1, dim=3)
+        object.__setattr__(self, "position", tuple(float(v) for v in p))
+        object.__setattr__(self, "colour", _colour(self.colour, "colour"))
+        object.__setattr__(self, "intensity", _non_negative(self.intensity, "intensity"))
+
+    @property
+    def rgb(self) -> np.ndarray:
+        """``colour * intensity``: the light's intensity per channel, shape (3,)."""
+        return np.asarray(self.colour) * self.intensity
+
+
+@dataclass(frozen=True)
+class Material:
+    """How a surface answers light (Goldman §16.2): its colour, the coefficients ``k_a``, ``k_d``,
+    ``k_s`` (each >= 0) and the specular exponent ``n`` (>= 0).
+
+    ``reflect`` and ``transmit`` (in [0, 1]) and ``index`` (the index of refraction, > 0) are what
+    the recursive ray tracer of chapter 17 uses: the fractions of the reflected and refracted
+    (transmitted) rays' light added to the local intensity.
+
+    >>> Material(colour=(1, 0, 0)).diffuse
+    0.7
+    """
+
+    colour: tuple = (0.8, 0.8, 0.8)
+    ambient: float = 0.2
+    diffuse: float = 0.7
+    specular: float = 0.4
+    exponent: float = 32.0
+    reflect: float = 0.0
+    transmit: float = 0.0
+    index: float = 1.0
+    specular_colour: tuple = field(default=(1.0, 1.0, 1.0))
+
+    def __post_init__(self):
+        object.__setattr__(self, "colour", _colour(self.colour, "colour"))
+        object.__setattr__(self, "specular_colour", _colour(self.specular_colour, "specular_colour"))
+        for name in ("ambient", "diffuse", "specular", "exponent"):
+            object.__setattr__(self, name, _non_negative(getattr(self, name), name))
+        for name in ("reflect", "transmit"):
+            v = _non_negative(getattr(self, name), name)
+            if v > 1:
+                raise ValueError(f"{name} must be in [0, 1] (a fraction of the light); got {v}")
+            object.__setattr__(self, name, v)
+        object.__setattr__(self, "index", as_float(self.index, "index", positive=True))
+
+
+def unit_rows(vectors, name: str = "vectors") -> np.ndarray:
+    """Each row scaled to length 1 (a zero row stays zero): shape (..., 3).
+
+    >>> unit_rows([[3, 0, 4], [0, 0, 0]]).tolist()
+    [[0.6, 0.0, 0.8], [0.0, 0.0, 0.0]]
+    """
+    v = as_points(vectors, name, ndim=None, dim=3)
+    with np.errstate(over="ignore", invalid="ignore"):
+        length = finite_result(np.sqrt(np.einsum("...i,...i->...", v, v)), name)[..., None]
+    return np.divide(v, length, out=np.zeros_like(v), where=length > 0)
+
+
+def _dot(a, b):
+    return np.einsum("...i,...i->...", a, b)
+
+
+def reflect(vectors, normals) -> np.ndarray:
+    """The mirror image ``2 (v . N) N - v`` of each vector about its unit normal (Goldman §16.2.3:
+    ``R`` from ``L``).  A ray travelling in direction ``d`` leaves a mirror in direction
+    ``reflect(-d, N)``.
+
+    >>> reflect([[1.0, 0.0, 1.0]], [[0.0, 0.0, 1.0]]).tolist()
+    [[-1.0, 0.0, 1.0]]
+    """
+    v = as_points(vectors, "vectors", ndim=None, dim=3)
+    n = as_points(normals, "normals", ndim=None, dim=3)
+    with np.errstate(over="ignore", invalid="ignore"):
+        return finite_result(2 * _dot(v, n)[..., None] * n - v, "vectors and normals",
+                             why="are too large in magnitude")
+
+
+def _scale(cosines, k, light_intensity, k_name, i_name):
+    """``k * I * cos`` with k and I each a number or an RGB triple: (N,) or (N, 3)."""
+    k = as_float_array(k, k_name)
+    i = as_float_array(light_intensity, i_name)
+    for arr, name in ((k, k_name), (i, i_name)):
+        if arr.shape not in ((), (3,)):
+            raise ValueError(f"{name} must be a number or an RGB triple; got shape {arr.shape}")
+        check_finite(arr, name)
+        if np.any(arr < 0):
+            raise ValueError(f"{name} must be >= 0; got {arr.tolist()}")
+    s = k * i
+    return cosines * s if s.ndim == 0 else cosines[..., None] * s
+
+
+def _geometry(points, normals):
+    P = as_points(points, "points", ndim=None, dim=3)
+    N = unit_rows(normals, "normals")
+    if N.shape != P.shape:
+        raise ValueError(f"normals must have the shape of points {P.shape}; got {N.shape}")
+    return P, N
+
+
+def _lights(lights) -> tuple:
+    if isinstance(lights, Light):
+        return (lights,)
+    try:
+        lights = tuple(lights)
+    except TypeError:
+        raise TypeError(f"lights must be a Light or a sequence of goldman_lib.lighting.Light; "
+                        f"got {type(lights).__name__}") from None
+    if not all(isinstance(light, Light) for light in lights):
+        raise TypeError("lights must be a Light or a sequence of goldman_lib.lighting.Light")
+    return lights
+
+
+def ambient(ka, ambient_intensity) -> np.ndarray:
+    """The ambient term ``I_a k_a`` (Goldman §16.2.1); each a number or an RGB triple.
+
+    >>> ambient(0.5, [1.0, 0.5, 0.0]).tolist()
+    [0.5, 0.25, 0.0]
+    """
+    return _scale(np.float64(1.0), ka, ambient_intensity, "ka", "ambient_intensity")
+
+
+def diffuse(points, normals, light_position, kd, light_intensity) -> np.ndarray:
+    """Lambert's diffuse term ``I_p k_d max(L . N, 0)`` at each point (Goldman §16.2.2).
+
+    points, normals: (..., 3) (normals need not be unit); light_position: (3,); kd and
+    light_intensity: numbers or RGB triples.  Returns (...) or (..., 3) if either is RGB.
+
+    >>> diffuse([[0, 0, 0], [0, 0, 0]], [[0, 0, 1], [0, 0, -1]], [0, 3, 3], 1.0, 1.0).round(6).tolist()
+    [0.707107, 0.0]
+    """
+    P, N = _geometry(points, normals)
+    L = unit_rows(as_points(light_position, "light_position", ndim=1, dim=3) - P, "light_position - points")
+    return _scale(np.maximum(_dot(L, N), 0.0), kd, light_intensity, "kd", "light_intensity")
+
+
+def specular(points, normals, light_position, eye, ks, exponent, light_intensity) -> np.ndarray:
+    """Phong's specular term ``I_p k_s (R . V)^n`` (Goldman §16.2.3): ``R`` the mirror image of the
+    unit vector ``L`` to the light, ``V`` the unit vector to the eye; 0 where ``L . N <= 0`` (the
+    light is behind the surface) or ``R . V <= 0``.  No ``L . N`` factor, no attenuation.
+
+    >>> specular([[0, 0, 0]], [[0, 0, 1]], [1, 0, 1], [0, 0, 1], 1.0, 2, 1.0).round(6).tolist()
+    [0.5]
+    """
+    P, N = _geometry(points, normals)
+    L = unit_rows(as_points(light_position, "light_position", ndim=1, dim=3) - P, "light_position - points")
+    V = unit_rows(as_points(eye, "eye", ndim=1, dim=3) - P, "eye - points")
+    n = _non_negative(exponent, "exponent")
+    lit = _dot(L, N) > 0
+    rv = np.where(lit, np.maximum(_dot(2 * _dot(L, N)[..., None] * N - L, V), 0.0), 0.0)
+    with np.errstate(under="ignore"):
+        power = np.where(rv > 0, rv ** n, 0.0)
+    return _scale(power, ks, light_intensity, "ks", "light_intensity")
+
+
+def intensity(points, normals, eye, lights, material: Material, ambient_light=0.2, shadowed=None,
+              two_sided: bool = False) -> np.ndarray:
+    """The total RGB intensity ``I_a k_a C + sum over lights of I_p (k_d C (L . N) + k_s S (R . V)^n)``
+    at each point (Goldman §16.3-16.4), ``C`` the material's colour and ``S`` its specular colour.
+
+    points, normals: (..., 3); eye: (3,); lights: a :class:`Light` or a sequence of them;
+    ambient_light: ``I_a``, a number or RGB triple.  shadowed: optional boolean (..., len(lights)),
+    True where a light is blocked (chapter 17's shadow rays): that light adds nothing there.
+    two_sided: flip each normal to face the eye first (for open surfaces and static pictures).
+    Returns (..., 3), unclipped.
+
+    >>> m = Material(colour=(1, 0, 0), ambient=0.1, diffuse=0.5, specular=0.0)
+    >>> intensity([[0, 0, 0]], [[0, 0, 1]], [0, 0, 5], Light((0, 0, 5)), m, ambient_light=1.0).tolist()
+    [[0.6, 0.0, 0.0]]
+    """
+    if not isinstance(material, Material):
+        raise TypeError(f"material must be a goldman_lib.lighting.Material; got {type(material).__name__}")
+    lights = _lights(lights)
+    P, N = _geometry(points, normals)
+    E = as_points(eye, "eye", ndim=1, dim=3)
+    if two_sided:
+        N = np.where((_dot(N, E - P) < 0)[..., None], -N, N)
+    if shadowed is not None:
+        try:
+            shadowed = np.asarray(shadowed, dtype=bool)
+        except (TypeError, ValueError) as exc:
+            raise ValueError(f"shadowed must be a boolean array (points x lights): {exc}") from None
+        if shadowed.shape != P.shape[:-1] + (len(lights),):
+            raise ValueError(f"shadowed must have shape {P.shape[:-1] + (len(lights),)} (points x lights); "
+                             f"got {shadowed.shape}")
+    C, S = np.asarray(material.colour), np.asarray(material.specular_colour)
+    ia = _scale(np.float64(1.0), material.ambient, ambient_light, "material.ambient", "ambient_light")
+    total = np.broadcast_to(ia * C, P.shape).copy()
+    for k, light in enumerate(lights):
+        d = diffuse(P, N, light.position, material.diffuse, 1.0)
+        s = specular(P, N, light.position, E, material.specular, material.exponent, 1.0)
+        term = (d[..., None] * C + s[..., None] * S) * light.rgb
+        if shadowed is not None:
+            term[shadowed[..., k]] = 0.0
+        total += term
+    return total
+
+
+def to_image(values) -> np.ndarray:
+    """Intensities clipped to [0, 1], ready for ``imshow`` or a vertex colour.
+
+    >>> to_image([[1.5, 0.5, -0.1]]).tolist()
+    [[1.0, 0.5, 0.0]]
+    """
+    return np.clip(check_finite(as_float_array(values, "values"), "values"), 0.0, 1.0)
+
+
+def light_direction(azimuth=315.0, elevation=45.0) -> np.ndarray:
+    """The unit vector towards a light at ``azimuth`` degrees (clockwise from north, the y axis)
+    and ``elevation`` degrees above the xy plane (matplotlib's ``LightSource`` convention).
+
+    >>> light_direction(0, 90).round(12).tolist()
+    [0.0, 0.0, 1.0]
+    """
+    az = np.radians(90 - as_float(azimuth, "azimuth"))
+    alt = np.radians(as_float(elevation, "elevation"))
+    return np.array([np.cos(az) * np.cos(alt), np.sin(az) * np.cos(alt), np.sin(alt)])
+
+
+def default_lights(distance: float = 20.0) -> tuple[Light, ...]:
+    """The course's default lighting of a 3D view: a white key light up and to the left of the
+    default camera, ``distance`` away (far enough to act almost like a directional light), and a
+    dimmer fill light from the other side.
+
+    >>> [round(v, 3) for v in default_lights()[0].position]
+    [-10.0, -10.0, 14.142]
+    """
+    d = as_float(distance, "distance", positive=True)
+    return (Light(tuple(d * light_direction(225, 45)), intensity=0.8),
+            Light(tuple(d * light_direction(45, 30)), intensity=0.3))
+
+
+def shade_faces(centroids, normals, eye, colour, lights=None, ambient_light=0.35) -> np.ndarray:
+    """Two-sided face colours for a static picture of a mesh: :func:`intensity` at each face's
+    centroid with a matte material of ``colour`` (``k_a = 1``, ``k_d = 0.8``, a soft highlight),
+    clipped to [0, 1].  lights: default :func:`default_lights`.  Returns (m, 3).
+
+    >>> shade_faces([[0, 0, 0]], [[0, 0, 1]], [0, 0, 5], (1, 1, 1), [Light((0, 0, 5))], 0.2).round(3).tolist()
+    [[1.0, 1.0, 1.0]]
+    """
+    centroids = as_points(centroids, "centroids", dim=3)
+    normals = as_points(normals, "normals", dim=3)
+    if normals.shape != centroids.shape:
+        raise ValueError(f"normals must have the shape of centroids {centroids.shape}; got {normals.shape}")
+    eye = as_points(eye, "eye", ndim=1, dim=3)
+    material = Material(colour=colour, ambient=1.0, diffuse=0.8, specular=0.15, exponent=20)
+    lights = default_lights() if lights is None else _lights(lights)
+    with np.errstate(over="ignore", invalid="ignore"):
+        shade = intensity(centroids, normals, eye, lights, material, ambient_light, two_sided=True)
+    return to_image(finite_result(shade, "centroids, normals and eye", why="are too large in magnitude"))

@@ -1,0 +1,108 @@
+"""goldman_lib.lighting: the ambient, diffuse and specular terms against values worked by hand, and
+the total intensity as their sum (Goldman chapter 16)."""
+
+import numpy as np
+import pytest
+from matplotlib.colors import LightSource
+
+from goldman_lib import lighting
+from goldman_lib.lighting import Light, Material
+
+P0 = np.zeros((1, 3))
+UP = np.array([[0.0, 0.0, 1.0]])
+
+
+def test_diffuse_is_lamberts_cosine_by_hand():
+    # light at (0, 0, 2): L = N, cos = 1; at (2, 0, 2): 45 degrees, cos = 1/sqrt 2; below: 0
+    assert lighting.diffuse(P0, UP, [0, 0, 2], 0.6, 2.0)[0] == pytest.approx(1.2)
+    assert lighting.diffuse(P0, UP, [2, 0, 2], 1.0, 1.0)[0] == pytest.approx(0.7071067811865476)
+    assert lighting.diffuse(P0, UP, [0, 0, -2], 1.0, 1.0)[0] == 0.0
+    # the angle from the point, not from the origin: a point at (1, 0, 0) under a light at (1, 0, 3)
+    assert lighting.diffuse([[1, 0, 0]], UP, [1, 0, 3], 1.0, 1.0)[0] == pytest.approx(1.0)
+    # no distance attenuation
+    assert lighting.diffuse(P0, UP, [0, 0, 100], 1.0, 1.0)[0] == pytest.approx(1.0)
+
+
+def test_diffuse_with_rgb_light_and_unnormalised_normals():
+    d = lighting.diffuse(P0, [[0, 0, 5.0]], [0, 3, 4], [1.0, 0.5, 0.0], 1.0)   # cos = 4/5
+    assert np.allclose(d, [[0.8, 0.4, 0.0]])
+
+
+def test_specular_is_phong_by_hand():
+    # L = (1, 0, 1)/sqrt2, R = (-1, 0, 1)/sqrt2; eye straight up: R.V = 1/sqrt2; n = 4 -> 1/4
+    assert lighting.specular(P0, UP, [1, 0, 1], [0, 0, 3], 1.0, 4, 1.0)[0] == pytest.approx(0.25)
+    # eye on the mirror ray: (R.V)^n = 1 for any n, times ks I_p
+    assert lighting.specular(P0, UP, [1, 0, 1], [-2, 0, 2], 0.5, 50, 2.0)[0] == pytest.approx(1.0)
+    # eye on the light's side, R.V = 0 -> 0; the light behind the surface -> 0
+    assert lighting.specular(P0, UP, [1, 0, 0.0001], [1, 0, 0.0001], 1.0, 1, 1.0)[0] == pytest.approx(0, abs=1e-3)
+    assert lighting.specular(P0, UP, [1, 0, -1], [-1, 0, -1], 1.0, 1, 1.0)[0] == 0.0
+    # no N.L factor: a grazing light (L.N = sin 10 deg) seen along the mirror ray still gives ks
+    a = np.radians(10)
+    light = [np.cos(a), 0, np.sin(a)]
+    assert lighting.specular(P0, UP, light, [-np.cos(a), 0, np.sin(a)], 0.7, 30, 1.0)[0] == pytest.approx(0.7)
+
+
+def test_reflect_keeps_the_angle():
+    rng = np.random.default_rng(1)
+    v, n = rng.normal(size=(50, 3)), lighting.unit_rows(rng.normal(size=(50, 3)))
+    r = lighting.reflect(v, n)
+    assert np.allclose(np.linalg.norm(r, axis=1), np.linalg.norm(v, axis=1))
+    assert np.allclose((r * n).sum(1), (v * n).sum(1))
+    assert np.allclose(np.cross(r + v, n), 0)           # r + v lies along n
+
+
+def test_intensity_is_the_sum_of_the_three_terms():
+    m = Material(colour=(1.0, 0.5, 0.25), ambient=0.1, diffuse=0.6, specular=0.3, exponent=8)
+    lights = [Light((1, 1, 3), colour=(1, 1, 0.5)), Light((-2, 0, 1), intensity=0.5)]
+    rng = np.random.default_rng(2)
+    P, N = rng.normal(size=(20, 3)), rng.normal(size=(20, 3))
+    eye = np.array([0.5, -4.0, 2.0])
+    want = 0.1 * 0.3 * np.array(m.colour) + 0 * P
+    for light in lights:
+        d = lighting.diffuse(P, N, light.position, m.diffuse, 1.0)
+        s = lighting.specular(P, N, light.position, eye, m.specular, m.exponent, 1.0)
+        want = want + (d[:, None] * np.array(m.colour) + s[:, None]) * light.rgb
+    assert np.allclose(lighting.intensity(P, N, eye, lights, m, ambient_light=0.3), want)
+
+
+def test_one_light_by_hand_and_shadows():
+    m = Material(colour=(1, 1, 1), ambient=0.2, diffuse=0.5, specular=0.25, exponent=1)
+    # light and eye straight above: ambient 0.2*0.5 + diffuse 0.5 + specular 0.25
+    got = lighting.intensity(P0, UP, [0, 0, 4], Light((0, 0, 4)), m, ambient_light=0.5)
+    assert np.allclose(got, [[0.85, 0.85, 0.85]])
+    shadow = lighting.intensity(P0, UP, [0, 0, 4], Light((0, 0, 4)), m, 0.5, shadowed=[[True]])
+    assert np.allclose(shadow, [[0.1, 0.1, 0.1]])
+
+
+def test_two_sided_flips_normals_towards_the_eye():
+    m = Material(ambient=0.0, specular=0.0, diffuse=1.0, colour=(1, 1, 1))
+    one = lighting.intensity(P0, -UP, [0, 0, 3], Light((0, 0, 3)), m, 0.0)
+    two = lighting.intensity(P0, -UP, [0, 0, 3], Light((0, 0, 3)), m, 0.0, two_sided=True)
+    assert np.allclose(one, 0) and np.allclose(two, 1)
+
+
+def test_light_direction_matches_matplotlib():
+    assert np.allclose(lighting.light_direction(315, 45), LightSource(azdeg=315, altdeg=45).direction)
+
+
+@pytest.mark.parametrize("bad, word", [
+    (lambda: Light((0, 0)), "position"),
+    (lambda: Light((0, 0, 1), colour=(2, 0, 0)), "colour"),
+    (lambda: Light((0, 0, 1), intensity=-1), "intensity"),
+    (lambda: Material(exponent=-2), "exponent"),
+    (lambda: Material(reflect=1.5), "reflect"),
+    (lambda: Material(index=0), "index"),
+    (lambda: lighting.diffuse(P0, [[0, 0, 1], [0, 0, 1]], [0, 0, 1], 1, 1), "normals"),
+    (lambda: lighting.diffuse(P0, UP, [0, 0, 1], [1, 1], 1), "kd"),
+    (lambda: lighting.specular(P0, UP, [0, 0, 1], [0, 0, 1], 1, -1, 1), "exponent"),
+])
+def test_bad_input_names_the_parameter(bad, word):
+    with pytest.raises(ValueError, match=word):
+        bad()
+
+
+def test_intensity_refuses_other_types():
+    with pytest.raises(TypeError, match="material"):
+        lighting.intensity(P0, UP, [0, 0, 1], Light(), {"diffuse": 1})
+    with pytest.raises(TypeError, match="lights"):
+        lighting.intensity(P0, UP, [0, 0, 1], [(0, 0, 1)], Material())
