@@ -224,6 +224,10 @@ class SceneView:
         item["object"].frustumCulled = False
         item["geometry"].attributes["position"].array = pos[seg].reshape(-1, 3).astype(np.float32)
 
+    def __contains__(self, name: str) -> bool:
+        """Whether the scene has a primitive called ``name``."""
+        return name in self._items
+
     def data(self, name: str) -> dict:
         """The numpy data behind primitive ``name`` (``positions`` and, for meshes, ``triangles``)."""
         return {k: v for k, v in self._items[name].items() if k not in ("object", "geometry")}
