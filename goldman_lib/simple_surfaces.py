@@ -9,6 +9,8 @@ Every surface here answers the same questions, vectorised over rays ``P(t) = ori
 * ``intersect(origins, directions)`` -> ``(N,)``: the nearest parameter ``t > EPS`` per ray, ``inf``
   on a miss (what a ray tracer asks);
 * ``normal(points)`` -> ``(N, 3)``: unit normals, pointing out of the solid for closed surfaces;
+* ``hit(origins, directions)`` -> ``(t, normals)``: the nearest hit and the unit normal there (zero
+  rows on a miss): what a renderer asks of anything it draws, simple surface or CSG solid;
 * ``contains(points)`` -> ``(N,)`` booleans, for surfaces that bound a solid (a plane bounds the
   half-space behind its normal): what CSG (chapter 20) classifies ray intervals with.
 
@@ -19,6 +21,8 @@ Each surface carries a :class:`goldman_lib.lighting.Material` for the renderers.
 [4.0, inf]
 >>> s.hits([[0, 0, 0]], [[0, 0, 2]]).tolist()     # from the centre: one hit behind, one ahead
 [[-0.5, 0.5]]
+>>> t, n = s.hit([[0, 0, -5]], [[0, 0, 1]]); t.tolist(), n.tolist()
+([4.0], [[0.0, 0.0, -1.0]])
 """
 
 from __future__ import annotations
@@ -110,6 +114,17 @@ class Surface:
         """The nearest parameter ``t > EPS`` per ray, ``inf`` on a miss: (N,)."""
         t = self.hits(origins, directions)
         return np.where(t > EPS, t, np.inf).min(axis=1)
+
+    def hit(self, origins, directions) -> tuple[np.ndarray, np.ndarray]:
+        """The nearest parameter ``t > EPS`` per ray (``inf`` on a miss) and the unit normal of the
+        surface there (a zero row on a miss): ``((N,), (N, 3))``."""
+        o, d = rays(origins, directions)
+        t = self.intersect(o, d)
+        normals = np.zeros_like(o)
+        found = np.isfinite(t)
+        if found.any():
+            normals[found] = self.normal(o[found] + t[found, None] * d[found])
+        return t, normals
 
     def normal(self, points) -> np.ndarray:
         """Unit normals at points on the surface: (N, 3)."""
