@@ -55,7 +55,7 @@ from goldman_lib.validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_floa
 __all__ = ["Patches", "SolverHistory", "form_factor_parallel_rectangles", "form_factor_perpendicular_rectangles",
            "form_factor_point_polygon", "hemicube_cells", "hemicube_delta_form_factors", "hemicube_form_factors",
            "reciprocity_error", "enforce_reciprocity", "radiosity_matrix", "residual", "jacobi", "gauss_seidel", "progressive_refinement",
-           "cornell_box", "light_emission", "patch_mesh", "vertex_radiosities", "to_colours", "CORNELL_COLOURS"]
+           "cornell_box", "light_emission", "patch_mesh", "vertex_radiosities", "corner_radiosities", "to_colours", "CORNELL_COLOURS"]
 
 #: The reflectances of the Cornell box's surfaces (RGB): white walls, red left wall, green right wall.
 CORNELL_COLOURS = {"white": (0.75, 0.75, 0.75), "red": (0.63, 0.065, 0.05), "green": (0.14, 0.45, 0.09)}
@@ -866,6 +866,28 @@ def vertex_radiosities(patches: Patches, B) -> tuple:
     np.add.at(total, quads.ravel(), np.repeat(flat, 4, axis=0))
     VB = total / count[:, None]
     return positions, tri, VB.reshape((len(positions),) + B.shape[1:])
+
+
+def corner_radiosities(patches: Patches, B, smooth=True) -> np.ndarray:
+    """Radiosities at the four corners of every patch, in the vertex order of
+    ``patch_mesh(patches, shared=False)`` (Goldman §23.4): flat display gives all four the patch's
+    radiosity; smooth display gives each corner the vertex radiosity of :func:`vertex_radiosities`.
+    Returns ``(4 n,)`` or ``(4 n, c)``.
+
+    >>> box = cornell_box(2, blocks=False)
+    >>> corner_radiosities(box, np.arange(len(box), dtype=float), smooth=False)[:5].tolist()
+    [0.0, 0.0, 0.0, 0.0, 1.0]
+    """
+    if not isinstance(patches, Patches):
+        raise TypeError(f"patches must be a radiosity.Patches; got {type(patches).__name__}")
+    B = check_finite(as_float_array(B, "B"), "B")
+    if B.ndim not in (1, 2) or B.shape[0] != len(patches):
+        raise ValueError(f"B must have shape ({len(patches)},) or ({len(patches)}, c); got shape {B.shape}")
+    if not smooth:
+        return np.repeat(B, 4, axis=0)
+    _, tri, VB = vertex_radiosities(patches, B)
+    quads = tri.reshape(-1, 6)[:, [0, 1, 2, 5]]
+    return VB[quads.ravel()]
 
 
 def to_colours(B, white=1.0, gamma=2.2) -> np.ndarray:
