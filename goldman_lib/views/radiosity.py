@@ -39,7 +39,7 @@ MAX_STEPS = {"jacobi": 30, "gauss_seidel": 15, "progressive": 500}
 LIGHT_SIZE = 0.25
 EMISSION = 10.0
 #: The radiosity shown as full white.
-WHITE = 1.2
+WHITE = 0.3
 _SLIDER = {"jacobi": "jacobi_k", "gauss_seidel": "gs_k", "progressive": "shots"}
 
 
@@ -106,14 +106,14 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
         "solver": dropdown("solver", [(v, k) for k, v in SOLVERS.items()], solver, label_width="60px"),
         "jacobi_k": int_slider("Jacobi k", 3, 0, MAX_STEPS["jacobi"], label_width="60px"),
         "gs_k": int_slider("G-S k", 2, 0, MAX_STEPS["gauss_seidel"], label_width="60px"),
-        "shots": int_slider("shots", 60, 0, MAX_STEPS["progressive"], label_width="60px"),
+        "shots": int_slider("shots", 300, 0, MAX_STEPS["progressive"], label_width="60px"),
         "shading": widgets.ToggleButtons(options=[("flat", "flat"), ("smooth", "smooth")],
                                          value="smooth" if smooth else "flat", description="display",
                                          style={"description_width": "60px", "button_width": "70px"}),
         **light_controls,
     }
     positions, triangles, _ = rd.patch_mesh(box, shared=False)
-    scene = SceneView(width=420, height=400, camera_position=(0.5, -1.75, 0.5), target=(0.5, 0.5, 0.5), axes=0.0)
+    scene = SceneView(width=420, height=400, camera_position=(0.25, -1.55, 0.95), target=(0.5, 0.5, 0.45), axes=0.0)
     scene.add_mesh("box", positions, triangles, colors=np.zeros((len(positions), 3)), lit=False)
     scene.add_points("light", [[0.5, 0.5, 0.99]], color="#f2b700", size=0.04)
 
@@ -129,6 +129,7 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     ax.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
     solved: dict = {}
+    defaults = {k: w.value for k, w in controls.items()}
 
     def update(solver, jacobi_k, gs_k, shots, shading, light0_x, light0_y, light0_I, light0_colour):
         (lamp,) = light.lights({"light0_x": light0_x, "light0_y": light0_y, "light0_z": 0.99, "light0_I": light0_I,
@@ -167,6 +168,9 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
         return {"radiosities": B, "colours": shown, "iteration": k, "residual": float(history.residuals[k]),
                 "emission": E, "status": status}
 
+    # solve all three for the starting light, so the residual plot compares them from the start
+    for name in SOLVERS:
+        update(**{**defaults, "solver": name})
     legend = widgets.HTML("<small>The light is part of the ceiling (an emitting patch), not a point light: "
                           "its sliders move the square and set its emission.</small>")
     def static():
