@@ -93,7 +93,8 @@ class Patches:
         emis = as_points(self.emission, "emission", dim=3)
         for name, arr in (("edge_u", edge_u), ("edge_v", edge_v), ("reflectance", refl), ("emission", emis)):
             if len(arr) != n:
-                raise ValueError(f"{name} must hold one row per patch ({n}); got shape {arr.shape}")
+                raise ValueError(f"{name} must hold one row per patch, as many as origin has ({n}); got shape "
+                                 f"{arr.shape}")
         cross = np.cross(edge_u, edge_v)
         area = np.linalg.norm(cross, axis=1)
         if np.any(area <= 1e-12 * np.maximum(1.0, np.linalg.norm(edge_u, axis=1) * np.linalg.norm(edge_v, axis=1))):
@@ -106,6 +107,10 @@ class Patches:
             raise ValueError("reflectance must be in [0, 1] in every channel")
         if np.any(emis < 0):
             raise ValueError("emission must be >= 0 in every channel")
+        if isinstance(self.labels, str) or not isinstance(self.labels, (tuple, list)):
+            raise TypeError(f"labels must be a tuple or list of names, one per patch; got {type(self.labels).__name__}")
+        if not isinstance(self.grids, (tuple, list)):
+            raise TypeError(f"grids must be a tuple of (start, nu, nv) triples; got {type(self.grids).__name__}")
         labels = tuple(str(s) for s in self.labels) if len(self.labels) else ("patch",) * n
         if len(labels) != n:
             raise ValueError(f"labels must name every patch ({n}); got {len(labels)}")
@@ -119,7 +124,7 @@ class Patches:
         out = []
         used = np.zeros(n, bool)
         for g in grids:
-            if len(g) != 3:
+            if not isinstance(g, (tuple, list)) or len(g) != 3:
                 raise ValueError(f"grids must hold (start, nu, nv) triples; got {g!r}")
             start, nu, nv = (as_int(v, "grids", minimum=0) for v in g)
             if nu < 1 or nv < 1 or start + nu * nv > n:
@@ -533,10 +538,9 @@ def _check_system(F, rho, E):
         raise ValueError(f"rho must have shape ({n},) or ({n}, channels); got shape {rho.shape}")
     if np.any(rho < 0) or np.any(rho > 1):
         raise ValueError("rho must be a reflectance in [0, 1]")
-    try:
-        np.broadcast_shapes(rho.shape if rho.ndim == E.ndim else rho.shape + (1,) * (E.ndim - rho.ndim), E.shape)
-    except ValueError:
-        raise ValueError(f"rho (shape {rho.shape}) and E (shape {E.shape}) must have the same channels") from None
+    if not (rho.shape == E.shape or rho.shape == (n,)):
+        raise ValueError(f"rho must have the shape of E, {E.shape}, or ({n},) (one reflectance for every channel); "
+                         f"got shape {rho.shape}")
     if rho.ndim < E.ndim:
         rho = rho[:, None]
     shape = np.broadcast_shapes(rho.shape, E.shape)
@@ -786,6 +790,15 @@ def cornell_box(n=8, closed=False, blocks=True, light=(0.5, 0.5), light_size=0.2
     n = as_int(n, "n", minimum=1)
     n = within_budget(n, "n", cost=lambda m: 7 * m * m, what="the Cornell box", unit="patches", limit=20_000)
     lx, ly = (as_float(v, "light") for v in as_points(light, "light", ndim=1, dim=2))
+    light_size = as_float(light_size, "light_size")
+    if not 0 < light_size <= 1:
+        raise ValueError(f"light_size must be in (0, 1] (a square on the unit ceiling); got {light_size}")
+    if not (light_size / 2 <= lx <= 1 - light_size / 2 and light_size / 2 <= ly <= 1 - light_size / 2):
+        raise ValueError(f"light must keep the light on the ceiling: both in [{light_size / 2:g}, {1 - light_size / 2:g}]; "
+                         f"got ({lx}, {ly})")
+    rgb = as_points(light_emission_rgb, "light_emission_rgb", ndim=1, dim=3)
+    if np.any(rgb < 0) or np.any(rgb > 1e100):
+        raise ValueError("light_emission_rgb must be >= 0 (and below 1e100) in every channel")
     walls = [
         ("floor", (0, 0, 0), (1, 0, 0), (0, 1, 0), "white"),
         ("ceiling", (0, 0, 1), (0, 1, 0), (1, 0, 0), "white"),
@@ -810,7 +823,7 @@ def cornell_box(n=8, closed=False, blocks=True, light=(0.5, 0.5), light_size=0.2
     starts = np.cumsum([0] + [len(p[1]) for p in parts])[:-1]
     grids = tuple((int(st), *p[5]) for st, p in zip(starts, parts) if p[5] is not None)
     box = Patches(origin, edge_u, edge_v, refl, np.zeros_like(refl), labels, grids)
-    return box.with_emission(light_emission(box, lx, ly, light_size, light_emission_rgb))
+    return box.with_emission(light_emission(box, lx, ly, light_size, rgb))
 
 
 # -- display (§23.4) -----------------------------------------------------------------------------------

@@ -182,6 +182,9 @@ def _extra_examples() -> dict:
     polygon = [[0, 0], [1, 2], [2, 2], [3, 0], [4, 1]]
     return {
         "bezier.BezierCurve": ((cubic,), {}),
+        # chapter 23
+        "radiosity.Patches": (([[0, 0, 0], [0, 1, 1]], [[1, 0, 0], [1, 0, 0]], [[0, 1, 0], [0, -1, 0]],
+                               [[0.5, 0.5, 0.5]] * 2, [[1.0, 1.0, 1.0], [0.0, 0.0, 0.0]]), {}),
         "bezier.BezierPatch": ((net,), {}),
         "bspline.BSplineCurve": ((polygon, knots, 3), {}),
         "bspline.NURBSCurve": ((polygon, [1, 2, 1, 2, 1], knots, 3), {}),

@@ -228,7 +228,7 @@ def check_shot(answer) -> Result:
     if _close(got, _shot(*args, reciprocal=False)):
         return wrong("you used F_1j where patch j receives through F_j1 = A_1 F_1j / A_j (reciprocity).")
     if _close(got, _shot(*args, zero=False)):
-        return wrong("after shooting, patch 1 has no unshot radiosity left: set dB_1 = 0.")
+        return wrong("after shooting, patch 1 has no unshot radiosity left: clear its dB.")
     if _close(got, _shot(*args, reflect=False)):
         return wrong("the reflectance is missing: patch j keeps rho_j of what arrives.")
     return wrong(f"your [dB_1, dB_2, dB_3] is {_dist(got, right)}; add rho_j F_j1 dB_1 to each dB_j, then clear dB_1.")
