@@ -104,9 +104,9 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     light_controls = {k: w for k, w in light.controls.items() if k != "light0_z"}   # the light stays on the ceiling
     controls = {
         "solver": dropdown("solver", [(v, k) for k, v in SOLVERS.items()], solver, label_width="60px"),
+        "shots": int_slider("shots", 300, 0, MAX_STEPS["progressive"], label_width="60px"),
         "jacobi_k": int_slider("Jacobi k", 3, 0, MAX_STEPS["jacobi"], label_width="60px"),
         "gs_k": int_slider("G-S k", 2, 0, MAX_STEPS["gauss_seidel"], label_width="60px"),
-        "shots": int_slider("shots", 300, 0, MAX_STEPS["progressive"], label_width="60px"),
         "shading": widgets.ToggleButtons(options=[("flat", "flat"), ("smooth", "smooth")],
                                          value="smooth" if smooth else "flat", description="display",
                                          style={"description_width": "60px", "button_width": "70px"}),
@@ -131,7 +131,7 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     solved: dict = {}
     defaults = {k: w.value for k, w in controls.items()}
 
-    def update(solver, jacobi_k, gs_k, shots, shading, light0_x, light0_y, light0_I, light0_colour):
+    def update(solver, shots, jacobi_k, gs_k, shading, light0_x, light0_y, light0_I, light0_colour):
         (lamp,) = light.lights({"light0_x": light0_x, "light0_y": light0_y, "light0_z": 0.99, "light0_I": light0_I,
                                 "light0_colour": light0_colour})
         key = (round(light0_x, 6), round(light0_y, 6), round(light0_I, 6), lamp.colour)
