@@ -23,7 +23,7 @@ def test_iteration_sliders_index_the_solvers_iterates():
     assert r_gs["residual"] < r5["residual"]                                # Gauss-Seidel converges faster
     r_pr = view.set_values(solver="progressive", shots=200)
     assert "last shot" in r_pr["status"] and r_pr["iteration"] == 200
-    marker = view.figure.axes[0].lines[-1].get_xydata()[0]
+    marker = view.figure.axes[1].lines[-1].get_xydata()[0]
     assert np.allclose(marker, [200 / len(box), r_pr["residual"]])
 
 
@@ -45,3 +45,13 @@ def test_flat_and_smooth_display_and_the_light():
     assert np.allclose(view.scene.data("light")["positions"], [[0.3, 0.7, 0.99]])
     dark = view.set_values(light0_I=0.0)
     assert np.all(dark["radiosities"] == 0) and view.last_error is None
+
+
+def test_the_light_is_dragged_on_the_ceiling_map():
+    view = rv.radiosity_view("jacobi")
+    view.drag.press_at(0.5, 0.5)
+    view.drag.move_to(0.25, 0.7)
+    view.drag.release()
+    assert abs(view.values()["light0_x"] - 0.25) < 0.02 and abs(view.values()["light0_y"] - 0.7) < 0.02
+    glow = view.figure.axes[0].images[0].get_array()
+    assert glow.max() == 1.0 and glow[5, 2] > 0 and glow[2, 5] == 0          # lit near (0.25, 0.7), not at (0.7, 0.25)

@@ -85,7 +85,8 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     the light-position control (``light0_x``, ``light0_y`` on the ceiling, ``light0_I``,
     ``light0_colour``).  Right: the residual ``max |E + rho F B - B|`` of every solver solved so far
     for this light against the work done, in sweeps (one shot is ``1/n`` of a sweep's work), the
-    current iteration marked.
+    current iteration marked.  Left of it, the ceiling in the x, y plane with the emission of its patches:
+    drag the light's marker there (the shared drag helper) or use its sliders.
 
     ``update(...)`` returns ``{"radiosities" (n, 3), "colours" (4n, 3), "iteration", "residual",
     "emission" (n, 3), "status"}``.
@@ -117,7 +118,21 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     scene.add_mesh("box", positions, triangles, colors=np.zeros((len(positions), 3)), lit=False)
     scene.add_points("light", [[0.5, 0.5, 0.99]], color="#f2b700", size=0.04)
 
-    fig, ax = style.new_axes(figsize=(4.4, 3.4), equal=False)
+    fig = style.new_figure(figsize=(6.6, 3.4))
+    grid = fig.add_gridspec(1, 2, width_ratios=[1, 2])
+    ax_map, ax = fig.add_subplot(grid[0]), fig.add_subplot(grid[1])
+    style.style_axes(ax_map, equal=True)
+    style.style_axes(ax, equal=False)
+    # the ceiling in the x, y plane: its patches' emission, the light square, its marker
+    ceiling = np.flatnonzero(np.array(box.labels) == "ceiling")
+    side = int(round(np.sqrt(len(ceiling))))
+    cell = np.floor(box.centres[ceiling, :2] * side).astype(int)
+    glow = ax_map.imshow(np.zeros((side, side)), origin="lower", extent=(0, 1, 0, 1), cmap="inferno", vmin=0, vmax=1)
+    (outline,) = ax_map.plot([], [], color="#f2b700", linewidth=1.2)
+    (lamp_dot,) = ax_map.plot([], [], "o", color="#f2b700", markeredgecolor="#222222", markersize=8)
+    ax_map.set_xlim(0, 1), ax_map.set_ylim(0, 1)
+    ax_map.set_title("ceiling: drag the light", fontsize=9)
+    ax_map.set_xlabel("x"), ax_map.set_ylabel("y")
     ax.set_yscale("log")
     ax.set_xlabel("work (sweeps; a shot is 1/n of one)")
     ax.set_ylabel("residual max |E + ρFB − B|")
@@ -150,6 +165,13 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
         shown = rd.to_colours(corner, white=WHITE)
         scene.set_colors("box", shown)
         scene.set_points("light", [[light0_x, light0_y, 0.99]])
+        image = np.zeros((side, side))
+        image[cell[:, 1], cell[:, 0]] = E[ceiling].sum(axis=1)
+        glow.set_data(image / max(float(image.max()), 1e-300))
+        h2 = LIGHT_SIZE / 2
+        outline.set_data([light0_x - h2, light0_x + h2, light0_x + h2, light0_x - h2, light0_x - h2],
+                         [light0_y - h2, light0_y - h2, light0_y + h2, light0_y + h2, light0_y - h2])
+        lamp_dot.set_data([light0_x], [light0_y])
         for name, line in curves.items():
             if name in solved:
                 h = solved[name]
@@ -179,5 +201,6 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     view = InteractiveView(controls=controls, views=[widgets.HBox([scene.widget, figure_widget(fig)]), legend],
                            update=update, figure=fig, static=static,
                            title="§23.5 radiosity of a Cornell box, iteration by iteration")
+    light.drag_in(view, ax_map, plane="xy")
     view.scene, view.light = scene, light
     return view
