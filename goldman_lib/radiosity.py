@@ -713,8 +713,8 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
         shot = dB[i].copy()
         received = rho * (shoot[i] * shot)
         B += received
+        dB[i] -= shot                                         # shot; what i sends itself (F_ii > 0) stays unshot
         dB += received
-        dB[i] = 0
         shooters.append(i)
         if H is not None:
             r += H[i] * shot - received

@@ -175,3 +175,12 @@ def test_cornell_box_and_display():
     flat, tri_f, owner = rd.patch_mesh(box, shared=False)
     assert len(flat) == 4 * len(box) and np.array_equal(owner, np.repeat(np.arange(len(box)), 4))
     assert rd.to_colours([0.0, 0.25, 9.0], white=1.0, gamma=2.0).tolist() == [0.0, 0.5, 1.0]
+
+
+def test_a_patch_that_sees_itself():
+    # F_ii > 0 (a concave patch): B = E + rho F B with F = 0.5 everywhere, rho = 0.5, E = (1, 0):
+    # B1 = 1 + 0.25 (B1 + B2), B2 = 0.25 (B1 + B2) -> B2 = B1 / 3, B1 = 1.5
+    F = np.full((2, 2), 0.5)
+    for B in (rd.jacobi(F, [0.5, 0.5], [1.0, 0.0], tol=1e-13), rd.gauss_seidel(F, [0.5, 0.5], [1.0, 0.0], tol=1e-13),
+              rd.progressive_refinement(F, [0.5, 0.5], [1.0, 0.0], [1.0, 1.0], tol=1e-13)):
+        assert np.allclose(B, [1.5, 0.5], atol=1e-12)
