@@ -400,7 +400,7 @@ def _blocked(objects, bounds, P, N_f, owner, entering, lights):
 
 
 def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | None = None,
-          miss_length: float = 3.0) -> np.ndarray:
+          miss_length: float = 3.0, counts: dict | None = None) -> np.ndarray:
     """The colour each ray brings back, traced recursively to ``depth`` (Goldman §17.2-17.5):
     ``(N, 3)``, unclipped.  origins, directions: (N, 3) (a single ray as two (3,) vectors).
 
@@ -408,7 +408,8 @@ def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | N
     by :func:`goldman_lib.lighting.intensity` with a shadow ray per light; then the reflected rays
     (weight ``k_r``) and refracted rays (weight ``k_t``; on total internal reflection the reflected
     ray gets ``k_r + k_t``) form the next level.  record: a list to append the :class:`RaySegment`
-    of every ray traced (what :func:`ray_tree` draws; keep N small).
+    of every ray traced (what :func:`ray_tree` draws; keep N small).  counts: a dict to receive the
+    number of ``"rays"`` traced (primary, reflected and refracted) and of ``"shadow"`` rays.
 
     >>> s = Scene([Sphere((0, 0, 0), 1, Material(colour=(1, 1, 1), ambient=1, diffuse=0, specular=0))],
     ...           [Light((0, 0, 5))], ambient_light=0.25, background=(0, 0, 1))
@@ -424,18 +425,22 @@ def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | N
     within_budget(depth, "depth", cost=lambda k: len(o) * (2 ** (k + 1) - 1), what=f"the ray trees of {len(o)} rays",
                   unit="rays")
     miss_length = as_float(miss_length, "miss_length", positive=True)
+    if counts is not None and not isinstance(counts, dict):
+        raise TypeError(f"counts must be a dict (to receive the ray counts) or None; got {type(counts).__name__}")
     if record is not None and not isinstance(record, list):
         raise TypeError(f"record must be a list (to append the ray segments to) or None; got {type(record).__name__}")
     with np.errstate(over="ignore", invalid="ignore", under="ignore"):
         d = lighting.unit_rows(d / np.abs(d).max(axis=1, keepdims=True))
-        colour = _trace(scene, np.array(o, dtype=float), d, depth, record, miss_length)
+        colour = _trace(scene, np.array(o, dtype=float), d, depth, record, miss_length,
+                        {} if counts is None else counts)
     if not np.all(np.isfinite(colour)):
         raise ValueError("origins are too large in magnitude: the traced colour overflows float64")
     return colour
 
 
-def _trace(scene, o, d, depth, record, miss_length):
+def _trace(scene, o, d, depth, record, miss_length, counts):
     n_rays = len(o)
+    counts["rays"] = counts["shadow"] = 0
     colour = np.zeros((n_rays, 3))
     pixel = np.arange(n_rays)                # which input ray each ray of this level belongs to
     weight = np.ones(n_rays)
@@ -446,6 +451,7 @@ def _trace(scene, o, d, depth, record, miss_length):
     for level in range(depth + 1):
         if len(o) == 0:
             break
+        counts["rays"] += len(o)
         t, which, normals = _nearest(objects, bounds, o, d) if objects else (np.full(len(o), np.inf),
                                                                         np.full(len(o), -1), np.zeros((len(o), 3)))
         miss = which < 0
@@ -468,6 +474,7 @@ def _trace(scene, o, d, depth, record, miss_length):
         N_f = np.where(entering[:, None], N, -N)      # the normal on the side the ray arrives from
         outside = P + OFFSET * N_f
         blocked = _blocked(objects, bounds, outside, N_f, obj_h, entering, lights)
+        counts["shadow"] += blocked.size
         if record is not None:
             for i in range(len(P)):
                 for j, light in enumerate(lights):
@@ -478,34 +485,35 @@ def _trace(scene, o, d, depth, record, miss_length):
                         end = outside[i] + tb * to_light
                     record.append(RaySegment("shadow", P[i].copy(), end, level, float(w[i]), bool(blocked[i, j])))
         next_o, next_d, next_w, next_p, next_k = [], [], [], [], []
-        for k in np.unique(obj_h):
-            sel = obj_h == k
-            m = objects[k].material
+        order = np.argsort(obj_h, kind="stable")
+        firsts = np.flatnonzero(np.diff(obj_h[order], prepend=-1))
+        for sel in np.split(order, firsts[1:]):      # the hits on each object, as row indices
+            m = objects[obj_h[sel[0]]].material
             local = lighting.intensity(P[sel], N_f[sel], eye_h[sel], lights, m, scene.ambient_light,
                                        shadowed=blocked[sel])
             brought[hit_rows[sel]] = w[sel, None] * local
             if level == depth or (m.reflect == 0 and m.transmit == 0):
                 continue
-            r_weight = np.full(sel.sum(), m.reflect)
+            r_weight = np.full(len(sel), m.reflect)
             if m.transmit > 0:
                 eta = np.where(entering[sel], 1.0 / m.index, m.index)
                 T, tir = _refract(d_h[sel], N_f[sel], eta)
                 r_weight = r_weight + np.where(tir, m.transmit, 0.0)
-                go = ~tir
-                if go.any():
-                    next_o.append(P[sel][go] - OFFSET * N_f[sel][go])
-                    next_d.append(T[go])
-                    next_w.append(w[sel][go] * m.transmit)
-                    next_p.append(pix[sel][go])
-                    next_k.append(np.full(go.sum(), 2))
-            go = r_weight > 0
-            if go.any():
-                R = lighting.unit_rows(lighting.reflect(-d_h[sel][go], N_f[sel][go]))
-                next_o.append(outside[sel][go])
-                next_d.append(R)
-                next_w.append(w[sel][go] * r_weight[go])
-                next_p.append(pix[sel][go])
-                next_k.append(np.full(go.sum(), 1))
+                go = sel[~tir]
+                if len(go):
+                    next_o.append(P[go] - OFFSET * N_f[go])
+                    next_d.append(T[~tir])
+                    next_w.append(w[go] * m.transmit)
+                    next_p.append(pix[go])
+                    next_k.append(np.full(len(go), 2))
+            keep = r_weight > 0
+            go = sel[keep]
+            if len(go):
+                next_o.append(outside[go])
+                next_d.append(lighting.unit_rows(lighting.reflect(-d_h[go], N_f[go])))
+                next_w.append(w[go] * r_weight[keep])
+                next_p.append(pix[go])
+                next_k.append(np.full(len(go), 1))
         _accumulate(colour, pixel, brought, level)
         if not next_o:
             break
@@ -528,11 +536,12 @@ def _first_t(obj, origin, direction):
     return float(t[0]) if t[0] < 1.0 else 1.0
 
 
-def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3) -> np.ndarray:
+def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3, *,
+           counts: dict | None = None) -> np.ndarray:
     """Ray trace ``scene`` seen by ``camera`` (Goldman §17.2): a ``(height, width, 3)`` image in
     [0, 1] (row 0 at the top).  depth: the recursion depth (0: local light and shadows only).
     The work ``width * height * (2^(depth+1) - 1)`` rays is bounded by
-    :data:`goldman_lib.validation.MAX_ITEMS`; depth by :data:`MAX_DEPTH`.
+    :data:`goldman_lib.validation.MAX_ITEMS`; depth by :data:`MAX_DEPTH`.  counts: as in :func:`trace`.
 
     >>> img = render(default_scene(), default_camera(), 8, 6, depth=1)
     >>> img.shape
@@ -544,7 +553,7 @@ def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, de
         raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
     width, height = _image_size(width, height, depth)
     o, d = camera.rays(width, height)
-    colour = trace(scene, o, d, depth)
+    colour = trace(scene, o, d, depth, counts=counts)
     return lighting.to_image(colour.reshape(height, width, 3))
 
 
@@ -571,7 +580,7 @@ def ray_tree(scene: Scene, camera: Camera, px: int, py: int, depth: int = 3, wid
 
 #: The materials of :func:`default_scene`.
 MATERIALS = {
-    "floor": Material(colour=(0.82, 0.8, 0.74), ambient=0.35, diffuse=0.75, specular=0.05, exponent=8),
+    "floor": Material(colour=(0.82, 0.8, 0.74), ambient=0.9, diffuse=0.7, specular=0.05, exponent=8),
     "red": Material(colour=(0.85, 0.18, 0.15), ambient=0.3, diffuse=0.75, specular=0.5, exponent=40),
     "blue": Material(colour=(0.2, 0.35, 0.9), ambient=0.3, diffuse=0.7, specular=0.5, exponent=60),
     "mirror": Material(colour=(0.85, 0.85, 0.9), ambient=0.05, diffuse=0.1, specular=0.7, exponent=120,
@@ -590,7 +599,7 @@ def default_lights() -> tuple[Light, ...]:
     return (Light((-2.5, -1.5, 5.0), intensity=1.0),)
 
 
-def default_scene(index: float = 1.5, lights=None, ambient_light=0.25) -> Scene:
+def default_scene(index: float = 1.5, lights=None, ambient_light=0.3) -> Scene:
     """The chapter's scene: a floor (the plane z = 0) under four spheres, a red and a blue matte one,
     a mirror (``reflect = 0.8``) and a glass one (``transmit = 0.88``, index of refraction ``index``)
     in front, under :func:`default_lights` (or ``lights``), with a sky-blue background.  The camera
