@@ -47,7 +47,7 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
                                     within_budget)
 
 __all__ = ["Camera", "Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
-           "trace", "render", "ray_tree", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
+           "trace", "render", "ray_tree", "in_shadow", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
            "OFFSET", "INDEX_RANGE", "MATERIALS"]
 
 #: The deepest recursion a render may ask for (a ray tree of depth d holds up to 2^(d+1) - 1 rays).
@@ -397,6 +397,34 @@ def _blocked(objects, bounds, P, N_f, owner, entering, lights):
             t = intersect(P[rows], to_light[rows]) if intersect is not None else obj.hit(P[rows], to_light[rows])[0]
             out[rows[t < 1.0], j] = True
     return out
+
+
+def in_shadow(scene: Scene, points, normals) -> np.ndarray:
+    """Shadow rays (Goldman §17.3): True where light ``j`` does not reach point ``i``, shape (N, L).
+
+    points: (N, 3) points on the scene's surfaces; normals: (N, 3) their normals on the side the
+    point is seen from.  A shadow ray leaves each point (nudged off the surface by :data:`OFFSET`)
+    towards each light; the light is blocked if an object lies between, or if the light is behind
+    the surface (``L . N <= 0``: the surface itself is in the way).
+
+    >>> s = Scene([Sphere((0, 0, 1), 0.5)], [Light((0, 0, 5)), Light((4, 0, 5))])
+    >>> in_shadow(s, [[0, 0, 0]], [[0, 0, 1]]).tolist()      # under the sphere: only the first is blocked
+    [[True, False]]
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
+    P = as_points(points, "points", dim=3)
+    N = lighting.unit_rows(as_points(normals, "normals", dim=3), "normals")
+    if N.shape != P.shape:
+        raise ValueError(f"normals must have the shape of points {P.shape}; got {N.shape}")
+    if not np.all(np.any(N != 0, axis=1)):
+        raise ValueError("normals must be nonzero vectors")
+    if np.abs(P).max() > 1e15:
+        raise ValueError("points must have coordinates at most 1e15 in magnitude")
+    bounds = [_bounding_sphere(obj) for obj in scene.objects]
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        return _blocked(scene.objects, bounds, P + OFFSET * N, N, np.full(len(P), -1), np.ones(len(P), dtype=bool),
+                        scene.lights)
 
 
 def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | None = None,
