@@ -33,7 +33,7 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.light_control import LightControl
 
-__all__ = ["ray_tracing_view", "WIDTH", "HEIGHT", "KIND_COLOURS", "KINDS"]
+__all__ = ["ray_tracing_view", "image_strip", "WIDTH", "HEIGHT", "KIND_COLOURS", "KINDS"]
 
 #: The default image size of the view (a full re-render per slider move stays under 100 ms).
 WIDTH, HEIGHT = 160, 120
@@ -48,6 +48,33 @@ _CACHE = 24
 def _circle(center, radius, n=73):
     a = np.linspace(0, 2 * np.pi, n)
     return center[0] + radius * np.cos(a), center[2] + radius * np.sin(a)
+
+
+def image_strip(images, titles=None, width: float = 2.6) -> bytes:
+    """A static picture (PNG bytes) of rendered images side by side, each ``width`` inches wide with
+    its title: for comparing renders (depths, lights, indices) in a notebook.
+
+    >>> image_strip([np.zeros((4, 6, 3)), np.ones((4, 6, 3))], ["black", "white"])[:4]
+    b'\\x89PNG'
+    """
+    from matplotlib.figure import Figure
+
+    from goldman_lib.views.interactive import figure_png
+
+    images = [np.clip(np.asarray(img, dtype=float), 0, 1) for img in images]
+    if not images or any(img.ndim != 3 or img.shape[2] != 3 for img in images):
+        raise ValueError("images must be a non-empty list of (height, width, 3) RGB images")
+    titles = list(titles) if titles is not None else [""] * len(images)
+    if len(titles) != len(images):
+        raise ValueError(f"titles must have one title per image ({len(images)}); got {len(titles)}")
+    h, w = images[0].shape[:2]
+    fig = Figure(figsize=(width * len(images), width * h / w + 0.35), dpi=style.DPI)
+    for k, (img, title) in enumerate(zip(images, titles)):
+        ax = fig.add_axes([k / len(images) + 0.005, 0.0, 1 / len(images) - 0.01, 1 - 0.35 / (width * h / w + 0.35)])
+        ax.imshow(img, interpolation="nearest")
+        ax.set_xticks([]), ax.set_yticks([])
+        ax.set_title(title, fontsize=9)
+    return figure_png(fig)
 
 
 def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int = 70) -> InteractiveView:
