@@ -504,14 +504,7 @@ def _trace(scene, o, d, depth, record, miss_length, counts):
         blocked = _blocked(objects, bounds, outside, N_f, obj_h, entering, lights)
         counts["shadow"] += blocked.size
         if record is not None:
-            for i in range(len(P)):
-                for j, light in enumerate(lights):
-                    end = np.asarray(light.position, dtype=float)
-                    if blocked[i, j]:
-                        to_light = end - outside[i]
-                        tb = min(_first_t(obj, outside[i], to_light) for obj in objects)
-                        end = outside[i] + tb * to_light
-                    record.append(RaySegment("shadow", P[i].copy(), end, level, float(w[i]), bool(blocked[i, j])))
+            _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level)
         next_o, next_d, next_w, next_p, next_k = [], [], [], [], []
         order = np.argsort(obj_h, kind="stable")
         firsts = np.flatnonzero(np.diff(obj_h[order], prepend=-1))
@@ -559,9 +552,19 @@ def _accumulate(colour, pixel, brought, level):
             colour[:, c] += np.bincount(pixel, brought[:, c], minlength=len(colour))
 
 
-def _first_t(obj, origin, direction):
-    t, _ = obj.hit(origin[None], direction[None])
-    return float(t[0]) if t[0] < 1.0 else 1.0
+def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level):
+    """Append the shadow rays of one level to ``record``: to the light, or to the blocker."""
+    for j, light in enumerate(lights):
+        end = np.broadcast_to(np.asarray(light.position, dtype=float), P.shape).copy()
+        rows = np.flatnonzero(blocked[:, j])
+        if len(rows):
+            to_light = end[rows] - outside[rows]
+            distance = np.sqrt(_dot(to_light, to_light))
+            unit = to_light / np.where(distance > 0, distance, 1.0)[:, None]
+            t, _, _ = _nearest(objects, bounds, outside[rows], np.where(distance[:, None] > 0, unit, [[0, 0, 1.0]]))
+            end[rows] = outside[rows] + np.minimum(t, distance)[:, None] * unit
+        for i in range(len(P)):
+            record.append(RaySegment("shadow", P[i].copy(), end[i], level, float(w[i]), bool(blocked[i, j])))
 
 
 def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3, *,

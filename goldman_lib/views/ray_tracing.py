@@ -126,6 +126,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
     ax_side.set_xlim(-7.6, 4.2), ax_side.set_ylim(-0.6, 6.9)
     ax_side.set_xlabel("x", fontsize=8), ax_side.set_ylabel("z", fontsize=8)
     ax_side.tick_params(labelsize=7)
+    ax_side.set_xticks([-6, -3, 0, 3]), ax_side.set_yticks([0, 2, 4, 6])
     for obj in scene0.objects:
         if isinstance(obj, Plane):
             ax_side.axhspan(-0.6, 0.0, color="#d8d4c8", zorder=0)
@@ -140,13 +141,13 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
 
     lines = LineCollection([], linewidths=1.6, zorder=3)
     ax_side.add_collection(lines)
-    (light_dot,) = ax_side.plot([], [], "o", color="#f2b700", markeredgecolor="#7a5c00", markersize=11, zorder=5,
-                                label="light (drag me)")
-    handles = [ax_side.plot([], [], color=c, label=k, linestyle="--" if k == "shadow" else "-")[0]
-               for k, c in KIND_COLOURS.items()]
-    handles.append(ax_side.plot([], [], color=_BLOCKED, linestyle="--", label="blocked shadow")[0])
-    ax_side.legend(handles=[light_dot] + handles, loc="upper right", fontsize=7, framealpha=0.85)
-    side_title = ax_side.set_title("side view (x-z plane): the ray tree of the chosen pixel", fontsize=9)
+    (light_dot,) = ax_side.plot([], [], "o", color="#f2b700", markeredgecolor="#7a5c00", markersize=11, zorder=5)
+    legend = widgets.HTML(" &nbsp;".join(
+        [f"<span style='color:#c99a00'>&#9679; light (drag it)</span>"]
+        + [f"<span style='color:{c}'>{'- -' if k == 'shadow' else '&#9472;&#9472;'} {k}</span>"
+           for k, c in KIND_COLOURS.items()]
+        + [f"<span style='color:{_BLOCKED}'>- - blocked shadow</span>"]))
+    side_title = ax_side.set_title("", fontsize=9)
 
     images: OrderedDict = OrderedDict()
 
@@ -179,10 +180,8 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         light_dot.set_data([marker[0]], [marker[2]])
         n = {k: kinds.count(k) for k in KIND_COLOURS}
         crit = rt.critical_angle(index, 1.0)
-        img_title.set_text(f"depth {depth}, glass index {index:.2f}: {counts['rays']:,} rays + "
-                           f"{counts['shadow']:,} shadow rays", )
-        side_title.set_text(f"pixel ({px}, {py}): {n['primary'] + n['reflected'] + n['refracted']} rays, "
-                            f"{n['shadow']} shadow rays in its tree")
+        img_title.set_text(f"depth {depth}, glass index {index:.2f}")
+        side_title.set_text(f"side view (x-z): ray tree of pixel ({px}, {py})")
         status = (f"{WIDTH}x{HEIGHT} image at recursion depth {depth}: {counts['rays']:,} primary, reflected and "
                   f"refracted rays and {counts['shadow']:,} shadow rays.  Pixel ({px}, {py}): {n['primary']} primary, "
                   f"{n['reflected']} reflected, {n['refracted']} refracted and {n['shadow']} shadow rays "
@@ -194,7 +193,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         return {"image": img, "segments": seg, "kinds": codes, "blocked": blocked, "pixel": pixel,
                 "rays": counts["rays"], "status": status}
 
-    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig), legend], update=update, figure=fig,
                            title="§17.2-17.5 recursive ray tracing: the image and one pixel's ray tree",
                            arrange=[widgets.HBox([widgets.VBox([controls["depth"], controls["index"],
                                                                 controls["px"], controls["py"]]),
