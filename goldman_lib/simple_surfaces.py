@@ -964,11 +964,15 @@ class Torus(Surface):
         >>> Torus([0, 0, 0], [0, 0, 1], 2, 1).quartic([-4, 0, 0], [1, 0, 0]).tolist()
         [1.0, -16.0, 86.0, -176.0, 105.0]
         """
-        o, d = rays(origin, direction)
-        if len(o) != 1:
-            raise ValueError("origin and direction must be one ray (a (3,) vector each)")
-        q = ((o - self.center) @ self._F.T)[0]
-        e = (d @ self._F.T)[0]
+        o = as_points(origin, "origin", ndim=1, dim=3)
+        d = as_points(direction, "direction", ndim=1, dim=3)
+        for v, name in ((o, "origin"), (d, "direction")):
+            if np.abs(v).max() > MAX_COORDINATE:
+                raise ValueError(f"{name} must have coordinates at most {MAX_COORDINATE:g} in magnitude")
+        if not np.any(d != 0):
+            raise ValueError("direction must be a nonzero vector")
+        q = (o - self.center) @ self._F.T
+        e = d @ self._F.T
         R2, K = self.R ** 2, q @ q + self.R ** 2 - self.r ** 2
         dd, qd = e @ e, q @ e
         with np.errstate(all="ignore"):
@@ -1055,9 +1059,10 @@ class SurfaceOfRevolution(Surface):
     def __init__(self, base, axis, profile, height, capped: bool = True, material: Material | None = None):
         self.base = as_points(base, "base", ndim=1, dim=3)
         self.axis = _unit_vector(axis, "axis")
-        c = as_points(profile, "profile", ndim=1, dim=None) if np.ndim(profile) else None
-        if c is None:
-            raise ValueError("profile must be a list of polynomial coefficients [c0, c1, ...]")
+        c = as_float_array(profile, "profile")
+        if c.ndim != 1 or len(c) == 0:
+            raise ValueError(f"profile must be a list of polynomial coefficients [c0, c1, ...]; got shape {c.shape}")
+        c = check_finite(c, "profile")
         c = np.trim_zeros(c, "b") if np.any(c != 0) else c[:1]
         if len(c) - 1 > MAX_PROFILE_DEGREE:
             raise ValueError(f"profile must have degree at most {MAX_PROFILE_DEGREE}; got degree {len(c) - 1}")
