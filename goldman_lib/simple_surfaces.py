@@ -169,6 +169,12 @@ class Surface:
         return finite_result(np.asarray(positions, dtype=float), "extent", extent), \
             np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
 
+    @property
+    def bounding_sphere(self):
+        """``(center (3,), radius)`` of a sphere enclosing a bounded surface, or None for an unbounded
+        one: a renderer skips a surface's own test for rays that miss it (Goldman §19.6.1)."""
+        return None
+
     def _set_material(self, material):
         if material is None:
             material = Material()
@@ -235,6 +241,10 @@ class Sphere(Surface):
 
     def _contains(self, P):
         return np.einsum("ij,ij->i", P - self.center, P - self.center) <= self.radius ** 2
+
+    @property
+    def bounding_sphere(self):
+        return self.center, self.radius
 
     def _mesh(self, n, extent):
         X = _unit_sphere_grid(n)
@@ -542,6 +552,11 @@ class Polygon(Surface):
     def _normal(self, P):
         return np.broadcast_to(self.unit_normal, P.shape)
 
+    @property
+    def bounding_sphere(self):
+        c = self.vertices.mean(axis=0)
+        return c, float(np.linalg.norm(self.vertices - c, axis=1).max())
+
     def _mesh(self, n, extent):
         return self.vertices.copy(), _ear_clip(self._uv)
 
@@ -647,6 +662,14 @@ class _AxialQuadric(Surface):
         if self.height is not None:
             inside &= (L[:, 2] >= 0) & (L[:, 2] <= self.height)
         return inside
+
+    @property
+    def bounding_sphere(self):
+        if self.height is None:
+            return None
+        h, widest = self.height, 1.0 / self._scale[:2].min()     # the largest semi-axis (or tangent, for a cone)
+        across = widest if self._kind == "cylinder" else h * widest
+        return self.origin + h / 2 * self.axis, float(np.hypot(h / 2, across))
 
     def _to_world(self, L):
         return self.origin + (L / self._scale) @ self._F
@@ -839,6 +862,10 @@ class Ellipsoid(Surface):
     def _contains(self, P):
         L = ((P - self.center) @ self.axes.T) * self._inv
         return np.einsum("ij,ij->i", L, L) <= 1.0
+
+    @property
+    def bounding_sphere(self):
+        return self.center, max(self.radii)
 
     def _mesh(self, n, extent):
         X = _unit_sphere_grid(n).reshape(-1, 3)
@@ -1053,6 +1080,10 @@ class Torus(Surface):
         out[~np.isfinite(out)] = np.inf
         return np.sort(out, axis=1)
 
+    @property
+    def bounding_sphere(self):
+        return self.center, self.R + self.r
+
     def _f_parts(self, P):
         L = (P - self.center) @ self._F.T
         return L, np.einsum("ij,ij->i", L, L) + self.R ** 2 - self.r ** 2
@@ -1125,6 +1156,9 @@ class SurfaceOfRevolution(Surface):
         self.capped = bool(capped)
         self._F = _frame(self.axis)
         self._S = max(self.height, float(rz.max()))
+        crit = np.roots(np.polynomial.polynomial.polyder(c)[::-1]) if len(c) > 2 else np.array([])
+        crit = crit.real[(np.abs(crit.imag) < 1e-9) & (crit.real >= 0) & (crit.real <= self.height)]
+        self._rmax = float(max(rz.max(), *np.polynomial.polynomial.polyval(crit, c))) if len(crit) else float(rz.max())
         self._set_material(material)
 
     def radius(self, z) -> np.ndarray:
@@ -1184,6 +1218,10 @@ class SurfaceOfRevolution(Surface):
         t = (t0[:, None] + s) * S / length[:, None]
         t[~np.isfinite(t)] = np.inf
         return np.sort(t, axis=1)
+
+    @property
+    def bounding_sphere(self):
+        return self.base + self.height / 2 * self.axis, float(np.hypot(self.height / 2, self._rmax * (1 + 1e-6)))
 
     def _local(self, P):
         return (P - self.base) @ self._F.T

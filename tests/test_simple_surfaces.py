@@ -327,3 +327,16 @@ def test_real_roots_against_numpy_roots():
 def test_bad_input_ch19(bad, word):
     with pytest.raises(ValueError, match=word):
         bad()
+
+
+def test_bounding_spheres_enclose_the_meshes():
+    surfaces = [S.Sphere([1, 0, 0], 2), S.Cylinder([0, 0, 1], [1, 1, 0], 0.5, height=3),
+                S.Cone([0, 0, 0], [0, 1, 0], 35, height=2), S.Ellipsoid([0, 1, 0], [1, 2, 3]),
+                S.Torus([0, 0, 1], [1, 0, 0], 2, 0.5), S.SurfaceOfRevolution([0, 0, 0], [0, 0, 1], [1, 1, -0.5], 2),
+                S.Polygon([[0, 0, 0], [2, 0, 0], [2, 1, 0], [1, 1, 0], [1, 2, 0], [0, 2, 0]]),
+                S.EllipticCone([0, 0, 0], [0, 0, 1], [50, 20], height=1.5)]
+    for s in surfaces:
+        c, r = s.bounding_sphere
+        pos, _ = s.mesh(24)
+        assert np.linalg.norm(pos - c, axis=1).max() <= r * (1 + 1e-9), type(s).__name__
+    assert S.Cylinder([0, 0, 0], [0, 0, 1], 1).bounding_sphere is None
