@@ -320,7 +320,9 @@ def default_lights(distance: float = 20.0) -> tuple[Light, ...]:
 def shade_faces(centroids, normals, eye, colour, lights=None, ambient_light=0.35) -> np.ndarray:
     """Two-sided face colours for a static picture of a mesh: :func:`intensity` at each face's
     centroid with a matte material of ``colour`` (``k_a = 1``, ``k_d = 0.8``, a soft highlight),
-    clipped to [0, 1].  lights: default :func:`default_lights`.  Returns (m, 3).
+    clipped to [0, 1].  colour: one RGB triple, or one per face ``(m, 3)`` (then the light's
+    ambient and diffuse parts tint each face's own colour).  lights: default :func:`default_lights`.
+    Returns (m, 3).
 
     >>> shade_faces([[0, 0, 0]], [[0, 0, 1]], [0, 0, 5], (1, 1, 1), [Light((0, 0, 5))], 0.2).round(3).tolist()
     [[1.0, 1.0, 1.0]]
@@ -330,8 +332,16 @@ def shade_faces(centroids, normals, eye, colour, lights=None, ambient_light=0.35
     if normals.shape != centroids.shape:
         raise ValueError(f"normals must have the shape of centroids {centroids.shape}; got {normals.shape}")
     eye = as_points(eye, "eye", ndim=1, dim=3)
-    material = Material(colour=colour, ambient=1.0, diffuse=0.8, specular=0.15, exponent=20)
+    per_face = as_float_array(colour, "colour").ndim == 2
+    if per_face:
+        tint = as_points(colour, "colour", dim=3)
+        if tint.shape != centroids.shape or tint.min() < 0 or tint.max() > 1:
+            raise ValueError(f"colour must be an RGB triple or one per face {centroids.shape} in [0, 1]")
+    material = Material(colour=(1.0, 1.0, 1.0) if per_face else colour, ambient=1.0, diffuse=0.8,
+                        specular=0.0 if per_face else 0.15, exponent=20)
     lights = default_lights() if lights is None else _lights(lights)
     with np.errstate(over="ignore", invalid="ignore"):
         shade = intensity(centroids, normals, eye, lights, material, ambient_light, two_sided=True)
+        if per_face:
+            shade = shade * tint
     return to_image(finite_result(shade, "centroids, normals and eye", why="are too large in magnitude"))
