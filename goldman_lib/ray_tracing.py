@@ -317,9 +317,11 @@ def _image_size(width, height, depth):
 
 
 def _bounding_sphere(obj):
-    """A sphere enclosing ``obj`` (centre, radius) if it has one: ``obj.bounding_sphere`` or, for a
-    :class:`Sphere`, itself.  Rays that miss it skip the object's own intersection test."""
+    """A sphere enclosing ``obj`` (centre, radius) if it has one: ``obj.bounding_sphere()`` (the
+    simple surfaces' cull, §19.6.1; None for an unbounded surface) or, for a :class:`Sphere`, itself.  Rays that miss it skip the object's own intersection test."""
     bound = getattr(obj, "bounding_sphere", None)
+    if callable(bound):
+        bound = bound()
     if bound is not None:
         return np.asarray(bound[0], dtype=float), float(bound[1])
     if isinstance(obj, Sphere):
