@@ -156,7 +156,12 @@ class BRep:
 
     # -- counts -----------------------------------------------------------------------------------
     def loops(self, face: int) -> list[tuple[int, ...]]:
-        """The loops of face ``face``: its outer loop, then its rings."""
+        """The loops of face ``face``: its outer loop, then its rings.
+
+        >>> frame().loops(0)
+        [(8, 9, 10, 11), (15, 14, 13, 12)]
+        """
+        face = as_int(face, "face", minimum=0, maximum=len(self.faces) - 1)
         return [self.faces[face]] + self.rings.get(face, [])
 
     def _edge_uses(self) -> dict[tuple[int, int], list[tuple[int, int, int]]]:
@@ -410,9 +415,17 @@ class Octree:
     x/y/z is above the centre).  Node 0 is the root.
     """
 
-    def __init__(self, centers, sizes, levels, states, children, depth):
-        self.centers, self.sizes, self.levels = centers, sizes, levels
-        self.states, self.children, self.depth = states, children, depth
+    def __init__(self, inside, center=(0.0, 0.0, 0.0), size: float = 2.0, depth: int = 4):
+        """``Octree(inside, center, size, depth)`` is ``Octree.build(inside, center, size, depth)``."""
+        built = self.build(inside, center, size, depth)
+        self.__dict__.update(built.__dict__)
+
+    @classmethod
+    def _from_arrays(cls, centers, sizes, levels, states, children, depth) -> "Octree":
+        tree = object.__new__(cls)
+        tree.centers, tree.sizes, tree.levels = centers, sizes, levels
+        tree.states, tree.children, tree.depth = states, children, depth
+        return tree
 
     @classmethod
     def build(cls, inside, center=(0.0, 0.0, 0.0), size: float = 2.0, depth: int = 4) -> "Octree":
@@ -458,7 +471,8 @@ class Octree:
         children = np.full((total, 8), -1, dtype=int)
         for split_nodes, first_child in parents:
             children[split_nodes] = first_child + np.arange(8 * len(split_nodes)).reshape(-1, 8)
-        return cls(centers, np.concatenate(sizes), np.concatenate(levels), np.concatenate(states), children, depth)
+        return cls._from_arrays(centers, np.concatenate(sizes), np.concatenate(levels), np.concatenate(states), children,
+                                depth)
 
     @staticmethod
     def _classify(test, centers: np.ndarray, size: float) -> np.ndarray:
@@ -479,11 +493,11 @@ class Octree:
     def _which(self, which) -> np.ndarray:
         if isinstance(which, str):
             which = (which,)
-        if isinstance(which, (str, bytes)) or not hasattr(which, "__iter__"):
+        if isinstance(which, bytes) or not hasattr(which, "__iter__"):
             raise TypeError(f"which must be a state name or a sequence of them; got {which!r}")
         codes = []
         for w in which:
-            if w not in _STATE_NAMES:
+            if not isinstance(w, str) or w not in _STATE_NAMES:
                 raise ValueError(f"which must name states among {sorted(_STATE_NAMES)}; got {w!r}")
             codes.append(_STATE_NAMES[w])
         leaves = self.leaves()
@@ -567,8 +581,8 @@ class Octree:
             tmax = np.where(par, np.where(inside_slab, np.inf, -np.inf), np.maximum(t1, t2))
         return tmin.max(axis=2), tmax.min(axis=2)
 
-    def ray_cells(self, origin, direction) -> tuple[np.ndarray, np.ndarray]:
-        """The leaf cells one ray passes through for ``t >= 0``, in the order it enters them
+    def ray_cells(self, origins, directions) -> tuple[np.ndarray, np.ndarray]:
+        """The leaf cells one ray (``origins`` and ``directions`` each one point) passes through for ``t >= 0``, in the order it enters them
         (Goldman §20.4): ``(indices (k,), entry parameters (k,))``.
 
         >>> from goldman_lib.simple_surfaces import Sphere
@@ -577,9 +591,9 @@ class Octree:
         >>> idx.tolist(), t.tolist()
         ([7, 8], [2.0, 3.0])
         """
-        o, d = rays(origin, direction)
+        o, d = rays(origins, directions)
         if len(o) != 1:
-            raise ValueError(f"origin and direction must be one ray; got {len(o)}")
+            raise ValueError(f"origins and directions must be one ray here; got {len(o)}")
         leaves = self.leaves()
         tin, tout = self._slabs(o, d, leaves)
         tin, tout = tin[0], tout[0]
@@ -757,7 +771,7 @@ def combine_intervals(first, second, operation: str) -> np.ndarray:
     >>> combine_intervals([[0, 1]], [[1, 2]], "intersection").tolist()   # they only touch
     []
     """
-    if operation not in OPERATIONS:
+    if not isinstance(operation, str) or operation not in OPERATIONS:
         raise ValueError(f"operation must be one of {sorted(OPERATIONS)}; got {operation!r}")
     a, b = _interval_list(first, "first"), _interval_list(second, "second")
     single = a.ndim == 2
