@@ -656,86 +656,83 @@ OPERATIONS = {
 }
 
 
-def _runs(lo: np.ndarray, hi: np.ndarray, flags: np.ndarray, labels_lo=None, labels_hi=None):
-    """Maximal runs of consecutive True segments [lo, hi] per row -> (N, M, 2) intervals, inf-padded
-    (and their (N, M, 2) end labels if labels are given).  Zero-length segments take the flag of the
-    segment before them, so runs that touch merge and zero-length runs vanish."""
-    N, P = flags.shape
-    zero = ~(hi > lo)
-    # forward-fill the flags of zero-length segments from the last segment of positive length
-    pos = np.where(~zero, np.arange(P)[None], -1)
-    last = np.maximum.accumulate(pos, axis=1)
-    f = np.where(last >= 0, np.take_along_axis(flags, np.maximum(last, 0), axis=1), False) & (last >= 0)
-    f = np.where(zero, f, flags)
-    prev = np.concatenate([np.zeros((N, 1), bool), f[:, :-1]], axis=1)
-    nxt = np.concatenate([f[:, 1:], np.zeros((N, 1), bool)], axis=1)
-    starts, ends = f & ~prev, f & ~nxt
-    count = starts.sum(axis=1)
+def _merge(seg: np.ndarray, lab: np.ndarray | None = None):
+    """Raw inside segments (N, P, 2) -- positive length, ``[inf, inf]`` where unused, any order --
+    merged where they touch or overlap and compacted: (N, M, 2) sorted, inf-padded (and their end
+    labels (N, M, 2) if ``lab`` is given)."""
+    N = seg.shape[0]
+    order = np.argsort(seg[..., 0], axis=1, kind="stable")
+    s = np.take_along_axis(seg[..., 0], order, axis=1)
+    e = np.take_along_axis(seg[..., 1], order, axis=1)
+    valid = s < np.inf
+    reach = np.maximum.accumulate(np.where(valid, e, -np.inf), axis=1)
+    prev = np.concatenate([np.full((N, 1), -np.inf), reach[:, :-1]], axis=1)
+    new = valid & (s > prev)
+    new[:, 0] = valid[:, 0]                       # a first segment starts a run, even at -inf
+    nxt_new = np.concatenate([new[:, 1:] | ~valid[:, 1:], np.ones((N, 1), bool)], axis=1)
+    last = valid & nxt_new
+    count = new.sum(axis=1)
     M = max(int(count.max()) if N else 0, 1)
     out = np.full((N, M, 2), np.inf)
-    lab = np.zeros((N, M, 2), dtype=int) if labels_lo is not None else None
+    out_lab = np.zeros((N, M, 2), dtype=int) if lab is not None else None
     if N and count.max() > 0:
-        rows_s, cols_s = np.nonzero(starts)
-        rows_e, cols_e = np.nonzero(ends)
-        slot = np.arange(len(rows_s)) - np.repeat(np.cumsum(count) - count, count)
-        out[rows_s, slot, 0] = lo[rows_s, cols_s]
-        out[rows_e, slot, 1] = hi[rows_e, cols_e]
+        rs, cs = np.nonzero(new)
+        re_, ce = np.nonzero(last)
+        slot = np.arange(len(rs)) - np.repeat(np.cumsum(count) - count, count)
+        out[rs, slot, 0] = s[rs, cs]
+        out[re_, slot, 1] = reach[re_, ce]
         if lab is not None:
-            lab[rows_s, slot, 0] = labels_lo[rows_s, cols_s]
-            lab[rows_e, slot, 1] = labels_hi[rows_e, cols_e]
-        # a zero-length run (a lone point) is dropped: it cannot start here because of the fill,
-        # except as the first segment of a row; drop it explicitly
-        empty = ~(out[..., 1] > out[..., 0]) & np.isfinite(out[..., 0])
-        if empty.any():
-            out[empty] = np.inf
-            if lab is not None:
-                lab[empty] = 0
-            order = np.argsort(out[..., 0], axis=1, kind="stable")
-            out = np.take_along_axis(out, order[..., None], axis=1)
-            if lab is not None:
-                lab = np.take_along_axis(lab, order[..., None], axis=1)
-    return (out, lab) if lab is not None else out
+            ls = np.take_along_axis(lab[..., 0], order, axis=1)
+            le = np.take_along_axis(lab[..., 1], order, axis=1)
+            out_lab[rs, slot, 0] = ls[rs, cs]
+            out_lab[re_, slot, 1] = le[re_, ce]
+    return (out, out_lab) if lab is not None else out
 
 
-def _primitive_intervals(solid, o: np.ndarray, d: np.ndarray, label: int):
-    """Inside intervals of one primitive along each ray, with boundary labels."""
+def _primitive_segments(solid, o: np.ndarray, d: np.ndarray, label: int):
+    """Raw inside segments of one primitive along each ray (N, K+1, 2), with boundary labels: the
+    ray's hits cut the line into K+1 pieces, each classified by ``contains`` at its midpoint."""
     with np.errstate(all="ignore"):
         h = np.asarray(solid._hits(o, d), dtype=float)
-    h = np.where(np.isnan(h), np.inf, h)
-    h = np.sort(h, axis=1)
+    h = np.sort(np.where(np.isnan(h), np.inf, h), axis=1)
     N = len(o)
     breaks = np.concatenate([np.full((N, 1), -np.inf), h, np.full((N, 1), np.inf)], axis=1)
     lo, hi = breaks[:, :-1], breaks[:, 1:]
+    fin_lo, fin_hi = np.isfinite(lo), np.isfinite(hi)
     with np.errstate(all="ignore"):
-        mid = np.where(np.isfinite(lo) & np.isfinite(hi), 0.5 * (lo + hi),
-                       np.where(np.isfinite(hi), hi - (1.0 + np.abs(hi)),
-                                np.where(np.isfinite(lo), lo + (1.0 + np.abs(lo)), 0.0)))
-    mid = np.where(np.isfinite(mid), mid, 0.0)
-    positive = hi > lo
+        mid = np.where(fin_lo, np.where(fin_hi, 0.5 * (lo + hi), lo + 1.0 + np.abs(lo)),
+                       np.where(fin_hi, hi - 1.0 - np.abs(hi), 0.0))
     pts = o[:, None, :] + mid[..., None] * d[:, None, :]
-    flags = np.zeros(lo.shape, dtype=bool)
-    if positive.any():
-        with np.errstate(all="ignore"):
-            inside = np.asarray(solid._contains(pts[positive]), dtype=bool)
-        flags[positive] = inside
-    labels = np.full(lo.shape, label, dtype=int)
-    return _runs(lo, hi, flags, labels, labels)
+    with np.errstate(all="ignore"):
+        inside = np.asarray(solid._contains(pts.reshape(-1, 3)), dtype=bool).reshape(lo.shape)
+    keep = inside & (hi > lo)
+    seg = np.where(keep[..., None], np.stack([lo, hi], -1), np.inf)
+    lab = np.where(keep[..., None], np.full(seg.shape, label), 0)
+    return seg, lab
 
 
-def _combine(a, b, op, la=None, lb=None):
-    """Combine (N, Ma, 2) and (N, Mb, 2) interval lists by the boolean ``op`` (vectorised)."""
+def _combine_raw(a, b, op, la=None, lb=None):
+    """Raw inside segments of ``a op b`` from raw (or merged) segment lists (N, Ma, 2), (N, Mb, 2):
+    the sorted ends of both cut the line into elementary pieces, each inside a list iff some
+    interval of it covers the piece; the boolean ``op`` of the two memberships classifies it."""
     N = a.shape[0]
     ends = np.concatenate([a.reshape(N, -1), b.reshape(N, -1)], axis=1)
     order = np.argsort(ends, axis=1, kind="stable")
     breaks = np.take_along_axis(ends, order, axis=1)
+    # drop trailing columns that are +inf on every ray (unused pads)
+    used = int(np.max(np.sum(breaks < np.inf, axis=1))) if N else 0
+    width = min(breaks.shape[1], used + 1)
+    breaks, order = breaks[:, :max(width, 2)], order[:, :max(width, 2)]
     lo, hi = breaks[:, :-1], breaks[:, 1:]
     ina = ((a[:, None, :, 0] <= lo[..., None]) & (hi[..., None] <= a[:, None, :, 1])).any(axis=2)
     inb = ((b[:, None, :, 0] <= lo[..., None]) & (hi[..., None] <= b[:, None, :, 1])).any(axis=2)
-    flags = op(ina, inb) & (hi > lo)
+    keep = op(ina, inb) & (hi > lo)
+    seg = np.where(keep[..., None], np.stack([lo, hi], -1), np.inf)
     if la is None:
-        return _runs(lo, hi, flags)
+        return seg, None
     labs = np.take_along_axis(np.concatenate([la.reshape(N, -1), lb.reshape(N, -1)], axis=1), order, axis=1)
-    return _runs(lo, hi, flags, labs[:, :-1], labs[:, 1:])
+    lab = np.where(keep[..., None], np.stack([labs[:, :-1], labs[:, 1:]], -1), 0)
+    return seg, lab
 
 
 def _interval_list(x, name: str) -> np.ndarray:
@@ -783,16 +780,11 @@ def combine_intervals(first, second, operation: str) -> np.ndarray:
         raise ValueError(f"first and second must hold as many rays; got {a.shape[0]} and {b.shape[0]}")
     a = a.reshape(a.shape[0], -1, 2) if a.shape[1] else np.full((a.shape[0], 1, 2), np.inf)
     b = b.reshape(b.shape[0], -1, 2) if b.shape[1] else np.full((b.shape[0], 1, 2), np.inf)
-    out = _combine(_normalise(a), _normalise(b), OPERATIONS[operation])
+    out = _merge(_combine_raw(a, b, OPERATIONS[operation])[0])
     if single:
         out = out[0]
         return out[np.isfinite(out[:, 0]) | (out[:, 0] == -np.inf)].reshape(-1, 2)
     return out
-
-
-def _normalise(a: np.ndarray) -> np.ndarray:
-    """Overlapping or unsorted intervals -> their union (disjoint, sorted), inf-padded."""
-    return _combine(a, np.full((a.shape[0], 1, 2), np.inf), OPERATIONS["union"])
 
 
 def _solid(x, name: str):
@@ -826,7 +818,7 @@ def intervals(solid, origins, directions) -> np.ndarray:
     o, d = rays(origins, directions)
     if isinstance(s, CSG):
         return s.intervals(o, d)
-    return _primitive_intervals(s, np.ascontiguousarray(o), np.ascontiguousarray(d), 1)[0]
+    return _merge(_primitive_segments(s, np.ascontiguousarray(o), np.ascontiguousarray(d), 1)[0])
 
 
 class CSG(Surface):
@@ -859,7 +851,7 @@ class CSG(Surface):
                 self.signs.append(flip)
 
     def _labelled(self, o, d, first: int):
-        """(intervals, labels) of this node, leaf labels numbered from ``first`` (1-based)."""
+        """Raw (segments, labels) of this node, leaf labels numbered from ``first`` (1-based)."""
         parts = []
         k = first
         for child in (self.a, self.b):
@@ -867,20 +859,20 @@ class CSG(Surface):
                 parts.append(child._labelled(o, d, k))
                 k += len(child.leaves)
             else:
-                parts.append(_primitive_intervals(child, o, d, k))
+                parts.append(_primitive_segments(child, o, d, k))
                 k += 1
         (ia, la), (ib, lb) = parts
         if self.operation == "difference":
             lb = -lb
-        return _combine(ia, ib, OPERATIONS[self.operation], la, lb)
+        return _combine_raw(ia, ib, OPERATIONS[self.operation], la, lb)
 
     def intervals(self, origins, directions) -> np.ndarray:
         """The inside intervals of the result along each ray, ``(N, M, 2)`` (see :func:`intervals`)."""
         o, d = rays(origins, directions)
-        return self._labelled(np.ascontiguousarray(o), np.ascontiguousarray(d), 1)[0]
+        return _merge(self._labelled(np.ascontiguousarray(o), np.ascontiguousarray(d), 1)[0])
 
     def _hits(self, o, d):
-        iv = self._labelled(np.ascontiguousarray(o), np.ascontiguousarray(d), 1)[0].reshape(len(o), -1)
+        iv = _merge(self._labelled(np.ascontiguousarray(o), np.ascontiguousarray(d), 1)[0]).reshape(len(o), -1)
         return np.sort(np.where(np.isfinite(iv), iv, np.inf), axis=1)
 
     def hit(self, origins, directions) -> tuple[np.ndarray, np.ndarray]:
@@ -888,7 +880,7 @@ class CSG(Surface):
         outward normal of the result there (zero row on a miss): ``((N,), (N, 3))``."""
         o, d = rays(origins, directions)
         o, d = np.ascontiguousarray(o), np.ascontiguousarray(d)
-        iv, lab = self._labelled(o, d, 1)
+        iv, lab = _merge(*self._labelled(o, d, 1))
         flat, flab = iv.reshape(len(o), -1), lab.reshape(len(o), -1)
         cand = np.where(np.isfinite(flat) & (flat > EPS), flat, np.inf)
         k = cand.argmin(axis=1) if cand.shape[1] else np.zeros(len(o), dtype=int)
