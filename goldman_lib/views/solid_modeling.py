@@ -38,6 +38,7 @@ _SYMBOLS = {"union": "∪", "intersection": "∩", "difference": "−"}
 EXTENT = (-1.6, 1.6, -1.2, 1.2)
 _EYE = np.array([0.0, -6.0, 0.0])
 _BACKGROUND = np.array([0.96, 0.96, 0.97])
+_T_WINDOW = (-1.0, 7.0)
 
 
 def csg_tree(first: str, op: str, second: str, op2: str = "none", third: str = "none"):
@@ -94,7 +95,7 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
     (:func:`goldman_lib.solid_modeling.intervals`).  A full re-render per change (~100 ms).
 
     ``update(first, op, second, op2, third, ray_z)`` returns ``{"image" (h, w, 3), "intervals"
-    {name: (M, 2)}, "tree", "status"}``.
+    {name: (M, 2)} (clipped to the drawn window of t, [-1, 7]), "tree", "status"}``.
 
     >>> r = csg_view().set_values(op="intersection", ray_z=0.0)
     >>> r["intervals"]["result"].tolist()
@@ -139,7 +140,7 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
         im.set_data(image)
         ray_line.set_ydata([ray_z, ray_z])
         o, d = [[-3.0, 0.0, ray_z]], [[1.0, 0.0, 0.0]]
-        found = {}
+        found, exact = {}, {}
         parts = {"first": PRIMITIVES[first], "second": PRIMITIVES[second], "result": tree}
         if op2 != "none":
             parts["third"] = PRIMITIVES[third]
@@ -150,12 +151,13 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
                 continue
             iv = sm.intervals(parts[row], o, d)[0]
             iv = iv[np.isfinite(iv[:, 0]) | (iv[:, 0] == -np.inf)]
-            found[row] = iv
+            clipped = np.clip(iv, *_T_WINDOW)
+            found[row] = clipped
+            exact[row] = iv
             y = len(rows) - 1 - rows.index(row)
-            clipped = np.clip(iv, -1.0, 7.0)
             bars[row].set_verts([[(a, y - 0.3), (a, y + 0.3), (b, y + 0.3), (b, y - 0.3)] for a, b in clipped])
         title.set_text(f"{text}: ray classification, one ray per pixel")
-        words = "; ".join(f"[{a:.2f}, {b:.2f}]" for a, b in found["result"]) or "empty"
+        words = "; ".join(f"[{a:.2f}, {b:.2f}]" for a, b in exact["result"]).replace("inf", "∞") or "empty"
         iv_title.set_text(f"inside intervals at z = {ray_z:.2f}")
         status = (f"{text}: the horizontal ray at z = {ray_z:.2f} is inside the result for t in {words} "
                   "(the operation applied to the primitives' interval lists)")
@@ -202,8 +204,8 @@ def brep_view(solid: str = "torus mesh (8 x 6 quads)") -> InteractiveView:
     ``V - E + F``, the genus by the Euler-Poincare formula ``V - E + F - (L - F) = 2(S - G)`` and
     every problem :meth:`goldman_lib.solid_modeling.BRep.problems` finds.
 
-    ``update(solid)`` returns ``{"counts" {V, E, F, L, S}, "euler", "genus", "problems", "valid",
-    "status"}``.
+    ``update(solid)`` returns ``{"counts" {V, E, F, L, S}, "euler", "genus" (-1 if none), "problems"
+    (one per line), "valid", "status"}``.
     """
     import ipywidgets as widgets
 
@@ -241,7 +243,8 @@ def brep_view(solid: str = "torus mesh (8 x 6 quads)") -> InteractiveView:
                          "orientations, no dangling vertices, planar faces, outward")
         readout.value = "<br>".join(lines)
         status = f"{solid}: " + ("valid" if not problems else f"{len(problems)} problem(s)")
-        return {"counts": counts, "euler": chi, "genus": g, "problems": problems, "valid": not problems,
+        return {"counts": counts, "euler": chi, "genus": -1 if g is None else g, "problems": "\n".join(problems),
+                "valid": not problems,
                 "status": status}
 
     view = InteractiveView(controls=controls, views=[widgets.HBox([scene.widget, readout])], update=update,
