@@ -12,7 +12,7 @@ nested, identical and unbounded ones included.
 >>> print(PROBLEMS["check_genus"])   # doctest: +ELLIPSIS
 A block with two square holes drilled through it has V = 24 vertices, ...
 >>> check_genus(0)
-Not yet: 0 is V - E + F read as 2(S - G) without the rings: the top and bottom faces each have two inner loops, so L - F = 4 must be subtracted first (the Euler-Poincare formula V - E + F - (L - F) = 2(S - G)).
+Not yet: 0 is V - E + F read as twice (S - G) without the rings: the top and bottom faces each have two inner loops, so L - F = 4 must be subtracted first (the Euler-Poincare formula V - E + F - (L - F) = twice (S - G)).
 """
 
 from __future__ import annotations
@@ -248,17 +248,17 @@ def check_genus(answer) -> Result:
                        "through the block.")
     chi0 = c["V"] - c["E"] + c["F"]
     if value == c["S"] - chi0 // 2:
-        return wrong(f"{fmt(value)} is V - E + F read as 2(S - G) without the rings: the top and bottom faces each "
+        return wrong(f"{fmt(value)} is V - E + F read as twice (S - G) without the rings: the top and bottom faces each "
                      f"have two inner loops, so L - F = {c['L'] - c['F']} must be subtracted first (the "
-                     "Euler-Poincare formula V - E + F - (L - F) = 2(S - G)).")
+                     "Euler-Poincare formula V - E + F - (L - F) = twice (S - G)).")
     if value == c["S"] - chi:
-        return wrong("you set V - E + F - (L - F) equal to S - G: the formula has 2(S - G) on the right; halve it.")
+        return wrong("you set V - E + F - (L - F) equal to S - G: the formula has twice (S - G) on the right; halve it.")
     if value == chi // 2 - c["S"]:
-        return wrong("the sign is reversed: 2(S - G) = V - E + F - (L - F), so G = S - (V - E + F - (L - F)) / 2, "
+        return wrong("the sign is reversed: twice (S - G) is V - E + F - (L - F), so G is S minus half of V - E + F - (L - F), "
                      "and a genus is never negative.")
     if value < 0 or value != int(value):
-        return wrong("a genus counts handles: a whole number >= 0. Use G = S - (V - E + F - (L - F)) / 2.")
-    return wrong(f"your genus is {off_by(value, G)}. Use G = S - (V - E + F - (L - F)) / 2 with the counts given.")
+        return wrong("a genus counts handles: a whole number >= 0. Use G = S minus half of V - E + F - (L - F).")
+    return wrong(f"your genus is {off_by(value, G)}. Use G = S minus half of V - E + F - (L - F), with the counts given.")
 
 
 def check_flipped_face(answer) -> Result:
