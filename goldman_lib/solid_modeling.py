@@ -36,7 +36,7 @@ from typing import Callable
 import numpy as np
 
 from goldman_lib.lighting import Material
-from goldman_lib.simple_surfaces import EPS, Surface, rays
+from goldman_lib.simple_surfaces import EPS, Sphere, Surface, rays
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_int, as_points, as_tolerance, as_float_array,
                                     within_budget)
 
@@ -659,79 +659,132 @@ OPERATIONS = {
 def _merge(seg: np.ndarray, lab: np.ndarray | None = None):
     """Raw inside segments (N, P, 2) -- positive length, ``[inf, inf]`` where unused, any order --
     merged where they touch or overlap and compacted: (N, M, 2) sorted, inf-padded (and their end
-    labels (N, M, 2) if ``lab`` is given)."""
+    labels (N, M, 2) if ``lab`` is given).  Only the rows holding a segment are worked on."""
     N = seg.shape[0]
-    order = np.argsort(seg[..., 0], axis=1, kind="stable")
-    s = np.take_along_axis(seg[..., 0], order, axis=1)
-    e = np.take_along_axis(seg[..., 1], order, axis=1)
+    rows = np.flatnonzero((seg[..., 0] < np.inf).any(axis=1)) if N else np.zeros(0, dtype=int)
+    if len(rows) == 0:
+        out = np.full((N, 1, 2), np.inf)
+        return (out, np.zeros((N, 1, 2), dtype=int)) if lab is not None else out
+    sub = seg[rows]
+    sub = np.where((sub[..., 1] > sub[..., 0])[..., None], sub, np.inf)   # zero-length pieces are dropped
+    order = np.argsort(sub[..., 0], axis=1, kind="stable")
+    s = np.take_along_axis(sub[..., 0], order, axis=1)
+    e = np.take_along_axis(sub[..., 1], order, axis=1)
+    n = len(rows)
     valid = s < np.inf
     reach = np.maximum.accumulate(np.where(valid, e, -np.inf), axis=1)
-    prev = np.concatenate([np.full((N, 1), -np.inf), reach[:, :-1]], axis=1)
+    prev = np.concatenate([np.full((n, 1), -np.inf), reach[:, :-1]], axis=1)
     new = valid & (s > prev)
     new[:, 0] = valid[:, 0]                       # a first segment starts a run, even at -inf
-    nxt_new = np.concatenate([new[:, 1:] | ~valid[:, 1:], np.ones((N, 1), bool)], axis=1)
+    nxt_new = np.concatenate([new[:, 1:] | ~valid[:, 1:], np.ones((n, 1), bool)], axis=1)
     last = valid & nxt_new
     count = new.sum(axis=1)
-    M = max(int(count.max()) if N else 0, 1)
+    M = max(int(count.max()), 1)
     out = np.full((N, M, 2), np.inf)
     out_lab = np.zeros((N, M, 2), dtype=int) if lab is not None else None
-    if N and count.max() > 0:
-        rs, cs = np.nonzero(new)
-        re_, ce = np.nonzero(last)
-        slot = np.arange(len(rs)) - np.repeat(np.cumsum(count) - count, count)
-        out[rs, slot, 0] = s[rs, cs]
-        out[re_, slot, 1] = reach[re_, ce]
-        if lab is not None:
-            ls = np.take_along_axis(lab[..., 0], order, axis=1)
-            le = np.take_along_axis(lab[..., 1], order, axis=1)
-            out_lab[rs, slot, 0] = ls[rs, cs]
-            out_lab[re_, slot, 1] = le[re_, ce]
+    rs, cs = np.nonzero(new)
+    re_, ce = np.nonzero(last)
+    slot = np.arange(len(rs)) - np.repeat(np.cumsum(count) - count, count)
+    out[rows[rs], slot, 0] = s[rs, cs]
+    out[rows[re_], slot, 1] = reach[re_, ce]
+    if lab is not None:
+        sub_lab = lab[rows]
+        ls = np.take_along_axis(sub_lab[..., 0], order, axis=1)
+        le = np.take_along_axis(sub_lab[..., 1], order, axis=1)
+        out_lab[rows[rs], slot, 0] = ls[rs, cs]
+        out_lab[rows[re_], slot, 1] = le[re_, ce]
     return (out, out_lab) if lab is not None else out
 
 
 def _primitive_segments(solid, o: np.ndarray, d: np.ndarray, label: int):
     """Raw inside segments of one primitive along each ray (N, K+1, 2), with boundary labels: the
-    ray's hits cut the line into K+1 pieces, each classified by ``contains`` at its midpoint."""
+    ray's hits cut the line into K+1 pieces, each classified by ``contains`` at its midpoint.  A ray
+    that meets the surface nowhere is one piece, classified at its origin."""
     with np.errstate(all="ignore"):
         h = np.asarray(solid._hits(o, d), dtype=float)
     h = np.sort(np.where(np.isnan(h), np.inf, h), axis=1)
-    N = len(o)
-    breaks = np.concatenate([np.full((N, 1), -np.inf), h, np.full((N, 1), np.inf)], axis=1)
-    lo, hi = breaks[:, :-1], breaks[:, 1:]
-    fin_lo, fin_hi = np.isfinite(lo), np.isfinite(hi)
-    with np.errstate(all="ignore"):
-        mid = np.where(fin_lo, np.where(fin_hi, 0.5 * (lo + hi), lo + 1.0 + np.abs(lo)),
-                       np.where(fin_hi, hi - 1.0 - np.abs(hi), 0.0))
-    pts = o[:, None, :] + mid[..., None] * d[:, None, :]
-    with np.errstate(all="ignore"):
-        inside = np.asarray(solid._contains(pts.reshape(-1, 3)), dtype=bool).reshape(lo.shape)
-    keep = inside & (hi > lo)
-    seg = np.where(keep[..., None], np.stack([lo, hi], -1), np.inf)
-    lab = np.where(keep[..., None], np.full(seg.shape, label), 0)
+    N, K = h.shape
+    seg = np.full((N, K + 1, 2), np.inf)
+    lab = np.zeros((N, K + 1, 2), dtype=int)
+    active = h[:, 0] < np.inf
+    idle = np.flatnonzero(~active)
+    if len(idle):
+        with np.errstate(all="ignore"):
+            whole = idle[np.asarray(solid._contains(o[idle]), dtype=bool)]
+        seg[whole, 0] = (-np.inf, np.inf)
+        lab[whole, 0] = label
+    act = np.flatnonzero(active)
+    if len(act):
+        ha = h[act]
+        n = len(act)
+        breaks = np.concatenate([np.full((n, 1), -np.inf), ha, np.full((n, 1), np.inf)], axis=1)
+        lo, hi = breaks[:, :-1], breaks[:, 1:]
+        fin_hi = np.isfinite(hi)
+        with np.errstate(all="ignore"):
+            mid = np.where(fin_hi, 0.5 * (lo + hi), lo + 1.0 + np.abs(lo))
+            mid[:, 0] = ha[:, 0] - 1.0 - np.abs(ha[:, 0])
+        mid = np.where(np.isfinite(mid), mid, 0.0)
+        pts = o[act, None, :] + mid[..., None] * d[act, None, :]
+        with np.errstate(all="ignore"):
+            inside = np.asarray(solid._contains(pts.reshape(-1, 3)), dtype=bool).reshape(lo.shape)
+        keep = inside & (hi > lo)
+        r, c = np.nonzero(keep)
+        seg[act[r], c, 0] = lo[r, c]
+        seg[act[r], c, 1] = hi[r, c]
+        lab[act[r], c] = label
     return seg, lab
 
 
-def _combine_raw(a, b, op, la=None, lb=None):
+def _combine_raw(a, b, op, la=None, lb=None, operation="union"):
     """Raw inside segments of ``a op b`` from raw (or merged) segment lists (N, Ma, 2), (N, Mb, 2):
     the sorted ends of both cut the line into elementary pieces, each inside a list iff some
-    interval of it covers the piece; the boolean ``op`` of the two memberships classifies it."""
+    interval of it covers the piece; the boolean ``op`` of the two memberships classifies it.  Rays
+    where one list is empty are settled without the sweep."""
     N = a.shape[0]
-    ends = np.concatenate([a.reshape(N, -1), b.reshape(N, -1)], axis=1)
-    order = np.argsort(ends, axis=1, kind="stable")
-    breaks = np.take_along_axis(ends, order, axis=1)
-    # drop trailing columns that are +inf on every ray (unused pads)
-    used = int(np.max(np.sum(breaks < np.inf, axis=1))) if N else 0
-    width = min(breaks.shape[1], used + 1)
-    breaks, order = breaks[:, :max(width, 2)], order[:, :max(width, 2)]
-    lo, hi = breaks[:, :-1], breaks[:, 1:]
-    ina = ((a[:, None, :, 0] <= lo[..., None]) & (hi[..., None] <= a[:, None, :, 1])).any(axis=2)
-    inb = ((b[:, None, :, 0] <= lo[..., None]) & (hi[..., None] <= b[:, None, :, 1])).any(axis=2)
-    keep = op(ina, inb) & (hi > lo)
-    seg = np.where(keep[..., None], np.stack([lo, hi], -1), np.inf)
-    if la is None:
-        return seg, None
-    labs = np.take_along_axis(np.concatenate([la.reshape(N, -1), lb.reshape(N, -1)], axis=1), order, axis=1)
-    lab = np.where(keep[..., None], np.stack([labs[:, :-1], labs[:, 1:]], -1), 0)
+    has_a = (a[..., 0] < np.inf).any(axis=1)
+    has_b = (b[..., 0] < np.inf).any(axis=1)
+    both = np.flatnonzero(has_a & has_b)
+    labelled = la is not None
+    W = 1
+    if len(both):
+        A, B = a[both], b[both]
+        n = len(both)
+        ends = np.concatenate([A.reshape(n, -1), B.reshape(n, -1)], axis=1)
+        order = np.argsort(ends, axis=1, kind="stable")
+        breaks = np.take_along_axis(ends, order, axis=1)
+        used = int(np.max(np.sum(breaks < np.inf, axis=1)))
+        width = max(min(breaks.shape[1], used + 1), 2)
+        breaks, order = breaks[:, :width], order[:, :width]
+        lo, hi = breaks[:, :-1], breaks[:, 1:]
+        ina = ((A[:, None, :, 0] <= lo[..., None]) & (hi[..., None] <= A[:, None, :, 1])).any(axis=2)
+        inb = ((B[:, None, :, 0] <= lo[..., None]) & (hi[..., None] <= B[:, None, :, 1])).any(axis=2)
+        keep = op(ina, inb) & (hi > lo)
+        W = lo.shape[1]
+    Ma, Mb = a.shape[1], b.shape[1]
+    keep_a = {"union": True, "intersection": False, "difference": True}[operation]
+    keep_b = operation == "union"
+    out_w = max(W, Ma if keep_a else 1, Mb if keep_b else 1)
+    seg = np.full((N, out_w, 2), np.inf)
+    lab = np.zeros((N, out_w, 2), dtype=int) if labelled else None
+    only_a = np.flatnonzero(has_a & ~has_b)
+    only_b = np.flatnonzero(has_b & ~has_a)
+    if keep_a and len(only_a):
+        seg[only_a, :Ma] = a[only_a]
+        if labelled:
+            lab[only_a, :Ma] = la[only_a]
+    if keep_b and len(only_b):
+        seg[only_b, :Mb] = b[only_b]
+        if labelled:
+            lab[only_b, :Mb] = lb[only_b]
+    if len(both):
+        r, c = np.nonzero(keep)
+        seg[both[r], c, 0] = lo[r, c]
+        seg[both[r], c, 1] = hi[r, c]
+        if labelled:
+            labs = np.take_along_axis(np.concatenate([la[both].reshape(n, -1), lb[both].reshape(n, -1)], axis=1),
+                                      order, axis=1)
+            lab[both[r], c, 0] = labs[r, c]
+            lab[both[r], c, 1] = labs[r, c + 1]
     return seg, lab
 
 
@@ -780,11 +833,21 @@ def combine_intervals(first, second, operation: str) -> np.ndarray:
         raise ValueError(f"first and second must hold as many rays; got {a.shape[0]} and {b.shape[0]}")
     a = a.reshape(a.shape[0], -1, 2) if a.shape[1] else np.full((a.shape[0], 1, 2), np.inf)
     b = b.reshape(b.shape[0], -1, 2) if b.shape[1] else np.full((b.shape[0], 1, 2), np.inf)
-    out = _merge(_combine_raw(a, b, OPERATIONS[operation])[0])
+    out = _merge(_combine_raw(a, b, OPERATIONS[operation], operation=operation)[0])
     if single:
         out = out[0]
         return out[np.isfinite(out[:, 0]) | (out[:, 0] == -np.inf)].reshape(-1, 2)
     return out
+
+
+def _bound(x):
+    """A child's bounding sphere ``(center (3,), radius)`` or None (unbounded or unknown)."""
+    b = getattr(x, "bounding_sphere", None)
+    if b is None and isinstance(x, Sphere):
+        return np.asarray(x.center, dtype=float), float(x.radius)
+    if b is None:
+        return None
+    return np.asarray(b[0], dtype=float), float(b[1])
 
 
 def _solid(x, name: str):
@@ -864,7 +927,7 @@ class CSG(Surface):
         (ia, la), (ib, lb) = parts
         if self.operation == "difference":
             lb = -lb
-        return _combine_raw(ia, ib, OPERATIONS[self.operation], la, lb)
+        return _combine_raw(ia, ib, OPERATIONS[self.operation], la, lb, self.operation)
 
     def intervals(self, origins, directions) -> np.ndarray:
         """The inside intervals of the result along each ray, ``(N, M, 2)`` (see :func:`intervals`)."""
@@ -913,6 +976,33 @@ class CSG(Surface):
             best = np.where(closer, dist, best)
             out[closer] = sign * n[closer]
         return out
+
+    @property
+    def bounding_sphere(self):
+        """``(center, radius)`` of a sphere enclosing the solid, or None if it is unbounded (Goldman
+        §19.6.1, what a renderer culls rays with): a union is enclosed by a sphere around both
+        children's spheres, an intersection by the smaller of its bounded children's, a difference by
+        its first operand's."""
+        ba, bb = _bound(self.a), _bound(self.b)
+        if self.operation == "difference":
+            return ba
+        if self.operation == "intersection":
+            bounded = [x for x in (ba, bb) if x is not None]
+            return min(bounded, key=lambda x: x[1]) if bounded else None
+        if ba is None or bb is None:
+            return None
+        (c1, r1), (c2, r2) = ba, bb
+        gap = float(np.linalg.norm(c2 - c1))
+        if gap + r2 <= r1:
+            return ba
+        if gap + r1 <= r2:
+            return bb
+        radius = (gap + r1 + r2) / 2
+        return c1 + (c2 - c1) * ((radius - r1) / gap), radius
+
+    def mesh(self, resolution: int = 32, extent: float = 2.0):
+        """A CSG solid has no triangle mesh here: it is drawn by ray classification (a ray tracer)."""
+        raise TypeError(f"a {type(self).__name__} has no mesh: draw it by ray tracing (its hit method)")
 
     def __repr__(self):
         return f"{type(self).__name__}({self.a!r}, {self.b!r})"

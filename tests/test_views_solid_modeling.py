@@ -23,7 +23,7 @@ def test_csg_view_image_and_intervals_follow_the_tree():
     background = np.all(np.isclose(union, sv._BACKGROUND), axis=-1)
     assert background.sum() < np.all(np.isclose(inter, sv._BACKGROUND), axis=-1).sum()   # the lens is smaller
     assert not np.allclose(union, r["image"]) and "A − B" in r["status"]
-    assert r["image"].shape == (90, 120, 3) and np.all((r["image"] >= 0) & (r["image"] <= 1))
+    assert r["image"].shape == (84, 112, 3) and np.all((r["image"] >= 0) & (r["image"] <= 1))
     im = view.figure.axes[0].images[0]
     assert np.allclose(im.get_array(), r["image"])              # the image is updated in place
 

@@ -66,31 +66,22 @@ def csg_tree(first: str, op: str, second: str, op2: str = "none", third: str = "
     return tree, text
 
 
-def _render(solid, width: int, height: int, lights) -> np.ndarray:
-    """The solid seen from the eye through the window :data:`EXTENT` of the plane y = 0: one ray per
-    pixel, lit by :func:`goldman_lib.lighting.intensity` at the hit with the CSG normal."""
-    x0, x1, z0, z1 = EXTENT
-    xs = x0 + (np.arange(width) + 0.5) * (x1 - x0) / width
-    zs = z1 - (np.arange(height) + 0.5) * (z1 - z0) / height
-    X, Z = np.meshgrid(xs, zs)
-    targets = np.stack([X, np.zeros_like(X), Z], -1).reshape(-1, 3)
-    d = targets - _EYE
-    t, normals = solid.hit(_EYE, d)
-    image = np.broadcast_to(_BACKGROUND, (len(d), 3)).copy()
-    found = np.isfinite(t)
-    if found.any():
-        P = _EYE + t[found, None] * d[found]
-        # every leaf's material where its boundary was hit: the CSG node's own material for all
-        image[found] = lighting.intensity(P, normals[found], _EYE, lights, solid.material)
-    return lighting.to_image(image.reshape(height, width, 3))
+def _camera():
+    """The pinhole camera at :data:`_EYE` looking along +y whose screen, carried to the plane y = 0,
+    is exactly the window :data:`EXTENT` (so a point (x, 0, z) is drawn at (x, z) on the image)."""
+    from goldman_lib import ray_tracing
+
+    half_height = EXTENT[3] / -_EYE[1]
+    return ray_tracing.Camera(_EYE, (0.0, 0.0, 0.0), up=(0.0, 0.0, 1.0),
+                              fov=2 * np.degrees(np.arctan(half_height)))
 
 
 def csg_view(first: str = "ball A (left)", op: str = "difference", second: str = "ball B (right)",
              op2: str = "none", third: str = "ball C (small, front)", ray_z: float = 0.3,
-             width: int = 120, height: int = 90) -> InteractiveView:
+             width: int = 112, height: int = 84) -> InteractiveView:
     """A CSG tree picker (Goldman §20.2): choose two primitives and an operation (and optionally a
-    second operation with a third primitive); the solid is ray traced by ray classification (left)
-    and, on the right, the inside intervals of the horizontal ray ``(-3, 0, z) + t (1, 0, 0)`` (the
+    second operation with a third primitive); the solid is ray traced by ray classification (left,
+    :func:`goldman_lib.ray_tracing.render`, depth 0: local light and shadows) and, on the right, the inside intervals of the horizontal ray ``(-3, 0, z) + t (1, 0, 0)`` (the
     dashed line on the image, height ``ray z``) are drawn for each primitive and for the result
     (:func:`goldman_lib.solid_modeling.intervals`).  A full re-render per change (~100 ms).
 
@@ -117,7 +108,10 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
     fig = style.new_figure(figsize=style.WIDE_FIGSIZE)
     ax_img = fig.add_subplot(1, 2, 1)
     ax_iv = fig.add_subplot(1, 2, 2)
-    light = (lighting.Light((-4.0, -6.0, 5.0), intensity=0.9), lighting.Light((5.0, -3.0, 1.0), intensity=0.4))
+    light = (lighting.Light((-1.5, -6.0, 3.0), intensity=1.0),)
+    from goldman_lib import ray_tracing
+
+    camera = _camera()
     im = ax_img.imshow(np.ones((height, width, 3)), extent=EXTENT, interpolation="nearest")
     ray_line = ax_img.axhline(ray_z, color="#222222", linestyle="--", linewidth=1.0)
     ax_img.set_xlabel("x"), ax_img.set_ylabel("z")
@@ -133,10 +127,12 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
     ax_iv.grid(axis="x", color="#e0e0e0")
     iv_title = ax_iv.set_title("", fontsize=10)
     fig.tight_layout()
+    fig.subplots_adjust(top=0.9)
 
     def update(first, op, second, op2, third, ray_z):
         tree, text = csg_tree(first, op, second, op2, third)
-        image = _render(tree, width, height, light)
+        scene = ray_tracing.Scene([tree], light, ambient_light=0.3, background=_BACKGROUND)
+        image = ray_tracing.render(scene, camera, width, height, depth=0)
         im.set_data(image)
         ray_line.set_ydata([ray_z, ray_z])
         o, d = [[-3.0, 0.0, ray_z]], [[1.0, 0.0, 0.0]]
