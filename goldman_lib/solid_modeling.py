@@ -1000,8 +1000,8 @@ class CSG(Surface):
         radius = (gap + r1 + r2) / 2
         return c1 + (c2 - c1) * ((radius - r1) / gap), radius
 
-    def mesh(self, resolution: int = 32, extent: float = 2.0):
-        """A CSG solid has no triangle mesh here: it is drawn by ray classification (a ray tracer)."""
+    def _mesh(self, n, extent):
+        # a CSG solid has no triangle mesh here: it is drawn by ray classification (a ray tracer)
         raise TypeError(f"a {type(self).__name__} has no mesh: draw it by ray tracing (its hit method)")
 
     def __repr__(self):
