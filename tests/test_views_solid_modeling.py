@@ -50,7 +50,10 @@ def test_brep_view_reads_out_validity():
         r = view.set_values(solid=name)
         assert not r["valid"] and words in r["problems"], name
         assert words in view.readout.value
-    view.set_values(solid="tetrahedron")
+    r = view.set_values(solid="cube", lift=0.2)         # vertex 7 leaves the top face's plane (it stays in x = y = 0.5)
+    assert not r["valid"] and r["problems"].count("not planar") == 1 and "face 1" in r["problems"] and r["euler"] == 2
+    assert np.allclose(view.scene.data("lifted")["positions"], [[0.5, 0.5, 0.7]])
+    view.set_values(solid="tetrahedron", lift=0.0)
     assert len(view.scene.data("faces")["triangles"]) == 4 and len(view.scene.data("edges")["segments"]) == 6
 
 

@@ -194,13 +194,15 @@ BREPS = {
 }
 
 
-def brep_view(solid: str = "torus mesh (8 x 6 quads)") -> InteractiveView:
+def brep_view(solid: str = "torus mesh (8 x 6 quads)", lift: float = 0.0) -> InteractiveView:
     """A B-rep validity readout (Goldman §20.3): pick a solid (valid ones and broken cubes); its
     faces and edges are drawn in three.js and the readout lists V, E, F, L, S, Euler's
     ``V - E + F``, the genus by the Euler-Poincare formula ``V - E + F - (L - F) = 2(S - G)`` and
-    every problem :meth:`goldman_lib.solid_modeling.BRep.problems` finds.
+    every problem :meth:`goldman_lib.solid_modeling.BRep.problems` finds.  The ``lift`` slider
+    moves the solid's last vertex up by that much (the red dot): its faces stop being planar,
+    though the counts -- and Euler's formula -- do not change.
 
-    ``update(solid)`` returns ``{"counts" {V, E, F, L, S}, "euler", "genus" (-1 if none), "problems"
+    ``update(solid, lift)`` returns ``{"counts" {V, E, F, L, S}, "euler", "genus" (-1 if none), "problems"
     (one per line), "valid", "status"}``.
     """
     import ipywidgets as widgets
@@ -209,15 +211,23 @@ def brep_view(solid: str = "torus mesh (8 x 6 quads)") -> InteractiveView:
 
     if solid not in BREPS:
         raise ValueError(f"solid must be one of {sorted(BREPS)}; got {solid!r}")
-    controls = {"solid": dropdown("solid", list(BREPS), solid, width="330px")}
+    lift = as_float(lift, "lift")
+    controls = {"solid": dropdown("solid", list(BREPS), solid, width="330px"),
+                "lift": float_slider("lift", lift, 0.0, 0.4, 0.02, width="330px")}
     scene = SceneView(width=420, height=320, camera_position=(2.6, -3.4, 2.4), axes=0.0)
     first = BREPS[solid]()
     scene.add_mesh("faces", first.vertices, first.triangles(), color="#66a3d2", opacity=0.85)
     scene.add_segments("edges", first.vertices, first.edges(), color="#222222", width=1.5)
+    scene.add_points("lifted", first.vertices[-1:], color="#d1495b", size=0.1)
     readout = widgets.HTML(layout=widgets.Layout(width="360px"))
 
-    def update(solid):
+    def update(solid, lift):
         b = BREPS[solid]()
+        if lift:
+            v = b.vertices.copy()
+            v[-1, 2] += lift
+            b = sm.BRep(v, b.faces, b.rings)
+        scene.set_points("lifted", b.vertices[-1:])
         tris = b.triangles()
         scene.replace_mesh("faces", b.vertices, tris if len(tris) else np.zeros((1, 3), dtype=int))
         scene.replace_segments("edges", b.vertices, b.edges())
@@ -238,7 +248,8 @@ def brep_view(solid: str = "torus mesh (8 x 6 quads)") -> InteractiveView:
             lines.append("<b style='color:#1b7f3b'>valid:</b> every edge in two faces with opposite "
                          "orientations, no dangling vertices, planar faces, outward")
         readout.value = "<br>".join(lines)
-        status = f"{solid}: " + ("valid" if not problems else f"{len(problems)} problem(s)")
+        status = (f"{solid}" + (f", last vertex lifted by {lift:.2f}" if lift else "") + ": "
+                  + ("valid" if not problems else f"{len(problems)} problem(s)"))
         return {"counts": counts, "euler": chi, "genus": -1 if g is None else g, "problems": "\n".join(problems),
                 "valid": not problems,
                 "status": status}
