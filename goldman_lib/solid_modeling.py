@@ -412,23 +412,27 @@ class Octree:
     Build with :meth:`Octree.build`.  Nodes are stored in flat arrays: ``centers`` (n, 3),
     ``sizes`` (n,) (edge lengths), ``levels`` (n,), ``states`` (n,) in {EMPTY, FULL, PARTIAL} and
     ``children`` (n, 8) (-1 for a leaf; child k covers the octant with bit 0/1/2 of k set where
-    x/y/z is above the centre).  Node 0 is the root.
+    x/y/z is above the centre).  Node 0 is the root; ``alive`` (n,) is False for the cells merged
+    back into their parent (see :meth:`build`).
     """
 
-    def __init__(self, inside, center=(0.0, 0.0, 0.0), size: float = 2.0, depth: int = 4):
+    def __init__(self, inside, center=(0.0, 0.0, 0.0), size: float = 2.0, depth: int = 4,
+                 min_depth: int | None = None):
         """``Octree(inside, center, size, depth)`` is ``Octree.build(inside, center, size, depth)``."""
-        built = self.build(inside, center, size, depth)
+        built = self.build(inside, center, size, depth, min_depth)
         self.__dict__.update(built.__dict__)
 
     @classmethod
-    def _from_arrays(cls, centers, sizes, levels, states, children, depth) -> "Octree":
+    def _from_arrays(cls, centers, sizes, levels, states, children, depth, alive=None) -> "Octree":
         tree = object.__new__(cls)
+        tree.alive = np.ones(len(centers), dtype=bool) if alive is None else alive
         tree.centers, tree.sizes, tree.levels = centers, sizes, levels
         tree.states, tree.children, tree.depth = states, children, depth
         return tree
 
     @classmethod
-    def build(cls, inside, center=(0.0, 0.0, 0.0), size: float = 2.0, depth: int = 4) -> "Octree":
+    def build(cls, inside, center=(0.0, 0.0, 0.0), size: float = 2.0, depth: int = 4,
+              min_depth: int | None = None) -> "Octree":
         """Build the octree of the solid ``inside`` in the cube of edge ``size`` about ``center``
         (Goldman §20.4), subdividing partial cells ``depth`` times.
 
@@ -436,6 +440,10 @@ class Octree:
         (a sphere, a CSG tree).  **Our classification rule** (the book leaves the test to the
         solid): a cell is full if its 8 corners and its centre are all inside, empty if none is,
         partial otherwise -- so a feature thinner than a cell that misses all nine samples is lost.
+        Coarse cells are checked from below: every cell above level ``min_depth`` (default
+        ``min(depth, 2)``) is split whatever its samples say, and eight leaf children that are all
+        full (or all empty) are merged back into their parent -- so a torus, whose root cube's nine
+        samples all miss it, is not called empty.
         depth: 0.. as the work budget allows (at worst every cell splits: 9 (8^(d+1) - 1)/7 sample
         points, at most MAX_ITEMS).  Raises TypeError/ValueError naming the parameter.
 
@@ -449,6 +457,7 @@ class Octree:
         size = as_float(size, "size", positive=True)
         depth = within_budget(depth, "depth", cost=_octree_cost, what="the octree (every cell split)",
                               unit="sample points")
+        min_depth = min(depth, 2) if min_depth is None else as_int(min_depth, "min_depth", minimum=0, maximum=depth)
         centers, sizes, levels = [c[None]], [np.array([size])], [np.zeros(1, dtype=int)]
         states, parents = [], []
         frontier_c, frontier_s, offset = c[None], size, 0
@@ -456,7 +465,10 @@ class Octree:
             st = cls._classify(test, frontier_c, frontier_s)
             states.append(st)
             n_level = len(frontier_c)
-            split = np.flatnonzero(st == PARTIAL) if level < depth else np.array([], dtype=int)
+            if level < min_depth:
+                split = np.arange(len(st))
+            else:
+                split = np.flatnonzero(st == PARTIAL) if level < depth else np.array([], dtype=int)
             if len(split) == 0:
                 break
             child_c = (frontier_c[split][:, None, :] + _OCTANTS[None] * (frontier_s / 2)).reshape(-1, 3)
@@ -471,8 +483,21 @@ class Octree:
         children = np.full((total, 8), -1, dtype=int)
         for split_nodes, first_child in parents:
             children[split_nodes] = first_child + np.arange(8 * len(split_nodes)).reshape(-1, 8)
-        return cls._from_arrays(centers, np.concatenate(sizes), np.concatenate(levels), np.concatenate(states), children,
-                                depth)
+        states = np.concatenate(states)
+        levels = np.concatenate(levels)
+        alive = np.ones(total, dtype=bool)
+        for level in range(min_depth - 1, -1, -1):          # merge forced splits back, bottom up
+            nodes = np.flatnonzero((levels == level) & (children[:, 0] >= 0))
+            kids = children[nodes]
+            kid_states = states[kids]
+            leafy = np.all(children[kids, 0] < 0, axis=1)
+            same = leafy & np.all(kid_states == kid_states[:, :1], axis=1) & (kid_states[:, 0] != PARTIAL)
+            merged = nodes[same]
+            states[merged] = kid_states[same, 0]
+            alive[kids[same].ravel()] = False
+            children[merged] = -1
+            states[nodes[~same]] = PARTIAL
+        return cls._from_arrays(centers, np.concatenate(sizes), levels, states, children, depth, alive)
 
     @staticmethod
     def _classify(test, centers: np.ndarray, size: float) -> np.ndarray:
@@ -488,7 +513,7 @@ class Octree:
     # -- queries --------------------------------------------------------------------------------
     def leaves(self) -> np.ndarray:
         """Indices of the leaf cells (the cells that are not split)."""
-        return np.flatnonzero(self.children[:, 0] < 0)
+        return np.flatnonzero((self.children[:, 0] < 0) & self.alive)
 
     def _which(self, which) -> np.ndarray:
         if isinstance(which, str):

@@ -247,3 +247,31 @@ def test_combine_intervals_cases():
 def test_csg_rejects_non_solids():
     with pytest.raises(TypeError, match="a must be a solid"):
         sm.Union(3, B)
+
+
+def test_octree_of_a_torus_is_not_lost_at_the_root():
+    # the nine samples of the root cube [-1, 1]^3 all miss the torus: coarse cells are checked from below
+    from goldman_lib.simple_surfaces import Torus
+    R, r = 0.6, 0.25
+    exact = 2 * math.pi ** 2 * R * r ** 2                       # Pappus
+    tree = sm.Octree.build(Torus([0, 0, 0], [0, 0, 1], R, r), size=2.0, depth=5)
+    assert tree.volume(0.0) <= exact <= tree.volume(1.0)
+    assert abs(tree.volume() - exact) < 0.02 * exact
+    assert sm.Octree.build(Torus([0, 0, 0], [0, 0, 1], R, r), size=2.0, depth=5, min_depth=0).counts()["full"] == 0
+    # merged back: a solid the coarse samples classify correctly keeps its coarse full cells
+    slab = sm.Octree.build(lambda P: P[:, 2] < 0.3, size=2.0, depth=3)
+    assert np.sum(slab.levels[slab.leaves()] == 1) == 4
+
+
+def test_csg_with_chapter_19_solids():
+    # a ball drilled by a cylinder along y: the napkin-ring volume 4/3 pi h^3, h^2 = R^2 - a^2
+    from goldman_lib.simple_surfaces import Cylinder
+    drilled = sm.Difference(Sphere([0, 0, 0], 0.8), Cylinder([0, -1, 0], [0, 1, 0], 0.3, 2.0))
+    assert drilled.intervals([[0, -3, 0]], [[0, 1, 0]])[0, 0, 0] == math.inf      # down the hole: nothing
+    h = math.sqrt(0.8 ** 2 - 0.3 ** 2)
+    np.testing.assert_allclose(drilled.intervals([[0, -3, 0.5]], [[0, 1, 0]])[0],
+                               [[3 - math.sqrt(0.64 - 0.25), 3 + math.sqrt(0.64 - 0.25)]], atol=1e-12)
+    tree = sm.Octree.build(drilled, size=2.0, depth=5)
+    assert tree.volume(0) <= 4 / 3 * math.pi * h ** 3 <= tree.volume(1)
+    t, n = drilled.hit([[0, -3, 0.32]], [[0, 1, 0]])          # grazes past the hole's rim onto the ball
+    assert np.isfinite(t[0]) and n[0, 1] < 0

@@ -16,7 +16,7 @@ import numpy as np
 from goldman_lib import lighting
 from goldman_lib import solid_modeling as sm
 from goldman_lib.lighting import Material
-from goldman_lib.simple_surfaces import Plane, Sphere
+from goldman_lib.simple_surfaces import Cylinder, Plane, Sphere, Torus
 from goldman_lib.validation import as_float
 from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
@@ -30,7 +30,13 @@ PRIMITIVES = {
     "ball B (right)": Sphere([0.45, 0.0, 0.0], 0.85, Material(colour=(0.25, 0.45, 0.85), specular=0.5)),
     "ball C (small, front)": Sphere([0.0, -0.55, 0.45], 0.55, Material(colour=(0.3, 0.7, 0.35), specular=0.5)),
     "half-space z <= 0.2": Plane([0.0, 0.0, 0.2], [0.0, 0.0, 1.0], Material(colour=(0.85, 0.75, 0.35))),
+    "cylinder D (drill along y)": Cylinder([0.0, -1.5, 0.1], [0.0, 1.0, 0.0], 0.35, 3.0,
+                                           material=Material(colour=(0.6, 0.45, 0.75), specular=0.5)),
+    "torus T (about z)": Torus([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 0.8, 0.25,
+                               material=Material(colour=(0.9, 0.6, 0.3), specular=0.5)),
 }
+_LETTERS = {"ball A (left)": "A", "ball B (right)": "B", "ball C (small, front)": "C", "half-space z <= 0.2": "H",
+            "cylinder D (drill along y)": "D", "torus T (about z)": "T"}
 #: The operations of a CSG node.
 OPERATIONS = {"union": sm.Union, "intersection": sm.Intersection, "difference": sm.Difference}
 _SYMBOLS = {"union": "∪", "intersection": "∩", "difference": "−"}
@@ -53,7 +59,7 @@ def csg_tree(first: str, op: str, second: str, op2: str = "none", third: str = "
                                  (op, "op", OPERATIONS)):
         if value not in options:
             raise ValueError(f"{name} must be one of {sorted(options)}; got {value!r}")
-    letter = lambda key: key.split()[1] if key.startswith("ball") else "H"  # noqa: E731
+    letter = _LETTERS.get
     tree = OPERATIONS[op](PRIMITIVES[first], PRIMITIVES[second])
     text = f"({letter(first)} {_SYMBOLS[op]} {letter(second)})"
     if op2 != "none":
@@ -267,6 +273,9 @@ SOLIDS = {
     "ball (r = 0.8)": (Sphere([0.0, 0.0, 0.0], 0.8), 4.0 / 3.0 * np.pi * 0.8 ** 3),
     "lens A ∩ B": (sm.Intersection(Sphere([-0.45, 0, 0], 0.85), Sphere([0.45, 0, 0], 0.85)), None),
     "bitten ball A − B": (sm.Difference(Sphere([-0.45, 0, 0], 0.85), Sphere([0.45, 0, 0], 0.85)), None),
+    "torus (R = 0.6, r = 0.25)": (Torus([0, 0, 0], [0, 0, 1], 0.6, 0.25), 2 * np.pi ** 2 * 0.6 * 0.25 ** 2),
+    "ball drilled along y": (sm.Difference(Sphere([0, 0, 0], 0.8), Cylinder([0, -1, 0], [0, 1, 0], 0.3, 2.0)),
+                             4 / 3 * np.pi * (0.8 ** 2 - 0.3 ** 2) ** 1.5),
 }
 
 
