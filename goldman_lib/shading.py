@@ -42,7 +42,7 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
 
 __all__ = ["newell_normal", "face_normals", "vertex_normals", "newell_face_normals", "average_vertex_normals",
            "uv_sphere", "Camera", "Fragments", "rasterise_triangles", "SHADING_MODES", "render",
-           "slerp_normals", "taylor_cosines", "forward_differences"]
+           "slerp_normals", "taylor_cosines", "forward_differences", "gouraud_triangle"]
 
 
 def newell_normal(polygon) -> np.ndarray:
@@ -375,6 +375,34 @@ def rasterise_triangles(screen, triangles, width: int, height: int) -> Fragments
     if np.abs(S[:, :2]).max() > 1e9:
         raise ValueError("screen must hold pixel coordinates within 1e9 of the image")
     return _rasterise(S, T, width, height)
+
+
+def gouraud_triangle(screen, intensities, width: int, height: int) -> np.ndarray:
+    """Gouraud shading of one triangle in screen coordinates (Goldman §21.3): the intensities given at
+    its three vertices, interpolated linearly (by the screen barycentric coordinates of each pixel
+    centre) at every pixel the triangle covers, 0 elsewhere.  A pixel whose centre lies on an edge
+    is covered; a degenerate (zero-area) triangle covers nothing.  Scan conversion by
+    :func:`rasterise_triangles`.
+
+    screen: (3, 2) vertex pixel coordinates (x right, y down; pixel (i, j) centred at (j + 0.5, i + 0.5)).
+    intensities: (3,).  Returns (height, width).
+
+    >>> gouraud_triangle([[0, 0], [4, 0], [0, 4]], [0.0, 1.0, 0.5], 4, 2).round(3).tolist()
+    [[0.188, 0.438, 0.688, 0.938], [0.312, 0.562, 0.812, 0.0]]
+    """
+    P = as_points(screen, "screen", dim=2)
+    if P.shape != (3, 2):
+        raise ValueError(f"screen must hold the three vertices of one triangle, shape (3, 2); got {P.shape}")
+    c = check_finite(as_float_array(intensities, "intensities"), "intensities")
+    if c.shape != (3,):
+        raise ValueError(f"intensities must be three numbers, one per vertex; got shape {c.shape}")
+    width, height = _image_size(width, height)
+    if np.abs(P).max() > 1e9:
+        raise ValueError("screen must hold pixel coordinates within 1e9 of the image")
+    f = _rasterise(np.hstack([P, np.full((3, 1), 0.5)]), np.array([[0, 1, 2]]), width, height)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = np.where(f.triangle >= 0, f.weights @ c, 0.0)
+    return finite_result(out, "intensities")
 
 
 # -- §21.4.2-3 fast Phong: Taylor expansions evaluated by forward differences ----------------------

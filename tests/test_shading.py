@@ -226,3 +226,12 @@ def test_render_rejects_bad_arguments():
         shading.render(SQUARE, SQUARE_T, None, lighting.Light())
     with pytest.raises(ValueError, match="up"):
         shading.Camera(eye=(0, 0, 5), target=(0, 0, 0), up=(0, 0, 1))
+
+
+def test_gouraud_triangle_by_hand():
+    # vertices (0, 0), (4, 0), (0, 4): at the centre (x, y) the weights are (1 - x/4 - y/4, x/4, y/4)
+    out = shading.gouraud_triangle([[0, 0], [4, 0], [0, 4]], [0.2, 1.0, 0.6], 4, 4)
+    assert out[0, 0] == pytest.approx(0.75 * 0.2 + 0.125 * 1.0 + 0.125 * 0.6)
+    assert out[1, 2] == pytest.approx(0.0 * 0.2 + 2.5 / 4 * 1.0 + 1.5 / 4 * 0.6)   # centre (2.5, 1.5) on the edge
+    assert out[3, 3] == 0.0 and (out > 0).sum() == 10                      # 4 + 3 + 2 + 1 centres
+    assert np.all(shading.gouraud_triangle([[0, 0], [2, 2], [4, 4]], [1, 1, 1], 4, 4) == 0)   # edge-on
