@@ -21,7 +21,7 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
 from goldman_lib.views.light_control import LightControl
 
-__all__ = ["shading_view", "MODE_LABELS", "SHADING_CAMERA"]
+__all__ = ["shading_view", "plot_images", "MODE_LABELS", "SHADING_CAMERA"]
 
 #: The shading modes as the picker shows them, with their sections.
 MODE_LABELS = {"uniform": "uniform (§21.2)", "gouraud": "Gouraud (§21.3)", "phong": "Phong (§21.4.1)",
@@ -53,7 +53,7 @@ def shading_view(mode_a: str = "gouraud", mode_b: str = "phong", facets: int = 8
     controls.update(control.controls)
     camera = shading.Camera(width=size, height=size, **SHADING_CAMERA)
 
-    fig = style.new_figure(figsize=(9.6, 3.4))
+    fig = style.new_figure(figsize=(8.4, 2.9))
     ax_scene = fig.add_subplot(1, 3, 1)
     style.style_axes(ax_scene)
     ax_scene.set_xlim(-6, 6), ax_scene.set_ylim(-6, 6)
@@ -104,3 +104,25 @@ def shading_view(mode_a: str = "gouraud", mode_b: str = "phong", facets: int = 8
                            title="§21.2-21.4 shading modes side by side")
     control.drag_in(view, ax_scene, plane="xz")
     return view
+
+
+def plot_images(images, titles=(), width: float = 2.4):
+    """A row of rendered images (each (h, w, 3) in [0, 1]) with their titles, for a static picture.
+    Returns the figure (show it with ``fig.canvas``).
+
+    >>> fig = plot_images([np.zeros((4, 4, 3)), np.ones((4, 4, 3))], ["black", "white"])
+    >>> len(fig.axes)
+    2
+    """
+    images = list(images)
+    if not images:
+        raise ValueError("images must hold at least one image")
+    titles = list(titles) + [""] * (len(images) - len(titles))
+    fig = style.new_figure(figsize=(width * len(images), width + 0.3))
+    for k, (image, title) in enumerate(zip(images, titles)):
+        ax = fig.add_subplot(1, len(images), k + 1)
+        ax.imshow(np.asarray(image), interpolation="nearest", vmin=0, vmax=1)
+        ax.set_title(title, fontsize=9)
+        ax.set_axis_off()
+    fig.tight_layout()
+    return fig
