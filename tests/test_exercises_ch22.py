@@ -9,8 +9,8 @@ from goldman_lib.exercises import ch22
 
 # Worked by hand:
 # 1. farthest vertices 5, 6, 4.6, 7: paint 3 (7), 1 (6), 0 (5), 2 (4.6).
-# 2. depth 1: (0, 0.7) written; (1, 0.4) written; (2, 0.55) no; (3, 0.4) no (not strictly nearer);
-#    (4, 0.9) no: polygon 1, two writes.
+# 2. depth 1: (3, 0.8) written; (1, 0.6) written; (2, 0.75) no; (0, 0.35) written; (4, 0.35) no (not
+#    strictly nearer); (2, 0.5) no: polygon 0, three writes.
 # 3. the edges crossing y = 3.5 are (9, 2)-(7, 7.5): x = 9 - 2 * 1.5 / 5.5 = 8.454545, and
 #    (2, 6)-(1, 0.5): x = 1 + 3 / 5.5 = 1.545455.
 # 4. s = x + 2y - 3 at the vertices: -3, 3, 5; the edge (0,0)-(6,0) is cut at x = 3, the edge
@@ -19,7 +19,7 @@ from goldman_lib.exercises import ch22
 #    behind it -> front (2), node (1), back (3).
 RIGHT = {
     "check_painter_order": [3, 1, 0, 2],
-    "check_z_buffer_pixel": [1, 2],
+    "check_z_buffer_pixel": [0, 3],
     "check_scan_line_span": [1 + 3 / 5.5, 9 - 3 / 5.5],
     "check_split_points": [[3, 0, 0], [0, 1.5, 0]],
     "check_bsp_order": [4, 0, 2, 1, 3],

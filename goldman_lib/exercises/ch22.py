@@ -28,7 +28,7 @@ __all__ = ["PROBLEMS", "SLIPS", "PAINTER_DEPTHS", "FRAGMENTS", "SCAN_POLYGON", "
 #: Exercise 1 (§22.2): the depths (distances along the view direction) of each polygon's vertices.
 PAINTER_DEPTHS = ((3.0, 5.0, 4.0), (6.0, 1.0, 2.0), (4.5, 4.6, 4.0), (2.0, 7.0, 2.5))
 #: Exercise 2 (§22.3): fragments arriving at one pixel, in order: (polygon, depth); the buffer starts at 1.
-FRAGMENTS = ((0, 0.7), (1, 0.4), (2, 0.55), (3, 0.4), (4, 0.9))
+FRAGMENTS = ((3, 0.8), (1, 0.6), (2, 0.75), (0, 0.35), (4, 0.35), (2, 0.5))
 #: Exercise 3 (§22.4): a polygon in screen coordinates and the scan line (row).
 SCAN_POLYGON = ((1.0, 0.5), (9.0, 2.0), (7.0, 7.5), (2.0, 6.0))
 SCAN_ROW = 3
@@ -106,7 +106,9 @@ def check_painter_order(answer) -> Result:
     got, err = _read_list(answer, "your order", len(PAINTER_DEPTHS), "the painting order as a list of polygon numbers")
     if err is not None:
         return err
-    got = [int(round(v)) for v in got]
+    if np.any(got != np.round(got)):
+        return wrong("polygon numbers are whole numbers 0-3; list each once.")
+    got = [int(v) for v in got]
     far = [max(d) for d in PAINTER_DEPTHS]
     expected = sorted(range(len(far)), key=lambda k: -far[k])
     if got == expected:
@@ -244,7 +246,9 @@ def check_bsp_order(answer) -> Result:
     got, err = _read_list(answer, "your order", 5, "the order as a list of polygon numbers")
     if err is not None:
         return err
-    got = [int(round(v)) for v in got]
+    if np.any(got != np.round(got)):
+        return wrong("polygon numbers are whole numbers 0-4; list each once.")
+    got = [int(v) for v in got]
     expected = [k for k, _ in hs.bsp_back_to_front(exercise_bsp_tree(), BSP_EYE)]
     if got == expected:
         return correct("at each node the side away from the eye first, then the node, then the eye's side.")
@@ -345,7 +349,7 @@ def check_bsp_project(function) -> Result:
 
 SLIPS = {
     "check_painter_order": [[2, 0, 1, 3], [2, 0, 3, 1]],
-    "check_z_buffer_pixel": [[3, 3], [1, 5], [4, 2]],
+    "check_z_buffer_pixel": [[4, 4], [0, 6], [2, 3]],
     "check_scan_line_span": [[1.4545, 8.6364], [8.4545, 1.5455], [1.0, 9.0]],
     "check_split_points": [[[3, 0, 0], [0, 2, 0]]],
     "check_bsp_order": [[3, 1, 2, 0, 4], [4, 0, 3, 1, 2]],
