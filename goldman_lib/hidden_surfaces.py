@@ -39,7 +39,7 @@ import numpy as np
 
 from goldman_lib import lighting, shading
 from goldman_lib.simple_surfaces import Polygon
-from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_points, check_finite, finite_result,
+from goldman_lib.validation import (as_float, as_float_array, as_points, check_finite, finite_result,
                                     within_budget)
 
 __all__ = ["Rendering", "default_scene", "default_camera", "split_polygon", "heedless_painter", "z_buffer",

@@ -348,10 +348,6 @@ def _rasterise(S: np.ndarray, T: np.ndarray, width: int, height: int) -> Fragmen
     return Fragments(tri_buf.reshape(height, width), depth.reshape(height, width), weights.reshape(height, width, 3))
 
 
-def _screen(screen, n_expected=None) -> np.ndarray:
-    return as_points(screen, "screen", dim=3)
-
-
 def rasterise_triangles(screen, triangles, width: int, height: int) -> Fragments:
     """Scan-convert triangles with a depth buffer (Goldman §21.2-21.4, §22.3): the one scan
     conversion of the course, used by :func:`render` and by chapter 22's z-buffer.
@@ -582,8 +578,8 @@ def render(positions, triangles, camera: Camera, lights, material=None, mode: st
     Points, normals and vertex intensities are interpolated with perspective-correct weights (the
     screen barycentrics divided by each vertex's depth w and renormalised: the same as the book's
     interpolation along scan lines for a parallel view); fast Phong interpolates the normal
-    linearly in screen space, as §21.4.2 does.  Lighting is one-sided: a face seen from behind is lit
-    as if its normal were flipped towards the eye.
+    linearly in screen space, as §21.4.2 does.  Lighting is two-sided: where the eye sees the back of
+    a face, its normal is flipped towards the eye first.
 
     >>> V = [[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]]
     >>> cam = Camera(eye=(0, -4, 0), target=(0, 0, 0), width=4, height=4, fov=60)

@@ -26,7 +26,7 @@ import numpy as np
 from goldman_lib import shading
 from goldman_lib import vector_geometry as vg
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
-from goldman_lib.exercises.projects import Case, check_project, describe
+from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "NEWELL_QUAD", "FACE_VECTORS", "COVER_TRIANGLE", "GOURAUD_TRIANGLE",
            "GOURAUD_INTENSITIES", "GOURAUD_PIXEL", "PHONG_NA", "PHONG_NB", "PHONG_T", "PHONG_L", "QUADRATIC",

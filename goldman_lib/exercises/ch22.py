@@ -18,7 +18,7 @@ import numpy as np
 
 from goldman_lib import hidden_surfaces as hs
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, wrong
-from goldman_lib.exercises.projects import Case, check_project, describe
+from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "PAINTER_DEPTHS", "FRAGMENTS", "SCAN_POLYGON", "SCAN_ROW", "SPLIT_TRIANGLE",
            "SPLIT_POINT", "SPLIT_NORMAL", "BSP_EYE", "check_painter_order", "check_z_buffer_pixel",
