@@ -171,6 +171,12 @@ def _run_doctests(modules, functions, found) -> None:
             doctest.DocTestRunner(verbose=False).run(test, out=lambda s: None)
 
 
+def _camera():
+    from goldman_lib import shading
+
+    return shading.Camera((0.0, -5.0, 1.0), (0.0, 0.0, 0.0), width=16, height=12)
+
+
 def _extra_examples() -> dict:
     """Valid example calls of the public functions, classes and methods that no doctest calls (a
     method's arguments start with its instance)."""
@@ -245,6 +251,10 @@ def _extra_examples() -> dict:
         "solid_modeling.Octree": ((_ball, (0.0, 0.0, 0.0), 2.0, 2), {}),
         "solid_modeling.Octree.boxes": ((solid_modeling.Octree.build(_ball, depth=2), ("full",)), {}),
         "solid_modeling.Octree.wireframe": ((solid_modeling.Octree.build(_ball, depth=2), ("partial",)), {}),
+        # chapter 21
+        "shading.Camera": (((0.0, -5.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 40.0, 16, 12, 0.1), {}),
+        "shading.Camera.project": ((_camera(), [[0.0, 0.0, 0.0], [1.0, 0.5, 0.2]]), {}),
+        "shading.Camera.rays": ((_camera(),), {}),
     }
 
 
