@@ -40,7 +40,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from goldman_lib import lighting
+from goldman_lib import lighting, shading
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Plane, Sphere
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
@@ -85,29 +85,18 @@ class Camera:
     """
 
     def __init__(self, eye, look_at, up=(0.0, 0.0, 1.0), fov: float = 45.0):
-        self.eye = as_points(eye, "eye", ndim=1, dim=3)
-        self.look_at = as_points(look_at, "look_at", ndim=1, dim=3)
-        forward = self.look_at - self.eye
-        if not np.any(forward != 0):
-            raise ValueError("look_at must differ from eye (the camera needs a viewing direction)")
-        self.forward = _unit(forward, "look_at - eye")
-        self.up_hint = _unit(up, "up")
-        right = np.cross(self.forward, self.up_hint)
-        if np.linalg.norm(right) < 1e-9:
-            raise ValueError("up must not be parallel to the viewing direction look_at - eye")
-        self.right = right / np.linalg.norm(right)
-        self.up = np.cross(self.right, self.forward)
-        self.fov = as_float(fov, "fov")
-        if not 0 < self.fov < 180:
-            raise ValueError(f"fov must lie strictly between 0 and 180 degrees; got {self.fov}")
+        # the frame and the pixel-to-ray map live in shading.Camera (one home for both renderers)
+        try:
+            self._camera = shading.Camera(eye=eye, target=look_at, up=up, fov=fov, width=1, height=1)
+        except (TypeError, ValueError) as exc:
+            raise type(exc)(str(exc).replace("target", "look_at")) from None
+        self.eye = np.array(self._camera.eye)
+        self.look_at = np.array(self._camera.target)
+        self.up_hint = np.array(self._camera.up)
+        self.fov = self._camera.fov
 
     def _screen(self, px, py, width, height):
-        half_h = math.tan(math.radians(self.fov) / 2)
-        half_w = half_h * width / height
-        x = ((np.asarray(px, dtype=float) + 0.5) / width * 2 - 1) * half_w
-        y = (1 - (np.asarray(py, dtype=float) + 0.5) / height * 2) * half_h
-        d = self.forward + x[..., None] * self.right + y[..., None] * self.up
-        return d / np.linalg.norm(d, axis=-1, keepdims=True)
+        return dataclasses.replace(self._camera, width=width, height=height).pixel_directions(px, py)
 
     def rays(self, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
         """The primary rays of a ``width`` x ``height`` image, row by row from the top:

@@ -259,14 +259,29 @@ class Camera:
         out[bad, :3] = [0.0, 0.0, -1.0]                    # behind the eye: clipped by the rasteriser
         return finite_result(out, "points", why="are too far from the camera")
 
+    def pixel_directions(self, columns, rows) -> np.ndarray:
+        """Unit directions from the eye through the centres of pixels ``(rows, columns)`` (arrays of
+        one shape; column from the left, row from the top): shape ``columns.shape + (3,)``.  The
+        one place where a pixel becomes a ray (the ray tracer of chapter 17 and ray casting of
+        chapter 22 both ask here)."""
+        E, n, right, up = self._frame
+        columns = check_finite(as_float_array(columns, "columns"), "columns")
+        rows = check_finite(as_float_array(rows, "rows"), "rows")
+        if columns.shape != rows.shape:
+            raise ValueError(f"columns and rows must have one shape; got {columns.shape} and {rows.shape}")
+        for arr, name, size in ((columns, "columns", self.width), (rows, "rows", self.height)):
+            if arr.size and (arr.min() < -1 or arr.max() > size):
+                raise ValueError(f"{name} must lie within the image (0 to {size - 1}); got {arr.min():g} to {arr.max():g}")
+        j = (columns + 0.5 - 0.5 * self.width) / self.scale
+        i = (0.5 * self.height - rows - 0.5) / self.scale
+        D = n + j[..., None] * right + i[..., None] * up
+        return D / np.linalg.norm(D, axis=-1, keepdims=True)
+
     def rays(self):
         """The ray through the centre of every pixel (Goldman §22.5's ray casting; §17.1):
         ``(origin (3,), directions (height, width, 3))`` with unit directions."""
-        E, n, right, up = self._frame
-        j = (np.arange(self.width) + 0.5 - 0.5 * self.width) / self.scale
-        i = (0.5 * self.height - np.arange(self.height) - 0.5) / self.scale
-        D = n + j[None, :, None] * right + i[:, None, None] * up
-        return E.copy(), D / np.linalg.norm(D, axis=-1, keepdims=True)
+        rows, columns = np.mgrid[0:self.height, 0:self.width]
+        return np.array(self._frame[0]), self.pixel_directions(columns, rows)
 
 
 # -- the scan conversion: one home for chapters 21 and 22 ------------------------------------------
