@@ -166,7 +166,7 @@ class Surface:
             raise ValueError(f"extent must be at most {MAX_COORDINATE:g}; got {extent:g}")
         with np.errstate(all="ignore"):
             positions, triangles = self._mesh(n, extent)
-        return finite_result(np.asarray(positions, dtype=float), "extent", extent), \
+        return finite_result(np.asarray(positions, dtype=float).reshape(-1, 3), "extent", extent), \
             np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
 
     @property
@@ -946,11 +946,17 @@ class Quadric(Surface):
 
     def _mesh(self, n, extent):
         """Marching tetrahedra on an ``n^3`` grid over the cube of half-side ``extent`` about the
-        origin (the quadric has no reference point of its own)."""
+        quadric's centre ``-q Q33^-1`` (the origin if ``Q33`` is singular, as for a paraboloid)."""
+        Q3, q = self._Q[:3, :3], self._Q[:3, 3]
+        center = np.zeros(3)
+        if abs(np.linalg.det(Q3)) > 1e-9 * np.abs(Q3).max() ** 3:
+            center = -np.linalg.solve(Q3, q)
+            if not np.all(np.isfinite(center)) or np.abs(center).max() > MAX_COORDINATE:
+                center = np.zeros(3)
         s = np.linspace(-extent, extent, n)
-        X = np.stack(np.meshgrid(s, s, s, indexing="ij"), -1).reshape(-1, 3)
+        X = center + np.stack(np.meshgrid(s, s, s, indexing="ij"), -1).reshape(-1, 3)
         H = np.hstack([X, np.ones((len(X), 1))])
-        f = np.einsum("ij,jk,ik->i", H / extent, self._Q, H / extent)
+        f = np.einsum("ij,jk,ik->i", H, self._Q, H)
         return _marching_tetrahedra(X, f, n)
 
 
