@@ -308,14 +308,16 @@ MAX_DEGREE = 12
 
 
 def real_roots(coefficients) -> np.ndarray:
-    """The real roots of many polynomials at once (Goldman §19.6: the torus quartic, §19.7): the
-    eigenvalues of each companion matrix (``numpy.linalg.eigvals`` on a stack), the nearly real ones
-    polished by Newton's method.  Sorted ascending, ``inf``-padded: ``(N, n)``.
+    """The real roots of many polynomials at once (Goldman §19.6: the torus quartic, §19.7): quadratics
+    and quartics in closed form (the stable quadratic formula; Ferrari's method after removing the
+    cubic term), other degrees by the eigenvalues of each companion matrix (``numpy.linalg.eigvals``
+    on a stack); roots polished by Newton's method.  Sorted ascending, ``inf``-padded: ``(N, n)``.
 
     coefficients: ``(N, n+1)`` (or ``(n+1,)`` for one), highest degree first as ``numpy.roots``
     takes them, ``1 <= n <=`` :data:`MAX_DEGREE`.  Leading zeros lower a row's degree (a zero row has
-    no roots).  A root counts as real when its imaginary part is below ``1e-7`` of its size after
-    scaling, so a double root (a ray tangent to the surface) comes back as two equal real roots.
+    no roots).  The closed forms decide real or not by the sign of their discriminants; from the
+    eigenvalues a root counts as real when its imaginary part is below ``1e-7`` of its size.  A ray
+    exactly tangent to a surface gives a double root; rounding may turn it into a near miss.
 
     >>> real_roots([[1, 0, -5, 0, 4], [1, 0, 1, 0, 0]]).tolist()    # (t^2-1)(t^2-4); t^2 (t^2+1)
     [[-2.0, -1.0, 1.0, 2.0], [0.0, 0.0, inf, inf]]
@@ -345,6 +347,23 @@ def _real_roots(c: np.ndarray) -> np.ndarray:
         if degree <= 0:
             continue
         p = c[rows, first:] / c[rows, first:first + 1]               # monic, degree `degree`
+        if degree == 2:                                              # closed forms: quadratic, and Ferrari
+            out[rows, :2] = _quadratic_roots(np.ones(len(rows)), p[:, 1], p[:, 2])
+            continue
+        if degree == 4:
+            shift = p[:, 1] / 4                                      # x = s - c3/4 removes the cubic term
+            a, b, cc, dd = p[:, 1], p[:, 2], p[:, 3], p[:, 4]
+            pd = b - 3 * a * a / 8
+            qd = cc - a * b / 2 + a ** 3 / 8
+            rd = dd - a * cc / 4 + a * a * b / 16 - 3 * a ** 4 / 256
+            x = _depressed_quartic_roots(pd, qd, rd) - shift[:, None]
+            for _ in range(2):                                       # Newton on the quartic as given
+                f = (((x + a[:, None]) * x + b[:, None]) * x + cc[:, None]) * x + dd[:, None]
+                df = ((4 * x + 3 * a[:, None]) * x + 2 * b[:, None]) * x + cc[:, None]
+                step = np.divide(f, df, out=np.zeros_like(f), where=np.isfinite(x) & (df != 0))
+                x = np.where(np.isfinite(step) & (np.abs(step) < 1e-3 * (1 + np.abs(x))), x - step, x)
+            out[rows, :4] = np.where(np.isfinite(x), x, np.inf)
+            continue
         if degree == 1:
             roots = -p[:, 1:2] + 0j
         else:
@@ -364,7 +383,7 @@ def _real_roots(c: np.ndarray) -> np.ndarray:
         real = np.abs(roots.imag) <= 1e-7 * (1 + np.abs(roots.real))
         vals = np.sort(np.where(real & np.isfinite(x), x, np.inf), axis=1)
         out[rows, :degree] = vals
-    return np.sort(out, axis=1)
+    return np.sort(out, axis=1) + 0.0                               # no -0.0
 
 
 def _depressed_quartic_roots(p, q, r) -> np.ndarray:

@@ -310,6 +310,16 @@ def test_real_roots_against_numpy_roots():
         real = np.sort(r.real[np.abs(r.imag) <= 1e-9])
         assert np.allclose(got[k, :len(real)], real, rtol=1e-8, atol=1e-8)
         assert np.all(np.isinf(got[k, len(real):]))
+    for degree in (2, 3, 4):
+        c = rng.normal(size=(300, degree + 1))
+        got = S.real_roots(c)
+        for k in range(300):
+            r = np.roots(c[k])
+            if np.any((np.abs(r.imag) > 1e-9) & (np.abs(r.imag) < 1e-5)):
+                continue
+            real = np.sort(r.real[np.abs(r.imag) <= 1e-9])
+            assert np.allclose(got[k, :len(real)], real, rtol=1e-7, atol=1e-7), (degree, k)
+            assert np.all(np.isinf(got[k, len(real):])), (degree, k)
     # a lower degree by leading zeros
     assert np.allclose(S.real_roots([[0, 0, 1, -3, 2]]), [[1, 2, np.inf, np.inf]])
 
