@@ -23,7 +23,7 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider
 from goldman_lib.views.light_control import LightControl
 
-__all__ = ["SURFACES", "make_surface", "gallery_view", "surface_scene_view", "GALLERY_SIZE"]
+__all__ = ["SURFACES", "make_surface", "gallery_view", "gallery_figure", "surface_scene_view", "GALLERY_SIZE"]
 
 #: The surfaces of the picker, in the chapter's order, with the section each comes from.
 SURFACES = {
@@ -154,6 +154,39 @@ def gallery_view(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
                            title="§19 simple surfaces, ray traced", side=True)
     view.light_control = light
     return view
+
+
+def gallery_figure(width: int = 112, height_px: int = 84, columns: int = 4):
+    """Every simple surface of :data:`SURFACES` at its default parameters, ray traced on the floor
+    (Goldman §19.3-19.7), as one matplotlib figure of small pictures (the chapter's static gallery).
+    Returns the figure.
+
+    >>> len(gallery_figure(16, 12).axes)
+    12
+    """
+    from goldman_lib import ray_tracing as rt
+
+    width = within_budget(width, "width", cost=lambda v: v * v, what="each picture", unit="pixels", minimum=8)
+    height_px = within_budget(height_px, "height_px", cost=lambda v: width * v, what="each picture", unit="pixels",
+                              minimum=8)
+    columns = within_budget(columns, "columns", cost=lambda v: v, what="the grid", unit="columns", limit=12, minimum=1)
+    rows = -(-len(SURFACES) // columns)
+    fig = style.new_figure(figsize=(2.4 * columns, 2.0 * rows))
+    camera = rt.Camera(_EYE, _TARGET, fov=40.0)
+    floor = S.Plane([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], _FLOOR)
+    light = LightControl([(3.0, -3.5, 5.5)])
+    for k in range(rows * columns):
+        ax = fig.add_subplot(rows, columns, k + 1)
+        ax.set_axis_off()
+        if k >= len(SURFACES):
+            continue
+        kind = list(SURFACES)[k]
+        scene = rt.Scene([floor, make_surface(kind)], light.lights(light.defaults()), ambient_light=0.25,
+                         background=(0.62, 0.76, 0.92))
+        ax.imshow(rt.render(scene, camera, width, height_px, depth=0), interpolation="nearest")
+        ax.set_title(f"{kind} {SURFACES[kind]}", fontsize=8)
+    fig.tight_layout()
+    return fig
 
 
 def _floor_mesh(size=2.6):
