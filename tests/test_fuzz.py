@@ -268,7 +268,7 @@ CONFIGURATION = {
 }
 #: Functions and methods (by their last name) whose result may hold +-inf by contract, never NaN: a
 #: ray's parameter is inf where it misses (Part III's ``hits``/``intersect``/``intervals``).
-INF_BY_CONTRACT = {"hits", "intersect", "intervals", "quadratic_roots", "real_roots"}
+INF_BY_CONTRACT = {"hits", "hit", "intersect", "intervals", "quadratic_roots", "real_roots"}
 #: Functions whose result may hold NaN or infinity by contract (what the docstring says).
 NONFINITE_BY_CONTRACT = {
     "validation.as_float_array": "it converts only; finiteness is check_finite's job (its docstring)",
