@@ -174,7 +174,7 @@ def _run_doctests(modules, functions, found) -> None:
 def _extra_examples() -> dict:
     """Valid example calls of the public functions, classes and methods that no doctest calls (a
     method's arguments start with its instance)."""
-    from goldman_lib import bezier, bspline, ifs, simple_surfaces, subdivision_surfaces, turtle, vectors
+    from goldman_lib import bezier, bspline, ifs, lighting, simple_surfaces, subdivision_surfaces, turtle, vectors
 
     cubic = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
     net = [[[i, j, (i * j) % 2] for j in range(3)] for i in range(3)]
@@ -212,6 +212,10 @@ def _extra_examples() -> dict:
         "simple_surfaces.Plane": (([0.0, 0.0, 1.0], [0.0, 1.0, 1.0]), {}),
         "simple_surfaces.Sphere": (([0.0, 0.0, 1.0], 2.0), {}),
         "simple_surfaces.Surface.contains": ((simple_surfaces.Sphere([0, 0, 0], 1), [[0, 0, 0.5], [0, 2, 0]]), {}),
+        # chapter 17
+        "ray_tracing.Camera": (((0.0, -5.0, 1.0), (0.0, 0.0, 0.5), (0.0, 0.0, 1.0), 40.0), {}),
+        "ray_tracing.Scene": (([simple_surfaces.Sphere([0, 0, 1], 1.0)], [lighting.Light((0.0, 0.0, 5.0))], 0.3,
+                               (0.1, 0.2, 0.3)), {}),
         # chapter 19
         "simple_surfaces.Polygon": (([[0, 0, 0], [2, 0, 0], [2, 1, 0], [1, 1, 0], [1, 2, 0], [0, 2, 0]],), {}),
         "simple_surfaces.Cylinder": (([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0, 2.0), {}),
