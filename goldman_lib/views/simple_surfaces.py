@@ -95,13 +95,14 @@ def make_surface(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
 
 
 def _controls(kind, radius, height, half_angle, R, r):
+    # the torus (the default surface) first: its sliders are the ones that move the default picture
     return {
         "kind": dropdown("surface", list(SURFACES), kind),
+        "R": float_slider("torus R", R, 0.5, 1.5, 0.05),
+        "r": float_slider("torus r", r, 0.1, 0.6, 0.02),
         "radius": float_slider("radius", radius, 0.3, 1.3, 0.05),
         "height": float_slider("height", height, 0.4, 2.4, 0.05),
         "half_angle": float_slider("half-angle °", half_angle, 10.0, 60.0, 1.0),
-        "R": float_slider("R", R, 0.5, 1.5, 0.05),
-        "r": float_slider("r", r, 0.1, 0.6, 0.02),
     }
 
 
