@@ -59,7 +59,10 @@ def test_scene_mesh_changes_with_the_controls_and_the_light_moves():
     view.set_values(light0_z=2.0)
     assert view.scene.lights[0].position[2] == 2.0
     assert np.allclose(view.scene.data("lights")["positions"][0, 2], 2.0)
+    colours = set()
     for kind in V.SURFACES:
         view.set_values(kind=kind)
         assert view.last_error is None, kind
+        colours.add(view.scene.data("surface")["color"])
+    assert len(colours) == len(V.SURFACES)                 # each surface keeps its own colour
     assert view.static_png()[:4] == b"\x89PNG"

@@ -233,8 +233,7 @@ def surface_scene_view(kind: str = "torus", radius: float = 0.8, height: float =
         positions, triangles = surface.mesh(res, extent=2.0)
         scene.replace_mesh("surface", positions, triangles)
         if kind != state["kind"]:
-            scene._items["surface"]["object"].material.color = _hex(surface.material.colour)
-            scene._items["surface"]["color"] = _hex(surface.material.colour)
+            scene.set_color("surface", _hex(surface.material.colour))
             state["kind"] = kind
         light.show_in_scene(scene, lights)
         return {"positions": positions, "triangles": triangles,
