@@ -66,3 +66,24 @@ def test_scene_mesh_changes_with_the_controls_and_the_light_moves():
         colours.add(view.scene.data("surface")["color"])
     assert len(colours) == len(V.SURFACES)                 # each surface keeps its own colour
     assert view.static_png()[:4] == b"\x89PNG"
+
+
+def test_torus_ray_view_hits_by_hand_and_the_bound():
+    view = V.torus_ray_view()
+    # along the x-axis from x = -4: the tube circles of radius 0.5 about x = +-1.5: t = 2, 3, 5, 6
+    r = view.set_values(ox=-4.0, oz=0.0, angle=0.0, R=1.5, r=0.5)
+    assert np.allclose(r["t"], [2, 3, 5, 6]) and r["solved"]
+    assert np.allclose(r["normals"][[0, 3]], [[-1, 0, 0], [1, 0, 0]])
+    drawn = view.figure.axes[0].lines[2].get_xydata()                  # the hit dots, in the x-z plane
+    assert np.allclose(drawn, [[-2, 0], [-1, 0], [1, 0], [2, 0]])
+    # above the slab (z = 1 > r): the quartic is skipped and nothing is hit
+    r = view.set_values(oz=1.0)
+    assert not r["solved"] and len(r["t"]) == 0 and "skipped" in r["status"]
+    # down the axis: passes the bound, no root (the hole)
+    r = view.set_values(ox=0.0, oz=2.5, angle=-90.0)
+    assert r["solved"] and len(r["t"]) == 0
+    # a larger tube radius changes what is drawn
+    before = view.set_values(ox=-3.5, oz=0.3, angle=0.0, r=0.3)["hits"].copy()
+    after = view.set_values(r=0.6)["hits"]
+    assert before.shape != after.shape or np.abs(before - after).max() > 0.1
+    assert view.drag is not None

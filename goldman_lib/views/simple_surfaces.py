@@ -23,7 +23,8 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider
 from goldman_lib.views.light_control import LightControl
 
-__all__ = ["SURFACES", "make_surface", "gallery_view", "gallery_figure", "surface_scene_view", "GALLERY_SIZE"]
+__all__ = ["SURFACES", "make_surface", "gallery_view", "gallery_figure", "surface_scene_view", "torus_ray_view",
+           "GALLERY_SIZE"]
 
 #: The surfaces of the picker, in the chapter's order, with the section each comes from.
 SURFACES = {
@@ -243,4 +244,76 @@ def surface_scene_view(kind: str = "torus", radius: float = 0.8, height: float =
                            title="§19 simple surfaces in three.js", side=True)
     view.scene = scene
     view.light_control = light
+    return view
+
+
+def torus_ray_view(ox: float = -3.5, oz: float = 1.2, angle: float = -15.0, R: float = 1.5,
+                   r: float = 0.5) -> InteractiveView:
+    """One ray against a torus, in the torus's cross-section (the x-z plane through its axis; Goldman
+    §19.6): the tube's two circles, the bounding sphere of radius ``R + r`` and the slab ``|z| <= r``
+    of §19.6.1 (dashed), the ray from the draggable origin ``(ox, 0, oz)`` at ``angle`` degrees from the
+    x-axis, its hits in front of the origin (up to four, from :meth:`Torus.hits`) and the unit normals
+    there (:meth:`Torus.normal`).  The status says whether the ray passed the bound (the quartic was
+    solved) or skipped the quartic.
+
+    ``update(ox, oz, angle, R, r)`` returns ``{"hits" (k, 3), "normals" (k, 3), "t" (k,), "solved",
+    "status"}``.
+
+    >>> v = torus_ray_view()
+    >>> r = v.set_values(ox=-4.0, oz=0.0, angle=0.0, R=1.5, r=0.5)
+    >>> np.round(r["t"], 9).tolist(), r["solved"]
+    ([2.0, 3.0, 5.0, 6.0], True)
+    """
+    from matplotlib.patches import Circle
+
+    from goldman_lib.views.drag import drag_sliders
+
+    controls = {"ox": float_slider("origin x", ox, -4.0, 4.0, 0.05), "oz": float_slider("origin z", oz, -3.0, 3.0, 0.05),
+                "angle": float_slider("angle °", angle, -180.0, 180.0, 1.0),
+                "R": float_slider("R", R, 0.6, 2.0, 0.05), "r": float_slider("r", r, 0.1, 0.8, 0.02)}
+    fig, ax = style.new_axes()
+    ax.set_xlim(-4.2, 4.2), ax.set_ylim(-3.2, 3.2)
+    ax.set_xlabel("x"), ax.set_ylabel("z")
+    tubes = [Circle((0, 0), 1, facecolor="#f6c79b", edgecolor="#b35c00", linewidth=1.4) for _ in range(2)]
+    bound = Circle((0, 0), 1, fill=False, edgecolor="#7a7a7a", linestyle="--", linewidth=1.0)
+    for patch in (*tubes, bound):
+        ax.add_patch(patch)
+    (slab,) = ax.plot([], [], color="#7a7a7a", linestyle=":", linewidth=1.0, label="bound: sphere R + r and slab |z| ≤ r")
+    (ray_line,) = ax.plot([], [], color=style.PALETTE["curve"], linewidth=1.6, label="ray")
+    (hit_dots,) = ax.plot([], [], "o", color="#b3261e", markersize=6, label="hits")
+    (normal_lines,) = ax.plot([], [], color="#b3261e", linewidth=1.2)
+    (origin_dot,) = ax.plot([], [], "o", color="#333333", markersize=8, label="origin (drag me)")
+    ax.legend(loc="lower left", fontsize=7)
+
+    def update(ox, oz, angle, R, r):
+        torus = S.Torus([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], R, r)
+        o = np.array([ox, 0.0, oz])
+        d = np.array([np.cos(np.radians(angle)), 0.0, np.sin(np.radians(angle))])
+        all_t = torus.hits(o, d)[0]               # (and counts the quartics solved)
+        solved = torus.quartics_solved == 1
+        t = all_t[np.isfinite(all_t) & (all_t > S.EPS)]
+        P = o + t[:, None] * d
+        N = torus.normal(P) if len(P) else np.zeros((0, 3))
+        for patch, x in zip(tubes, (-R, R)):
+            patch.set_center((x, 0.0)), patch.set_radius(r)
+        bound.set_radius(R + r)
+        w = float(np.sqrt(max((R + r) ** 2 - r * r, 0.0)))
+        slab.set_data([-w, w, np.nan, -w, w], [r, r, np.nan, -r, -r])
+        ray_line.set_data([ox, ox + 12 * d[0]], [oz, oz + 12 * d[2]])
+        hit_dots.set_data(P[:, 0], P[:, 2])
+        seg = np.full((3 * len(P), 2), np.nan)
+        seg[0::3], seg[1::3] = P[:, [0, 2]], P[:, [0, 2]] + 0.5 * N[:, [0, 2]]
+        normal_lines.set_data(seg[:, 0], seg[:, 1])
+        origin_dot.set_data([ox], [oz])
+        if not solved:
+            status = "the ray misses the bounding sphere or meets it only outside the slab |z| <= r: the quartic is skipped"
+        else:
+            status = (f"the ray passes the bound: the quartic is solved; {len(t)} hit(s) in front of the origin"
+                      + (f" at t = {', '.join(f'{v:.3f}' for v in t)}" if len(t) else " (it goes through the hole or "
+                                                                                        "past the tube)"))
+        return {"hits": P, "normals": N, "t": t, "solved": solved, "status": status}
+
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="§19.6 a ray and a torus, with the bounding test", side=True)
+    drag_sliders(view, ax, [("ox", "oz")])
     return view
