@@ -47,7 +47,7 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
                                     within_budget)
 
 __all__ = ["Camera", "Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
-           "trace", "render", "ray_tree", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
+           "trace", "render", "ray_tree", "in_shadow", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
            "OFFSET", "INDEX_RANGE", "MATERIALS"]
 
 #: The deepest recursion a render may ask for (a ray tree of depth d holds up to 2^(d+1) - 1 rays).
@@ -317,9 +317,11 @@ def _image_size(width, height, depth):
 
 
 def _bounding_sphere(obj):
-    """A sphere enclosing ``obj`` (centre, radius) if it has one: ``obj.bounding_sphere`` or, for a
-    :class:`Sphere`, itself.  Rays that miss it skip the object's own intersection test."""
+    """A sphere enclosing ``obj`` (centre, radius) if it has one: ``obj.bounding_sphere()`` (the
+    simple surfaces' cull, §19.6.1; None for an unbounded surface) or, for a :class:`Sphere`, itself.  Rays that miss it skip the object's own intersection test."""
     bound = getattr(obj, "bounding_sphere", None)
+    if callable(bound):
+        bound = bound()
     if bound is not None:
         return np.asarray(bound[0], dtype=float), float(bound[1])
     if isinstance(obj, Sphere):
@@ -399,6 +401,34 @@ def _blocked(objects, bounds, P, N_f, owner, entering, lights):
     return out
 
 
+def in_shadow(scene: Scene, points, normals) -> np.ndarray:
+    """Shadow rays (Goldman §17.3): True where light ``j`` does not reach point ``i``, shape (N, L).
+
+    points: (N, 3) points on the scene's surfaces; normals: (N, 3) their normals on the side the
+    point is seen from.  A shadow ray leaves each point (nudged off the surface by :data:`OFFSET`)
+    towards each light; the light is blocked if an object lies between, or if the light is behind
+    the surface (``L . N <= 0``: the surface itself is in the way).
+
+    >>> s = Scene([Sphere((0, 0, 1), 0.5)], [Light((0, 0, 5)), Light((4, 0, 5))])
+    >>> in_shadow(s, [[0, 0, 0]], [[0, 0, 1]]).tolist()      # under the sphere: only the first is blocked
+    [[True, False]]
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
+    P = as_points(points, "points", dim=3)
+    N = lighting.unit_rows(as_points(normals, "normals", dim=3), "normals")
+    if N.shape != P.shape:
+        raise ValueError(f"normals must have the shape of points {P.shape}; got {N.shape}")
+    if not np.all(np.any(N != 0, axis=1)):
+        raise ValueError("normals must be nonzero vectors")
+    if np.abs(P).max() > 1e15:
+        raise ValueError("points must have coordinates at most 1e15 in magnitude")
+    bounds = [_bounding_sphere(obj) for obj in scene.objects]
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        return _blocked(scene.objects, bounds, P + OFFSET * N, N, np.full(len(P), -1), np.ones(len(P), dtype=bool),
+                        scene.lights)
+
+
 def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | None = None,
           miss_length: float = 3.0, counts: dict | None = None) -> np.ndarray:
     """The colour each ray brings back, traced recursively to ``depth`` (Goldman §17.2-17.5):
@@ -476,14 +506,7 @@ def _trace(scene, o, d, depth, record, miss_length, counts):
         blocked = _blocked(objects, bounds, outside, N_f, obj_h, entering, lights)
         counts["shadow"] += blocked.size
         if record is not None:
-            for i in range(len(P)):
-                for j, light in enumerate(lights):
-                    end = np.asarray(light.position, dtype=float)
-                    if blocked[i, j]:
-                        to_light = end - outside[i]
-                        tb = min(_first_t(obj, outside[i], to_light) for obj in objects)
-                        end = outside[i] + tb * to_light
-                    record.append(RaySegment("shadow", P[i].copy(), end, level, float(w[i]), bool(blocked[i, j])))
+            _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level)
         next_o, next_d, next_w, next_p, next_k = [], [], [], [], []
         order = np.argsort(obj_h, kind="stable")
         firsts = np.flatnonzero(np.diff(obj_h[order], prepend=-1))
@@ -531,9 +554,19 @@ def _accumulate(colour, pixel, brought, level):
             colour[:, c] += np.bincount(pixel, brought[:, c], minlength=len(colour))
 
 
-def _first_t(obj, origin, direction):
-    t, _ = obj.hit(origin[None], direction[None])
-    return float(t[0]) if t[0] < 1.0 else 1.0
+def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level):
+    """Append the shadow rays of one level to ``record``: to the light, or to the blocker."""
+    for j, light in enumerate(lights):
+        end = np.broadcast_to(np.asarray(light.position, dtype=float), P.shape).copy()
+        rows = np.flatnonzero(blocked[:, j])
+        if len(rows):
+            to_light = end[rows] - outside[rows]
+            distance = np.sqrt(_dot(to_light, to_light))
+            unit = to_light / np.where(distance > 0, distance, 1.0)[:, None]
+            t, _, _ = _nearest(objects, bounds, outside[rows], np.where(distance[:, None] > 0, unit, [[0, 0, 1.0]]))
+            end[rows] = outside[rows] + np.minimum(t, distance)[:, None] * unit
+        for i in range(len(P)):
+            record.append(RaySegment("shadow", P[i].copy(), end[i], level, float(w[i]), bool(blocked[i, j])))
 
 
 def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3, *,
