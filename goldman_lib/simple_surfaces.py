@@ -1206,6 +1206,16 @@ class SurfaceOfRevolution(Surface):
         mid = np.array([0.0, 0.0, self.height / S / 2])
         t0 = -np.einsum("ij,ij->i", q - mid, e)
         p = q + t0[:, None] * e
+        # the bounding test (as for the torus, §19.6.1): a ray whose line misses the bounding sphere
+        # (about the axis's midpoint, radius sqrt((h/2)^2 + max r^2)) skips the polynomial
+        reach = (self.height / 2) ** 2 + self._rmax ** 2
+        near = np.einsum("ij,ij->i", p - mid, p - mid) <= reach / S ** 2 * (1 + 1e-9)
+        out = np.full((len(o), max(2, 2 * (len(self.profile) - 1)) + 2 * self.capped), np.inf)
+        if not near.any():
+            return out
+        rows = np.flatnonzero(near)
+        q, e, p, t0, length = q[rows], e[rows], p[rows], t0[rows], length[rows]
+        o = o[rows]
         m = len(self.profile) - 1
         cs = self.profile * S ** (np.arange(m + 1) - 1.0)              # r in units of S: r_S(z) = r(S z) / S
         # r_S(pz + s ez) as a polynomial in s (ascending), by Horner's rule on polynomials
@@ -1242,7 +1252,8 @@ class SurfaceOfRevolution(Surface):
         s = np.concatenate(parts, 1)
         t = (t0[:, None] + s) * S / length[:, None]
         t[~np.isfinite(t)] = np.inf
-        return np.sort(t, axis=1)
+        out[rows] = np.sort(t, axis=1)
+        return out
 
     @property
     def bounding_sphere(self):
