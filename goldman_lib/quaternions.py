@@ -325,7 +325,14 @@ def slerp(q0, q1, t) -> np.ndarray:
     a = _quaternions(q0, "q0")
     b = _quaternions(q1, "q1")
     tt = as_parameter(t, "t")
-    na, nb = _nonzero(a, "q0"), _nonzero(b, "q1")          # normalised through the weights below
+    with np.errstate(over="ignore"):
+        na, nb = _nonzero(a, "q0"), _nonzero(b, "q1")      # normalised through the weights below
+    if not np.all(np.isfinite(na)):                        # |q|^2 overflowed: rescale first (rare)
+        a = a / np.abs(a).max(axis=-1, keepdims=True)
+        na = _nonzero(a, "q0")
+    if not np.all(np.isfinite(nb)):
+        b = b / np.abs(b).max(axis=-1, keepdims=True)
+        nb = _nonzero(b, "q1")
     lead = np.broadcast_shapes(a.shape[:-1], b.shape[:-1], tt.shape)
     a, b, tt = np.broadcast_to(a, lead + (4,)), np.broadcast_to(b, lead + (4,)), np.broadcast_to(tt, lead)
     na, nb = np.broadcast_to(na, lead), np.broadcast_to(nb, lead)
