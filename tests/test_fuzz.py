@@ -415,6 +415,10 @@ def _call_with(key, param, value):
     arguments = copy.deepcopy(dict(bound.arguments))
     fn = FUNCTIONS[key]
     sig = inspect.signature(fn)
+    try:      # a fresh copy per call: a function that fills a list it is given (ray_tracing.trace's
+        value = copy.deepcopy(value)     # ``record``) must not change the battery's shared ``[]``
+    except Exception:  # noqa: BLE001 - a value that cannot be copied is passed as it is
+        pass
     arguments[param] = value
     args, kwargs = [], {}
     for p in sig.parameters.values():
