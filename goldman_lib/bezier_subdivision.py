@@ -1,6 +1,6 @@
 """Bezier subdivision and rendering (Goldman chapter 25, §25.2-25.5).
 
-:func:`subdivide` and :func:`subdivide_uniform` (§25.2, §25.4); :func:`flatness`, :func:`is_flat`
+:func:`subdivide` and :func:`subdivide_uniform` (§25.2, §25.4) with :func:`polygon_distance`; :func:`flatness`, :func:`is_flat`
 and :func:`render_by_subdivision` (§25.3); :func:`subdivide_patch`, :func:`patch_flatness` and
 :func:`render_patch_by_subdivision` (§25.3.2); :func:`subdivision_variation_counts` (§25.4);
 :func:`smooth_continuation` and :func:`join_order` (§25.5).  Evaluation (chapter 24) is in
@@ -17,11 +17,11 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib._kernels import flatness as _flatness, split as _split
-from goldman_lib.bezier import _blame, _ctrl, _moderate, _net, _sign_changes, _signed_distances, elevate_degree
+from goldman_lib.bezier import _blame, _ctrl, _moderate, _net, _sign_changes, _signed_distances, bernstein, elevate_degree
 from goldman_lib.validation import MAX_ITEMS, as_float, as_int, as_parameter, as_points, finite_result, within_budget
 
 __all__ = [
-    "subdivide", "subdivide_uniform", "flatness", "is_flat", "render_by_subdivision",
+    "subdivide", "subdivide_uniform", "flatness", "is_flat", "polygon_distance", "render_by_subdivision",
     "subdivide_patch", "patch_flatness", "render_patch_by_subdivision",
     "subdivision_variation_counts", "smooth_continuation", "join_order",
 ]
@@ -114,6 +114,32 @@ def flatness(ctrl, even=True):
         raise ValueError(f"ctrl must have shape (n+1, d) or a stack (..., n+1, d); got shape {P.shape}")
     out = _flatness(P, bool(even))
     return float(out) if P.ndim == 2 else out
+
+
+def polygon_distance(ctrl) -> float:
+    """How far a Bezier control polygon is from its curve: ``max_k |P_k - C(k/n)|``, each control
+    point against the curve point at its Greville abscissa ``k/n`` (Goldman §25.2, §25.4; the
+    Bezier case of :func:`goldman_lib.knot_insertion.control_polygon_distance`).  After ``depth``
+    levels of uniform subdivision the pieces' polygons are ``O(4^-depth)`` from the curve.
+
+    ctrl: (n+1, d), or a stack (..., n+1, d) of polygons (the pieces of
+    :func:`subdivide_uniform`): the largest distance over all of them.  Returns a float >= 0
+    (0 for a degree-0 curve).  Raises ValueError/TypeError for a bad ctrl.
+
+    >>> polygon_distance([[0, 0], [1, 2], [2, 0]])          # P_1 = (1, 2) against C(1/2) = (1, 1)
+    1.0
+    >>> polygon_distance(subdivide_uniform([[0, 0], [1, 2], [2, 0]], 1))
+    0.25
+    """
+    P = _moderate(as_points(ctrl, "ctrl", ndim=None))
+    if P.ndim < 2:
+        raise ValueError(f"ctrl must have shape (n+1, d) or a stack (..., n+1, d); got shape {P.shape}")
+    n = P.shape[-2] - 1
+    if n == 0 or P.size == 0:
+        return 0.0
+    B = bernstein(n, np.arange(n + 1) / n)               # B[k, j] = B_j^n(k/n)
+    on_curve = np.einsum("kj,...jd->...kd", B, P)
+    return float(finite_result(np.linalg.norm(P - on_curve, axis=-1), "ctrl").max())
 
 
 def is_flat(ctrl, tol, even=True) -> bool:

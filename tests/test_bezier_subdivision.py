@@ -589,3 +589,39 @@ def test_intersect_patches_segments_of_the_planes_are_one_path():
     np.testing.assert_allclose(ends[np.argsort(ends[:, 1])], [[1, 0.5, 0], [1, 1.5, 0]], atol=1e-12)
     empty = bezier.intersect_patches(floor, ramp + [0, 0, 5], segments=True)
     assert [e.shape for e in empty] == [(0, 3), (0, 4), (0, 2)]
+
+
+# -- polygon_distance: max |P_k - C(k/n)| (§25.2, §25.4) -------------------------------------------
+
+def test_polygon_distance_of_a_parabola_by_hand_and_by_level():
+    # C(t) = (2t, 4t(1-t)) for P = (0,0), (1,2), (2,0): P_1 against C(1/2) = (1, 1) is 1; each uniform
+    # subdivision level quarters the second derivative of every piece, so the distance quarters too
+    P = [[0, 0], [1, 2], [2, 0]]
+    for depth in range(5):
+        assert bezier.polygon_distance(bezier.subdivide_uniform(P, depth)) == pytest.approx(4.0 ** -depth, abs=1e-15)
+
+
+def test_polygon_distance_agrees_with_numpy_polynomial_evaluation():
+    from math import comb
+
+    from numpy.polynomial import polynomial as npoly
+
+    rng = np.random.default_rng(5)
+    P = rng.uniform(-2, 2, (6, 2))
+    n = 5
+    # the curve in the power basis, built from the Bernstein expansion independently of the library
+    coef = np.zeros((n + 1, 2))
+    for j in range(n + 1):
+        basis = npoly.polymul(npoly.polypow([0, 1], j), npoly.polypow([1, -1], n - j)) * comb(n, j)
+        coef[:len(basis)] += np.outer(basis, P[j])
+    on = np.stack([npoly.polyval(np.arange(n + 1) / n, coef[:, i]) for i in range(2)], axis=1)
+    assert bezier.polygon_distance(P) == pytest.approx(np.linalg.norm(P - on, axis=1).max(), abs=1e-12)
+
+
+def test_polygon_distance_edge_cases_and_bad_input():
+    assert bezier.polygon_distance([[1.0, 2.0]]) == 0.0                     # degree 0: the point is the curve
+    assert bezier.polygon_distance([[0, 0], [3, 4]]) == 0.0                 # a line through its points
+    with pytest.raises(ValueError, match="ctrl"):
+        bezier.polygon_distance([[0, 0], [np.nan, 1]])
+    with pytest.raises(ValueError, match="ctrl"):
+        bezier.polygon_distance([1.0, 2.0])

@@ -30,7 +30,7 @@ import math
 
 import numpy as np
 
-from goldman_lib import affine, fractals, turtle
+from goldman_lib import affine, fixed_point, fractals, turtle
 from goldman_lib import conformal_ifs as cf
 from goldman_lib.validation import as_float, as_int
 from goldman_lib.views import style
@@ -298,7 +298,7 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
             _fit(ax, strokes + drawn, extra=[[x, y], [x + w[0], y + w[1]]])
         distance = cf.drawing_distance(strokes, drawn)
         k = len(conv.maps)
-        scales = sorted({round(float(np.sqrt(abs(np.linalg.det(M[:2, :2])))), 4) for M in conv.maps})
+        scales = sorted({round(float(f), 4) for f in fixed_point.contraction_factor(conv.maps)})
         left_title.set_text(f"turtle: {program.name}, level {lev}")
         right_title.set_text(f"IFS (Ron's algorithm): {k} maps, level {lev}")
         status = (f"Ron's algorithm: {k} similarities with scale {', '.join(f'{s:g}' for s in scales)}"
@@ -471,7 +471,7 @@ def bump_view(bump: str = "Koch curve", level: int = 4, height: float = 1.0) -> 
         for ax in (left, right):
             _fit(ax, strokes + drawn + [poly])
         distance = cf.drawing_distance(strokes, drawn)
-        scales = np.sqrt(np.abs(np.linalg.det(system.maps[:, :2, :2])))
+        scales = fixed_point.contraction_factor(system.maps)    # a similarity's scale (§7.3.3)
         try:
             dimension = fractals.similarity_dimension(scales)
             dim_text = f"similarity dimension {dimension:.4f}"

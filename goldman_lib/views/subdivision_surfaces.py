@@ -4,7 +4,7 @@ three.js subdivision viewer with a mesh picker, a scheme picker and a level slid
 Plot functions take ``ax=None`` and return their artists; widget factories return an
 :class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a plain function.
 
->>> view = subdivision_viewer()
+>>> view = subdivision_surface_view()
 >>> sorted(view.update(**view.values()))
 ['control', 'euler', 'status', 'triangles', 'vertices']
 """
@@ -22,7 +22,7 @@ from goldman_lib.views.three import SceneView
 
 __all__ = ["MESHES", "DEFAULT_POLYGON", "plot_polygon_levels", "plot_mesh", "plot_quad_stencils",
            "plot_triangle_stencils", "plot_cone_ratios", "plot_rule_comparison", "split_and_average_view",
-           "subdivision_viewer", "CONE_CASES"]
+           "subdivision_surface_view", "CONE_CASES"]
 
 #: The meshes of the viewer, by the name the picker shows.
 MESHES = {
@@ -56,7 +56,7 @@ def plot_polygon_levels(ctrl, degree: int, levels: int, ax=None, closed: bool = 
 
 def plot_mesh(mesh: ss.Mesh, ax=None, color=None, edges: bool = True, control: ss.Mesh | None = None):
     """Draw a 3D mesh with matplotlib (flat-shaded faces, optional edges and control mesh); returns
-    the axes.  For static pictures; the live view is :func:`subdivision_viewer`."""
+    the axes.  For static pictures; the live view is :func:`subdivision_surface_view`."""
     from matplotlib.colors import to_rgb
     from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
@@ -230,7 +230,7 @@ def split_and_average_view(ctrl=DEFAULT_POLYGON, degree: int = 3, levels: int = 
                            title="split and average (Lane-Riesenfeld)")
 
 
-def subdivision_viewer(mesh: str = "cube", scheme: str = "quad", level: int = 2, max_level: int = 4,
+def subdivision_surface_view(mesh: str = "cube", scheme: str = "quad", level: int = 2, max_level: int = 4,
                        width: int = 480, height: int = 360, rule: str = "centroid") -> InteractiveView:
     """A three.js view of centroid averaging (Goldman §30.3-30.4): pick a mesh, a scheme (quad or
     triangle) and a level; the subdivided mesh is drawn over its control mesh (grey segments).
