@@ -206,6 +206,47 @@ def test_intersect_curves_line_and_parabola_closed_form():
     np.testing.assert_allclose(got, [[0.25, 0.25], [0.75, 0.75]], atol=1e-14)
 
 
+def test_intersect_curves_tangential_parabolas_meet_once():
+    # y = 2x(1-x)... as Bezier: a(s) = (s, 2s(1-s)), b(t) = (t, 1 - 2t(1-t)): a - b = 0 only at s = t = 1/2,
+    # where both have slope 0: one tangential contact, returned once
+    got = bezier.intersect_curves([[0, 0], [0.5, 1], [1, 0]], [[0, 1], [0.5, 0], [1, 1]])
+    assert got.shape == (1, 2)
+    np.testing.assert_allclose(got, [[0.5, 0.5]], atol=1e-8)
+
+
+def test_intersect_curves_two_close_crossings_in_one_flat_pair():
+    # the parabola y = (x - 1/2)^2 and the line y = 1e-6: crossings at x = 1/2 -+ 1e-3, close enough
+    # to share a flat pair of pieces; both are found
+    parabola = [[0, 0.25], [0.5, -0.25], [1, 0.25]]
+    got = bezier.intersect_curves(parabola, [[0, 1e-6], [1, 1e-6]])
+    np.testing.assert_allclose(got, [[0.499, 0.499], [0.501, 0.501]], atol=1e-12)
+
+
+def test_intersect_curves_scalar_path_matches_the_array_path():
+    """Small curves (at most bezier_intersection._SMALL points) take the scalar path; the array path
+    it replaces for them gives the same intersections on random, near-tangent and near-coincident pairs."""
+    from goldman_lib import bezier_intersection as bi
+
+    rng = np.random.default_rng(3)
+    cases = [(rng.uniform(0, 1, (da + 1, 2)), rng.uniform(0, 1, (db + 1, 2))) for da, db in rng.integers(1, 6, (150, 2))]
+    for eps in (0.0, 1e-9, 1e-6, 1e-4, -1e-6):
+        c = rng.uniform(0.2, 0.8)
+        cases.append(([[0, c * c], [0.5, c * c - c], [1, (1 - c) ** 2]], [[0, eps], [1, eps]]))
+    for _ in range(40):
+        a = rng.uniform(0, 1, (4, 2))
+        cases.append((a, a + rng.normal(0, 1e-3, (4, 2))))
+    for a, b in cases:
+        small = bezier.intersect_curves(a, b)
+        keep, bi._SMALL = bi._SMALL, 1
+        try:
+            array = bezier.intersect_curves(a, b)
+        finally:
+            bi._SMALL = keep
+        assert small.shape == array.shape, (a, b, small, array)
+        if len(small):
+            np.testing.assert_allclose(small, array, atol=1e-6)
+
+
 def test_intersect_curves_with_a_point():
     # a degree-0 curve is a point: on the line y = x at the line's parameter 1/2, and off it
     np.testing.assert_allclose(bezier.intersect_curves([[1, 1]], [[0, 0], [2, 2]]), [[0.0, 0.5]], atol=1e-14)
