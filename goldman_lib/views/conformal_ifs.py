@@ -230,6 +230,7 @@ def _two_panels():
     left, right = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
     for ax in (left, right):
         style.style_axes(ax, equal=False)
+        style.few_ticks(ax)       # drawings, not graphs: a few ticks, and a slider move redraws faster
     return fig, left, right
 
 
@@ -268,8 +269,8 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
     arrow = _state_arrow(left, style.PALETTE["point"])
     piece_lines = [right.plot([], [], color=c, linewidth=0.9)[0] for c in _COLOURS]
     (cond_line,) = right.plot([], [], color=_GREY, linewidth=0.9)
-    left_title = left.set_title("", fontsize=10)
-    right_title = right.set_title("", fontsize=10)
+    left_title = left.set_title("", fontsize=10, y=1.0)
+    right_title = right.set_title("", fontsize=10, y=1.0)
     cache: dict = {}
 
     def update(fractal, level, x, y, angle, scale):
@@ -360,8 +361,8 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
     fig.set_size_inches(style.WIDE_FIGSIZE[0], 3.4)
     (turtle_line,) = left.plot([], [], color=style.PALETTE["curve"], linewidth=0.9)
     (ifs_line,) = right.plot([], [], color=style.PALETTE["good"], linewidth=0.9)
-    left_title = left.set_title("", fontsize=10)
-    right_title = right.set_title("", fontsize=10)
+    left_title = left.set_title("", fontsize=10, y=1.0)
+    right_title = right.set_title("", fontsize=10, y=1.0)
     text = widgets.HTML(layout=widgets.Layout(width="960px"))
     unit = np.array([[0.0, 0.0], [1.0, 0.0]])
 
@@ -446,8 +447,8 @@ def bump_view(bump: str = "Koch curve", level: int = 4, height: float = 1.0) -> 
     (ifs_line,) = right.plot([], [], color=style.PALETTE["good"], linewidth=0.9)
     bump_lines = [ax.plot([], [], "--o", color=style.PALETTE["accent"], linewidth=1.0, markersize=3)[0]
                   for ax in (left, right)]
-    left_title = left.set_title("", fontsize=10)
-    right_title = right.set_title("", fontsize=10)
+    left_title = left.set_title("", fontsize=10, y=1.0)
+    right_title = right.set_title("", fontsize=10, y=1.0)
 
     def update(bump, level, height):
         poly, rev = cf.BUMPS[_checks.option(cf.BUMPS, bump, "bump")]
