@@ -82,3 +82,18 @@ def test_cone_pictures_are_the_library_ratios():
         np.testing.assert_allclose(ratios[label], ss.cone_ratios(make(), 3, 0, scheme=scheme, rule=rule))
     fig = views.plot_rule_comparison(level=2)
     assert len(fig.axes) == len(ss.VERTEX_RULES)
+
+
+def test_angle_defect_picture_shows_the_library_defects():
+    import matplotlib.pyplot as plt
+
+    from goldman_lib import subdivision_surfaces as ss
+
+    fig = plt.figure()
+    out = views.plot_angle_defects(level=2, fig=fig)
+    assert list(out) == list(ss.VERTEX_RULES)
+    for rule, d in out.items():
+        np.testing.assert_allclose(d, ss.angle_defects(ss.centroid_averaging(ss.tetrahedron(), 2, "triangle", rule=rule)))
+    assert out["centroid"][:4] == pytest.approx([np.pi] * 4) and out["warren"][:4].max() < 0.1
+    assert len([ax for ax in fig.axes if ax.name == "3d"]) == 3 and len(fig.axes) == 4      # and a colour bar
+    plt.close(fig)
