@@ -230,8 +230,19 @@ class _Piece:
     def halves(self):
         if self._halves is None:
             mid = 0.5 * (self.lo + self.hi)
-            lx, rx = _halve(self.xs)
-            ly, ry = _halve(self.ys)
+            xs, ys = self.xs, self.ys
+            if len(xs) == 3:             # quadratics and cubics inline: most of the work at a tangency
+                a, b, c = xs
+                ab, bc = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c
+                m = 0.5 * ab + 0.5 * bc
+                lx, rx = (a, ab, m), (m, bc, c)
+                a, b, c = ys
+                ab, bc = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c
+                m = 0.5 * ab + 0.5 * bc
+                ly, ry = (a, ab, m), (m, bc, c)
+            else:
+                lx, rx = _halve(xs)
+                ly, ry = _halve(ys)
             self._halves = (_Piece(lx, ly, self.lo, mid), _Piece(rx, ry, mid, self.hi))
         return self._halves
 
@@ -366,13 +377,17 @@ def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float,
     guesses = {}                       # start (s, t) -> the parameter box of its flat pair
     extra = {}                         # more starts, in the flat pairs whose chords are nearly parallel
     reach = set()                      # corners of the unit square that a flat pair reaches
+    first = pairs[0]
+    if not (first[0].x0 <= first[1].x1 + pad and first[1].x0 <= first[0].x1 + pad
+            and first[0].y0 <= first[1].y1 + pad and first[1].y0 <= first[0].y1 + pad):
+        pairs = []
     for level in range(max_depth + 1):
-        kept = [(p, q) for p, q in pairs
-                if p.x0 <= q.x1 + pad and q.x0 <= p.x1 + pad and p.y0 <= q.y1 + pad and q.y0 <= p.y1 + pad]
+        kept = pairs                   # every pair here has overlapping boxes
         flat = [p.flat() <= flat_tol and q.flat() <= flat_tol for p, q in kept]
         if level == max_depth or 4 * flat.count(False) > max_pairs:
             flat = [True] * len(kept)
         pairs = []
+        append = pairs.append
         for (p, q), f in zip(kept, flat):
             if f:
                 s, t = _chord_guess(p, q)
@@ -390,9 +405,11 @@ def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float,
                             if q.lo <= ct <= q.hi:
                                 reach.add((cs, ct))
             else:
-                pl, pr = p.halves()
-                ql, qr = q.halves()
-                pairs += [(pl, ql), (pl, qr), (pr, ql), (pr, qr)]
+                # the four child pairs, those whose boxes miss dropped at once
+                for c in p.halves():
+                    for d in q.halves():
+                        if c.x0 <= d.x1 + pad and d.x0 <= c.x1 + pad and c.y0 <= d.y1 + pad and d.y0 <= c.y1 + pad:
+                            append((c, d))
         if not pairs:
             break
     for c in reach:
