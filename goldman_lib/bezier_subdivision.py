@@ -22,7 +22,7 @@ from goldman_lib.validation import MAX_ITEMS, as_float, as_int, as_parameter, as
 
 __all__ = [
     "subdivide", "subdivide_uniform", "flatness", "is_flat", "polygon_distance", "render_by_subdivision",
-    "subdivide_patch", "patch_flatness", "render_patch_by_subdivision",
+    "subdivide_patch", "subdivide_patch_uniform", "net_distance", "patch_flatness", "render_patch_by_subdivision",
     "subdivision_variation_counts", "smooth_continuation", "join_order",
 ]
 
@@ -251,6 +251,52 @@ def subdivide_patch(ctrl, u=0.5, v=0.5) -> np.ndarray:
         if x.ndim != 0:
             raise ValueError(f"{name} must be a scalar for subdivide_patch; got shape {x.shape}")
     return _split_patches(P[None], float(u), float(v))[0]
+
+
+def subdivide_patch_uniform(ctrl, depth) -> tuple[np.ndarray, np.ndarray]:
+    """Split a Bezier patch at the middle ``depth`` times: its ``4**depth`` sub-nets and their
+    parameter rectangles (Goldman §25.3.2, the patch version of :func:`subdivide_uniform`).
+
+    ctrl: (m+1, n+1, d).  depth: int >= 0 within the work budget (the ``4**depth`` nets' coordinates
+    at most :data:`~goldman_lib.validation.MAX_ITEMS`).  Returns ``(nets (4**depth, m+1, n+1, d),
+    domains (4**depth, 4))``, a domain being ``[u0, u1, v0, v1]``; each parent's four children
+    come in the order of :func:`subdivide_patch` (``[0, 0], [0, 1], [1, 0], [1, 1]``).
+    Raises ValueError for a bad net or depth.
+
+    >>> nets, domains = subdivide_patch_uniform([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], 1)
+    >>> nets.shape, domains[3].tolist()
+    ((4, 2, 2, 3), [0.5, 1.0, 0.5, 1.0])
+    """
+    P = _net(ctrl)
+    depth = within_budget(depth, "depth", cost=lambda v: 4 ** v * P.size, what="the subdivided patch",
+                          unit="coordinates")
+    nets, dom = P[None], np.array([[0.0, 1.0, 0.0, 1.0]])
+    for _ in range(depth):
+        nets, dom = _quarter(nets, dom)
+    return (nets.copy() if depth == 0 else nets), dom
+
+
+def net_distance(ctrl) -> float:
+    """How far a Bezier patch's control net is from its surface: ``max |P_ij - S(i/m, j/n)|``
+    (Goldman §25.3.2; the patch case of :func:`polygon_distance`).  After ``depth`` levels of
+    :func:`subdivide_patch_uniform` the sub-nets are ``O(4^-depth)`` from the surface.
+
+    ctrl: (m+1, n+1, d), or a stack (..., m+1, n+1, d) of nets: the largest distance over all.
+    Returns a float >= 0.  Raises ValueError/TypeError for a bad ctrl.
+
+    >>> net_distance([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])      # bilinear: on its surface
+    0.0
+    >>> net_distance([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]], [[2, 0, 0], [2, 1, 0]]])
+    0.0
+    """
+    P = _moderate(as_points(ctrl, "ctrl", ndim=None))
+    if P.ndim < 3:
+        raise ValueError(f"ctrl must have shape (m+1, n+1, d) or a stack (..., m+1, n+1, d); got shape {P.shape}")
+    m, n = P.shape[-3] - 1, P.shape[-2] - 1
+    Bu = bernstein(m, np.arange(m + 1) / m) if m else np.ones((1, 1))
+    Bv = bernstein(n, np.arange(n + 1) / n) if n else np.ones((1, 1))
+    on = np.einsum("ia,jb,...abd->...ijd", Bu, Bv, P)
+    return float(finite_result(np.linalg.norm(P - on, axis=-1), "ctrl").max())
 
 
 def _split_patches(P: np.ndarray, u: float = 0.5, v: float = 0.5) -> np.ndarray:

@@ -666,3 +666,46 @@ def test_polygon_distance_edge_cases_and_bad_input():
         bezier.polygon_distance([[0, 0], [np.nan, 1]])
     with pytest.raises(ValueError, match="ctrl"):
         bezier.polygon_distance([1.0, 2.0])
+
+
+# -- subdivide_patch_uniform and net_distance (§25.3.2) ----------------------------------------------
+
+def _biquadratic_graph():
+    """The graph of f(x, y) = x^2 + y^2 over [0, 1]^2 as a biquadratic net: x^2 has Bezier
+    coefficients 0, 0, 1 in degree 2, and x = 0, 1/2, 1."""
+    g = np.array([0.0, 0.5, 1.0])
+    sq = np.array([0.0, 0.0, 1.0])
+    X, Y = np.meshgrid(g, g, indexing="ij")
+    return np.stack([X, Y, sq[:, None] + sq[None, :]], axis=-1)
+
+
+def test_subdivided_patch_pieces_are_the_surface_over_their_domains():
+    net = _biquadratic_graph()
+    nets, domains = bezier.subdivide_patch_uniform(net, 2)
+    assert nets.shape == (16, 3, 3, 3) and domains.shape == (16, 4)
+    # the domains tile the unit square
+    assert np.isclose(((domains[:, 1] - domains[:, 0]) * (domains[:, 3] - domains[:, 2])).sum(), 1.0)
+    for sub, (u0, u1, v0, v1) in zip(nets, domains):
+        s = np.array([0.0, 0.3, 1.0])
+        here = bezier.patch_de_casteljau(sub, s, s[::-1])
+        there = bezier.patch_de_casteljau(net, u0 + s * (u1 - u0), v0 + s[::-1] * (v1 - v0))
+        np.testing.assert_allclose(here, there, atol=1e-14)
+
+
+def test_net_distance_of_a_graph_by_hand():
+    # only z is off the surface: the middle coefficient 0 of x^2 sits under x(1/2)^2 = 1/4, so the
+    # net point (1/2, 1/2, 0) is 1/4 + 1/4 = 1/2 below S(1/2, 1/2); each level of subdivision halves
+    # the spacing and quarters the gap
+    net = _biquadratic_graph()
+    for depth in range(4):
+        nets, _ = bezier.subdivide_patch_uniform(net, depth)
+        assert bezier.net_distance(nets) == pytest.approx(0.5 * 4.0 ** -depth, abs=1e-14)
+
+
+def test_patch_subdivision_bad_input():
+    with pytest.raises(ValueError, match="depth"):
+        bezier.subdivide_patch_uniform(_biquadratic_graph(), 40)
+    with pytest.raises(ValueError, match="ctrl"):
+        bezier.net_distance([[0.0, 1.0], [1.0, 2.0]])
+    with pytest.raises(ValueError, match="ctrl"):
+        bezier.net_distance([[[0, 0, np.inf]]])

@@ -359,23 +359,6 @@ def _net_segments(count: int, rows: int, cols: int) -> np.ndarray:
     return (one[None] + (rows * cols) * np.arange(count)[:, None, None]).reshape(-1, 2)
 
 
-def _uniform_subnets(net: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray]:
-    """The 4**level sub-nets of a patch split ``level`` times at the middle (by
-    :func:`goldman_lib.bezier.subdivide_patch`) and their parameter rectangles ``[u0, u1, v0, v1]``."""
-    nets, doms = [net], [(0.0, 1.0, 0.0, 1.0)]
-    for _ in range(level):
-        new_nets, new_doms = [], []
-        for P, (u0, u1, v0, v1) in zip(nets, doms):
-            four = bezier.subdivide_patch(P)
-            um, vm = (u0 + u1) / 2, (v0 + v1) / 2
-            for i, (a, b) in enumerate(((u0, um), (um, u1))):
-                for j, (c, d) in enumerate(((v0, vm), (vm, v1))):
-                    new_nets.append(four[i, j])
-                    new_doms.append((a, b, c, d))
-        nets, doms = new_nets, new_doms
-    return np.array(nets), np.array(doms)
-
-
 def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", level: int = 2, height: float = 0.3,
                               tol: float = 0.02, resolution: int = 24, width: int = 480,
                               height_px: int = 360) -> InteractiveView:
@@ -415,14 +398,8 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
     # parameters (i/m, j/n) of each piece), computed once
     levels = {}
     for L in range(5):
-        nets, doms = _uniform_subnets(net, L)
-        fu = np.linspace(0, 1, rows)
-        fv = np.linspace(0, 1, cols)
-        U = doms[:, :1, None] + (doms[:, 1:2, None] - doms[:, :1, None]) * fu[None, :, None]
-        V = doms[:, 2:3, None] + (doms[:, 3:4, None] - doms[:, 2:3, None]) * fv[None, None, :]
-        U, V = np.broadcast_arrays(U, V)
-        on = bezier.patch_de_casteljau(net, U.ravel(), V.ravel()).reshape(nets.shape)
-        levels[L] = (nets, doms, float(np.linalg.norm(nets - on, axis=-1).max()))
+        nets, doms = bezier.subdivide_patch_uniform(net, L)
+        levels[L] = (nets, doms, bezier.net_distance(nets))
 
     center = (lo + hi) / 2
     scene = SceneView(width=width, height=height_px, target=tuple(center),
