@@ -55,11 +55,17 @@ def _heading(angle: float, scale: float) -> np.ndarray:
     return scale * np.array([math.cos(a), math.sin(a)])
 
 
-def _fit(ax, polylines, extra=(), pad: float = 0.08):
-    """Equal scales on both axes, fitted to the strokes (and extra points), box unchanged."""
+def _bounds(polylines, extra=()) -> np.ndarray:
+    """``[[xmin, ymin], [xmax, ymax]]`` of the strokes and extra points (one pass, for both panels)."""
     parts = [np.asarray(p, float) for p in polylines if len(p)] + [np.asarray(e, float).reshape(-1, 2) for e in extra]
     xy = np.concatenate(parts) if parts else np.zeros((1, 2))
-    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    return np.array([xy.min(axis=0), xy.max(axis=0)])
+
+
+def _fit(ax, polylines, extra=(), pad: float = 0.08, bounds=None):
+    """Equal scales on both axes, fitted to the strokes (and extra points), or to ``bounds`` from
+    :func:`_bounds`; box unchanged."""
+    lo, hi = _bounds(polylines, extra) if bounds is None else bounds
     span = np.maximum(hi - lo, 1e-6) * (1 + 2 * pad)
     mid = (lo + hi) / 2
     box = ax.get_position()
@@ -295,8 +301,9 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
             line.set_data(*stroke_data(group))
         cond_line.set_data(*stroke_data(cond))
         drawn = [p for piece in pieces for p in piece] + cond
+        box = _bounds(strokes + drawn, extra=[[x, y], [x + w[0], y + w[1]]])
         for ax in (left, right):
-            _fit(ax, strokes + drawn, extra=[[x, y], [x + w[0], y + w[1]]])
+            _fit(ax, (), bounds=box)
         distance = cf.drawing_distance(strokes, drawn)
         k = len(conv.maps)
         scales = sorted({round(float(f), 4) for f in fixed_point.contraction_factor(conv.maps)})
@@ -393,8 +400,9 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
             return clear("the drawing leaves the screen: make the maps contractions")
         turtle_line.set_data(*stroke_data(strokes))
         ifs_line.set_data(*stroke_data(drawn))
+        box = _bounds(strokes + drawn)
         for ax in (left, right):
-            _fit(ax, strokes + drawn)
+            _fit(ax, (), bounds=box)
         distance = cf.drawing_distance(strokes, drawn)
         ptext = _program_text(program)
         text.value = ("<pre style='font-size:11px;line-height:1.25;margin:0'>"
@@ -469,8 +477,9 @@ def bump_view(bump: str = "Koch curve", level: int = 4, height: float = 1.0) -> 
         ifs_line.set_data(*stroke_data(drawn))
         for line in bump_lines:
             line.set_data(poly[:, 0], poly[:, 1])
+        box = _bounds(strokes + drawn + [poly])
         for ax in (left, right):
-            _fit(ax, strokes + drawn + [poly])
+            _fit(ax, (), bounds=box)
         distance = cf.drawing_distance(strokes, drawn)
         scales = fixed_point.contraction_factor(system.maps)    # a similarity's scale (§7.3.3)
         try:
