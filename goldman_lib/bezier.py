@@ -1000,8 +1000,9 @@ class BezierPatch:
 # --------------------------------------------------------------------------------------------
 
 _CHAPTER_25 = {
-    **dict.fromkeys(["subdivide", "subdivide_uniform", "flatness", "is_flat", "render_by_subdivision",
-                     "subdivide_patch", "patch_flatness", "render_patch_by_subdivision",
+    **dict.fromkeys(["subdivide", "subdivide_uniform", "flatness", "is_flat", "polygon_distance", "render_by_subdivision",
+                     "subdivide_patch", "subdivide_patch_uniform", "net_distance", "patch_flatness",
+                     "render_patch_by_subdivision",
                      "subdivision_variation_counts", "smooth_continuation", "join_order"], "bezier_subdivision"),
     **dict.fromkeys(["intersect_curves", "intersection_boxes", "intersect_ray_patch", "intersect_patches"],
                     "bezier_intersection"),

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib._kernels import flatness as _flatness, split as _split
-from goldman_lib.bezier import _curve_points, _moderate, _patch_points
+from goldman_lib.bezier import MAX_COORDINATE, _curve_points, _moderate, _patch_points
 from goldman_lib.bezier_subdivision import _patch_flatness, _quarter, _tolerance
 from goldman_lib.validation import as_int, as_points
 
@@ -186,6 +186,282 @@ def _curves_pair(a, b, moderate: bool = False):
     return (_moderate(A, "a"), _moderate(B, "b")) if moderate else (A, B)
 
 
+# -- the scalar path for small curves ----------------------------------------------------------
+# For two curves of a few control points each, numpy's per-call overhead (microseconds per array
+# operation on arrays of 4 points) is most of the time of the array version above.  The same
+# algorithm on plain Python floats -- the same boxes, flatness, chord guesses, Newton's method and
+# merging -- is many times faster there.  Each piece is subdivided once however many pairs it is
+# in (its halves are cached), corner guesses are tried only where a flat pair reaches the corner,
+# and at a tangency (a double root: Newton's steps only halve the error) a doubled step is taken
+# when it does better, which restores fast convergence there.
+
+#: Curves with at most this many control points each take the scalar path.
+_SMALL = 8
+
+
+class _Piece:
+    """A piece of a curve: control points xs, ys (tuples), parameter interval [lo, hi], its box,
+    and, once asked for, its (even) flatness and its two halves."""
+
+    __slots__ = ("xs", "ys", "lo", "hi", "x0", "x1", "y0", "y1", "_flat", "_halves")
+
+    def __init__(self, xs, ys, lo, hi):
+        self.xs, self.ys, self.lo, self.hi = xs, ys, lo, hi
+        self.x0, self.x1, self.y0, self.y1 = min(xs), max(xs), min(ys), max(ys)
+        self._flat = self._halves = None
+
+    def flat(self) -> float:
+        """:func:`goldman_lib._kernels.flatness` (even) of this piece."""
+        if self._flat is None:
+            xs, ys = self.xs, self.ys
+            n = len(xs) - 1
+            f = 0.0
+            ax, ay, bx, by = xs[0], ys[0], xs[-1], ys[-1]
+            for k in range(1, n):
+                w = k / n
+                dx = xs[k] - ((1.0 - w) * ax + w * bx)
+                dy = ys[k] - ((1.0 - w) * ay + w * by)
+                d = dx * dx + dy * dy
+                if d > f:
+                    f = d
+            self._flat = f ** 0.5
+        return self._flat
+
+    def halves(self):
+        if self._halves is None:
+            mid = 0.5 * (self.lo + self.hi)
+            xs, ys = self.xs, self.ys
+            if len(xs) == 3:             # quadratics and cubics inline: most of the work at a tangency
+                a, b, c = xs
+                ab, bc = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c
+                m = 0.5 * ab + 0.5 * bc
+                lx, rx = (a, ab, m), (m, bc, c)
+                a, b, c = ys
+                ab, bc = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c
+                m = 0.5 * ab + 0.5 * bc
+                ly, ry = (a, ab, m), (m, bc, c)
+            else:
+                lx, rx = _halve(xs)
+                ly, ry = _halve(ys)
+            self._halves = (_Piece(lx, ly, self.lo, mid), _Piece(rx, ry, mid, self.hi))
+        return self._halves
+
+
+def _halve(xs):
+    """de Casteljau at 1/2 of one coordinate: (left, right) control values (unrolled for 2-4 points)."""
+    n = len(xs)
+    if n == 4:
+        a, b, c, d = xs
+        ab, bc, cd = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c, 0.5 * c + 0.5 * d
+        abc, bcd = 0.5 * ab + 0.5 * bc, 0.5 * bc + 0.5 * cd
+        m = 0.5 * abc + 0.5 * bcd
+        return (a, ab, abc, m), (m, bcd, cd, d)
+    if n == 3:
+        a, b, c = xs
+        ab, bc = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c
+        m = 0.5 * ab + 0.5 * bc
+        return (a, ab, m), (m, bc, c)
+    if n == 2:
+        a, b = xs
+        m = 0.5 * a + 0.5 * b
+        return (a, m), (m, b)
+    cur = xs
+    left = [xs[0]]
+    right = [xs[-1]]
+    while len(cur) > 1:
+        cur = [0.5 * cur[j] + 0.5 * cur[j + 1] for j in range(len(cur) - 1)]
+        left.append(cur[0])
+        right.append(cur[-1])
+    right.reverse()
+    return tuple(left), tuple(right)
+
+
+def _point_and_tangent(xs, ys, t):
+    """Curve point and derivative at t from one de Casteljau pyramid (the last leg is the tangent)."""
+    n = len(xs) - 1
+    if n == 0:
+        return xs[0], ys[0], 0.0, 0.0
+    s = 1.0 - t
+    x, y = list(xs), list(ys)
+    for m in range(n, 1, -1):
+        for j in range(m):
+            x[j] = s * x[j] + t * x[j + 1]
+            y[j] = s * y[j] + t * y[j + 1]
+    return s * x[0] + t * x[1], s * y[0] + t * y[1], n * (x[1] - x[0]), n * (y[1] - y[0])
+
+
+def _chord_guess(p: _Piece, q: _Piece):
+    """:func:`_chord_guesses` for one pair."""
+    ax, ay, bx, by = p.xs[0], p.ys[0], q.xs[0], q.ys[0]
+    dax, day = p.xs[-1] - ax, p.ys[-1] - ay
+    dbx, dby = q.xs[-1] - bx, q.ys[-1] - by
+    rx, ry = bx - ax, by - ay
+    det = dax * (-dby) - day * (-dbx)
+    scale = (dax * dax + day * day) ** 0.5 * (dbx * dbx + dby * dby) ** 0.5
+    if abs(det) > 1e-12 * max(scale, 1e-300):
+        sig = min(max((rx * (-dby) - ry * (-dbx)) / det, 0.0), 1.0)
+        tau = min(max((dax * ry - day * rx) / det, 0.0), 1.0)
+    else:
+        sig = tau = 0.5
+    return p.lo + sig * (p.hi - p.lo), q.lo + tau * (q.hi - q.lo)
+
+
+def _nearly_parallel(p: _Piece, q: _Piece, sine: float = 0.1) -> bool:
+    """Whether the chords of two pieces make an angle with sine below ``sine``."""
+    dax, day = p.xs[-1] - p.xs[0], p.ys[-1] - p.ys[0]
+    dbx, dby = q.xs[-1] - q.xs[0], q.ys[-1] - q.ys[0]
+    return abs(dax * dby - day * dbx) <= sine * ((dax * dax + day * day) * (dbx * dbx + dby * dby)) ** 0.5
+
+
+def _step2(a, b, c, d, f0, f1):
+    """:func:`_solve2` for one 2x2 system [[a, b], [c, d]] step = -J^+ F."""
+    det = a * d - b * c
+    size = a * a + b * b + c * c + d * d
+    if abs(det) > 1e-12 * size:
+        return -(d * f0 - b * f1) / det, -(a * f1 - c * f0) / det
+    g0 = a * f0 + c * f1
+    g1 = b * f0 + d * f1
+    lam = 1e-14 * size + 1e-300
+    m00 = a * a + c * c + lam
+    m01 = a * b + c * d
+    m11 = b * b + d * d + lam
+    mdet = m00 * m11 - m01 * m01
+    return -(m11 * g0 - m01 * g1) / mdet, -(m00 * g1 - m01 * g0) / mdet
+
+
+def _newton_small(A, B, s, t, scale, iterations=100):
+    """:func:`_newton_pairs` for one start on plain floats; None for a start dropped as hopeless.
+
+    After a step that cut the residual by less than 5 (a tangency: the residual only quarters per
+    step), the doubled step is tried too and kept if it meets better -- Newton's method for a
+    double root -- so a tangential contact converges in a few steps instead of fifty."""
+    (ax, ay), (bx, by) = A, B
+    pa = _point_and_tangent(ax, ay, s)
+    pb = _point_and_tangent(bx, by, t)
+    f0, f1 = pa[0] - pb[0], pa[1] - pb[1]
+    res = (f0 * f0 + f1 * f1) ** 0.5
+    for it in range(iterations):
+        if it == 12 and res > 1e-3 * scale:
+            return None
+        if res <= 4e-16 * scale:
+            break
+        ds, dt = _step2(pa[2], -pb[2], pa[3], -pb[3], f0, f1)
+        ns, nt = min(max(s + ds, 0.0), 1.0), min(max(t + dt, 0.0), 1.0)
+        pa2 = _point_and_tangent(ax, ay, ns)
+        pb2 = _point_and_tangent(bx, by, nt)
+        g0, g1 = pa2[0] - pb2[0], pa2[1] - pb2[1]
+        new_res = (g0 * g0 + g1 * g1) ** 0.5
+        if new_res > 0.2 * res:
+            s2, t2 = min(max(s + 2.0 * ds, 0.0), 1.0), min(max(t + 2.0 * dt, 0.0), 1.0)
+            pa3 = _point_and_tangent(ax, ay, s2)
+            pb3 = _point_and_tangent(bx, by, t2)
+            h0, h1 = pa3[0] - pb3[0], pa3[1] - pb3[1]
+            res3 = (h0 * h0 + h1 * h1) ** 0.5
+            if res3 < new_res:
+                ns, nt, pa2, pb2, g0, g1, new_res = s2, t2, pa3, pb3, h0, h1, res3
+        moved = max(abs(ns - s), abs(nt - t))
+        s, t, pa, pb, f0, f1, res = ns, nt, pa2, pb2, g0, g1, new_res
+        if moved <= 1e-15:
+            break
+    return s, t, res
+
+
+def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float, max_depth: int,
+                     max_pairs: int = 20000) -> np.ndarray:
+    """:func:`intersect_curves` on plain floats for curves of 2 to :data:`_SMALL` points each."""
+    ca = (tuple(A[:, 0].tolist()), tuple(A[:, 1].tolist()))
+    cb = (tuple(B[:, 0].tolist()), tuple(B[:, 1].tolist()))
+    pad = 1e-12 * scale
+    flat_tol = 1e-3 * scale
+    pairs = [(_Piece(ca[0], ca[1], 0.0, 1.0), _Piece(cb[0], cb[1], 0.0, 1.0))]
+    guesses = {}                       # start (s, t) -> the parameter box of its flat pair
+    extra = {}                         # more starts, in the flat pairs whose chords are nearly parallel
+    reach = set()                      # corners of the unit square that a flat pair reaches
+    first = pairs[0]
+    if not (first[0].x0 <= first[1].x1 + pad and first[1].x0 <= first[0].x1 + pad
+            and first[0].y0 <= first[1].y1 + pad and first[1].y0 <= first[0].y1 + pad):
+        pairs = []
+    for level in range(max_depth + 1):
+        kept = pairs                   # every pair here has overlapping boxes
+        flat = [p.flat() <= flat_tol and q.flat() <= flat_tol for p, q in kept]
+        if level == max_depth or 4 * flat.count(False) > max_pairs:
+            flat = [True] * len(kept)
+        pairs = []
+        append = pairs.append
+        for (p, q), f in zip(kept, flat):
+            if f:
+                s, t = _chord_guess(p, q)
+                box = (p.lo, p.hi, q.lo, q.hi)
+                guesses.setdefault((round(s, 12), round(t, 12)), box)
+                if _nearly_parallel(p, q):
+                    # two nearly parallel flat pieces may cross twice (or touch): start from the
+                    # corners of the pair's parameter box too, so that Newton reaches both crossings
+                    for cs in (p.lo, p.hi):
+                        for ct in (q.lo, q.hi):
+                            extra.setdefault((cs, ct), box)
+                for cs in (0.0, 1.0):
+                    if p.lo <= cs <= p.hi:
+                        for ct in (0.0, 1.0):
+                            if q.lo <= ct <= q.hi:
+                                reach.add((cs, ct))
+            else:
+                # the four child pairs, those whose boxes miss dropped at once
+                for c in p.halves():
+                    for d in q.halves():
+                        if c.x0 <= d.x1 + pad and d.x0 <= c.x1 + pad and c.y0 <= d.y1 + pad and d.y0 <= c.y1 + pad:
+                            append((c, d))
+        if not pairs:
+            break
+    for c in reach:
+        extra.setdefault(c, (c[0], c[0], c[1], c[1]))
+    # Newton from the chord guesses where the curves come closest first, then from the extra
+    # starts (corners of nearly parallel flat pairs, corners of the unit square).  A start whose flat pair holds a
+    # tangential contact already found is skipped: at a tangency every pair round the contact
+    # holds it (one Newton run instead of four), and a second crossing within the pair would be
+    # so close that its midpoint with the contact meets within tol, merging the two anyway
+    # (transversal solutions skip nothing: two close crossings can share a flat pair).
+    def gap_at(st):
+        pa = _point_and_tangent(ca[0], ca[1], st[0])
+        pb = _point_and_tangent(cb[0], cb[1], st[1])
+        return (pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2
+
+    found = []
+    contacts = []
+    margin = 1e-9
+    starts = sorted(guesses, key=lambda st: (gap_at(st), st))
+    starts += sorted(st for st in extra if st not in guesses)
+    guesses.update((st, box) for st, box in extra.items() if st not in guesses)
+    for s, t in starts:
+        s0, s1, t0, t1 = guesses[(s, t)]
+        if any(s0 - margin <= u <= s1 + margin and t0 - margin <= v <= t1 + margin for u, v in contacts):
+            continue
+        r = _newton_small(ca, cb, s, t, scale)
+        if r is not None and r[2] <= tol_abs:
+            found.append(r)
+            pa = _point_and_tangent(ca[0], ca[1], r[0])
+            pb = _point_and_tangent(cb[0], cb[1], r[1])
+            cross = pa[2] * pb[3] - pa[3] * pb[2]
+            if abs(cross) <= 1e-6 * (pa[2] * pa[2] + pa[3] * pa[3]) ** 0.5 * (pb[2] * pb[2] + pb[3] * pb[3]) ** 0.5:
+                contacts.append(r[:2])
+    # :func:`_merge_solutions` on floats: best residual first, one solution per cluster
+    found.sort(key=lambda r: r[2])
+    kept = []
+    for s, t, _ in found:
+        for u, v in kept:
+            gap = max(abs(s - u), abs(t - v))
+            if gap <= 1e-9:
+                break
+            if gap <= 1e-3:
+                pa = _point_and_tangent(ca[0], ca[1], 0.5 * (s + u))
+                pb = _point_and_tangent(cb[0], cb[1], 0.5 * (t + v))
+                if ((pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2) ** 0.5 <= tol_abs:
+                    break
+        else:
+            kept.append((s, t))
+    kept.sort()
+    return np.array(kept, dtype=float).reshape(-1, 2)
+
+
 def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     """The parameter pairs ``(s, t)`` with ``a(s) = b(t)`` of two planar Bezier curves, by subdivision (Goldman §25.3.1).
 
@@ -206,6 +482,13 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     an uneven parametrisation has a straight polygon, but its chord's parameters are far from
     the curve's.
 
+    Curves of at most 8 control points each (the usual case) run the same steps on plain Python
+    floats, which is many times faster than numpy on such small arrays; there a flat pair whose
+    chords are nearly parallel also starts Newton from the corners of its parameter box (two
+    close crossings can share one flat pair), Newton takes the doubled step where the residual
+    only quarters (a tangency), and a tangential contact once found is not polished again from
+    the neighbouring pairs that all contain it.
+
     a: (n+1, 2), b: (m+1, 2) control points.  tol: positive float, how close (relative to the
     size of the control points, at least 1) the curves must come to count as meeting.
     max_depth: int in [1, 60], the deepest subdivision.
@@ -222,10 +505,15 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     >>> intersect_curves([[0, 0], [1, 0]], [[0, 1], [1, 1]]).shape
     (0, 2)
     """
-    A, B = _curves_pair(a, b, moderate=True)
+    A, B = _curves_pair(a, b)
     tol = _tolerance(tol)
     max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=60)
-    scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()))
+    big_a, big_b = float(np.abs(A).max()), float(np.abs(B).max())
+    if max(big_a, big_b) > MAX_COORDINATE:
+        _moderate(A, "a"), _moderate(B, "b")          # raises, naming the curve
+    scale = max(1.0, big_a, big_b)
+    if 2 <= len(A) <= _SMALL and 2 <= len(B) <= _SMALL:
+        return _intersect_small(A, B, tol * scale, scale, max_depth)
     guesses = [np.array([[0.0, 0.0], [0.0, 1.0], [1.0, 0.0], [1.0, 1.0]])]
     for _, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-3 * scale,
                                                   max_depth=max_depth, max_pairs=20000):

@@ -1,6 +1,6 @@
 """Bezier subdivision and rendering (Goldman chapter 25, §25.2-25.5).
 
-:func:`subdivide` and :func:`subdivide_uniform` (§25.2, §25.4); :func:`flatness`, :func:`is_flat`
+:func:`subdivide` and :func:`subdivide_uniform` (§25.2, §25.4) with :func:`polygon_distance`; :func:`flatness`, :func:`is_flat`
 and :func:`render_by_subdivision` (§25.3); :func:`subdivide_patch`, :func:`patch_flatness` and
 :func:`render_patch_by_subdivision` (§25.3.2); :func:`subdivision_variation_counts` (§25.4);
 :func:`smooth_continuation` and :func:`join_order` (§25.5).  Evaluation (chapter 24) is in
@@ -17,12 +17,12 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib._kernels import flatness as _flatness, split as _split
-from goldman_lib.bezier import _blame, _ctrl, _moderate, _net, _sign_changes, _signed_distances, elevate_degree
+from goldman_lib.bezier import _blame, _ctrl, _moderate, _net, _sign_changes, _signed_distances, bernstein, elevate_degree
 from goldman_lib.validation import MAX_ITEMS, as_float, as_int, as_parameter, as_points, finite_result, within_budget
 
 __all__ = [
-    "subdivide", "subdivide_uniform", "flatness", "is_flat", "render_by_subdivision",
-    "subdivide_patch", "patch_flatness", "render_patch_by_subdivision",
+    "subdivide", "subdivide_uniform", "flatness", "is_flat", "polygon_distance", "render_by_subdivision",
+    "subdivide_patch", "subdivide_patch_uniform", "net_distance", "patch_flatness", "render_patch_by_subdivision",
     "subdivision_variation_counts", "smooth_continuation", "join_order",
 ]
 
@@ -114,6 +114,32 @@ def flatness(ctrl, even=True):
         raise ValueError(f"ctrl must have shape (n+1, d) or a stack (..., n+1, d); got shape {P.shape}")
     out = _flatness(P, bool(even))
     return float(out) if P.ndim == 2 else out
+
+
+def polygon_distance(ctrl) -> float:
+    """How far a Bezier control polygon is from its curve: ``max_k |P_k - C(k/n)|``, each control
+    point against the curve point at its Greville abscissa ``k/n`` (Goldman §25.2, §25.4; the
+    Bezier case of :func:`goldman_lib.knot_insertion.control_polygon_distance`).  After ``depth``
+    levels of uniform subdivision the pieces' polygons are ``O(4^-depth)`` from the curve.
+
+    ctrl: (n+1, d), or a stack (..., n+1, d) of polygons (the pieces of
+    :func:`subdivide_uniform`): the largest distance over all of them.  Returns a float >= 0
+    (0 for a degree-0 curve).  Raises ValueError/TypeError for a bad ctrl.
+
+    >>> polygon_distance([[0, 0], [1, 2], [2, 0]])          # P_1 = (1, 2) against C(1/2) = (1, 1)
+    1.0
+    >>> polygon_distance(subdivide_uniform([[0, 0], [1, 2], [2, 0]], 1))
+    0.25
+    """
+    P = _moderate(as_points(ctrl, "ctrl", ndim=None))
+    if P.ndim < 2:
+        raise ValueError(f"ctrl must have shape (n+1, d) or a stack (..., n+1, d); got shape {P.shape}")
+    n = P.shape[-2] - 1
+    if n == 0 or P.size == 0:
+        return 0.0
+    B = bernstein(n, np.arange(n + 1) / n)               # B[k, j] = B_j^n(k/n)
+    on_curve = np.einsum("kj,...jd->...kd", B, P)
+    return float(finite_result(np.linalg.norm(P - on_curve, axis=-1), "ctrl").max())
 
 
 def is_flat(ctrl, tol, even=True) -> bool:
@@ -225,6 +251,52 @@ def subdivide_patch(ctrl, u=0.5, v=0.5) -> np.ndarray:
         if x.ndim != 0:
             raise ValueError(f"{name} must be a scalar for subdivide_patch; got shape {x.shape}")
     return _split_patches(P[None], float(u), float(v))[0]
+
+
+def subdivide_patch_uniform(ctrl, depth) -> tuple[np.ndarray, np.ndarray]:
+    """Split a Bezier patch at the middle ``depth`` times: its ``4**depth`` sub-nets and their
+    parameter rectangles (Goldman §25.3.2, the patch version of :func:`subdivide_uniform`).
+
+    ctrl: (m+1, n+1, d).  depth: int >= 0 within the work budget (the ``4**depth`` nets' coordinates
+    at most :data:`~goldman_lib.validation.MAX_ITEMS`).  Returns ``(nets (4**depth, m+1, n+1, d),
+    domains (4**depth, 4))``, a domain being ``[u0, u1, v0, v1]``; each parent's four children
+    come in the order of :func:`subdivide_patch` (``[0, 0], [0, 1], [1, 0], [1, 1]``).
+    Raises ValueError for a bad net or depth.
+
+    >>> nets, domains = subdivide_patch_uniform([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], 1)
+    >>> nets.shape, domains[3].tolist()
+    ((4, 2, 2, 3), [0.5, 1.0, 0.5, 1.0])
+    """
+    P = _net(ctrl)
+    depth = within_budget(depth, "depth", cost=lambda v: 4 ** v * P.size, what="the subdivided patch",
+                          unit="coordinates")
+    nets, dom = P[None], np.array([[0.0, 1.0, 0.0, 1.0]])
+    for _ in range(depth):
+        nets, dom = _quarter(nets, dom)
+    return (nets.copy() if depth == 0 else nets), dom
+
+
+def net_distance(ctrl) -> float:
+    """How far a Bezier patch's control net is from its surface: ``max |P_ij - S(i/m, j/n)|``
+    (Goldman §25.3.2; the patch case of :func:`polygon_distance`).  After ``depth`` levels of
+    :func:`subdivide_patch_uniform` the sub-nets are ``O(4^-depth)`` from the surface.
+
+    ctrl: (m+1, n+1, d), or a stack (..., m+1, n+1, d) of nets: the largest distance over all.
+    Returns a float >= 0.  Raises ValueError/TypeError for a bad ctrl.
+
+    >>> net_distance([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])      # bilinear: on its surface
+    0.0
+    >>> net_distance([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]], [[2, 0, 0], [2, 1, 0]]])
+    0.0
+    """
+    P = _moderate(as_points(ctrl, "ctrl", ndim=None))
+    if P.ndim < 3:
+        raise ValueError(f"ctrl must have shape (m+1, n+1, d) or a stack (..., m+1, n+1, d); got shape {P.shape}")
+    m, n = P.shape[-3] - 1, P.shape[-2] - 1
+    Bu = bernstein(m, np.arange(m + 1) / m) if m else np.ones((1, 1))
+    Bv = bernstein(n, np.arange(n + 1) / n) if n else np.ones((1, 1))
+    on = np.einsum("ia,jb,...abd->...ijd", Bu, Bv, P)
+    return float(finite_result(np.linalg.norm(P - on, axis=-1), "ctrl").max())
 
 
 def _split_patches(P: np.ndarray, u: float = 0.5, v: float = 0.5) -> np.ndarray:

@@ -816,6 +816,11 @@ def _as_strokes(x, name: str) -> list[np.ndarray]:
         return [as_points(x, name, dim=2)]
     if not isinstance(x, (list, tuple)):
         return [as_points(x, name, dim=2)]
+    if x and all(type(p) is np.ndarray and p.dtype == np.float64 and p.ndim == 2 and p.shape[1] == 2 and len(p) for p in x):
+        # the library's own drawings (thousands of short strokes at a slider's top level): one
+        # finiteness check for all of them; a bad one is named by the stroke-by-stroke check below
+        if np.isfinite(np.concatenate(x)).all():
+            return list(x)
     return [as_points(p, f"{name}[{i}]", dim=2) for i, p in enumerate(x)]
 
 

@@ -43,7 +43,7 @@ __all__ = [
     "variation_diminishing", "split", "render", "intersect",
     "lane_riesenfeld", "lane_riesenfeld_steps", "lane_riesenfeld_knots",
     "midpoint_knots", "schaefer", "schaefer_steps", "schaefer_labels",
-    "greville", "control_polygon_distance", "convergence_study",
+    "greville", "closed_curve", "control_polygon_distance", "convergence_study",
 ]
 
 
@@ -647,22 +647,70 @@ def greville(knots, degree) -> np.ndarray:
     return (c[i + p + 1] - c[i + 1]) / p
 
 
-def control_polygon_distance(ctrl, knots, degree) -> float:
+def closed_curve(ctrl, degree) -> tuple[np.ndarray, np.ndarray]:
+    """A closed (periodic) uniform B-spline written as an ordinary one (Goldman §28.4.1): the
+    polygon wrapped round, its first ``degree`` points repeated at the end, on the integer knots
+    ``0, 1, ..., m + 2p``.  The domain ``[p, m + p]`` is one trip round the curve, which is the
+    curve :func:`lane_riesenfeld` refines with ``closed=True``.
+
+    ctrl: (m, d), m >= 1 points of the closed polygon.  degree: p >= 1.  Returns ``(points (m+p, d),
+    knots (m+2p+1,))``.  Raises ValueError for a bad polygon or degree.
+
+    >>> P, t = closed_curve([[0, 0], [1, 0], [0, 1]], 2)
+    >>> P.tolist(), t.tolist()
+    ([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [0.0, 0.0], [1.0, 0.0]], [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0])
+    """
+    P = as_points(ctrl, "ctrl", ndim=2)
+    p = as_int(degree, "degree", minimum=1)
+    m, d = P.shape
+    p = within_budget(p, "degree", cost=lambda v: (m + v) * d, what="the wrapped polygon",
+                      unit="coordinates")
+    return P[np.arange(m + p) % m], np.arange(m + 2 * p + 1, dtype=float)
+
+
+def control_polygon_distance(ctrl, knots, degree, *, closed: bool = False, skip_outside: bool = False) -> float:
     """The largest distance from a control point to the curve point at its Greville abscissa,
     ``max_i |P_i - C(xi_i)|``: how far the control polygon is from the curve (Goldman §28.4.3).
 
-    ctrl, knots, degree (>= 1): the curve.  Returns a float.  Raises ValueError for a bad curve.
+    ctrl, knots, degree (>= 1): the curve.  A control point whose abscissa falls outside the
+    domain (the end points of an unclamped knot vector) is measured against the nearer end of the
+    curve, or left out with ``skip_outside=True`` (it then sits about p/2 knot intervals beyond
+    the curve's end and would hide the O(h^2) convergence of the others).  closed: ``ctrl`` is a
+    closed polygon of the uniform periodic curve of :func:`closed_curve`; ``knots`` must then be
+    None, and every control point is measured (each has its abscissa once round the curve).
+    Returns a float.  Raises ValueError for a bad curve, TypeError for a flag that is not a bool.
 
     >>> control_polygon_distance([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2)
     1.0
+    >>> control_polygon_distance([[1, 0], [0, 1], [-1, 0], [0, -1]], None, 2, closed=True)   # |2P_i - P_i-1 - P_i+1| / 8
+    0.25
     """
-    P, t, p = _curve(ctrl, knots, degree)
+    for flag, name in ((closed, "closed"), (skip_outside, "skip_outside")):
+        if not isinstance(flag, (bool, np.bool_)):
+            raise TypeError(f"{name} must be True or False; got {flag!r}")
+    if closed:
+        if knots is not None:
+            raise ValueError("knots must be None for a closed curve (its knots are the integers of closed_curve)")
+        P, t = closed_curve(ctrl, degree)
+        p = int(degree)
+        skip_outside = True
+    else:
+        P, t, p = _curve(ctrl, knots, degree)
     bezier._moderate(P)
     if p < 1:
         raise ValueError("degree must be >= 1 for control_polygon_distance (Greville abscissae need a knot)")
-    xi = np.clip(greville(t, p), *_kernels.domain(t, p))
+    lo, hi = _kernels.domain(t, p)
+    xi = greville(t, p)
+    Q = P
+    if skip_outside:
+        inside = (xi >= lo) & (xi <= hi)
+        if not inside.any():
+            raise ValueError("knots leave no Greville abscissa inside the domain: nothing to measure with skip_outside")
+        Q, xi = P[inside], xi[inside]
+    else:
+        xi = np.clip(xi, lo, hi)
     C = bspline.de_boor(P, t, p, xi)
-    return float(np.linalg.norm(P - C, axis=1).max())
+    return float(np.linalg.norm(Q - C, axis=1).max())
 
 
 def convergence_study(ctrl, knots, degree, levels=6) -> dict:

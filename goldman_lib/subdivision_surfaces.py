@@ -49,7 +49,7 @@ __all__ = [
     "triangle_vertex_stencil", "triangle_edge_stencil", "apply_stencils",
     "local_subdivision_matrix", "local_eigenvalues", "BOX_SPLINE_SELF_WEIGHT",
     "VERTEX_RULES", "loop_beta", "warren_beta", "tangent_plane_condition", "valence_table",
-    "ring_height_ratio", "cone_ratios",
+    "ring_height_ratio", "cone_ratios", "angle_defects",
 ]
 
 #: Weight of a vertex itself in the weighted triangle centroid used by the triangle scheme; the
@@ -1146,6 +1146,44 @@ def ring_height_ratio(mesh: Mesh, vertex: int) -> float:
     if radius == 0:
         raise ValueError(f"mesh has a degenerate ring at vertex {v} (all its neighbours coincide)")
     return abs(float((mesh._vertices[v] - c) @ normal)) / radius
+
+
+def angle_defects(mesh: Mesh) -> np.ndarray:
+    """The angle defect at every vertex, ``2 pi - (sum of the face angles there)`` (``pi - sum`` at
+    a boundary vertex): the discrete Gaussian curvature, integrated over the vertex's share of the
+    surface (Goldman §30.4.2, to make a cone visible).
+
+    Over a mesh of planar faces (triangles always are) the defects add up to ``2 pi chi`` (the
+    discrete Gauss-Bonnet theorem); a bent quadrilateral's angles need not add up to 2 pi.
+    Where the limit surface has a tangent plane the defect at a vertex shrinks level after level
+    (the surface round it flattens); at a cone it stays, because the vertex and its ring keep their
+    shape.  The tetrahedron's corners: pi each; the cube's: pi/2.
+
+    mesh: a :class:`Mesh` with vertices in space (d = 3).  Returns ``(V,)`` angles in radians.
+    Raises ValueError for a mesh that is not 3D or has a face with a zero-length edge.
+
+    >>> angle_defects(cube()).round(6).tolist() == [round(np.pi / 2, 6)] * 8
+    True
+    >>> round(float(angle_defects(centroid_averaging(tetrahedron(), 2)).sum() / np.pi), 12)   # 2 pi chi, chi = 2
+    4.0
+    """
+    mesh = _check_mesh(mesh)
+    V = mesh._vertices
+    if V.shape[1] != 3:
+        raise ValueError(f"mesh must have vertices in space (d = 3) for angle_defects; got d = {V.shape[1]}")
+    c = mesh._corners
+    to_next = V[c[mesh._next]] - V[c]
+    to_prev = V[c[mesh._prev]] - V[c]
+    ln, lp = np.linalg.norm(to_next, axis=1), np.linalg.norm(to_prev, axis=1)
+    if not (ln > 0).all() or not (lp > 0).all():
+        k = int(np.flatnonzero((ln <= 0) | (lp <= 0))[0])
+        raise ValueError(f"mesh has a zero-length edge at face {int(mesh._face_of_corner[k])} (vertex {int(c[k])})")
+    # the angle between the two edges at each corner, by atan2 (accurate for small and flat angles)
+    angle = np.arctan2(np.linalg.norm(np.cross(to_next, to_prev), axis=1), np.einsum("ij,ij->i", to_next, to_prev))
+    total = np.bincount(c, weights=angle, minlength=mesh.n_vertices)
+    full = np.full(mesh.n_vertices, 2 * np.pi)
+    full[mesh.boundary_vertices] = np.pi
+    return full - total
 
 
 def cone_ratios(mesh: Mesh, levels: int, vertex: int = 0, scheme: str | None = None, rule: str = "centroid",

@@ -206,6 +206,47 @@ def test_intersect_curves_line_and_parabola_closed_form():
     np.testing.assert_allclose(got, [[0.25, 0.25], [0.75, 0.75]], atol=1e-14)
 
 
+def test_intersect_curves_tangential_parabolas_meet_once():
+    # y = 2x(1-x)... as Bezier: a(s) = (s, 2s(1-s)), b(t) = (t, 1 - 2t(1-t)): a - b = 0 only at s = t = 1/2,
+    # where both have slope 0: one tangential contact, returned once
+    got = bezier.intersect_curves([[0, 0], [0.5, 1], [1, 0]], [[0, 1], [0.5, 0], [1, 1]])
+    assert got.shape == (1, 2)
+    np.testing.assert_allclose(got, [[0.5, 0.5]], atol=1e-8)
+
+
+def test_intersect_curves_two_close_crossings_in_one_flat_pair():
+    # the parabola y = (x - 1/2)^2 and the line y = 1e-6: crossings at x = 1/2 -+ 1e-3, close enough
+    # to share a flat pair of pieces; both are found
+    parabola = [[0, 0.25], [0.5, -0.25], [1, 0.25]]
+    got = bezier.intersect_curves(parabola, [[0, 1e-6], [1, 1e-6]])
+    np.testing.assert_allclose(got, [[0.499, 0.499], [0.501, 0.501]], atol=1e-12)
+
+
+def test_intersect_curves_scalar_path_matches_the_array_path():
+    """Small curves (at most bezier_intersection._SMALL points) take the scalar path; the array path
+    it replaces for them gives the same intersections on random, near-tangent and near-coincident pairs."""
+    from goldman_lib import bezier_intersection as bi
+
+    rng = np.random.default_rng(3)
+    cases = [(rng.uniform(0, 1, (da + 1, 2)), rng.uniform(0, 1, (db + 1, 2))) for da, db in rng.integers(1, 6, (150, 2))]
+    for eps in (0.0, 1e-9, 1e-6, 1e-4, -1e-6):
+        c = rng.uniform(0.2, 0.8)
+        cases.append(([[0, c * c], [0.5, c * c - c], [1, (1 - c) ** 2]], [[0, eps], [1, eps]]))
+    for _ in range(40):
+        a = rng.uniform(0, 1, (4, 2))
+        cases.append((a, a + rng.normal(0, 1e-3, (4, 2))))
+    for a, b in cases:
+        small = bezier.intersect_curves(a, b)
+        keep, bi._SMALL = bi._SMALL, 1
+        try:
+            array = bezier.intersect_curves(a, b)
+        finally:
+            bi._SMALL = keep
+        assert small.shape == array.shape, (a, b, small, array)
+        if len(small):
+            np.testing.assert_allclose(small, array, atol=1e-6)
+
+
 def test_intersect_curves_with_a_point():
     # a degree-0 curve is a point: on the line y = x at the line's parameter 1/2, and off it
     np.testing.assert_allclose(bezier.intersect_curves([[1, 1]], [[0, 0], [2, 2]]), [[0.0, 0.5]], atol=1e-14)
@@ -589,3 +630,82 @@ def test_intersect_patches_segments_of_the_planes_are_one_path():
     np.testing.assert_allclose(ends[np.argsort(ends[:, 1])], [[1, 0.5, 0], [1, 1.5, 0]], atol=1e-12)
     empty = bezier.intersect_patches(floor, ramp + [0, 0, 5], segments=True)
     assert [e.shape for e in empty] == [(0, 3), (0, 4), (0, 2)]
+
+
+# -- polygon_distance: max |P_k - C(k/n)| (§25.2, §25.4) -------------------------------------------
+
+def test_polygon_distance_of_a_parabola_by_hand_and_by_level():
+    # C(t) = (2t, 4t(1-t)) for P = (0,0), (1,2), (2,0): P_1 against C(1/2) = (1, 1) is 1; each uniform
+    # subdivision level quarters the second derivative of every piece, so the distance quarters too
+    P = [[0, 0], [1, 2], [2, 0]]
+    for depth in range(5):
+        assert bezier.polygon_distance(bezier.subdivide_uniform(P, depth)) == pytest.approx(4.0 ** -depth, abs=1e-15)
+
+
+def test_polygon_distance_agrees_with_numpy_polynomial_evaluation():
+    from math import comb
+
+    from numpy.polynomial import polynomial as npoly
+
+    rng = np.random.default_rng(5)
+    P = rng.uniform(-2, 2, (6, 2))
+    n = 5
+    # the curve in the power basis, built from the Bernstein expansion independently of the library
+    coef = np.zeros((n + 1, 2))
+    for j in range(n + 1):
+        basis = npoly.polymul(npoly.polypow([0, 1], j), npoly.polypow([1, -1], n - j)) * comb(n, j)
+        coef[:len(basis)] += np.outer(basis, P[j])
+    on = np.stack([npoly.polyval(np.arange(n + 1) / n, coef[:, i]) for i in range(2)], axis=1)
+    assert bezier.polygon_distance(P) == pytest.approx(np.linalg.norm(P - on, axis=1).max(), abs=1e-12)
+
+
+def test_polygon_distance_edge_cases_and_bad_input():
+    assert bezier.polygon_distance([[1.0, 2.0]]) == 0.0                     # degree 0: the point is the curve
+    assert bezier.polygon_distance([[0, 0], [3, 4]]) == 0.0                 # a line through its points
+    with pytest.raises(ValueError, match="ctrl"):
+        bezier.polygon_distance([[0, 0], [np.nan, 1]])
+    with pytest.raises(ValueError, match="ctrl"):
+        bezier.polygon_distance([1.0, 2.0])
+
+
+# -- subdivide_patch_uniform and net_distance (§25.3.2) ----------------------------------------------
+
+def _biquadratic_graph():
+    """The graph of f(x, y) = x^2 + y^2 over [0, 1]^2 as a biquadratic net: x^2 has Bezier
+    coefficients 0, 0, 1 in degree 2, and x = 0, 1/2, 1."""
+    g = np.array([0.0, 0.5, 1.0])
+    sq = np.array([0.0, 0.0, 1.0])
+    X, Y = np.meshgrid(g, g, indexing="ij")
+    return np.stack([X, Y, sq[:, None] + sq[None, :]], axis=-1)
+
+
+def test_subdivided_patch_pieces_are_the_surface_over_their_domains():
+    net = _biquadratic_graph()
+    nets, domains = bezier.subdivide_patch_uniform(net, 2)
+    assert nets.shape == (16, 3, 3, 3) and domains.shape == (16, 4)
+    # the domains tile the unit square
+    assert np.isclose(((domains[:, 1] - domains[:, 0]) * (domains[:, 3] - domains[:, 2])).sum(), 1.0)
+    for sub, (u0, u1, v0, v1) in zip(nets, domains):
+        s = np.array([0.0, 0.3, 1.0])
+        here = bezier.patch_de_casteljau(sub, s, s[::-1])
+        there = bezier.patch_de_casteljau(net, u0 + s * (u1 - u0), v0 + s[::-1] * (v1 - v0))
+        np.testing.assert_allclose(here, there, atol=1e-14)
+
+
+def test_net_distance_of_a_graph_by_hand():
+    # only z is off the surface: the middle coefficient 0 of x^2 sits under x(1/2)^2 = 1/4, so the
+    # net point (1/2, 1/2, 0) is 1/4 + 1/4 = 1/2 below S(1/2, 1/2); each level of subdivision halves
+    # the spacing and quarters the gap
+    net = _biquadratic_graph()
+    for depth in range(4):
+        nets, _ = bezier.subdivide_patch_uniform(net, depth)
+        assert bezier.net_distance(nets) == pytest.approx(0.5 * 4.0 ** -depth, abs=1e-14)
+
+
+def test_patch_subdivision_bad_input():
+    with pytest.raises(ValueError, match="depth"):
+        bezier.subdivide_patch_uniform(_biquadratic_graph(), 40)
+    with pytest.raises(ValueError, match="ctrl"):
+        bezier.net_distance([[0.0, 1.0], [1.0, 2.0]])
+    with pytest.raises(ValueError, match="ctrl"):
+        bezier.net_distance([[[0, 0, np.inf]]])

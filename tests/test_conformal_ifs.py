@@ -417,3 +417,18 @@ def test_same_drawing_ignores_order_and_direction():
     assert cf.same_drawing(a, b)
     assert not cf.same_drawing(a, [np.array([[0, 0], [1, 0]])])
     assert cf.segment_set([]).shape == (0, 4)
+
+
+def test_drawing_distance_of_many_strokes_is_checked_at_once_and_still_names_a_bad_stroke():
+    # thousands of 2-point strokes (a level-8 bump drawing) take one finiteness check; a bad stroke
+    # among them is still named by its index
+    rng = np.random.default_rng(0)
+    strokes = [rng.uniform(0, 1, (2, 2)) for _ in range(5000)]
+    assert cf.drawing_distance(strokes, strokes) == 0.0
+    bad = list(strokes)
+    bad[1234] = np.array([[0.0, 0.0], [np.nan, 1.0]])
+    with pytest.raises(ValueError, match=r"first\[1234\]"):
+        cf.drawing_distance(bad, strokes)
+    bad[1234] = np.zeros((0, 2))
+    with pytest.raises(ValueError, match=r"first\[1234\]"):
+        cf.drawing_distance(bad, strokes)

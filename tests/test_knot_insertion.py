@@ -495,6 +495,56 @@ def test_greville_by_hand():
     assert ki.greville([0, 0, 0, 0, 1, 2, 2, 2, 2], 3).tolist() == [0, 1 / 3, 1, 5 / 3, 2]
 
 
+@pytest.mark.parametrize("p, expected", [(2, 1 / 8), (3, 1 / 6)])
+def test_closed_polygon_distance_of_a_square_by_hand(p, expected):
+    # uniform periodic curve at a Greville point: weights (1, 6, 1)/8 (quadratic, mid-interval) and
+    # (1, 4, 1)/6 (cubic, at a knot), so |P_i - C(xi_i)| = |2 P_i - P_i-1 - P_i+1| * expected = 2 * expected
+    square = [[1, 0], [0, 1], [-1, 0], [0, -1]]
+    assert ki.control_polygon_distance(square, None, p, closed=True) == pytest.approx(2 * expected, abs=1e-15)
+
+
+@pytest.mark.parametrize("p", [1, 2, 3, 5])
+def test_closed_curve_is_the_periodic_spline_of_scipy(p):
+    rng = np.random.default_rng(p)
+    P = rng.uniform(-2, 2, (4, 2))             # fewer points than degree + 1 for p = 5: still one trip round
+    ext, t = ki.closed_curve(P, p)
+    assert ext.shape == (4 + p, 2) and t.tolist() == list(range(4 + 2 * p + 1))
+    lo, hi = bspline.domain(t, p)
+    u = np.linspace(lo, hi, 9)
+    periodic = BSpline(t, ext, p)(u)
+    np.testing.assert_allclose(periodic[0], periodic[-1], atol=1e-12)          # closes
+    np.testing.assert_allclose(bspline.de_boor(ext, t, p, u), periodic, atol=1e-12)
+    # the distance measures every point once round the curve, as scipy evaluates it
+    xi = ki.greville(t, p)
+    inside = (xi >= lo) & (xi <= hi)
+    by_scipy = np.linalg.norm(ext[inside] - BSpline(t, ext, p)(xi[inside]), axis=1)
+    assert sorted({i % 4 for i in np.flatnonzero(inside)}) == [0, 1, 2, 3]
+    assert ki.control_polygon_distance(P, None, p, closed=True) == pytest.approx(by_scipy.max(), abs=1e-12)
+
+
+def test_polygon_distance_skips_abscissae_outside_an_unclamped_domain():
+    # quadratic, knots 0..6, domain [2, 4]: abscissae 1.5, 2.5, 3.5, 4.5; the two inside are at
+    # mid-interval, |2 P_i - P_i-1 - P_i+1| / 8 = sqrt(2) / 8 for both
+    ctrl = [[0, 0], [1, 0], [1, 1], [0, 1]]
+    t = np.arange(7.0)
+    assert ki.control_polygon_distance(ctrl, t, 2, skip_outside=True) == pytest.approx(math.sqrt(2) / 8, abs=1e-15)
+    # clipped instead: P_0 = (0, 0) against C(2) = (1/2, 0), P_3 against C(4) = (1/2, 1)
+    assert ki.control_polygon_distance(ctrl, t, 2) == pytest.approx(0.5, abs=1e-15)
+
+
+def test_polygon_distance_bad_flags_and_knots_name_the_parameter():
+    with pytest.raises(TypeError, match="closed"):
+        ki.control_polygon_distance([[0, 0], [1, 1]], [0, 0, 1, 1], 1, closed="yes")
+    with pytest.raises(TypeError, match="skip_outside"):
+        ki.control_polygon_distance([[0, 0], [1, 1]], [0, 0, 1, 1], 1, skip_outside=1)
+    with pytest.raises(ValueError, match="knots must be None"):
+        ki.control_polygon_distance([[0, 0], [1, 1]], [0, 0, 1, 1], 1, closed=True)
+    with pytest.raises(ValueError, match="degree"):
+        ki.closed_curve([[0, 0], [1, 1]], 0)
+    with pytest.raises(ValueError, match="ctrl"):
+        ki.closed_curve([[0, np.nan]], 2)
+
+
 def test_parabola_converges_by_exactly_four():
     # for a quadratic the control point - curve gap at the Greville point is exactly h^2 / 4 * |a|:
     # it divides by 4 each level

@@ -667,3 +667,48 @@ def test_rule_argument_rules():
     b = grid.boundary_vertices
     assert np.allclose(plain.vertices[:16][b], loop.vertices[:16][b])
     assert np.allclose(plain.vertices[16:], loop.vertices[16:])
+
+
+# -- angle defects: the cone in curvature (issue 13 §1) -------------------------------------------
+
+def test_angle_defects_by_hand_and_gauss_bonnet():
+    # regular tetrahedron: three 60-degree angles at each corner, defect pi; cube: three right angles, pi/2
+    np.testing.assert_allclose(ss.angle_defects(ss.tetrahedron()), np.pi, atol=1e-12)
+    np.testing.assert_allclose(ss.angle_defects(ss.cube()), np.pi / 2, atol=1e-12)
+    # discrete Gauss-Bonnet: the defects of a closed mesh of planar faces add up to 2 pi chi (triangles
+    # are always planar: every level of the triangle scheme; the quad scheme's faces bend after a level)
+    for mesh in (ss.cube(), ss.prism(5), ss.octahedron()):
+        assert ss.angle_defects(mesh).sum() == pytest.approx(2 * np.pi * mesh.euler_characteristic(), abs=1e-9)
+    for mesh in (ss.octahedron(), ss.triangulate(ss.prism(5)), ss.triangulate(ss.quad_star(5))):
+        for rule in ss.VERTEX_RULES:
+            m = ss.centroid_averaging(mesh, 2, "triangle", rule=rule)
+            assert ss.angle_defects(m).sum() == pytest.approx(2 * np.pi * m.euler_characteristic(), abs=1e-9)
+
+
+def test_angle_defects_flat_grid_and_boundary():
+    # a planar grid: no curvature inside; a boundary vertex gets pi - (its angles), which is the
+    # turning of the boundary there (pi/2 at the square's corners, 0 along its sides)
+    g = np.stack(np.meshgrid(np.arange(4.0), np.arange(4.0), indexing="ij"), axis=-1)
+    m = ss.quad_grid(np.concatenate([g, np.zeros((4, 4, 1))], axis=-1))
+    d = ss.angle_defects(m)
+    inside = ~m.boundary_vertices
+    np.testing.assert_allclose(d[inside], 0.0, atol=1e-12)
+    assert sorted(np.round(d[m.boundary_vertices], 12).tolist()).count(round(np.pi / 2, 12)) == 4
+    assert d.sum() == pytest.approx(2 * np.pi, abs=1e-12)     # Gauss-Bonnet with boundary: 2 pi chi, chi = 1
+
+
+def test_angle_defect_keeps_the_cone_under_the_books_rule_only():
+    # the book's rule at valence 3: the corner and its ring keep their shape, so its defect stays pi;
+    # Warren's and Loop's flatten it (about 16 times smaller a level)
+    book = [ss.angle_defects(ss.centroid_averaging(ss.tetrahedron(), L, "triangle"))[0] for L in range(4)]
+    np.testing.assert_allclose(book, np.pi, atol=1e-9)
+    for rule in ("warren", "loop"):
+        d = [ss.angle_defects(ss.centroid_averaging(ss.tetrahedron(), L, "triangle", rule=rule))[0] for L in (2, 3, 4)]
+        assert d[0] > d[1] > d[2] and d[2] < 1e-3
+
+
+def test_angle_defects_bad_input():
+    with pytest.raises(ValueError, match="d = 3"):
+        ss.angle_defects(ss.Mesh([[0, 0], [1, 0], [0, 1]], [[0, 1, 2]]))
+    with pytest.raises(ValueError, match="zero-length edge"):
+        ss.angle_defects(ss.Mesh([[0, 0, 0], [0, 0, 0], [0, 1, 0]], [[0, 1, 2]]))

@@ -20,7 +20,7 @@ def line_points(view, k):
 
 @pytest.mark.parametrize("name", list(codo.SAMPLES))
 def test_editor_draws_each_sample(name):
-    view = cv.program_editor()
+    view = cv.codo_program_editor()
     view.examples.value = name
     assert view.controls["program"].value == codo.SAMPLES[name]
     assert view.last_error is None
@@ -44,11 +44,11 @@ BAD = ["P = point(0, 0)\nQ = P + P", "CONNECT A, B", "REPEAT 3 [", "x = 1/0", "P
 
 @pytest.mark.parametrize("program", BAD)
 def test_editor_keeps_the_last_drawing_and_shows_line_and_token(program):
-    view = cv.program_editor()
+    view = cv.codo_program_editor()
     before = line_points(view, 0)
     with pytest.raises(codo.CodoError):
         view.update(program=program)
-    view = cv.program_editor()
+    view = cv.codo_program_editor()
     view.controls["program"].value = program
     assert view.last_error.split(":")[0] in ("CodoSyntaxError", "CodoTypeError", "CodoRuntimeError")
     assert "line " in view.status.value and ", at " in view.status.value and "Traceback" not in view.status.value
@@ -58,10 +58,10 @@ def test_editor_keeps_the_last_drawing_and_shows_line_and_token(program):
 
 
 def test_editor_empty_program_and_type_check():
-    view = cv.program_editor("")
+    view = cv.codo_program_editor("")
     assert view.last_error is None and view.last_result["polylines"] == []
     with pytest.raises(TypeError):
-        cv.program_editor(3)
+        cv.codo_program_editor(3)
 
 
 def test_shortcoming_view_draws_the_image_and_the_best_turtle():
@@ -85,7 +85,7 @@ def test_shortcoming_view_draws_the_image_and_the_best_turtle():
 def test_plot_functions_and_static_images():
     ax = cv.plot_program(codo.SAMPLES["nested squares"])
     assert ax.lines[1].get_xydata().shape == (25, 2)
-    for view in (cv.program_editor(), cv.turtle_shortcoming_view()):
+    for view in (cv.codo_program_editor(), cv.turtle_shortcoming_view()):
         assert view.static_png().startswith(b"\x89PNG")
     with pytest.raises(ValueError, match="program must be one of"):
         cv.turtle_shortcoming_view(program="circle")
@@ -93,7 +93,7 @@ def test_plot_functions_and_static_images():
 
 
 def test_suggested_program_draws_a_triangle():
-    view = cv.program_editor()
+    view = cv.codo_program_editor()
     assert f'<code class="goldman-example">{cv.TRY_PROGRAM}</code>' in view.children[-2].children[-1].children[-1].value
     lines = view.update(program=cv.TRY_PROGRAM)["polylines"]
     assert len(lines) == 3

@@ -112,3 +112,11 @@ def test_static_pngs_and_static_plot():
         assert factory().static_png().startswith(b"\x89PNG")
     fig = views.plot_turtle_and_ifs("C-curve", 3)
     assert len(fig.axes) == 2
+
+
+def test_side_by_side_drawings_have_few_ticks():
+    """The turtle/IFS panels are drawings: a few ticks each, which halves a slider's redraw (issue 13 §5)."""
+    for view in (views.tao_view(), views.turtle_ifs_view(), views.bump_view()):
+        view.figure.canvas.draw()
+        for ax in view.figure.axes:
+            assert len(ax.get_xticks()) <= 6 and len(ax.get_yticks()) <= 6, view.title

@@ -59,3 +59,21 @@ def test_convergence_plot_skips_zeros():
     from goldman_lib.views import fixed_point as fpv
     ax = fpv.convergence_plot({"a": [1, 0.1, 0.0], "b": [2, 1]})
     assert ax.lines[0].get_xydata().tolist() == [[0.0, 1.0], [1.0, 0.1]] and len(ax.lines) == 2
+
+
+def test_two_panel_views_draw_few_ticks_and_plain_log_labels():
+    """Tick labels were most of a redraw (issue 13 §5): the relaxation and fractal-theorem views keep
+    a few ticks per axis, and their log axes label decades in plain text with no minor ticks."""
+    from goldman_lib.views import style
+
+    for view in (views.relaxation_view(), views.fractal_theorem_view()):
+        view.figure.canvas.draw()
+        for ax in view.figure.axes:
+            for axis in (ax.xaxis, ax.yaxis):
+                shown = [t for t in axis.get_ticklabels() if t.get_text()]
+                assert 1 <= len(shown) <= 6, (view.title, [t.get_text() for t in shown])
+                if axis.get_scale() == "log":
+                    assert len(axis.get_minorticklocs()) == 0
+                    assert all("$" not in t.get_text() for t in shown)
+        plt.close(view.figure)
+    assert [style._plain_power(v) for v in (1e-3, 1.0, 100.0, 3e-5, 0.0)] == ["1e-3", "1e0", "1e2", "3e-5", ""]

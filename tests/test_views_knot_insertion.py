@@ -54,8 +54,8 @@ def test_oslo_view_refuses_a_step_its_slider_cannot_reach():
 
 @pytest.mark.parametrize("p", [1, 2, 3, 5])
 @pytest.mark.parametrize("level", [0, 1, 3])
-def test_subdivision_view_level_polygons_are_the_same_curve(p, level):
-    view = views.subdivision_view()
+def test_bspline_subdivision_view_level_polygons_are_the_same_curve(p, level):
+    view = views.bspline_subdivision_view()
     # open uniform Lane-Riesenfeld: knots spacing 2^-L from p (1 - 2^-L)
     result = view.update(algorithm="Lane-Riesenfeld (uniform)", degree=p, level=level, round=p)
     h = 2.0 ** -level
@@ -69,8 +69,8 @@ def test_subdivision_view_level_polygons_are_the_same_curve(p, level):
     same_curve(P, clamped, p, Q, tau)
 
 
-def test_subdivision_view_closed_and_rounds():
-    view = views.subdivision_view()
+def test_bspline_subdivision_view_closed_and_rounds():
+    view = views.bspline_subdivision_view()
     result = view.update(algorithm="Lane-Riesenfeld (closed)", degree=3, level=2, round=3)
     assert len(result["polygon"]) == 4 * len(P)
     doubled = view.update(algorithm="Lane-Riesenfeld (closed)", degree=3, level=1, round=0)["polygon"]
@@ -78,7 +78,7 @@ def test_subdivision_view_closed_and_rounds():
 
 
 def test_subdivision_distance_falls_by_about_four_per_level():
-    view = views.subdivision_view()
+    view = views.bspline_subdivision_view()
     d = [view.update(algorithm="Schaefer (clamped)", degree=3, level=L, round=3)["distance"] for L in range(5)]
     ratios = np.array(d[1:-1]) / np.array(d[2:])
     assert np.all(ratios > 2.5), ratios
@@ -135,7 +135,7 @@ def test_figures_carry_the_library_blossom_labels():
     assert r["labels"][-1] == [tuple(r["label"].tolist())]
     texts = [t.get_text() for t in oslo.figure.axes[0].texts]
     assert "b(" + ", ".join(f"{x:.3g}" for x in r["label"]) + ")" in texts
-    sub = views.subdivision_view()
+    sub = views.bspline_subdivision_view()
     r = sub.set_values(algorithm="Schaefer (clamped)", degree=3, level=1, round=2)
     want = ki.schaefer_labels(bspline.clamped_knots(len(views.DEFAULT_POLYGON), 3), 3, 2)
     assert r["labels"] == want and len(sub.figure.axes[0].texts) == len(want)

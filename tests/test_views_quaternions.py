@@ -29,8 +29,8 @@ def test_complex_plane_view_point_z_is_dragged_with_the_mouse():
     assert np.allclose(view.last_result["image"], qt.complex_multiply(qv.FIGURE_F, -0.5 + 1.2j))
 
 
-def test_rotation_view_draws_q_v_qstar_and_its_matrix():
-    view = qv.rotation_view()
+def test_quaternion_rotation_view_draws_q_v_qstar_and_its_matrix():
+    view = qv.quaternion_rotation_view()
     r = view.set_values(ax=0.0, ay=0.0, az=1.0, angle=90.0, size=1.0)
     # a quarter turn about z: (0.9, 0, 0) -> (0, 0.9, 0), (0, 0.6, 0) -> (-0.6, 0, 0), z fixed
     assert np.allclose(r["image"], [[0, 0.9, 0], [-0.6, 0, 0], [0, 0, 0.35]], atol=1e-12)
@@ -42,8 +42,8 @@ def test_rotation_view_draws_q_v_qstar_and_its_matrix():
     assert np.allclose(tips, qt.rotate(qt.from_axis_angle([1, -1, 0.5], -130), qv.BODY_ARROWS), atol=1e-12)
 
 
-def test_rotation_view_scales_by_the_norm_squared_and_survives_a_zero_axis():
-    view = qv.rotation_view()
+def test_quaternion_rotation_view_scales_by_the_norm_squared_and_survives_a_zero_axis():
+    view = qv.quaternion_rotation_view()
     r = view.set_values(ax=1.0, ay=0.0, az=0.0, angle=40.0, size=1.2)
     assert np.isclose(r["scale"], 1.44) and np.isclose(np.linalg.norm(r["image"][0]), 0.9 * 1.44)
     assert "scaling by |q|² = 1.440" in r["status"]

@@ -9,7 +9,7 @@ from goldman_lib.views import subdivision_surfaces as views
 
 
 def test_viewer_draws_the_library_mesh_and_replaces_geometry_in_place():
-    view = views.subdivision_viewer()
+    view = views.subdivision_surface_view()
     geom = view.scene._items["surface"]["geometry"]
     position = geom.attributes["position"]
     for name in views.MESHES:
@@ -30,7 +30,7 @@ def test_viewer_draws_the_library_mesh_and_replaces_geometry_in_place():
 
 
 def test_viewer_status_reports_counts_and_extraordinary_valences():
-    view = views.subdivision_viewer()
+    view = views.subdivision_surface_view()
     status = view.update(mesh="cube", scheme="quad", level=1)["status"]
     assert "V=26, E=48, F=24, V-E+F=2" in status and "extraordinary valences 3" in status
     assert "extraordinary valences 5" in view.update(mesh="star (valence 5)", scheme="quad", level=2)["status"]
@@ -53,15 +53,15 @@ def test_static_pictures():
 
 def test_factories_reject_bad_arguments():
     with pytest.raises(ValueError, match="mesh must be one of"):
-        views.subdivision_viewer(mesh="torus")
+        views.subdivision_surface_view(mesh="torus")
     with pytest.raises(ValueError, match="scheme must be"):
-        views.subdivision_viewer(scheme="loop")
+        views.subdivision_surface_view(scheme="loop")
     with pytest.raises(ValueError, match="level must be <= 4"):
-        views.subdivision_viewer(level=7)
+        views.subdivision_surface_view(level=7)
 
 
 def test_viewer_rule_picker_draws_the_library_rule():
-    view = views.subdivision_viewer(mesh="tetrahedron", scheme="triangle", level=2)
+    view = views.subdivision_surface_view(mesh="tetrahedron", scheme="triangle", level=2)
     for rule in ss.VERTEX_RULES:
         result = view.set_values(rule=rule)
         expected = ss.centroid_averaging(ss.tetrahedron(), 2, scheme="triangle", rule=rule)
@@ -72,7 +72,7 @@ def test_viewer_rule_picker_draws_the_library_rule():
     np.testing.assert_allclose(quad["vertices"], ss.centroid_averaging(ss.tetrahedron(), 2, scheme="quad").vertices)
     assert "vertex rules are the triangle scheme's" in quad["status"]
     with pytest.raises(ValueError, match="rule must be one of"):
-        views.subdivision_viewer(rule="butterfly")
+        views.subdivision_surface_view(rule="butterfly")
 
 
 def test_cone_pictures_are_the_library_ratios():
@@ -82,3 +82,18 @@ def test_cone_pictures_are_the_library_ratios():
         np.testing.assert_allclose(ratios[label], ss.cone_ratios(make(), 3, 0, scheme=scheme, rule=rule))
     fig = views.plot_rule_comparison(level=2)
     assert len(fig.axes) == len(ss.VERTEX_RULES)
+
+
+def test_angle_defect_picture_shows_the_library_defects():
+    import matplotlib.pyplot as plt
+
+    from goldman_lib import subdivision_surfaces as ss
+
+    fig = plt.figure()
+    out = views.plot_angle_defects(level=2, fig=fig)
+    assert list(out) == list(ss.VERTEX_RULES)
+    for rule, d in out.items():
+        np.testing.assert_allclose(d, ss.angle_defects(ss.centroid_averaging(ss.tetrahedron(), 2, "triangle", rule=rule)))
+    assert out["centroid"][:4] == pytest.approx([np.pi] * 4) and out["warren"][:4].max() < 0.1
+    assert len([ax for ax in fig.axes if ax.name == "3d"]) == 3 and len(fig.axes) == 4      # and a colour bar
+    plt.close(fig)

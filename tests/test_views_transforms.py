@@ -15,8 +15,8 @@ def test_letter_f_is_three_boxes_without_mirror_symmetry():
     assert not np.allclose(np.sort(mirrored, axis=0), np.sort(V, axis=0))
 
 
-def test_rotation_view_draws_the_library_rotation_and_the_axis():
-    view = tv.rotation_view()
+def test_axis_rotation_view_draws_the_library_rotation_and_the_axis():
+    view = tv.axis_rotation_view()
     r = view.set_values(ax=0.0, ay=0.0, az=1.0, angle=90.0, px=1.0, py=0.0, pz=0.0)
     # 90 degrees about the vertical line through (1, 0, 0): (x, y, z) -> (1 - y, x - 1, z), by hand
     V = tv.F_VERTICES

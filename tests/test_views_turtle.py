@@ -67,8 +67,8 @@ PROGRAMS_BAD = ["REPEAT 3 [FORWARD", "FORWARD abc", "TURN 1e400", "REPEAT 1000 [
                 "REPEAT 3.5 [TURN 1]", "forward\n\n   ", "TURN 90 TURN"]
 
 
-def test_program_editor_sweep_and_good_programs():
-    view = tv.program_editor()
+def test_turtle_program_editor_sweep_and_good_programs():
+    view = tv.turtle_program_editor()
     for values in view.sweep_values():
         _check_drawn(view.update(**values))
     for program in PROGRAMS_OK:
@@ -79,12 +79,12 @@ def test_program_editor_sweep_and_good_programs():
 
 
 @pytest.mark.parametrize("program", PROGRAMS_BAD)
-def test_program_editor_garbage_raises_value_error_and_refresh_keeps_last_drawing(program):
-    view = tv.program_editor("FORWARD 1 TURN 90 FORWARD 1")
+def test_turtle_program_editor_garbage_raises_value_error_and_refresh_keeps_last_drawing(program):
+    view = tv.turtle_program_editor("FORWARD 1 TURN 90 FORWARD 1")
     before = np.array(view.figure.axes[0].lines[0].get_xydata())
     with pytest.raises(ValueError):
         view.update(program=program)
-    view = tv.program_editor("FORWARD 1 TURN 90 FORWARD 1")
+    view = tv.turtle_program_editor("FORWARD 1 TURN 90 FORWARD 1")
     view.controls["program"].value = program  # the widget path: refresh swallows the error
     assert view.last_error is not None and "Traceback" not in view.status.value
     assert view.last_error.split(":")[0] in ("TurtleSyntaxError", "ValueError")
@@ -93,15 +93,15 @@ def test_program_editor_garbage_raises_value_error_and_refresh_keeps_last_drawin
     assert view.last_error is None
 
 
-def test_program_editor_example_picker_fills_the_box():
-    view = tv.program_editor()
+def test_turtle_program_editor_example_picker_fills_the_box():
+    view = tv.turtle_program_editor()
     view.examples.value = "hexagon"
     assert view.controls["program"].value == turtle.polygon(6, 1)
     assert len(view.last_result["polylines"]) == 1
 
 
 def test_static_png_and_plot_functions():
-    for view in (tv.polygon_explorer(), tv.program_editor()):
+    for view in (tv.polygon_explorer(), tv.turtle_program_editor()):
         png = view.static_png()
         assert png.startswith(PNG_MAGIC) and len(png) > 2000
         assert "image/png" in view._repr_mimebundle_()
@@ -116,7 +116,7 @@ def test_static_png_and_plot_functions():
 
 
 def test_callbacks_are_fast_at_default_sizes():
-    for view in (tv.polygon_explorer(), tv.program_editor()):
+    for view in (tv.polygon_explorer(), tv.turtle_program_editor()):
         values = view.values()
         view.update(**values)
         start = time.perf_counter()

@@ -57,6 +57,21 @@ def test_every_views_module_has_a_widget_factory():
     assert not missing, f"views modules without a widget factory (annotate it -> InteractiveView): {missing}"
 
 
+def test_no_two_factories_share_a_name():
+    """A factory's name says what it shows without its module (``bezier_subdivision_view``,
+    ``bspline_subdivision_view``, ``subdivision_surface_view``; ``turtle_program_editor`` and
+    ``codo_program_editor``, both built by the one shared program editor)."""
+    from collections import Counter
+
+    names = Counter(name.split(".")[1] for name, _ in interactive.discover_factories())
+    shared = sorted(n for n, c in names.items() if c > 1)
+    assert not shared, f"widget factories sharing a name across views modules: {shared}"
+
+
+def test_private_views_modules_hold_no_discovered_factory():
+    assert not [name for name, _ in interactive.discover_factories() if name.startswith("_")]
+
+
 def test_dropdown_helper_matches_the_slider_style():
     w = interactive.dropdown("map", [("one", 1), ("two", 2)])
     assert w.value == 1 and w.description == "map" and w.style.description_width == "48px"

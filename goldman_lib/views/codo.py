@@ -4,7 +4,7 @@ made visible (Goldman §5.1-5.2).
 Both factories return an :class:`~goldman_lib.views.interactive.InteractiveView` whose
 ``update`` is a plain function returning what it drew.
 
->>> view = program_editor()
+>>> view = codo_program_editor()
 >>> out = view.update(**view.values())
 >>> len(out["polylines"]), out["dots"].shape
 (5, (10, 2))
@@ -17,10 +17,11 @@ import numpy as np
 from goldman_lib import affine, codo, turtle
 from goldman_lib.views import style
 from goldman_lib.views import _checks
+from goldman_lib.views._program_editor import program_editor
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
 from goldman_lib.views.turtle import stroke_data
 
-__all__ = ["DEFAULT_PROGRAM", "TRY_PROGRAM", "plot_drawing", "plot_program", "program_editor", "TURTLE_PROGRAMS",
+__all__ = ["DEFAULT_PROGRAM", "TRY_PROGRAM", "plot_drawing", "plot_program", "codo_program_editor", "TURTLE_PROGRAMS",
            "turtle_shortcoming_view"]
 
 #: The program the editor opens with: the regular pentagon of §5.2.2.
@@ -91,8 +92,9 @@ _HELP = ("<small><code>P = point(x, y)</code>, <code>v = vector(x, y)</code>, <c
          f'<code class="goldman-example">{TRY_PROGRAM}</code></small>')
 
 
-def program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> InteractiveView:
-    """A text box for a CODO program with live drawing (Goldman §5.2).
+def codo_program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> InteractiveView:
+    """A text box for a CODO program with live drawing (Goldman §5.2); the course's one program
+    editor (:mod:`goldman_lib.views._program_editor`, shared with the turtle) running CODO.
 
     program: the initial text.  A program that does not parse or run leaves the last good
     drawing and shows the message ("line 3, column 7, at '+': ...") in the status line.  An
@@ -100,46 +102,30 @@ def program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> 
     :data:`goldman_lib.codo.SAMPLES`.  ``update(program)`` returns ``{"polylines", "dots",
     "status"}`` and raises :class:`goldman_lib.codo.CodoError` (a ValueError) for a bad program.
 
-    >>> program_editor("P = point(0, 0)\\nQ = P + P").last_error.split(": ")[0]
+    >>> codo_program_editor("P = point(0, 0)\\nQ = P + P").last_error.split(": ")[0]
     'CodoTypeError'
     """
-    import ipywidgets as widgets
+    def make_runner(ax):
+        artists = _DrawingArtists(ax)
 
-    if not isinstance(program, str):
-        raise TypeError(f"program must be a string; got {type(program).__name__}")
-    box = widgets.Textarea(value=program, continuous_update=False, rows=10,
-                           layout=widgets.Layout(width="330px", height="200px"))
-    picker = widgets.Dropdown(options=["(samples)"] + list(codo.SAMPLES), value="(samples)",
-                              layout=widgets.Layout(width="330px"))
+        def run(program):
+            d = codo.execute(program)
+            dots = artists.set(d.polylines)
+            n = len(d.polylines)
+            kinds = {}
+            for v in d.variables.values():
+                k = type(v).__name__.lower().replace("ndarray", "map").replace("float", "number")
+                kinds[k] = kinds.get(k, 0) + 1
+            held = ", ".join(f"{c} {k}{'s' * (c != 1)}" for k, c in sorted(kinds.items()))
+            status = (f"{d.steps} statement{'s' * (d.steps != 1)} run; {n} polyline{'s' * (n != 1)} through "
+                      f"{len(dots)} dots; variables: {held or 'none'}")
+            return {"polylines": d.polylines, "dots": dots, "status": status}
 
-    def pick(change):
-        if change["new"] in codo.SAMPLES:
-            box.value = codo.SAMPLES[change["new"]]
+        return run
 
-    picker.observe(pick, names="value")
-    fig, ax = style.new_axes(figsize)
-    artists = _DrawingArtists(ax)
-
-    def update(program):
-        if not isinstance(program, str):
-            raise TypeError(f"program must be a string; got {type(program).__name__}")
-        d = codo.execute(program)
-        dots = artists.set(d.polylines)
-        n = len(d.polylines)
-        kinds = {}
-        for v in d.variables.values():
-            k = type(v).__name__.lower().replace("ndarray", "map").replace("float", "number")
-            kinds[k] = kinds.get(k, 0) + 1
-        held = ", ".join(f"{c} {k}{'s' * (c != 1)}" for k, c in sorted(kinds.items()))
-        status = (f"{d.steps} statement{'s' * (d.steps != 1)} run; {n} polyline{'s' * (n != 1)} through "
-                  f"{len(dots)} dots; variables: {held or 'none'}")
-        return {"polylines": d.polylines, "dots": dots, "status": status}
-
-    view = InteractiveView(controls={"program": box}, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="CODO program editor", side=True,
-                           extra=[picker, widgets.HTML(_HELP, layout=widgets.Layout(width="330px"))])
-    view.examples = picker
-    return view
+    return program_editor(program, make_runner=make_runner, examples=codo.SAMPLES, help_html=_HELP,
+                          title="CODO program editor", picker_label="(samples)", rows=10, height="200px",
+                          figsize=figsize)
 
 
 #: Turtle programs the shortcoming view offers.

@@ -30,7 +30,7 @@ import math
 
 import numpy as np
 
-from goldman_lib import affine, fractals, turtle
+from goldman_lib import affine, fixed_point, fractals, turtle
 from goldman_lib import conformal_ifs as cf
 from goldman_lib.validation import as_float, as_int
 from goldman_lib.views import style
@@ -55,11 +55,17 @@ def _heading(angle: float, scale: float) -> np.ndarray:
     return scale * np.array([math.cos(a), math.sin(a)])
 
 
-def _fit(ax, polylines, extra=(), pad: float = 0.08):
-    """Equal scales on both axes, fitted to the strokes (and extra points), box unchanged."""
+def _bounds(polylines, extra=()) -> np.ndarray:
+    """``[[xmin, ymin], [xmax, ymax]]`` of the strokes and extra points (one pass, for both panels)."""
     parts = [np.asarray(p, float) for p in polylines if len(p)] + [np.asarray(e, float).reshape(-1, 2) for e in extra]
     xy = np.concatenate(parts) if parts else np.zeros((1, 2))
-    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    return np.array([xy.min(axis=0), xy.max(axis=0)])
+
+
+def _fit(ax, polylines, extra=(), pad: float = 0.08, bounds=None):
+    """Equal scales on both axes, fitted to the strokes (and extra points), or to ``bounds`` from
+    :func:`_bounds`; box unchanged."""
+    lo, hi = _bounds(polylines, extra) if bounds is None else bounds
     span = np.maximum(hi - lo, 1e-6) * (1 + 2 * pad)
     mid = (lo + hi) / 2
     box = ax.get_position()
@@ -230,6 +236,7 @@ def _two_panels():
     left, right = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
     for ax in (left, right):
         style.style_axes(ax, equal=False)
+        style.few_ticks(ax)       # drawings, not graphs: a few ticks, and a slider move redraws faster
     return fig, left, right
 
 
@@ -268,8 +275,8 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
     arrow = _state_arrow(left, style.PALETTE["point"])
     piece_lines = [right.plot([], [], color=c, linewidth=0.9)[0] for c in _COLOURS]
     (cond_line,) = right.plot([], [], color=_GREY, linewidth=0.9)
-    left_title = left.set_title("", fontsize=10)
-    right_title = right.set_title("", fontsize=10)
+    left_title = left.set_title("", fontsize=10, y=1.0)
+    right_title = right.set_title("", fontsize=10, y=1.0)
     cache: dict = {}
 
     def update(fractal, level, x, y, angle, scale):
@@ -294,11 +301,12 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
             line.set_data(*stroke_data(group))
         cond_line.set_data(*stroke_data(cond))
         drawn = [p for piece in pieces for p in piece] + cond
+        box = _bounds(strokes + drawn, extra=[[x, y], [x + w[0], y + w[1]]])
         for ax in (left, right):
-            _fit(ax, strokes + drawn, extra=[[x, y], [x + w[0], y + w[1]]])
+            _fit(ax, (), bounds=box)
         distance = cf.drawing_distance(strokes, drawn)
         k = len(conv.maps)
-        scales = sorted({round(float(np.sqrt(abs(np.linalg.det(M[:2, :2])))), 4) for M in conv.maps})
+        scales = sorted({round(float(f), 4) for f in fixed_point.contraction_factor(conv.maps)})
         left_title.set_text(f"turtle: {program.name}, level {lev}")
         right_title.set_text(f"IFS (Ron's algorithm): {k} maps, level {lev}")
         status = (f"Ron's algorithm: {k} similarities with scale {', '.join(f'{s:g}' for s in scales)}"
@@ -360,8 +368,8 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
     fig.set_size_inches(style.WIDE_FIGSIZE[0], 3.4)
     (turtle_line,) = left.plot([], [], color=style.PALETTE["curve"], linewidth=0.9)
     (ifs_line,) = right.plot([], [], color=style.PALETTE["good"], linewidth=0.9)
-    left_title = left.set_title("", fontsize=10)
-    right_title = right.set_title("", fontsize=10)
+    left_title = left.set_title("", fontsize=10, y=1.0)
+    right_title = right.set_title("", fontsize=10, y=1.0)
     text = widgets.HTML(layout=widgets.Layout(width="960px"))
     unit = np.array([[0.0, 0.0], [1.0, 0.0]])
 
@@ -392,8 +400,9 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
             return clear("the drawing leaves the screen: make the maps contractions")
         turtle_line.set_data(*stroke_data(strokes))
         ifs_line.set_data(*stroke_data(drawn))
+        box = _bounds(strokes + drawn)
         for ax in (left, right):
-            _fit(ax, strokes + drawn)
+            _fit(ax, (), bounds=box)
         distance = cf.drawing_distance(strokes, drawn)
         ptext = _program_text(program)
         text.value = ("<pre style='font-size:11px;line-height:1.25;margin:0'>"
@@ -446,8 +455,8 @@ def bump_view(bump: str = "Koch curve", level: int = 4, height: float = 1.0) -> 
     (ifs_line,) = right.plot([], [], color=style.PALETTE["good"], linewidth=0.9)
     bump_lines = [ax.plot([], [], "--o", color=style.PALETTE["accent"], linewidth=1.0, markersize=3)[0]
                   for ax in (left, right)]
-    left_title = left.set_title("", fontsize=10)
-    right_title = right.set_title("", fontsize=10)
+    left_title = left.set_title("", fontsize=10, y=1.0)
+    right_title = right.set_title("", fontsize=10, y=1.0)
 
     def update(bump, level, height):
         poly, rev = cf.BUMPS[_checks.option(cf.BUMPS, bump, "bump")]
@@ -468,10 +477,11 @@ def bump_view(bump: str = "Koch curve", level: int = 4, height: float = 1.0) -> 
         ifs_line.set_data(*stroke_data(drawn))
         for line in bump_lines:
             line.set_data(poly[:, 0], poly[:, 1])
+        box = _bounds(strokes + drawn + [poly])
         for ax in (left, right):
-            _fit(ax, strokes + drawn + [poly])
+            _fit(ax, (), bounds=box)
         distance = cf.drawing_distance(strokes, drawn)
-        scales = np.sqrt(np.abs(np.linalg.det(system.maps[:, :2, :2])))
+        scales = fixed_point.contraction_factor(system.maps)    # a similarity's scale (§7.3.3)
         try:
             dimension = fractals.similarity_dimension(scales)
             dim_text = f"similarity dimension {dimension:.4f}"

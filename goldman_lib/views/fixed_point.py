@@ -101,6 +101,8 @@ def relaxation_view(method: str = "Jacobi", steps: int = 6, diagonal: float = 3.
     path = ax.plot([], [], "o-", color=style.PALETTE["point"], markersize=3, linewidth=1)[0]
     ax.legend(fontsize=8, loc="upper right", frameon=False)
     res_line = axr.semilogy([1], [1], "o-", color=style.PALETTE["point"], markersize=3)[0]
+    for a in (ax, axr):
+        style.few_ticks(a)        # tick labels are most of a redraw: a few, and decades without minor ticks
     axr.set_xlabel("iteration")
     axr.set_ylabel("residual ||b - A x||")
     b = np.array([1.0, 2.0])
@@ -131,7 +133,7 @@ def relaxation_view(method: str = "Jacobi", steps: int = 6, diagonal: float = 3.
         # the axis follows the data, so the slope (the rate, a factor per step) is visible
         axr.set_ylim(max(float(res.min()) / 4, 1e-17), max(float(res.max()) * 4, 1e-15))
         dominant = fp.is_diagonally_dominant(A)
-        ax.set_title(f"{method}, d = {diagonal:.2f} ({'' if dominant else 'not '}diagonally dominant)", fontsize=10)
+        ax.set_title(f"{method}, d = {diagonal:.2f} ({'' if dominant else 'not '}diagonally dominant)", fontsize=10, y=1.0)
         return {"iterates": hist, "residuals": res, "solution": exact,
                 "status": f"step {len(hist) - 1}: x = ({hist[-1][0]:.6g}, {hist[-1][1]:.6g}), residual {res[-1]:.2e}; "
                           f"exact solution ({exact[0]:.6g}, {exact[1]:.6g})"}
@@ -171,6 +173,8 @@ def fractal_theorem_view(system: str = "Sierpinski gasket", start: str = "unit s
     iterate = ax.plot([], [], ".", color=style.PALETTE["point"], markersize=2)[0]
     dist_line = axh.semilogy([0], [1], "o-", color=style.PALETTE["curve"], label="h(W^n(A0), A)")[0]
     bound_line = axh.semilogy([0], [1], "--", color=style.PALETTE["accent"], label="s^n h(A0, A)")[0]
+    for a in (ax, axh):
+        style.few_ticks(a)        # tick labels are most of a redraw: a few, and decades without minor ticks
     now = axh.axvline(0, color="#999999", linewidth=0.8)
     axh.set_xlabel("level n")
     axh.legend(fontsize=8, frameon=False)
@@ -205,8 +209,8 @@ def fractal_theorem_view(system: str = "Sierpinski gasket", start: str = "unit s
         now.set_xdata([n, n])
         axh.set_xlim(-0.3, ks[-1] + 0.3)
         axh.set_ylim(max(1e-4, float(np.maximum(r.distances, 1e-6).min()) / 2), float(r.bounds[0]) * 2)
-        ax.set_title(f"W^{n}(A0), {len(S):,} points", fontsize=10)
-        axh.set_title(f"contraction factor s = {r.factor:.3f}", fontsize=10)
+        ax.set_title(f"W^{n}(A0), {len(S):,} points", fontsize=10, y=1.0)
+        axh.set_title(f"contraction factor s = {r.factor:.3f}", fontsize=10, y=1.0)
         capped = f" (level {level} capped at {n})" if n < level else ""
         return {"iterate": S, "distances": r.distances, "bounds": r.bounds,
                 "status": f"level {n}{capped}: h(W^n(A0), A) = {r.distances[n]:.4f} <= s^n h(A0, A) = "

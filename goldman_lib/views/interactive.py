@@ -286,7 +286,8 @@ def _checked(update: Callable[..., dict], controls: Mapping[str, widgets.Widget]
 
 def discover_factories() -> list[tuple[str, Callable[[], "InteractiveView"]]]:
     """Every public widget factory of ``goldman_lib.views``, found by its return annotation
-    (``-> InteractiveView``), as ``("module.name", factory)`` pairs sorted by name.
+    (``-> InteractiveView``), as ``("module.name", factory)`` pairs sorted by name.  Private
+    modules (``_program_editor``) hold shared builders, not chapters' widgets, and are skipped.
 
     The widget sweeps (tests) and the callback benchmark both use this list, so a new chapter's
     widgets are swept and timed as soon as their factories exist.
@@ -299,6 +300,8 @@ def discover_factories() -> list[tuple[str, Callable[[], "InteractiveView"]]]:
 
     found = []
     for info in pkgutil.iter_modules(views_pkg.__path__):
+        if info.name.startswith("_"):
+            continue  # private modules (_checks, _program_editor) are helpers the chapters' views share
         module = importlib.import_module(f"goldman_lib.views.{info.name}")
         for name, fn in inspect.getmembers(module, inspect.isfunction):
             if fn.__module__ != module.__name__ or name.startswith("_"):

@@ -5,7 +5,7 @@ editor (Goldman §28.3-28.4).
 Plot functions take ``ax=None`` and return their artists; widget factories return an
 :class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a plain function.
 
->>> view = subdivision_view()
+>>> view = bspline_subdivision_view()
 >>> sorted(view.update(**view.values()))
 ['curve', 'distance', 'labels', 'polygon', 'status']
 """
@@ -26,7 +26,7 @@ from goldman_lib.views.interactive import (
 )
 
 __all__ = ["DEFAULT_POLYGON", "DEFAULT_KNOTS", "DEFAULT_DEGREE", "plot_bspline", "plot_polygon",
-           "plot_knot_points", "plot_pieces", "boehm_view", "oslo_view", "subdivision_view",
+           "plot_knot_points", "plot_pieces", "boehm_view", "oslo_view", "bspline_subdivision_view",
            "insertion_editor", "render_view", "DEFAULT_SECOND"]
 
 #: The cubic B-spline of the chapter: seven control points, clamped, three interior knots.
@@ -53,21 +53,6 @@ def _knot_points(ctrl, knots, degree):
     lo, hi = t[degree], t[t.size - degree - 1]
     inner = np.unique(t[(t >= lo) & (t <= hi)])
     return bspline.de_boor(ctrl, t, degree, inner)
-
-
-def _polygon_gap(Q, p, closed=False, knots=None) -> float:
-    """max |Q_i - C(xi_i)| over the control points (Greville abscissae xi_i), §28.4.3; a closed
-    polygon is unrolled twice on integer knots so that every point has its abscissa in the domain."""
-    if closed:
-        ext = np.vstack([Q, Q])
-        t = np.arange(len(ext) + p + 1, dtype=float)
-    else:
-        ext, t = Q, np.asarray(knots, dtype=float)
-    xi = ki.greville(t, p)
-    lo, hi = bspline.domain(t, p)
-    inside = (xi >= lo) & (xi <= hi)
-    C = bspline.de_boor(ext, t, p, xi[inside])
-    return float(np.linalg.norm(ext[inside] - C, axis=1).max())
 
 
 _LABEL_LIMIT = 16      # more points than this get no blossom labels (they would overlap)
@@ -288,7 +273,7 @@ def oslo_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT_D
 _ALGORITHMS = ("Lane-Riesenfeld (uniform)", "Lane-Riesenfeld (closed)", "Schaefer (clamped)")
 
 
-def subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: int = 1, rnd: int | None = None,
+def bspline_subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: int = 1, rnd: int | None = None,
                      algorithm: str = "Schaefer (clamped)", max_level: int = 6, max_degree: int = 5) -> InteractiveView:
     """An insertion-level slider for Lane-Riesenfeld and Schaefer subdivision (Goldman §28.4).
 
@@ -326,10 +311,8 @@ def subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: 
         key = ("curve", alg, p)
         if key not in cache:
             if alg.endswith("(closed)"):
-                m = len(ctrl)
-                ext = np.vstack([ctrl, ctrl[:p]])
-                t = np.arange(m + 2 * p + 1, dtype=float)
-                cache[key] = (bspline.de_boor(ext, t, p, np.linspace(p, m + p, 240)), ext, t)
+                ext, t = ki.closed_curve(ctrl, p)
+                cache[key] = (bspline.de_boor(ext, t, p, np.linspace(*bspline.domain(t, p), 240)), ext, t)
             elif alg.startswith("Lane"):
                 t = np.arange(len(ctrl) + p + 1, dtype=float)
                 cache[key] = (bspline.de_boor(ctrl, t, p, np.linspace(p, len(ctrl), 240)), ctrl, t)
@@ -370,7 +353,7 @@ def subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, level: 
         poly.set_marker("o" if len(P) <= _MARKER_LIMIT else "None")   # hundreds of markers cost Agg time
         curve.set_data(crv[:, 0], crv[:, 1])
         # distance of the finished level's control points from the curve at their Greville abscissae
-        d = _polygon_gap(finished, p, closed=closed, knots=knots_now)
+        d = ki.control_polygon_distance(finished, knots_now, p, closed=closed, skip_outside=True)
         if L >= 1 and r < p:
             dist_text = (f"showing round {r} of {p} (doubled, then {r} averaging step{'s' if r != 1 else ''}); "
                          f"finished polygon {d:.4f} from the curve")

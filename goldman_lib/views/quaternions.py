@@ -24,7 +24,7 @@ from goldman_lib.views.drag import drag_sliders
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.vectors3d import COLOURS, VectorScene
 
-__all__ = ["complex_plane_view", "rotation_view", "key_frame_view", "FIGURE_F", "BODY_ARROWS", "KEY_SETS",
+__all__ = ["complex_plane_view", "quaternion_rotation_view", "key_frame_view", "FIGURE_F", "BODY_ARROWS", "KEY_SETS",
            "BRICK", "FRAMES"]
 
 #: The asymmetric figure the complex numbers act on: a letter F (a closed outline), away from the origin.
@@ -132,7 +132,7 @@ def complex_plane_view(re: float = 0.9, im: float = 0.5) -> InteractiveView:
 
 # -- §15.3.2 and §15.3.6 --------------------------------------------------------------------------------
 
-def rotation_view(ax: float = 1.0, ay: float = 1.0, az: float = 0.5, angle: float = 110.0,
+def quaternion_rotation_view(ax: float = 1.0, ay: float = 1.0, az: float = 0.5, angle: float = 110.0,
                   size: float = 1.0) -> InteractiveView:
     """The conformal map ``v -> q v q*`` of the quaternion ``q = size (cos(θ/2), sin(θ/2) u)``, u
     the unit vector along the axis (ax, ay, az) (Goldman §15.3.2): the axis in orange, a body of
@@ -144,7 +144,7 @@ def rotation_view(ax: float = 1.0, ay: float = 1.0, az: float = 0.5, angle: floa
     ``update(ax, ay, az, angle, size)`` returns ``{"q" (4,), "image" (3, 3), "matrix" (4, 4),
     "scale", "status"}``.  A zero axis shows a message and leaves the body unmoved.
 
-    >>> r = rotation_view().set_values(ax=0.0, ay=0.0, az=1.0, angle=90.0, size=1.0)
+    >>> r = quaternion_rotation_view().set_values(ax=0.0, ay=0.0, az=1.0, angle=90.0, size=1.0)
     >>> (np.round(r["image"][0], 12) + 0.0).tolist()
     [0.0, 0.9, 0.0]
     """

@@ -4,7 +4,7 @@ three.js subdivision viewer with a mesh picker, a scheme picker and a level slid
 Plot functions take ``ax=None`` and return their artists; widget factories return an
 :class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a plain function.
 
->>> view = subdivision_viewer()
+>>> view = subdivision_surface_view()
 >>> sorted(view.update(**view.values()))
 ['control', 'euler', 'status', 'triangles', 'vertices']
 """
@@ -21,8 +21,9 @@ from goldman_lib.views.interactive import InteractiveView, figure_widget, int_sl
 from goldman_lib.views.three import SceneView
 
 __all__ = ["MESHES", "DEFAULT_POLYGON", "plot_polygon_levels", "plot_mesh", "plot_quad_stencils",
-           "plot_triangle_stencils", "plot_cone_ratios", "plot_rule_comparison", "split_and_average_view",
-           "subdivision_viewer", "CONE_CASES"]
+           "plot_triangle_stencils", "plot_cone_ratios", "plot_rule_comparison", "plot_angle_defects",
+           "split_and_average_view",
+           "subdivision_surface_view", "CONE_CASES"]
 
 #: The meshes of the viewer, by the name the picker shows.
 MESHES = {
@@ -56,7 +57,7 @@ def plot_polygon_levels(ctrl, degree: int, levels: int, ax=None, closed: bool = 
 
 def plot_mesh(mesh: ss.Mesh, ax=None, color=None, edges: bool = True, control: ss.Mesh | None = None):
     """Draw a 3D mesh with matplotlib (flat-shaded faces, optional edges and control mesh); returns
-    the axes.  For static pictures; the live view is :func:`subdivision_viewer`."""
+    the axes.  For static pictures; the live view is :func:`subdivision_surface_view`."""
     from matplotlib.colors import to_rgb
     from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
@@ -197,6 +198,56 @@ def plot_rule_comparison(mesh: ss.Mesh | None = None, level: int = 4, fig=None, 
     return fig
 
 
+def plot_angle_defects(mesh: ss.Mesh | None = None, level: int = 4, fig=None):
+    """Curvature colours (Goldman §30.4.2): the same triangle mesh (default: the tetrahedron) after
+    ``level`` levels under each vertex rule of :data:`~goldman_lib.subdivision_surfaces.VERTEX_RULES`,
+    every face coloured by the largest angle defect of its corners
+    (:func:`goldman_lib.subdivision_surfaces.angle_defects`, the discrete Gaussian curvature) on one
+    log scale, and the vertices whose defect is above 0.5 rad (a cone point) marked.  The book's
+    rule keeps the whole defect pi of each valence-3 corner at one point -- a cone -- while
+    Warren's and Loop's rules spread it out and each vertex's share fades.  Returns ``{rule: defects (V,)}``; the figure is
+    ``fig`` (default: a new wide one)."""
+    from matplotlib import cm, colors
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    mesh = ss.tetrahedron() if mesh is None else mesh
+    level = as_int(level, "level", minimum=0, maximum=5)
+    fig = style.new_figure(figsize=style.WIDE_FIGSIZE) if fig is None else fig
+    names = {"centroid": "book's rule", "warren": "Warren: 3/16 at n = 3", "loop": "Loop's beta(n)"}
+    norm = colors.LogNorm(vmin=1e-4, vmax=np.pi)
+    import matplotlib
+
+    cmap = matplotlib.colormaps["magma"]
+    out = {}
+    axes = []
+    for k, rule in enumerate(ss.VERTEX_RULES):
+        m = ss.centroid_averaging(mesh, level, "triangle", rule=rule)
+        d = ss.angle_defects(m)
+        out[rule] = d
+        ax = fig.add_subplot(1, len(ss.VERTEX_RULES), k + 1, projection="3d")
+        axes.append(ax)
+        V, T = m.vertices, m.triangles()
+        face_value = np.clip(np.abs(d)[T].max(axis=1), norm.vmin, norm.vmax)
+        ax.add_collection3d(Poly3DCollection(V[T], facecolors=cmap(norm(face_value)), edgecolors="#00000022",
+                                             linewidths=0.2))
+        sharp = np.abs(d) > 0.5         # a cone: a whole finite angle at one point
+        if sharp.any():
+            ax.scatter(*V[sharp].T, s=28, color=cmap(norm(np.abs(d[sharp]))), edgecolors="white", linewidths=0.6,
+                       depthshade=False)
+        lo, hi = V.min(0), V.max(0)
+        mid, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9)
+        ax.set_xlim(mid[0] - half, mid[0] + half)
+        ax.set_ylim(mid[1] - half, mid[1] + half)
+        ax.set_zlim(mid[2] - half, mid[2] + half)
+        ax.set_box_aspect((1, 1, 1))
+        ax.view_init(elev=28, azim=-55)
+        ax.set_axis_off()
+        ax.set_title(f"{names[rule]}, level {level}\nlargest defect {np.abs(d).max():.3g}", fontsize=9)
+    fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), ax=axes, shrink=0.6, pad=0.02,
+                 label="angle defect (rad)")
+    return out
+
+
 # -- widgets ------------------------------------------------------------------------------------
 def split_and_average_view(ctrl=DEFAULT_POLYGON, degree: int = 3, levels: int = 3, max_degree: int = 6,
                            max_levels: int = 6) -> InteractiveView:
@@ -232,7 +283,7 @@ def split_and_average_view(ctrl=DEFAULT_POLYGON, degree: int = 3, levels: int = 
                            title="split and average (Lane-Riesenfeld)")
 
 
-def subdivision_viewer(mesh: str = "cube", scheme: str = "quad", level: int = 2, max_level: int = 4,
+def subdivision_surface_view(mesh: str = "cube", scheme: str = "quad", level: int = 2, max_level: int = 4,
                        width: int = 480, height: int = 360, rule: str = "centroid") -> InteractiveView:
     """A three.js view of centroid averaging (Goldman §30.3-30.4): pick a mesh, a scheme (quad or
     triangle) and a level; the subdivided mesh is drawn over its control mesh (grey segments).

@@ -11,7 +11,7 @@ plane of projection) shows the reason in the status line and draws the F unmoved
 >>> V, T, E = letter_f()
 >>> V.shape, T.shape, E.shape
 ((24, 3), (36, 3), (36, 2))
->>> view = rotation_view()
+>>> view = axis_rotation_view()
 >>> sorted(view.update(**view.values()))
 ['axis', 'image', 'path', 'status']
 >>> view.update(**{**view.values(), "ax": 0.0, "ay": 0.0, "az": 0.0})["status"].startswith("no rotation")
@@ -28,7 +28,7 @@ from goldman_lib import transforms, vector_geometry, vectors
 from goldman_lib.views.interactive import InteractiveView, dropdown, float_slider
 from goldman_lib.views.vectors3d import COLOURS, VectorScene
 
-__all__ = ["letter_f", "rotation_view", "mirror_view", "scaling_view", "projection_view", "matrix_html", "MAPS",
+__all__ = ["letter_f", "axis_rotation_view", "mirror_view", "scaling_view", "projection_view", "matrix_html", "MAPS",
            "composition_view", "perspective_matrix_view"]
 
 _GREY = "#9a9a9a"
@@ -103,7 +103,7 @@ def _unit_for_drawing(v):
 
 # -- §12.3 rotation about an axis through a point ------------------------------------------------------
 
-def rotation_view(axis=(0.3, 0.2, 1.0), angle=75.0, point=(1.0, 0.3, 0.0)) -> InteractiveView:
+def axis_rotation_view(axis=(0.3, 0.2, 1.0), angle=75.0, point=(1.0, 0.3, 0.0)) -> InteractiveView:
     """The F rotated by ``angle`` degrees about the line through ``point`` along ``axis``
     (Goldman §12.3, Rodrigues' formula, :func:`goldman_lib.transforms.rotate`).  The axis is drawn
     as a line, and the tip of the F's top arm leaves the arc it travels along.  The status line

@@ -27,9 +27,10 @@ from goldman_lib import turtle
 from goldman_lib.validation import as_float, as_int, as_points
 from goldman_lib.views import style
 from goldman_lib.views import _checks
+from goldman_lib.views._program_editor import program_editor
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
-__all__ = ["plot_polylines", "plot_program", "polygon_explorer", "program_editor", "EXAMPLES",
+__all__ = ["plot_polylines", "plot_program", "polygon_explorer", "turtle_program_editor", "EXAMPLES",
            "DEFAULT_PROGRAM", "stroke_data", "heading_marker"]
 
 #: The program the editor opens with: a {5/2} star drawn as two nested REPEATs and a MOVE.
@@ -245,54 +246,36 @@ _HELP = ("<small>Commands: <code>FORWARD d</code>, <code>MOVE d</code> (pen up),
          "Press Tab or click outside the box to draw.</small>")
 
 
-def program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> InteractiveView:
-    """A text box for a turtle program with live drawing (Goldman §1.3).
+def turtle_program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> InteractiveView:
+    """A text box for a turtle program with live drawing (Goldman §1.3); the course's one program
+    editor (:mod:`goldman_lib.views._program_editor`, shared with CODO) running the turtle.
 
     program: the initial text.  The turtle starts at ``(0, 0)`` heading ``(1, 0)``.  A program
     that does not parse leaves the last good drawing and shows the parser's message
     ("line 2, column 9: expected ...") in the status line.  An example picker fills the box
     with the programs of :data:`EXAMPLES` (``view.examples``).  ``update(program)`` returns ``{"polylines",
     "point", "direction", "status"}`` and raises ValueError (TurtleSyntaxError) for a program
-    that does not parse or is too long.
+    that does not parse or is longer than :data:`MAX_EDITOR_LENGTH`.
 
-    >>> view = program_editor("FORWARD 1 TURN 90 FORWARD")
+    >>> view = turtle_program_editor("FORWARD 1 TURN 90 FORWARD")
     >>> view.last_error
     'TurtleSyntaxError: line 1, column 26: expected a number after FORWARD, found end of program'
     """
-    import ipywidgets as widgets
+    def make_runner(ax):
+        artists = _PathArtists(ax)
 
-    if not isinstance(program, str):
-        raise TypeError(f"program must be a string; got {type(program).__name__}")
-    box = widgets.Textarea(value=program, continuous_update=False, rows=8,
-                           layout=widgets.Layout(width="330px", height="170px"))
-    picker = widgets.Dropdown(options=["(examples)"] + list(EXAMPLES), value="(examples)",
-                              layout=widgets.Layout(width="330px"))
+        def run(program):
+            t = turtle.trace(program)
+            artists.set(t.polylines, (0.0, 0.0), t.point, t.direction)
+            heading = float(np.degrees(np.arctan2(t.direction[1], t.direction[0])))
+            strokes = len(t.polylines)
+            status = (f"{t.commands} command{'s' * (t.commands != 1)}, {strokes} stroke{'s' * (strokes != 1)}, "
+                      f"total turning {turtle.format_number(round(t.total_turning, 6))}°; "
+                      f"the turtle ends at ({t.point[0]:.3g}, {t.point[1]:.3g}) heading {heading + 0.0:.4g}°")
+            return {"polylines": t.polylines, "point": t.point, "direction": t.direction, "status": status}
 
-    def pick(change):
-        if change["new"] in EXAMPLES:
-            box.value = EXAMPLES[change["new"]]
+        return run
 
-    picker.observe(pick, names="value")
-    fig, ax = style.new_axes(figsize)
-    artists = _PathArtists(ax)
-
-    def update(program):
-        if not isinstance(program, str):
-            raise TypeError(f"program must be a string; got {type(program).__name__}")
-        if len(program) > MAX_EDITOR_LENGTH:
-            raise ValueError(f"program must be at most {MAX_EDITOR_LENGTH:,} characters in the editor (it re-runs "
-                             f"as you type); got {len(program):,}: use REPEAT")
-        t = turtle.trace(program)
-        artists.set(t.polylines, (0.0, 0.0), t.point, t.direction)
-        heading = float(np.degrees(np.arctan2(t.direction[1], t.direction[0])))
-        strokes = len(t.polylines)
-        status = (f"{t.commands} command{'s' * (t.commands != 1)}, {strokes} stroke{'s' * (strokes != 1)}, "
-                  f"total turning {turtle.format_number(round(t.total_turning, 6))}°; "
-                  f"the turtle ends at ({t.point[0]:.3g}, {t.point[1]:.3g}) heading {heading + 0.0:.4g}°")
-        return {"polylines": t.polylines, "point": t.point, "direction": t.direction, "status": status}
-
-    view = InteractiveView(controls={"program": box}, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="Turtle program editor", side=True,
-                           extra=[picker, widgets.HTML(_HELP, layout=widgets.Layout(width="330px"))])
-    view.examples = picker  # the example picker (not a control: it only fills the text box)
-    return view
+    return program_editor(program, make_runner=make_runner, examples=EXAMPLES, help_html=_HELP,
+                          title="Turtle program editor", picker_label="(examples)", rows=8, height="170px",
+                          max_length=MAX_EDITOR_LENGTH, figsize=figsize)

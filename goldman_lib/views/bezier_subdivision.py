@@ -6,7 +6,7 @@ The curves and control polygons are drawn with the chapter-24 plot functions
 the factories return an :class:`~goldman_lib.views.interactive.InteractiveView` whose ``update``
 is a plain function returning what it drew.
 
->>> view = subdivision_view()
+>>> view = bezier_subdivision_view()
 >>> sorted(view.update(**view.values()))
 ['curve', 'gap', 'polygon', 'polygons', 'status']
 
@@ -26,7 +26,7 @@ from goldman_lib.views.bezier import DEFAULT_CUBIC, plot_control_polygon, plot_c
 from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
-__all__ = ["plot_pieces", "plot_boxes", "plot_patch_domains", "subdivision_view", "adaptive_rendering_view",
+__all__ = ["plot_pieces", "plot_boxes", "plot_patch_domains", "bezier_subdivision_view", "adaptive_rendering_view",
            "intersection_view", "patch_rendering_view", "patch_subdivision_3d_view", "INTERSECTION_EXAMPLES", "WAVY", "DEFAULT_PATCH_25"]
 
 #: A quartic with two bends: flat parts and tight parts for adaptive rendering.
@@ -121,7 +121,7 @@ def _split_recursively(ctrl: np.ndarray, depth: int, t: float) -> np.ndarray:
 
 
 # -- widgets ------------------------------------------------------------------------------------
-def subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_depth: int = 6) -> InteractiveView:
+def bezier_subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_depth: int = 6) -> InteractiveView:
     """A subdivision-level slider (Goldman §25.2): the curve split ``depth`` times, each piece at its
     own parameter ``t``, and the 2**depth control polygons closing in on the curve.  The control
     points have x/y sliders and can be dragged with the mouse (``view.drag``).
@@ -134,7 +134,6 @@ def subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_dep
     fig, ax = style.new_axes()
     polygon = plot_control_polygon(ctrl, ax, labels=False, alpha=0.35)
     curve = plot_curve(ctrl, ax, samples=400)
-    greville = np.arange(len(ctrl)) / (len(ctrl) - 1)
     pieces = plot_pieces(_split_recursively(ctrl, depth, t), ax)
     (joints,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=4, zorder=4)
     _limits(ax, ctrl, pad=0.3)
@@ -153,7 +152,7 @@ def subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, max_dep
         pieces.set_color([(style.LEVELS[0], style.LEVELS[3])[k % 2] for k in range(len(polys))])
         ends = np.concatenate([polys[:, 0], polys[-1:, -1]])
         joints.set_data(ends[:, 0], ends[:, 1])
-        gap = float(np.linalg.norm(polys - np.stack([bezier.de_casteljau(p, greville) for p in polys]), axis=-1).max())
+        gap = bezier.polygon_distance(polys)
         return {"polygons": polys, "gap": gap, "curve": crv, "polygon": P,
                 "status": f"depth {depth}: {len(polys)} pieces split at t = {t:.2f}; control points within "
                           f"{gap:.4f} of the curve (P_k vs the piece at k/n)"}
@@ -360,23 +359,6 @@ def _net_segments(count: int, rows: int, cols: int) -> np.ndarray:
     return (one[None] + (rows * cols) * np.arange(count)[:, None, None]).reshape(-1, 2)
 
 
-def _uniform_subnets(net: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray]:
-    """The 4**level sub-nets of a patch split ``level`` times at the middle (by
-    :func:`goldman_lib.bezier.subdivide_patch`) and their parameter rectangles ``[u0, u1, v0, v1]``."""
-    nets, doms = [net], [(0.0, 1.0, 0.0, 1.0)]
-    for _ in range(level):
-        new_nets, new_doms = [], []
-        for P, (u0, u1, v0, v1) in zip(nets, doms):
-            four = bezier.subdivide_patch(P)
-            um, vm = (u0 + u1) / 2, (v0 + v1) / 2
-            for i, (a, b) in enumerate(((u0, um), (um, u1))):
-                for j, (c, d) in enumerate(((v0, vm), (vm, v1))):
-                    new_nets.append(four[i, j])
-                    new_doms.append((a, b, c, d))
-        nets, doms = new_nets, new_doms
-    return np.array(nets), np.array(doms)
-
-
 def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", level: int = 2, height: float = 0.3,
                               tol: float = 0.02, resolution: int = 24, width: int = 480,
                               height_px: int = 360) -> InteractiveView:
@@ -416,14 +398,8 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
     # parameters (i/m, j/n) of each piece), computed once
     levels = {}
     for L in range(5):
-        nets, doms = _uniform_subnets(net, L)
-        fu = np.linspace(0, 1, rows)
-        fv = np.linspace(0, 1, cols)
-        U = doms[:, :1, None] + (doms[:, 1:2, None] - doms[:, :1, None]) * fu[None, :, None]
-        V = doms[:, 2:3, None] + (doms[:, 3:4, None] - doms[:, 2:3, None]) * fv[None, None, :]
-        U, V = np.broadcast_arrays(U, V)
-        on = bezier.patch_de_casteljau(net, U.ravel(), V.ravel()).reshape(nets.shape)
-        levels[L] = (nets, doms, float(np.linalg.norm(nets - on, axis=-1).max()))
+        nets, doms = bezier.subdivide_patch_uniform(net, L)
+        levels[L] = (nets, doms, bezier.net_distance(nets))
 
     center = (lo + hi) / 2
     scene = SceneView(width=width, height=height_px, target=tuple(center),

@@ -7,12 +7,12 @@ import numpy as np
 import pytest
 
 from goldman_lib import bezier
-from goldman_lib.views import subdivision as views
+from goldman_lib.views import bezier_subdivision as views
 
 matplotlib.use("Agg")
 
-def test_subdivision_view_draws_pieces_of_the_curve():
-    view = views.subdivision_view()
+def test_bezier_subdivision_view_draws_pieces_of_the_curve():
+    view = views.bezier_subdivision_view()
     ctrl = views.DEFAULT_CUBIC
     for depth, t in ((0, 0.5), (2, 0.5), (3, 0.3)):
         polys = view.set_values(depth=depth, t=t)["polygons"]
@@ -28,8 +28,8 @@ def test_subdivision_view_draws_pieces_of_the_curve():
     assert all(g1 < g0 for g0, g1 in zip(gaps, gaps[1:]))
 
 
-def test_subdivision_view_control_points_are_dragged():
-    view = views.subdivision_view(depth=2)
+def test_bezier_subdivision_view_control_points_are_dragged():
+    view = views.bezier_subdivision_view(depth=2)
     view.drag.press_at(3.0, 2.5)          # on P2
     view.drag.move_to(2.0, 1.0)
     view.drag.release()
