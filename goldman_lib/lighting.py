@@ -39,7 +39,7 @@ import numpy as np
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
 
 __all__ = ["Light", "Material", "unit_rows", "reflect", "ambient", "diffuse", "specular", "intensity",
-           "to_image", "light_direction", "default_lights", "shade_faces"]
+           "to_image", "light_direction", "default_lights", "shade_faces", "highlight_half_width"]
 
 
 def _colour(value, name: str) -> tuple[float, float, float]:
@@ -270,6 +270,25 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
             term[shadowed[..., k]] = 0.0
         total += term
     return total
+
+
+def highlight_half_width(exponent, fraction=0.5) -> float:
+    """The angular half-width, in degrees, of a Phong highlight (Goldman §16.2.3): the angle between
+    ``R`` and ``V`` at which ``(R . V)^n = cos^n`` falls to ``fraction`` of its peak,
+    ``arccos(fraction^(1/n))``.  The larger the exponent ``n``, the narrower the highlight (for large
+    ``n`` the width shrinks like ``1/sqrt(n)``).
+
+    exponent: ``n > 0``.  fraction: in (0, 1) (default 0.5, the half-maximum).
+
+    >>> round(highlight_half_width(1), 6), round(highlight_half_width(100), 4)
+    (60.0, 6.7383)
+    """
+    n = as_float(exponent, "exponent", positive=True)
+    f = as_float(fraction, "fraction", positive=True)
+    if f >= 1:
+        raise ValueError(f"fraction must be in (0, 1) (a fraction of the highlight's peak); got {f}")
+    with np.errstate(under="ignore"):
+        return float(np.degrees(np.arccos(f ** (1.0 / n))))
 
 
 def to_image(values) -> np.ndarray:
