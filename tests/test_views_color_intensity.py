@@ -7,6 +7,8 @@ P is P itself)."""
 import numpy as np
 import pytest
 
+from goldman_lib import lighting
+from goldman_lib.lighting import Material
 from goldman_lib.views import color_intensity as ci
 
 RED = (0xd1 / 255, 0x49 / 255, 0x5b / 255)
@@ -80,6 +82,10 @@ def test_the_terms_add_up_to_the_total_and_clipping_is_counted():
     view = ci.terms_view(size=40)
     r = view.set_values(ka=0.2, kd=0.6, ks=0.6, n=20.0, Ia=1.0)
     assert np.allclose(r["ambient"] + r["diffuse"] + r["specular"], r["total"])
+    _, points, normals = ci.sphere_pixels(40)
+    full = Material(colour=(0x3d / 255, 0x7d / 255, 0xd8 / 255), ambient=0.2, diffuse=0.6, specular=0.6, exponent=20)
+    lights = view.light_control.lights(view.values())
+    assert np.allclose(r["total"], lighting.intensity(points, normals, ci.EYE, lights, full, ambient_light=1.0))
     c = np.array([0x3d, 0x7d, 0xd8]) / 255
     assert np.allclose(r["ambient"], 0.2 * c)                        # I_a k_a C, the same at every pixel
     # the specular highlight takes the light's colour, not the material's: white light, grey highlight

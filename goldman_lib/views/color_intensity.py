@@ -208,8 +208,8 @@ def terms_view(ka: float = 0.2, kd: float = 0.6, ks: float = 0.6, exponent: floa
     """The three terms of the lighting model and their sum, side by side on the same sphere (Goldman
     §16.3-16.6), under two point lights (the light-position control with two lights): the ambient
     term ``I_a k_a C``, the diffuse terms ``sum I_p k_d C (L . N)``, the specular terms
-    ``sum I_p k_s (R . V)^n`` and the total, each from :func:`goldman_lib.lighting.intensity` with
-    the other coefficients set to 0.  Pixels of the total over 1 are clipped (§16.6): the status
+    ``sum I_p k_s (R . V)^n`` (each from :func:`goldman_lib.lighting.intensity` with the other
+    coefficients set to 0) and their sum, the total.  Pixels of the total over 1 are clipped (§16.6): the status
     says how many.
 
     ``update(**values)`` returns ``{"ambient", "diffuse", "specular", "total"}`` (each (m, 3)
@@ -233,11 +233,11 @@ def terms_view(ka: float = 0.2, kd: float = 0.6, ks: float = 0.6, exponent: floa
     def update(ka, kd, ks, n, colour, Ia, **light_values):
         c = _rgb(colour, "colour")
         lights = light.lights(light_values)
-        parts = {}
-        for name, coeffs in (("ambient", (ka, 0.0, 0.0)), ("diffuse", (0.0, kd, 0.0)), ("specular", (0.0, 0.0, ks)),
-                             ("total", (ka, kd, ks))):
-            material = Material(colour=c, ambient=coeffs[0], diffuse=coeffs[1], specular=coeffs[2], exponent=n)
-            parts[name] = lighting.intensity(points, normals, EYE, lights, material, ambient_light=Ia)
+        parts = {"ambient": np.broadcast_to(lighting.ambient(ka, Ia) * np.asarray(c), points.shape)}
+        for name, coeffs in (("diffuse", (kd, 0.0)), ("specular", (0.0, ks))):
+            material = Material(colour=c, ambient=0.0, diffuse=coeffs[0], specular=coeffs[1], exponent=n)
+            parts[name] = lighting.intensity(points, normals, EYE, lights, material, ambient_light=0.0)
+        parts["total"] = parts["ambient"] + parts["diffuse"] + parts["specular"]
         pictures = []
         for k, name in enumerate(TERMS):
             pictures.append(_picture(found, parts[name]))
