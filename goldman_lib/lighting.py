@@ -174,6 +174,15 @@ def _geometry(points, normals):
     return P, N
 
 
+def _eye(eye, P):
+    """The eye: one point (3,), or one per point (the shape of ``points``; a ray tracer's secondary
+    rays each have their own viewer, the ray's origin)."""
+    E = as_points(eye, "eye", ndim=None, dim=3)
+    if E.ndim > 1 and E.shape != P.shape:
+        raise ValueError(f"eye must be one point (3,) or one per point {P.shape}; got shape {E.shape}")
+    return E
+
+
 def _lights(lights) -> tuple:
     if isinstance(lights, Light):
         return (lights,)
@@ -212,7 +221,8 @@ def diffuse(points, normals, light_position, kd, light_intensity) -> np.ndarray:
 
 def specular(points, normals, light_position, eye, ks, exponent, light_intensity) -> np.ndarray:
     """Phong's specular term ``I_p k_s (R . V)^n`` (Goldman §16.5): ``R`` the mirror image of the
-    unit vector ``L`` to the light, ``V`` the unit vector to the eye; 0 where ``L . N <= 0`` (the
+    unit vector ``L`` to the light, ``V`` the unit vector to the eye (one point (3,) or one per
+    point); 0 where ``L . N <= 0`` (the
     light is behind the surface) or ``R . V <= 0``.  No ``L . N`` factor, no attenuation.
 
     >>> specular([[0, 0, 0]], [[0, 0, 1]], [1, 0, 1], [0, 0, 1], 1.0, 2, 1.0).round(6).tolist()
@@ -220,7 +230,7 @@ def specular(points, normals, light_position, eye, ks, exponent, light_intensity
     """
     P, N = _geometry(points, normals)
     L = unit_rows(as_points(light_position, "light_position", ndim=1, dim=3) - P, "light_position - points")
-    V = unit_rows(as_points(eye, "eye", ndim=1, dim=3) - P, "eye - points")
+    V = unit_rows(_eye(eye, P) - P, "eye - points")
     n = _non_negative(exponent, "exponent")
     lit = _dot(L, N) > 0
     rv = np.where(lit, np.maximum(_dot(2 * _dot(L, N)[..., None] * N - L, V), 0.0), 0.0)
@@ -234,7 +244,8 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
     """The total RGB intensity ``I_a k_a C + sum over lights of I_p (k_d C (L . N) + k_s S (R . V)^n)``
     at each point (Goldman §16.6), ``C`` the material's colour and ``S`` its specular colour.
 
-    points, normals: (..., 3); eye: (3,); lights: a :class:`Light` or a sequence of them;
+    points, normals: (..., 3); eye: (3,), or one eye per point (..., 3) (a reflected or refracted
+    ray's viewer is its own origin); lights: a :class:`Light` or a sequence of them;
     ambient_light: ``I_a``, a number or RGB triple.  shadowed: optional boolean (..., len(lights)),
     True where a light is blocked (chapter 17's shadow rays): that light adds nothing there.
     two_sided: flip each normal to face the eye first (for open surfaces and static pictures).
@@ -248,7 +259,7 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
         raise TypeError(f"material must be a goldman_lib.lighting.Material; got {type(material).__name__}")
     lights = _lights(lights)
     P, N = _geometry(points, normals)
-    E = as_points(eye, "eye", ndim=1, dim=3)
+    E = _eye(eye, P)
     if two_sided:
         N = np.where((_dot(N, E - P) < 0)[..., None], -N, N)
     if shadowed is not None:
@@ -328,7 +339,9 @@ def default_lights(distance: float = 20.0) -> tuple[Light, ...]:
 def shade_faces(centroids, normals, eye, colour, lights=None, ambient_light=0.35) -> np.ndarray:
     """Two-sided face colours for a static picture of a mesh: :func:`intensity` at each face's
     centroid with a matte material of ``colour`` (``k_a = 1``, ``k_d = 0.8``, a soft highlight),
-    clipped to [0, 1].  lights: default :func:`default_lights`.  Returns (m, 3).
+    clipped to [0, 1].  colour: one RGB triple, or one per face ``(m, 3)`` (then the light's
+    ambient and diffuse parts tint each face's own colour).  lights: default :func:`default_lights`.
+    Returns (m, 3).
 
     >>> shade_faces([[0, 0, 0]], [[0, 0, 1]], [0, 0, 5], (1, 1, 1), [Light((0, 0, 5))], 0.2).round(3).tolist()
     [[1.0, 1.0, 1.0]]
@@ -338,8 +351,16 @@ def shade_faces(centroids, normals, eye, colour, lights=None, ambient_light=0.35
     if normals.shape != centroids.shape:
         raise ValueError(f"normals must have the shape of centroids {centroids.shape}; got {normals.shape}")
     eye = as_points(eye, "eye", ndim=1, dim=3)
-    material = Material(colour=colour, ambient=1.0, diffuse=0.8, specular=0.15, exponent=20)
+    per_face = as_float_array(colour, "colour").ndim == 2
+    if per_face:
+        tint = as_points(colour, "colour", dim=3)
+        if tint.shape != centroids.shape or tint.min() < 0 or tint.max() > 1:
+            raise ValueError(f"colour must be an RGB triple or one per face {centroids.shape} in [0, 1]")
+    material = Material(colour=(1.0, 1.0, 1.0) if per_face else colour, ambient=1.0, diffuse=0.8,
+                        specular=0.0 if per_face else 0.15, exponent=20)
     lights = default_lights() if lights is None else _lights(lights)
     with np.errstate(over="ignore", invalid="ignore"):
         shade = intensity(centroids, normals, eye, lights, material, ambient_light, two_sided=True)
+        if per_face:
+            shade = shade * tint
     return to_image(finite_result(shade, "centroids, normals and eye", why="are too large in magnitude"))

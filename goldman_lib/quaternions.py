@@ -323,25 +323,26 @@ def slerp(q0, q1, t) -> np.ndarray:
     [0.92388, 0.0, 0.0, 0.382683]
     """
     a = _quaternions(q0, "q0")
-    a = _scale_rows(a, 1.0 / _nonzero(a, "q0"))
     b = _quaternions(q1, "q1")
-    b = _scale_rows(b, 1.0 / _nonzero(b, "q1"))
     tt = as_parameter(t, "t")
+    na, nb = _nonzero(a, "q0"), _nonzero(b, "q1")          # normalised through the weights below
     lead = np.broadcast_shapes(a.shape[:-1], b.shape[:-1], tt.shape)
     a, b, tt = np.broadcast_to(a, lead + (4,)), np.broadcast_to(b, lead + (4,)), np.broadcast_to(tt, lead)
-    d = np.einsum("...i,...i->...", a, b)
+    na, nb = np.broadcast_to(na, lead), np.broadcast_to(nb, lead)
+    d = np.einsum("...i,...i->...", a, b) / (na * nb)
     sign = np.where(d < 0, -1.0, 1.0)
     d = np.minimum(np.abs(d), 1.0)
     theta = np.arccos(d)
     sin = np.sqrt(1.0 - d * d)            # sin θ for θ in [0, π/2]
     small = sin < 1e-9                    # (nearly) equal rotations: linear interpolation is exact enough
     inv = 1.0 / np.where(small, 1.0, sin)
-    wa = np.where(small, 1 - tt, np.sin((1 - tt) * theta) * inv)
-    wb = np.where(small, tt, np.sin(tt * theta) * inv) * sign
-    out = np.moveaxis(np.moveaxis(a, -1, 0) * wa + np.moveaxis(b, -1, 0) * wb, 0, -1)
+    wa = np.where(small, 1 - tt, np.sin((1 - tt) * theta) * inv) / na
+    wb = np.where(small, tt, np.sin(tt * theta) * inv) * sign / nb
+    out = _scale_rows(a, wa)
+    out += _scale_rows(b, wb)
     if np.any(small):
         out = _scale_rows(out, 1.0 / np.sqrt(np.einsum("...i,...i->...", out, out)))
-    return np.ascontiguousarray(out)
+    return out
 
 
 def key_frames(orientations, times, t) -> np.ndarray:

@@ -174,7 +174,7 @@ def _run_doctests(modules, functions, found) -> None:
 def _extra_examples() -> dict:
     """Valid example calls of the public functions, classes and methods that no doctest calls (a
     method's arguments start with its instance)."""
-    from goldman_lib import bezier, bspline, ifs, simple_surfaces, subdivision_surfaces, turtle, vectors
+    from goldman_lib import bezier, bspline, ifs, lighting, simple_surfaces, subdivision_surfaces, turtle, vectors
 
     cubic = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
     net = [[[i, j, (i * j) % 2] for j in range(3)] for i in range(3)]
@@ -212,6 +212,21 @@ def _extra_examples() -> dict:
         "simple_surfaces.Plane": (([0.0, 0.0, 1.0], [0.0, 1.0, 1.0]), {}),
         "simple_surfaces.Sphere": (([0.0, 0.0, 1.0], 2.0), {}),
         "simple_surfaces.Surface.contains": ((simple_surfaces.Sphere([0, 0, 0], 1), [[0, 0, 0.5], [0, 2, 0]]), {}),
+        # chapter 17
+        "ray_tracing.Camera": (((0.0, -5.0, 1.0), (0.0, 0.0, 0.5), (0.0, 0.0, 1.0), 40.0), {}),
+        "ray_tracing.Scene": (([simple_surfaces.Sphere([0, 0, 1], 1.0)], [lighting.Light((0.0, 0.0, 5.0))], 0.3,
+                               (0.1, 0.2, 0.3)), {}),
+        # chapter 19
+        "simple_surfaces.Polygon": (([[0, 0, 0], [2, 0, 0], [2, 1, 0], [1, 1, 0], [1, 2, 0], [0, 2, 0]],), {}),
+        "simple_surfaces.Cylinder": (([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0, 2.0), {}),
+        "simple_surfaces.EllipticCylinder": (([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [2.0, 1.0], 3.0, [1.0, 0.0, 0.0]), {}),
+        "simple_surfaces.Cone": (([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 30.0, 2.0), {}),
+        "simple_surfaces.EllipticCone": (([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [45.0, 30.0], 2.0, [1.0, 0.0, 0.0]), {}),
+        "simple_surfaces.Ellipsoid": (([0.0, 0.0, 0.0], [3.0, 2.0, 1.0], [[0, 1, 0], [-1, 0, 0], [0, 0, 1]]), {}),
+        "simple_surfaces.Quadric": (([1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0],), {}),
+        "simple_surfaces.Torus": (([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 2.0, 0.5), {}),
+        "simple_surfaces.SurfaceOfRevolution": (([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, -0.25], 1.0), {}),
+        "simple_surfaces.Surface.mesh": ((simple_surfaces.Torus([0, 0, 0], [0, 0, 1], 2, 0.5), 12, 2.0), {}),
         "vectors.Point": (([1.0, 2.0, 0.0],), {}),
         "vectors.Vector": (([3.0, 4.0, 0.0],), {}),
         "vectors.Vector.dot": ((vectors.Vector([1.0, 2.0, 3.0]), vectors.Vector([4.0, -5.0, 6.0])), {}),
@@ -257,7 +272,7 @@ CONFIGURATION = {
 }
 #: Functions and methods (by their last name) whose result may hold +-inf by contract, never NaN: a
 #: ray's parameter is inf where it misses (Part III's ``hits``/``intersect``/``intervals``).
-INF_BY_CONTRACT = {"hits", "intersect", "intervals", "quadratic_roots"}
+INF_BY_CONTRACT = {"hits", "hit", "intersect", "intervals", "quadratic_roots", "real_roots"}
 #: Functions whose result may hold NaN or infinity by contract (what the docstring says).
 NONFINITE_BY_CONTRACT = {
     "validation.as_float_array": "it converts only; finiteness is check_finite's job (its docstring)",

@@ -127,3 +127,20 @@ def test_highlight_half_width_against_a_sweep_of_the_specular_term():
         lighting.highlight_half_width(3, fraction=1.0)
     with pytest.raises(ValueError, match="exponent"):
         lighting.highlight_half_width(0)
+
+
+def test_one_eye_per_point_matches_one_call_per_point():
+    """A ray tracer's secondary rays each see the surface from their own origin (chapter 17)."""
+    P = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]])
+    N = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 1.0]])
+    eyes = np.array([[-1.0, 0.0, 1.0], [3.0, 0.0, 1.0]])
+    light = Light((1.0, 0.0, 1.0))
+    m = Material(specular=0.8, exponent=4)
+    intensity, specular = lighting.intensity, lighting.specular
+    both = intensity(P, N, eyes, light, m)
+    for k in range(2):
+        assert np.allclose(both[k], intensity(P[k:k + 1], N[k:k + 1], eyes[k], light, m)[0])
+    # the eye on the mirror ray of the first point: R.V = 1, the full k_s
+    assert specular(P, N, light.position, eyes, 0.8, 4, 1.0)[0] == pytest.approx(0.8)
+    with pytest.raises(ValueError, match="eye"):
+        intensity(P, N, eyes[:1].repeat(3, axis=0), light, m)

@@ -79,3 +79,24 @@ def test_the_static_picture_follows_the_light():
     for s in (scene_a, scene_b):
         s.add_mesh("m", [[0, 0, 0], [1, 0, 0], [0, 1, 0]], tri)
     assert scene_a.to_png() != scene_b.to_png()
+
+
+def test_vertex_colours_live_and_static():
+    pos = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]
+    tri = [[0, 1, 2], [1, 3, 2]]
+    s = SceneView(axes=0)
+    s.add_mesh("m", pos, tri, colors=np.zeros((4, 3)), lit=False)
+    dark = s.to_png()
+    geom_attr = s._items["m"]["geometry"].attributes["color"]
+    s.set_colors("m", np.ones((4, 3)) * [1.0, 0.2, 0.2])
+    assert s._items["m"]["geometry"].attributes["color"] is geom_attr       # in place
+    assert np.allclose(geom_attr.array[0], [1.0, 0.2, 0.2])
+    assert s.to_png() != dark
+    assert s._items["m"]["object"].material.vertexColors == "VertexColors"
+    with pytest.raises(ValueError, match="colors"):
+        s.set_colors("m", np.ones((3, 3)))
+    with pytest.raises(ValueError, match="colors"):
+        s.add_mesh("n", pos, tri, colors=np.full((4, 3), 2.0))
+    s.add_mesh("plain", pos, tri)
+    with pytest.raises(ValueError, match="without per-vertex colors"):
+        s.set_colors("plain", np.zeros((4, 3)))

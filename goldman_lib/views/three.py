@@ -114,20 +114,53 @@ class SceneView:
     def _attr(self, arr, dtype=np.float32):
         return self._p3.BufferAttribute(array=np.ascontiguousarray(arr, dtype=dtype), normalized=False)
 
-    def add_mesh(self, name: str, positions, triangles, color: str = "#66a3d2", opacity: float = 1.0):
-        """A shaded triangle mesh: positions ``(n, 3)``, triangles ``(k, 3)`` vertex indices."""
+    def add_mesh(self, name: str, positions, triangles, color: str = "#66a3d2", opacity: float = 1.0,
+                 colors=None, lit: bool = True):
+        """A shaded triangle mesh: positions ``(n, 3)``, triangles ``(k, 3)`` vertex indices.
+
+        colors: optional per-vertex RGB ``(n, 3)`` in [0, 1] (three.js vertex colours, interpolated
+        over each triangle; the static picture gives each face the mean of its vertices' colours).
+        lit: False shows the colours as they are, unshaded (a radiosity solution, a curvature map);
+        True lets the scene's lights shade them.
+        """
         p3 = self._p3
         pos = as_points(positions, "positions", dim=3)
         tri = np.asarray(triangles, dtype=np.uint32)
         if tri.ndim != 2 or tri.shape[1] != 3 or (tri.size and tri.max() >= len(pos)):
             raise ValueError(f"triangles must have shape (k, 3) with indices below {len(pos)}; got shape {tri.shape}")
-        geom = p3.BufferGeometry(attributes={
-            "position": self._attr(pos), "normal": self._attr(vertex_normals(pos, tri)),
-            "index": self._attr(tri.ravel(), np.uint32)})
-        material = p3.MeshPhongMaterial(color=color, side="DoubleSide", shininess=40,
-                                        transparent=opacity < 1, opacity=opacity)
+        attributes = {"position": self._attr(pos), "normal": self._attr(vertex_normals(pos, tri)),
+                      "index": self._attr(tri.ravel(), np.uint32)}
+        col = None if colors is None else self._colors(colors, len(pos))
+        if col is not None:
+            attributes["color"] = self._attr(col)
+        geom = p3.BufferGeometry(attributes=attributes)
+        common = dict(side="DoubleSide", transparent=opacity < 1, opacity=opacity,
+                      vertexColors="VertexColors" if col is not None else "NoColors")
+        if lit:
+            material = p3.MeshPhongMaterial(color="#ffffff" if col is not None else color, shininess=40, **common)
+        else:
+            material = p3.MeshBasicMaterial(color="#ffffff" if col is not None else color, **common)
         obj = p3.Mesh(geometry=geom, material=material)
-        self._add(name, obj, geom, kind="mesh", positions=pos, triangles=tri, color=color, opacity=float(opacity))
+        self._add(name, obj, geom, kind="mesh", positions=pos, triangles=tri, color=color, opacity=float(opacity),
+                  colors=col, lit=bool(lit))
+
+    @staticmethod
+    def _colors(colors, count: int) -> np.ndarray:
+        col = as_points(colors, "colors", dim=3)
+        if len(col) != count:
+            raise ValueError(f"colors must hold one RGB colour per vertex ({count}); got shape {col.shape}")
+        if col.min() < 0 or col.max() > 1:
+            raise ValueError("colors must hold RGB values in [0, 1]")
+        return col
+
+    def set_colors(self, name: str, colors):
+        """New per-vertex colours ``(n, 3)`` in [0, 1] for mesh ``name`` (built with ``colors``), in place."""
+        item = self._item(name, "mesh")
+        if item.get("colors") is None:
+            raise ValueError(f"mesh {name!r} was built without per-vertex colors; pass colors= to add_mesh")
+        col = self._colors(colors, len(item["positions"]))
+        item["colors"] = col
+        item["geometry"].attributes["color"].array = col.astype(np.float32)
 
     def add_segments(self, name: str, positions, segments, color: str = "#7a7a7a", width: float = 1.2):
         """Line segments between ``positions[segments[:, 0]]`` and ``positions[segments[:, 1]]``.
@@ -264,8 +297,15 @@ class SceneView:
                 if not keep.any():
                     continue
                 tris, normals = tris[keep], normals[keep]
-                colors = lighting.shade_faces(tris.mean(axis=1), normals, self.camera_position, to_rgb(item["color"]),
-                                              self.lights, self.ambient_light)
+                if item.get("colors") is not None:
+                    face_colours = item["colors"][item["triangles"]].mean(axis=1)[keep]
+                else:
+                    face_colours = to_rgb(item["color"])
+                if item.get("lit", True):
+                    colors = lighting.shade_faces(tris.mean(axis=1), normals, self.camera_position, face_colours,
+                                                  self.lights, self.ambient_light)
+                else:
+                    colors = np.broadcast_to(face_colours, tris.shape[:1] + (3,))
                 ax.add_collection3d(Poly3DCollection(tris, facecolors=colors, edgecolors="none",
                                                      alpha=min(1.0, item["opacity"] + 0.15), zorder=order))
                 everything.append(tris.reshape(-1, 3))

@@ -1,0 +1,630 @@
+"""Recursive ray tracing (Goldman chapter 17), vectorised over rays.
+
+A ray leaves the eye through each pixel (§17.2).  Where it first meets an object the tracer adds
+
+* the **local** light of the point, by :func:`goldman_lib.lighting.intensity` (the one lighting
+  model: ambient, Lambert diffuse and Phong specular), where each light counts only if a
+  **shadow ray** from the point to the light meets no object first (§17.3);
+* ``k_r`` times the light arriving along the **reflected** ray ``reflect(-d, N)`` (§17.4), the
+  mirror image of the incoming direction about the normal, traced recursively;
+* ``k_t`` times the light arriving along the **refracted** (transmitted) ray, bent by Snell's law
+  ``n1 sin(theta1) = n2 sin(theta2)`` (§17.5); past the critical angle there is no refracted ray
+  (total internal reflection) and that light goes along the reflected ray instead.
+
+``I = I_local + k_r I_reflected + k_t I_refracted`` with ``k_r = material.reflect`` and
+``k_t = material.transmit`` (:class:`goldman_lib.lighting.Material`).  The recursion stops at a
+given depth (a depth-0 tracer is a ray caster with shadows).  The recursion is run level by level:
+all the rays of one level (every pixel's reflected and refracted rays together) are one array, so
+each level costs a few numpy calls per object, not a Python loop per ray.
+
+Conventions: the scene's objects follow the :mod:`goldman_lib.simple_surfaces` contract (``.hit(o,
+d) -> (t, normals)`` with outward normals for solids, and ``.material``).  A ray is entering an object
+where ``d . N < 0`` (it goes from the outside medium, index 1, into the object's ``index``) and
+leaving where ``d . N > 0``.  Objects that transmit light still cast full shadows (a shadow ray is
+not refracted).  Angles are in degrees.  The camera is a pinhole with a vertical field of view;
+pixel ``(px, py)`` counts columns from the left and rows from the top, as an image does.
+
+>>> scene, camera = default_scene(), default_camera()
+>>> image = render(scene, camera, 32, 24, depth=2)
+>>> image.shape, bool(image.min() >= 0 and image.max() <= 1)
+((24, 32, 3), True)
+>>> [round(v, 4) for v in refract([1, 0, -1], [0, 0, 1], 1.0, 1.5)]     # into glass at 45 degrees
+[0.4714, 0.0, -0.8819]
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from goldman_lib import lighting
+from goldman_lib.lighting import Light, Material
+from goldman_lib.simple_surfaces import Plane, Sphere
+from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
+                                    within_budget)
+
+__all__ = ["Camera", "Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
+           "trace", "render", "ray_tree", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
+           "OFFSET", "INDEX_RANGE", "MATERIALS"]
+
+#: The deepest recursion a render may ask for (a ray tree of depth d holds up to 2^(d+1) - 1 rays).
+MAX_DEPTH = 12
+#: Indices of refraction the tracer accepts (air 1.0003, water 1.33, glass 1.5, diamond 2.42).
+INDEX_RANGE = (0.01, 100.0)
+#: Secondary rays (shadow, reflected, refracted) start this far off the surface, on the side they
+#: leave by, so that rounding does not make them hit the surface they start on.
+OFFSET = 1e-7
+
+
+def _unit(v, name):
+    v = as_points(v, name, ndim=1, dim=3)
+    length = float(np.linalg.norm(v))
+    if length == 0 or not np.isfinite(length):
+        raise ValueError(f"{name} must be a nonzero vector of finite length; got {v.tolist()}")
+    return v / length
+
+
+def _dot(a, b):
+    return np.einsum("...i,...i->...", a, b)
+
+
+# -- the camera (§17.2) ------------------------------------------------------------------------------
+
+class Camera:
+    """A pinhole camera (Goldman §17.2): the eye, the point it looks at, the up direction and the
+    vertical field of view ``fov`` in degrees.  A pixel's primary ray starts at the eye and passes
+    through the pixel's centre on a screen one unit in front of the eye.
+
+    >>> cam = Camera((0, -5, 0), (0, 0, 0), up=(0, 0, 1), fov=90)
+    >>> o, d = cam.rays(2, 2)
+    >>> d.round(4).tolist()[0]          # top-left pixel: left, forward, up (the screen's half-size is tan 45 = 1)
+    [-0.4082, 0.8165, 0.4082]
+    """
+
+    def __init__(self, eye, look_at, up=(0.0, 0.0, 1.0), fov: float = 45.0):
+        self.eye = as_points(eye, "eye", ndim=1, dim=3)
+        self.look_at = as_points(look_at, "look_at", ndim=1, dim=3)
+        forward = self.look_at - self.eye
+        if not np.any(forward != 0):
+            raise ValueError("look_at must differ from eye (the camera needs a viewing direction)")
+        self.forward = _unit(forward, "look_at - eye")
+        self.up_hint = _unit(up, "up")
+        right = np.cross(self.forward, self.up_hint)
+        if np.linalg.norm(right) < 1e-9:
+            raise ValueError("up must not be parallel to the viewing direction look_at - eye")
+        self.right = right / np.linalg.norm(right)
+        self.up = np.cross(self.right, self.forward)
+        self.fov = as_float(fov, "fov")
+        if not 0 < self.fov < 180:
+            raise ValueError(f"fov must lie strictly between 0 and 180 degrees; got {self.fov}")
+
+    def _screen(self, px, py, width, height):
+        half_h = math.tan(math.radians(self.fov) / 2)
+        half_w = half_h * width / height
+        x = ((np.asarray(px, dtype=float) + 0.5) / width * 2 - 1) * half_w
+        y = (1 - (np.asarray(py, dtype=float) + 0.5) / height * 2) * half_h
+        d = self.forward + x[..., None] * self.right + y[..., None] * self.up
+        return d / np.linalg.norm(d, axis=-1, keepdims=True)
+
+    def rays(self, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
+        """The primary rays of a ``width`` x ``height`` image, row by row from the top:
+        origins ``(height*width, 3)`` (all the eye) and unit directions ``(height*width, 3)``."""
+        width, height = _image_size(width, height, 0)
+        py, px = np.mgrid[0:height, 0:width]
+        d = self._screen(px.ravel(), py.ravel(), width, height)
+        return np.broadcast_to(self.eye, d.shape).copy(), d
+
+    def ray(self, px: int, py: int, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
+        """The primary ray of pixel ``(px, py)`` (column from the left, row from the top): origin
+        (3,) and unit direction (3,)."""
+        width, height = _image_size(width, height, 0)
+        px = as_int(px, "px", minimum=0, maximum=width - 1)
+        py = as_int(py, "py", minimum=0, maximum=height - 1)
+        return self.eye.copy(), self._screen(px, py, width, height)
+
+
+# -- the scene ---------------------------------------------------------------------------------------
+
+class Scene:
+    """What a ray tracer draws (Goldman §17.2): ``objects`` (each with ``.hit(origins, directions) ->
+    (t, normals)`` and a ``.material``, as in :mod:`goldman_lib.simple_surfaces`), point ``lights``
+    (:class:`goldman_lib.lighting.Light`), the ambient intensity ``I_a`` (a number or RGB triple)
+    and the ``background`` colour a ray that hits nothing sees.
+
+    >>> s = Scene([Sphere((0, 0, 0), 1)], [Light((0, 0, 5))], ambient_light=0.3)
+    >>> len(s.objects), s.background.tolist()
+    (1, [0.0, 0.0, 0.0])
+    """
+
+    def __init__(self, objects, lights, ambient_light=0.2, background=(0.0, 0.0, 0.0)):
+        try:
+            objects = tuple(objects)
+        except TypeError:
+            raise TypeError(f"objects must be a sequence of surfaces; got {type(objects).__name__}") from None
+        for k, obj in enumerate(objects):
+            if not callable(getattr(obj, "hit", None)) or not isinstance(getattr(obj, "material", None), Material):
+                raise TypeError(f"objects[{k}] must have a .hit(origins, directions) method and a "
+                                f"goldman_lib.lighting.Material as .material (a simple surface or a CSG solid); "
+                                f"got {type(obj).__name__}")
+        if isinstance(lights, Light):
+            lights = (lights,)
+        try:
+            lights = tuple(lights)
+        except TypeError:
+            raise TypeError(f"lights must be a sequence of goldman_lib.lighting.Light; got {type(lights).__name__}") from None
+        if not all(isinstance(light, Light) for light in lights):
+            raise TypeError("lights must be a sequence of goldman_lib.lighting.Light")
+        for k, obj in enumerate(objects):
+            _index(obj.material.index, f"objects[{k}].material.index")
+        self.objects = objects
+        self.lights = lights
+        a = check_finite(as_float_array(ambient_light, "ambient_light"), "ambient_light")
+        if a.shape not in ((), (3,)) or np.any(a < 0):
+            raise ValueError(f"ambient_light must be a number >= 0 or an RGB triple of them; got {a.tolist()}")
+        self.ambient_light = a
+        b = check_finite(as_float_array(background, "background"), "background")
+        if b.shape != (3,) or np.any(b < 0) or np.any(b > 1):
+            raise ValueError(f"background must be an RGB triple in [0, 1]; got {b.tolist()}")
+        self.background = b
+
+
+# -- refraction (§17.5) ------------------------------------------------------------------------------
+
+def _index(value, name):
+    arr = check_finite(as_float_array(value, name), name)
+    lo, hi = INDEX_RANGE
+    if np.any(arr < lo) or np.any(arr > hi):
+        raise ValueError(f"{name} must lie in [{lo:g}, {hi:g}] (an index of refraction); got {arr.tolist()}")
+    return arr
+
+
+def refract_rays(directions, normals, n1, n2) -> tuple[np.ndarray, np.ndarray]:
+    """Snell's law for many rays at once (Goldman §17.5): the unit refracted directions ``(N, 3)``
+    and a boolean ``(N,)``, True where the ray is totally internally reflected (its row is then 0).
+
+    directions, normals: (N, 3) (need not be unit; each normal is turned to face the incoming ray,
+    so either side of the surface may be given).  n1: the index of the medium the ray comes from;
+    n2: the index of the medium it enters; each a number or (N,) in :data:`INDEX_RANGE`.  With ``d`` and ``N`` unit,
+    ``N . d < 0``, ``eta = n1 / n2`` and ``cos1 = -N . d``: ``sin^2(theta2) = eta^2 (1 - cos1^2)``;
+    if it exceeds 1 the ray is totally reflected, otherwise
+    ``T = eta d + (eta cos1 - cos2) N`` with ``cos2 = sqrt(1 - sin^2(theta2))``.
+
+    >>> T, tir = refract_rays([[1, 0, -1], [1, 0, -3]], [[0, 0, 1], [0, 0, 1]], 1.5, 1.0)
+    >>> tir.tolist()              # glass to air: 45 deg is past the critical 41.8 deg, 18.4 deg is not
+    [True, False]
+    >>> refract_rays([[0, 0, -1]], [[0, 0, 1]], 1.0, 1.33)[0].tolist()   # head on: no bending
+    [[0.0, 0.0, -1.0]]
+    """
+    d = lighting.unit_rows(as_points(directions, "directions", dim=3), "directions")
+    N = lighting.unit_rows(as_points(normals, "normals", dim=3), "normals")
+    if N.shape != d.shape:
+        raise ValueError(f"normals must have the shape of directions {d.shape}; got {N.shape}")
+    if not np.all(np.any(d != 0, axis=1)):
+        raise ValueError("directions must be nonzero vectors")
+    if not np.all(np.any(N != 0, axis=1)):
+        raise ValueError("normals must be nonzero vectors")
+    indices = []
+    for value, name in ((n1, "n1"), (n2, "n2")):
+        arr = _index(value, name)
+        if arr.shape not in ((), (len(d),)):
+            raise ValueError(f"{name} must be a number or one per ray ({len(d)},); got shape {arr.shape}")
+        indices.append(arr)
+    return _refract(d, N, indices[0] / indices[1])
+
+
+def _refract(d, N, eta):
+    """Unchecked Snell's law: unit ``d``, unit ``N`` (any side), ``eta = n1/n2`` (scalar or (N,))."""
+    facing = _dot(d, N)
+    N = np.where((facing > 0)[:, None], -N, N)
+    cos1 = np.abs(facing)
+    eta = np.broadcast_to(eta, cos1.shape)
+    sin2 = eta * eta * np.maximum(1.0 - cos1 * cos1, 0.0)
+    tir = sin2 > 1.0
+    cos2 = np.sqrt(np.maximum(1.0 - sin2, 0.0))
+    T = eta[:, None] * d + (eta * cos1 - cos2)[:, None] * N
+    T = lighting.unit_rows(T)
+    T[tir] = 0.0
+    return T, tir
+
+
+def refract(direction, normal, n1, n2):
+    """The unit refracted direction of one ray by Snell's law (Goldman §17.5), or ``None`` on total
+    internal reflection.
+
+    direction, normal: (3,) (any length; the normal may face either side).  n1: the index of
+    refraction of the medium the ray leaves, n2: of the medium it enters (both in :data:`INDEX_RANGE`).
+    ``n1 sin(theta1) = n2 sin(theta2)``, the angles measured from the normal.
+
+    >>> [round(v, 6) for v in refract([1, 0, -1], [0, 0, 1], 1.0, 1.0)]   # same medium: straight on
+    [0.707107, 0.0, -0.707107]
+    >>> refract([1, 0, -0.5], [0, 0, 1], 1.5, 1.0) is None                 # 63 deg in glass: TIR
+    True
+    """
+    d = as_points(direction, "direction", ndim=1, dim=3)
+    N = as_points(normal, "normal", ndim=1, dim=3)
+    n1 = float(_index(as_float(n1, "n1"), "n1"))
+    n2 = float(_index(as_float(n2, "n2"), "n2"))
+    if not np.any(d != 0):
+        raise ValueError("direction must be a nonzero vector")
+    if not np.any(N != 0):
+        raise ValueError("normal must be a nonzero vector")
+    with np.errstate(over="ignore", invalid="ignore"):
+        T, tir = refract_rays(d[None] / np.abs(d).max(), N[None] / np.abs(N).max(), n1, n2)
+    if tir[0]:
+        return None
+    return [float(v) for v in T[0]]
+
+
+def critical_angle(n1, n2):
+    """The critical angle in degrees, ``arcsin(n2 / n1)``, for light going from a medium of index
+    ``n1`` into one of index ``n2`` (Goldman §17.5): rays meeting the surface farther than this
+    from the normal are totally internally reflected.  ``None`` if ``n1 <= n2`` (every ray passes).
+
+    >>> round(critical_angle(1.5, 1.0), 4)          # glass to air
+    41.8103
+    >>> critical_angle(1.0, 1.5) is None
+    True
+    """
+    n1 = as_float(n1, "n1", positive=True)
+    n2 = as_float(n2, "n2", positive=True)
+    if n1 <= n2:
+        return None
+    return math.degrees(math.asin(n2 / n1))
+
+
+def ray_tree_size(depth: int, lights: int = 0) -> int:
+    """The most rays a pixel's ray tree of recursion depth ``depth`` can hold (Goldman §17.2): each
+    ray that hits spawns a reflected and a refracted ray, so ``2^(depth+1) - 1`` rays, and each of
+    them that hits sends one shadow ray per light: times ``1 + lights``.
+
+    >>> ray_tree_size(0), ray_tree_size(3), ray_tree_size(2, lights=2)
+    (1, 15, 21)
+    """
+    depth = as_int(depth, "depth", minimum=0, maximum=MAX_DEPTH)
+    lights = as_int(lights, "lights", minimum=0, maximum=1000)
+    return (2 ** (depth + 1) - 1) * (1 + lights)
+
+
+# -- the tracer (§17.2-17.5) -------------------------------------------------------------------------
+
+class RaySegment(NamedTuple):
+    """One segment of a ray tree (:func:`ray_tree`): ``kind`` (``"primary"``, ``"reflected"``,
+    ``"refracted"`` or ``"shadow"``), ``start`` and ``end`` (3,), the recursion ``level`` (0 for the
+    primary ray; a shadow ray has its parent's level), ``weight`` (the fraction of its light that
+    reaches the pixel) and ``hit``: whether it ends on an object (for a shadow ray: the light is
+    blocked; a ray that hits nothing ends ``miss_length`` along its direction)."""
+
+    kind: str
+    start: np.ndarray
+    end: np.ndarray
+    level: int
+    weight: float
+    hit: bool
+
+
+def _image_size(width, height, depth):
+    width = within_budget(width, "width", cost=lambda v: v, what="an image row", unit="pixels", minimum=1)
+    height = within_budget(height, "height", cost=lambda v: v * width, what=f"an image {width} pixels wide",
+                           unit="pixels", minimum=1)
+    depth = as_int(depth, "depth", minimum=0, maximum=MAX_DEPTH)
+    pixels = width * height
+    within_budget(depth, "depth", cost=lambda d: pixels * (2 ** (d + 1) - 1),
+                  what=f"a {width}x{height} image's ray trees", unit="rays")
+    return width, height
+
+
+def _bounding_sphere(obj):
+    """A sphere enclosing ``obj`` (centre, radius) if it has one: ``obj.bounding_sphere`` or, for a
+    :class:`Sphere`, itself.  Rays that miss it skip the object's own intersection test."""
+    bound = getattr(obj, "bounding_sphere", None)
+    if bound is not None:
+        return np.asarray(bound[0], dtype=float), float(bound[1])
+    if isinstance(obj, Sphere):
+        return obj.center, obj.radius
+    return None
+
+
+def _may_hit(bound, o, d, reach=None):
+    """Which rays (unit ``d``) pass within the bounding sphere ahead of their origin (and, if
+    ``reach`` is given, before parameter ``reach``): a cheap, conservative test."""
+    if bound is None:
+        return None
+    center, radius = bound
+    r = radius * (1 + 1e-6) + 1e-9
+    oc = center - o
+    along = _dot(oc, d)
+    dist2 = _dot(oc, oc)
+    near = dist2 - along * along <= r * r
+    ahead = (along >= -r)
+    if reach is not None:
+        ahead &= along <= reach + r
+    return near & ahead
+
+
+def _nearest(objects, bounds, o, d):
+    """Nearest hit over the objects: t (N,), index of the object (N,) (-1 on a miss), normals (N, 3)."""
+    n = len(o)
+    best = np.full(n, np.inf)
+    which = np.full(n, -1)
+    normals = np.zeros((n, 3))
+    for k, obj in enumerate(objects):
+        rows = _may_hit(bounds[k], o, d)
+        if rows is None:
+            t, nk = obj.hit(o, d)
+            closer = t < best
+            best[closer] = t[closer]
+            which[closer] = k
+            normals[closer] = nk[closer]
+            continue
+        rows = np.flatnonzero(rows)
+        if len(rows) == 0:
+            continue
+        t, nk = obj.hit(o[rows], d[rows])
+        closer = t < best[rows]
+        idx = rows[closer]
+        best[idx] = t[closer]
+        which[idx] = k
+        normals[idx] = nk[closer]
+    return best, which, normals
+
+
+def _blocked(objects, bounds, P, N_f, owner, entering, lights):
+    """Shadow rays (§17.3): True where something lies between each point and each light, (N, L).
+    A light behind the surface (``L . N <= 0``) is blocked by the surface itself; otherwise a plane
+    cannot shadow its own points, nor a sphere the points on its outside."""
+    out = np.zeros((len(P), len(lights)), dtype=bool)
+    for j, light in enumerate(lights):
+        to_light = np.asarray(light.position) - P
+        distance = np.sqrt(_dot(to_light, to_light))
+        out[:, j] = _dot(to_light, N_f) <= 0
+        unit = to_light / np.where(distance > 0, distance, 1.0)[:, None]
+        for k, obj in enumerate(objects):
+            test = ~out[:, j] & (distance > 0)
+            if isinstance(obj, Plane):
+                test &= owner != k
+            elif isinstance(obj, Sphere):
+                test &= (owner != k) | ~entering
+            near = _may_hit(bounds[k], P, unit, distance)
+            if near is not None:
+                test &= near
+            rows = np.flatnonzero(test)
+            if len(rows) == 0:
+                continue
+            intersect = getattr(obj, "intersect", None)
+            t = intersect(P[rows], to_light[rows]) if intersect is not None else obj.hit(P[rows], to_light[rows])[0]
+            out[rows[t < 1.0], j] = True
+    return out
+
+
+def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | None = None,
+          miss_length: float = 3.0, counts: dict | None = None) -> np.ndarray:
+    """The colour each ray brings back, traced recursively to ``depth`` (Goldman §17.2-17.5):
+    ``(N, 3)``, unclipped.  origins, directions: (N, 3) (a single ray as two (3,) vectors).
+
+    The rays of one recursion level are traced together: nearest hit over the objects; local light
+    by :func:`goldman_lib.lighting.intensity` with a shadow ray per light; then the reflected rays
+    (weight ``k_r``) and refracted rays (weight ``k_t``; on total internal reflection the reflected
+    ray gets ``k_r + k_t``) form the next level.  record: a list to append the :class:`RaySegment`
+    of every ray traced (what :func:`ray_tree` draws; keep N small).  counts: a dict to receive the
+    number of ``"rays"`` traced (primary, reflected and refracted) and of ``"shadow"`` rays.
+
+    >>> s = Scene([Sphere((0, 0, 0), 1, Material(colour=(1, 1, 1), ambient=1, diffuse=0, specular=0))],
+    ...           [Light((0, 0, 5))], ambient_light=0.25, background=(0, 0, 1))
+    >>> trace(s, [[0, 0, -5], [0, 3, -5]], [[0, 0, 1], [0, 0, 1]], depth=0).tolist()
+    [[0.25, 0.25, 0.25], [0.0, 0.0, 1.0]]
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
+    from goldman_lib.simple_surfaces import rays
+
+    o, d = rays(origins, directions)
+    depth = as_int(depth, "depth", minimum=0, maximum=MAX_DEPTH)
+    within_budget(depth, "depth", cost=lambda k: len(o) * (2 ** (k + 1) - 1), what=f"the ray trees of {len(o)} rays",
+                  unit="rays")
+    miss_length = as_float(miss_length, "miss_length", positive=True)
+    if counts is not None and not isinstance(counts, dict):
+        raise TypeError(f"counts must be a dict (to receive the ray counts) or None; got {type(counts).__name__}")
+    if record is not None and not isinstance(record, list):
+        raise TypeError(f"record must be a list (to append the ray segments to) or None; got {type(record).__name__}")
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        d = lighting.unit_rows(d / np.abs(d).max(axis=1, keepdims=True))
+        colour = _trace(scene, np.array(o, dtype=float), d, depth, record, miss_length,
+                        {} if counts is None else counts)
+    if not np.all(np.isfinite(colour)):
+        raise ValueError("origins are too large in magnitude: the traced colour overflows float64")
+    return colour
+
+
+def _trace(scene, o, d, depth, record, miss_length, counts):
+    n_rays = len(o)
+    counts["rays"] = counts["shadow"] = 0
+    colour = np.zeros((n_rays, 3))
+    pixel = np.arange(n_rays)                # which input ray each ray of this level belongs to
+    weight = np.ones(n_rays)
+    kinds = np.zeros(n_rays, dtype=int)      # 0 primary, 1 reflected, 2 refracted
+    names = ("primary", "reflected", "refracted")
+    objects, lights = scene.objects, scene.lights
+    bounds = [_bounding_sphere(obj) for obj in objects]
+    for level in range(depth + 1):
+        if len(o) == 0:
+            break
+        counts["rays"] += len(o)
+        t, which, normals = _nearest(objects, bounds, o, d) if objects else (np.full(len(o), np.inf),
+                                                                        np.full(len(o), -1), np.zeros((len(o), 3)))
+        miss = which < 0
+        brought = np.zeros((len(o), 3))      # what each ray of this level brings to its pixel
+        brought[miss] = weight[miss, None] * scene.background
+        hit = ~miss
+        hit_rows = np.flatnonzero(hit)
+        P = o[hit] + t[hit, None] * d[hit]
+        if record is not None:
+            ends = np.where(miss[:, None], o + miss_length * d, o + np.where(miss, 0.0, t)[:, None] * d)
+            for i in range(len(o)):
+                record.append(RaySegment(names[kinds[i]], o[i].copy(), ends[i].copy(), level, float(weight[i]),
+                                         bool(hit[i])))
+        if not hit.any():
+            _accumulate(colour, pixel, brought, level)
+            break
+        d_h, N, w, pix, obj_h = d[hit], normals[hit], weight[hit], pixel[hit], which[hit]
+        eye_h = o[hit]
+        entering = _dot(d_h, N) < 0
+        N_f = np.where(entering[:, None], N, -N)      # the normal on the side the ray arrives from
+        outside = P + OFFSET * N_f
+        blocked = _blocked(objects, bounds, outside, N_f, obj_h, entering, lights)
+        counts["shadow"] += blocked.size
+        if record is not None:
+            for i in range(len(P)):
+                for j, light in enumerate(lights):
+                    end = np.asarray(light.position, dtype=float)
+                    if blocked[i, j]:
+                        to_light = end - outside[i]
+                        tb = min(_first_t(obj, outside[i], to_light) for obj in objects)
+                        end = outside[i] + tb * to_light
+                    record.append(RaySegment("shadow", P[i].copy(), end, level, float(w[i]), bool(blocked[i, j])))
+        next_o, next_d, next_w, next_p, next_k = [], [], [], [], []
+        order = np.argsort(obj_h, kind="stable")
+        firsts = np.flatnonzero(np.diff(obj_h[order], prepend=-1))
+        for sel in np.split(order, firsts[1:]):      # the hits on each object, as row indices
+            m = objects[obj_h[sel[0]]].material
+            local = lighting.intensity(P[sel], N_f[sel], eye_h[sel], lights, m, scene.ambient_light,
+                                       shadowed=blocked[sel])
+            brought[hit_rows[sel]] = w[sel, None] * local
+            if level == depth or (m.reflect == 0 and m.transmit == 0):
+                continue
+            r_weight = np.full(len(sel), m.reflect)
+            if m.transmit > 0:
+                eta = np.where(entering[sel], 1.0 / m.index, m.index)
+                T, tir = _refract(d_h[sel], N_f[sel], eta)
+                r_weight = r_weight + np.where(tir, m.transmit, 0.0)
+                go = sel[~tir]
+                if len(go):
+                    next_o.append(P[go] - OFFSET * N_f[go])
+                    next_d.append(T[~tir])
+                    next_w.append(w[go] * m.transmit)
+                    next_p.append(pix[go])
+                    next_k.append(np.full(len(go), 2))
+            keep = r_weight > 0
+            go = sel[keep]
+            if len(go):
+                next_o.append(outside[go])
+                next_d.append(lighting.unit_rows(lighting.reflect(-d_h[go], N_f[go])))
+                next_w.append(w[go] * r_weight[keep])
+                next_p.append(pix[go])
+                next_k.append(np.full(len(go), 1))
+        _accumulate(colour, pixel, brought, level)
+        if not next_o:
+            break
+        o, d = np.concatenate(next_o), np.concatenate(next_d)
+        weight, pixel, kinds = np.concatenate(next_w), np.concatenate(next_p), np.concatenate(next_k)
+    return colour
+
+
+def _accumulate(colour, pixel, brought, level):
+    """Add each ray's light to its pixel (a pixel may have several rays on one level)."""
+    if level == 0:
+        colour += brought                    # one primary ray per pixel
+    else:
+        for c in range(3):
+            colour[:, c] += np.bincount(pixel, brought[:, c], minlength=len(colour))
+
+
+def _first_t(obj, origin, direction):
+    t, _ = obj.hit(origin[None], direction[None])
+    return float(t[0]) if t[0] < 1.0 else 1.0
+
+
+def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3, *,
+           counts: dict | None = None) -> np.ndarray:
+    """Ray trace ``scene`` seen by ``camera`` (Goldman §17.2): a ``(height, width, 3)`` image in
+    [0, 1] (row 0 at the top).  depth: the recursion depth (0: local light and shadows only).
+    The work ``width * height * (2^(depth+1) - 1)`` rays is bounded by
+    :data:`goldman_lib.validation.MAX_ITEMS`; depth by :data:`MAX_DEPTH`.  counts: as in :func:`trace`.
+
+    >>> img = render(default_scene(), default_camera(), 8, 6, depth=1)
+    >>> img.shape
+    (6, 8, 3)
+    """
+    if not isinstance(camera, Camera):
+        raise TypeError(f"camera must be a goldman_lib.ray_tracing.Camera; got {type(camera).__name__}")
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
+    width, height = _image_size(width, height, depth)
+    o, d = camera.rays(width, height)
+    colour = trace(scene, o, d, depth, counts=counts)
+    return lighting.to_image(colour.reshape(height, width, 3))
+
+
+def ray_tree(scene: Scene, camera: Camera, px: int, py: int, depth: int = 3, width: int = 160,
+             height: int = 120, miss_length: float = 3.0) -> list[RaySegment]:
+    """The ray tree of pixel ``(px, py)`` of a ``width`` x ``height`` image (Goldman §17.2): every
+    ray the recursive tracer follows for that pixel, as :class:`RaySegment` s (primary, reflected,
+    refracted and shadow rays), level by level.
+
+    >>> tree = ray_tree(default_scene(), default_camera(), 80, 60, depth=2)
+    >>> tree[0].kind, tree[0].level
+    ('primary', 0)
+    """
+    if not isinstance(camera, Camera):
+        raise TypeError(f"camera must be a goldman_lib.ray_tracing.Camera; got {type(camera).__name__}")
+    width, height = _image_size(width, height, depth)
+    o, d = camera.ray(px, py, width, height)
+    segments: list[RaySegment] = []
+    trace(scene, o[None], d[None], depth, record=segments, miss_length=miss_length)
+    return segments
+
+
+# -- the chapter's scene --------------------------------------------------------------------------------
+
+#: The materials of :func:`default_scene`.
+MATERIALS = {
+    "floor": Material(colour=(0.82, 0.8, 0.74), ambient=0.9, diffuse=0.7, specular=0.05, exponent=8),
+    "red": Material(colour=(0.85, 0.18, 0.15), ambient=0.3, diffuse=0.75, specular=0.5, exponent=40),
+    "blue": Material(colour=(0.2, 0.35, 0.9), ambient=0.3, diffuse=0.7, specular=0.5, exponent=60),
+    "mirror": Material(colour=(0.85, 0.85, 0.9), ambient=0.05, diffuse=0.1, specular=0.7, exponent=120,
+                       reflect=0.8),
+    "glass": Material(colour=(0.95, 0.97, 1.0), ambient=0.0, diffuse=0.05, specular=0.8, exponent=150,
+                      reflect=0.08, transmit=0.88, index=1.5),
+}
+
+
+def default_lights() -> tuple[Light, ...]:
+    """The light of :func:`default_scene`: one white point light above and in front of the spheres.
+
+    >>> default_lights()[0].position
+    (-2.5, -1.5, 5.0)
+    """
+    return (Light((-2.5, -1.5, 5.0), intensity=1.0),)
+
+
+def default_scene(index: float = 1.5, lights=None, ambient_light=0.3) -> Scene:
+    """The chapter's scene: a floor (the plane z = 0) under four spheres, a red and a blue matte one,
+    a mirror (``reflect = 0.8``) and a glass one (``transmit = 0.88``, index of refraction ``index``)
+    in front, under :func:`default_lights` (or ``lights``), with a sky-blue background.  The camera
+    :func:`default_camera` looks along +x, so the x-z plane is a side view of the scene.
+
+    >>> [type(o).__name__ for o in default_scene().objects]
+    ['Plane', 'Sphere', 'Sphere', 'Sphere', 'Sphere']
+    """
+    index = as_float(index, "index", positive=True)
+    glass = dataclasses.replace(MATERIALS["glass"], index=index)
+    objects = [
+        Plane((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), MATERIALS["floor"]),
+        Sphere((-1.2, 0.55, 0.75), 0.75, glass),
+        Sphere((1.6, -1.25, 1.0), 1.0, MATERIALS["mirror"]),
+        Sphere((1.8, 1.5, 0.9), 0.9, MATERIALS["red"]),
+        Sphere((0.6, 0.35, 0.45), 0.45, MATERIALS["blue"]),
+    ]
+    return Scene(objects, default_lights() if lights is None else lights, ambient_light=ambient_light,
+                 background=(0.62, 0.76, 0.92))
+
+
+def default_camera(fov: float = 45.0) -> Camera:
+    """The camera of :func:`default_scene`: the eye at (-7, 0, 2.2) looking at (0, 0, 0.8), z up.
+
+    >>> default_camera().eye.tolist()
+    [-7.0, 0.0, 2.2]
+    """
+    return Camera((-7.0, 0.0, 2.2), (0.0, 0.0, 0.8), up=(0.0, 0.0, 1.0), fov=fov)

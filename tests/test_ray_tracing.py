@@ -1,0 +1,246 @@
+"""Recursive ray tracing (Goldman ch. 17) against closed forms and values worked by hand."""
+
+import math
+
+import numpy as np
+import pytest
+
+from goldman_lib import ray_tracing as rt
+from goldman_lib.lighting import Light, Material
+from goldman_lib.simple_surfaces import Plane, Sphere
+
+
+def _angle_to(v, axis):
+    v, axis = np.asarray(v, float), np.asarray(axis, float)
+    return math.degrees(math.acos(abs(v @ axis) / np.linalg.norm(v) / np.linalg.norm(axis)))
+
+
+# -- Snell's law and total internal reflection (§17.5) -----------------------------------------------
+
+def test_refract_thirty_degrees_into_glass_by_hand():
+    # sin 30 = 1/2, so sin(theta2) = (1/2) / 1.5 = 1/3 and cos(theta2) = sqrt(8)/3
+    d = [math.sin(math.radians(30)), 0.0, -math.cos(math.radians(30))]
+    T = rt.refract(d, [0, 0, 1], 1.0, 1.5)
+    assert T == pytest.approx([1 / 3, 0.0, -math.sqrt(8) / 3], abs=1e-12)
+    # the normal may be given on either side
+    assert rt.refract(d, [0, 0, -1], 1.0, 1.5) == pytest.approx(T, abs=1e-12)
+    # and the ray runs back the way it came (reversibility of light)
+    back = rt.refract([-T[0], 0.0, -T[2]], [0, 0, 1], 1.5, 1.0)
+    assert back == pytest.approx([-d[0], 0.0, -d[2]], abs=1e-12)
+
+
+def test_snell_sine_ratio_over_many_angles_and_indices():
+    rng = np.random.default_rng(17)
+    for _ in range(200):
+        theta1 = rng.uniform(0, 89)
+        n1, n2 = rng.uniform(1.0, 2.5, size=2)
+        azimuth = rng.uniform(0, 2 * np.pi)
+        d = np.array([math.sin(math.radians(theta1)) * math.cos(azimuth),
+                      math.sin(math.radians(theta1)) * math.sin(azimuth), -math.cos(math.radians(theta1))])
+        T = rt.refract(3.0 * d, [0, 0, 2.0], n1, n2)
+        s2 = n1 / n2 * math.sin(math.radians(theta1))
+        if s2 > 1:
+            assert T is None
+            continue
+        T = np.asarray(T)
+        assert np.linalg.norm(T) == pytest.approx(1.0, abs=1e-12)
+        assert T[2] < 0                                              # it goes on through the surface
+        assert n1 * math.sin(math.radians(theta1)) == pytest.approx(n2 * math.sin(math.radians(_angle_to(T, [0, 0, 1]))),
+                                                                     abs=1e-9)
+        # the refracted ray stays in the plane of incidence (same azimuth)
+        assert abs(np.cross(d, T) @ [0, 0, 1]) < 1e-12 or np.cross(d, T) @ np.cross([0, 0, 1], d) > -1e-12
+
+
+def test_critical_angle_and_total_internal_reflection():
+    assert rt.critical_angle(1.5, 1.0) == pytest.approx(math.degrees(math.asin(2 / 3)), abs=1e-12)
+    assert rt.critical_angle(1.5, 1.0) == pytest.approx(41.8103149, abs=1e-6)
+    assert rt.critical_angle(1.33, 1.33) is None and rt.critical_angle(1.0, 2.4) is None
+    for theta, passes in ((41.7, True), (41.9, False), (60.0, False), (0.0, True)):
+        d = [math.sin(math.radians(theta)), 0.0, -math.cos(math.radians(theta))]
+        assert (rt.refract(d, [0, 0, 1], 1.5, 1.0) is not None) == passes
+    # just below the critical angle the refracted ray grazes the surface (theta2 near 90 degrees)
+    d = [math.sin(math.radians(41.81)), 0.0, -math.cos(math.radians(41.81))]
+    assert _angle_to(rt.refract(d, [0, 0, 1], 1.5, 1.0), [0, 0, 1]) > 88.0
+    T, tir = rt.refract_rays([[1, 0, -1], [0, 1, -1], [0, 0, -1]], [[0, 0, 1]] * 3, [1.5, 1.0, 1.5], 1.0)
+    assert tir.tolist() == [True, False, False] and np.all(T[0] == 0)
+
+
+def test_refract_refuses_bad_input_by_name():
+    with pytest.raises(ValueError, match="n2"):
+        rt.refract([0, 0, -1], [0, 0, 1], 1.0, 0.0)
+    with pytest.raises(ValueError, match="direction"):
+        rt.refract([0, 0, 0], [0, 0, 1], 1.0, 1.5)
+    with pytest.raises(ValueError, match="n1"):
+        rt.refract_rays([[0, 0, -1]] * 2, [[0, 0, 1]] * 2, [1.0, 1.0, 1.0], 1.5)
+
+
+# -- the camera and the tracer ---------------------------------------------------------------------
+
+def test_camera_rays_through_pixel_centres():
+    cam = rt.Camera((0, -5, 0), (0, 0, 0), fov=90)
+    o, d = cam.rays(3, 3)
+    assert np.allclose(o, [0, -5, 0]) and np.allclose(np.linalg.norm(d, axis=1), 1)
+    assert d[4] == pytest.approx([0, 1, 0])                  # the centre pixel looks straight ahead
+    # the screen's half-height is tan 45 = 1; pixel centres at -2/3, 0, 2/3; row 0 is the top
+    assert d[1] == pytest.approx(np.array([0, 1, 2 / 3]) / math.sqrt(1 + 4 / 9))
+    assert d[3] == pytest.approx(np.array([-2 / 3, 1, 0]) / math.sqrt(1 + 4 / 9))
+    with pytest.raises(ValueError, match="up"):
+        rt.Camera((0, 0, 5), (0, 0, 0), up=(0, 0, 1))
+    with pytest.raises(ValueError, match="fov"):
+        rt.Camera((0, -5, 0), (0, 0, 0), fov=180)
+
+
+def _one_sphere(light=(0.0, -5.0, 5.0)):
+    m = Material(colour=(1.0, 0.5, 0.25), ambient=0.2, diffuse=0.6, specular=0.3, exponent=10)
+    return rt.Scene([Sphere((0, 0, 0), 1, m)], [Light(light)], ambient_light=0.5, background=(0, 0, 0))
+
+
+def test_one_sphere_centre_pixel_by_hand():
+    scene = _one_sphere()
+    cam = rt.Camera((0, -5, 0), (0, 0, 0), fov=30)
+    img = rt.render(scene, cam, 5, 5, depth=2)
+    # the centre ray hits (0, -1, 0) with N = (0, -1, 0); L = (0, -4, 5)/sqrt(41), so L.N = 4/sqrt(41);
+    # R = 2 (L.N) N - L = (0, -4, -5)/sqrt(41), V = (0, -1, 0), so R.V = 4/sqrt(41).
+    c = np.array([1.0, 0.5, 0.25])
+    cos = 4 / math.sqrt(41)
+    expected = 0.5 * 0.2 * c + 0.6 * cos * c + 0.3 * cos ** 10
+    assert img[2, 2] == pytest.approx(expected, abs=1e-12)
+    assert np.all(img[0, 0] == 0)                            # the corner ray misses: the black background
+
+
+def test_shadow_ray_leaves_ambient_only():
+    floor = Material(colour=(0.5, 0.6, 0.7), ambient=0.4, diffuse=0.8, specular=0.0)
+    occluder = Material(colour=(1, 0, 0))
+    scene = rt.Scene([Plane((0, 0, 0), (0, 0, 1), floor), Sphere((0, 0, 1), 0.5, occluder)],
+                     [Light((0, 0, 5))], ambient_light=0.5)
+    colours = rt.trace(scene, [[0, -3, 3], [3, -3, 3]], [[0, 3, -3], [0, 3, -3]], depth=0)
+    ambient = 0.5 * 0.4 * np.array([0.5, 0.6, 0.7])
+    assert colours[0] == pytest.approx(ambient, abs=1e-12)    # (0,0,0) is behind the sphere: ambient only
+    # (3,0,0) sees the light: L = (-3, 0, 5)/sqrt(34), L.N = 5/sqrt(34)
+    assert colours[1] == pytest.approx(ambient + 0.8 * 5 / math.sqrt(34) * np.array([0.5, 0.6, 0.7]), abs=1e-12)
+    tree = rt.ray_tree(scene, rt.Camera((0, -3, 3), (0, 0, 0)), 0, 0, depth=0, width=1, height=1)
+    shadow = [s for s in tree if s.kind == "shadow"]
+    assert len(shadow) == 1 and shadow[0].hit                # blocked, and it ends on the occluder
+    assert shadow[0].end == pytest.approx([0, 0, 0.5], abs=1e-6)
+
+
+def test_mirror_reflection_angle_and_weight():
+    mirror = Material(colour=(0.2, 0.2, 0.2), reflect=0.6)
+    scene = rt.Scene([Plane((0, 0, 0), (0, 0, 1), mirror)], [Light((0, 0, 4))])
+    # a ray coming down at 30 degrees from the normal leaves at 30 degrees on the other side
+    d = np.array([math.sin(math.radians(30)), 0.0, -math.cos(math.radians(30))])
+    segments = []
+    rt.trace(scene, [-d * 2], [d], depth=1, record=segments)
+    reflected = [s for s in segments if s.kind == "reflected"]
+    assert len(reflected) == 1 and reflected[0].weight == pytest.approx(0.6)
+    r = reflected[0].end - reflected[0].start
+    assert r / np.linalg.norm(r) == pytest.approx([d[0], 0, -d[2]], abs=1e-12)
+    # the mirror's colour: its local light plus 0.6 of the (white) background it sees
+    colour1 = rt.trace(rt.Scene([Plane((0, 0, 0), (0, 0, 1), mirror)], [Light((0, 0, 4))], background=(1, 1, 1)),
+                       [-d * 2], [d], depth=1)
+    colour0 = rt.trace(rt.Scene([Plane((0, 0, 0), (0, 0, 1), mirror)], [Light((0, 0, 4))], background=(1, 1, 1)),
+                       [-d * 2], [d], depth=0)
+    assert (colour1 - colour0)[0] == pytest.approx([0.6, 0.6, 0.6], abs=1e-12)
+
+
+def test_total_internal_reflection_inside_a_glass_sphere():
+    glass = Material(reflect=0.1, transmit=0.8, index=1.5)
+    scene = rt.Scene([Sphere((0, 0, 0), 1, glass)], [Light((0, 0, 5))])
+    # from (0, 0.9, 0) along +x the ray meets the inside wall 64.2 degrees from the normal (> 41.8)
+    segments = []
+    rt.trace(scene, [[0, 0.9, 0]], [[1, 0, 0]], depth=1, record=segments)
+    level1 = [s for s in segments if s.level == 1 and s.kind != "shadow"]
+    assert [s.kind for s in level1] == ["reflected"]
+    assert level1[0].weight == pytest.approx(0.1 + 0.8)      # all the transmitted light goes along the mirror ray
+    # from (0, 0.5, 0) the angle is 30 degrees: both a refracted and a reflected ray
+    segments = []
+    rt.trace(scene, [[0, 0.5, 0]], [[1, 0, 0]], depth=1, record=segments)
+    kinds = sorted(s.kind for s in segments if s.level == 1 and s.kind != "shadow")
+    assert kinds == ["reflected", "refracted"]
+    refracted = next(s for s in segments if s.kind == "refracted")
+    # leaving glass: sin(theta2) = 1.5 sin 30 = 0.75
+    P = refracted.start
+    assert math.sin(math.radians(_angle_to(refracted.end - P, P))) == pytest.approx(0.75, abs=1e-6)
+
+
+def test_a_glass_sphere_passes_a_ray_through_its_centre_straight():
+    glass = Material(reflect=0.0, transmit=1.0, index=1.5, ambient=0, diffuse=0, specular=0)
+    scene = rt.Scene([Sphere((0, 0, 0), 1, glass)], [], ambient_light=0.0, background=(0.3, 0.6, 0.9))
+    segments = []
+    colour = rt.trace(scene, [[-5, 0, 0]], [[1, 0, 0]], depth=3, record=segments)
+    assert colour[0] == pytest.approx([0.3, 0.6, 0.9], abs=1e-12)   # a clear ball seen head on: the background
+    ends = [s.end for s in segments if s.kind == "refracted"]
+    assert ends[0] == pytest.approx([1, 0, 0], abs=1e-6) and ends[1][1:] == pytest.approx([0, 0], abs=1e-12)
+
+
+# -- whole images ----------------------------------------------------------------------------------
+
+def _primary_object(scene, camera, width, height):
+    o, d = camera.rays(width, height)
+    ts = np.stack([obj.intersect(o, d) for obj in scene.objects])
+    which = np.where(np.isfinite(ts).any(axis=0), ts.argmin(axis=0), -1)
+    return which.reshape(height, width)
+
+
+def test_depth_zero_and_one_differ_only_on_mirror_and_glass():
+    scene, cam = rt.default_scene(), rt.default_camera()
+    img0 = rt.render(scene, cam, 64, 48, depth=0)
+    img1 = rt.render(scene, cam, 64, 48, depth=1)
+    img3 = rt.render(scene, cam, 64, 48, depth=3)
+    for img in (img0, img1, img3):
+        assert img.shape == (48, 64, 3) and img.min() >= 0 and img.max() <= 1
+    which = _primary_object(scene, cam, 64, 48)
+    special = np.isin(which, [k for k, obj in enumerate(scene.objects)
+                              if obj.material.reflect > 0 or obj.material.transmit > 0])
+    differs = np.any(np.abs(img1 - img0) > 1e-12, axis=2)
+    assert differs.any() and not np.any(differs & ~special)
+    assert differs[special].mean() > 0.9                     # and nearly everywhere there
+    # the index of refraction changes only what is seen through the glass sphere
+    glass = [k for k, obj in enumerate(scene.objects) if obj.material.transmit > 0]
+    other = rt.render(rt.default_scene(index=1.2), cam, 64, 48, depth=3)
+    changed = np.any(np.abs(other - img3) > 1e-12, axis=2)
+    assert changed.any()
+    assert not np.any(changed & (which != glass[0]) & ~special)
+
+
+def test_render_matches_trace_pixel_by_pixel():
+    scene, cam = rt.default_scene(), rt.default_camera()
+    img = rt.render(scene, cam, 16, 12, depth=2)
+    o, d = cam.ray(5, 7, 16, 12)
+    assert img[7, 5] == pytest.approx(np.clip(rt.trace(scene, o, d, depth=2)[0], 0, 1), abs=1e-12)
+
+
+def test_ray_tree_structure():
+    scene, cam = rt.default_scene(), rt.default_camera()
+    glass = scene.objects[1]
+    # a pixel on the glass sphere: aim at its centre
+    o, d = cam.eye, glass.center - cam.eye
+    segments = []
+    rt.trace(scene, o, d, depth=3, record=segments)
+    assert segments[0].kind == "primary" and np.allclose(segments[0].start, cam.eye) and segments[0].hit
+    kinds = {s.kind for s in segments}
+    assert kinds == {"primary", "reflected", "refracted", "shadow"}
+    rays = [s for s in segments if s.kind != "shadow"]
+    assert len(rays) <= rt.ray_tree_size(3) and max(s.level for s in rays) == 3
+    assert len(segments) <= rt.ray_tree_size(3, lights=len(scene.lights))
+    tree = rt.ray_tree(scene, cam, 80, 60, depth=0)
+    assert [s.kind for s in tree] in (["primary"], ["primary", "shadow"])
+
+
+def test_ray_tree_size_closed_form():
+    assert [rt.ray_tree_size(d) for d in range(5)] == [1, 3, 7, 15, 31]
+    assert rt.ray_tree_size(3, lights=2) == 45
+
+
+def test_work_budgets():
+    scene, cam = rt.default_scene(), rt.default_camera()
+    with pytest.raises(ValueError, match="width|height"):
+        rt.render(scene, cam, 100_000, 1_000, depth=0)
+    with pytest.raises(ValueError, match="depth"):
+        rt.render(scene, cam, 1000, 1000, depth=4)
+    with pytest.raises(ValueError, match="depth"):
+        rt.render(scene, cam, 4, 4, depth=rt.MAX_DEPTH + 1)
+    with pytest.raises(TypeError, match="objects"):
+        rt.Scene([object()], [])
+    with pytest.raises(ValueError, match="background"):
+        rt.Scene([], [], background=(2, 0, 0))
