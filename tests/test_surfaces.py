@@ -206,5 +206,5 @@ def test_bad_input_is_named():
         sf.curvature_implicit(lambda P: (P ** 2).sum(1), None, None, [[0.0, 0.0, 0.0]])
     with pytest.raises(ValueError, match="r must be smaller"):
         sf.implicit_torus(1.0, 2.0)
-    with pytest.raises(ValueError, match="X must return"):
+    with pytest.raises(ValueError, match=r"X\(u, v\) must return"):
         sf.curvature_parametric(lambda u, v: np.zeros(2), 0.1, 0.2)
