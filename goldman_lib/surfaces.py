@@ -747,30 +747,41 @@ class Deformation:
         return deformed_normals(_call(self.jacobian, "jacobian", P.shape + (3,), P), normals)
 
 
-def twist(degrees_per_unit: float) -> Deformation:
-    """The twist about the z-axis: the point at height ``z`` turns by ``a z`` degrees (Goldman §18.1's
-    deformations; ours as an example).  It keeps ``z`` and the distance from the z-axis.
+def twist(degrees_per_unit: float, axis: str = "z") -> Deformation:
+    """The twist about a coordinate axis: the point at height ``h`` along the axis turns about it by
+    ``a h`` degrees (our example of a deformation, Goldman §18.1).  It keeps ``h`` and the distance from
+    the axis.  axis: ``"x"``, ``"y"`` or ``"z"``.
 
     >>> twist(90).apply([[1.0, 0.0, 1.0]]).round(12).tolist()
     [[0.0, 1.0, 1.0]]
+    >>> twist(90, axis="x").apply([[1.0, 1.0, 0.0]]).round(12).tolist()     # (y, z) turn at x = 1
+    [[1.0, 0.0, 1.0]]
     """
     a = np.radians(as_float(degrees_per_unit, "degrees_per_unit"))
+    if axis not in ("x", "y", "z"):
+        raise ValueError(f"axis must be 'x', 'y' or 'z'; got {axis!r}")
+    # coordinates (p, q, h): h along the axis, (p, q) turning counterclockwise seen from +h
+    order = {"x": [1, 2, 0], "y": [2, 0, 1], "z": [0, 1, 2]}[axis]
+    back = np.argsort(order)
 
     def turn(P, sign):
-        c, s = np.cos(sign * a * P[:, 2]), np.sin(sign * a * P[:, 2])
-        return np.stack([c * P[:, 0] - s * P[:, 1], s * P[:, 0] + c * P[:, 1], P[:, 2]], -1)
+        L = P[:, order]
+        c, s = np.cos(sign * a * L[:, 2]), np.sin(sign * a * L[:, 2])
+        return np.stack([c * L[:, 0] - s * L[:, 1], s * L[:, 0] + c * L[:, 1], L[:, 2]], -1)[:, back]
 
     def jacobian(P):
-        th = a * P[:, 2]
+        L = P[:, order]
+        th = a * L[:, 2]
         c, s = np.cos(th), np.sin(th)
-        x, y = P[:, 0], P[:, 1]
+        x, y = L[:, 0], L[:, 1]
         J = np.zeros((len(P), 3, 3))
         J[:, 0, 0], J[:, 0, 1], J[:, 0, 2] = c, -s, a * (-s * x - c * y)
         J[:, 1, 0], J[:, 1, 1], J[:, 1, 2] = s, c, a * (c * x - s * y)
         J[:, 2, 2] = 1.0
-        return J
+        return J[:, back][:, :, back]
 
-    return Deformation(lambda P: turn(P, 1.0), lambda Q: turn(Q, -1.0), jacobian, name=f"twist {np.degrees(a):g}°/unit")
+    return Deformation(lambda P: turn(P, 1.0), lambda Q: turn(Q, -1.0), jacobian,
+                       name=f"twist {np.degrees(a):g}°/unit about {axis}")
 
 
 def taper(rate: float) -> Deformation:
