@@ -8,7 +8,7 @@ Every exercise uses other surfaces, points and radii than the chapter's worked e
 >>> print(PROBLEMS["check_cylinder_curvature"])   # doctest: +ELLIPSIS
 A circular cylinder has radius 2.5. ...
 >>> check_cylinder_curvature([0.16, 0.4])
-Not yet: those are a sphere's values: a cylinder is flat along its axis, so one principal curvature is 0: K = 0 * (1/r) = 0 and H is the average of 0 and 1/r.
+Not yet: those are a sphere's values: a cylinder is straight along its axis, so one of its principal curvatures vanishes; K is their product and H their average.
 """
 
 from __future__ import annotations
@@ -260,16 +260,17 @@ def check_cylinder_curvature(answer) -> Result:
         return correct("K = 0 and |H| = 1/(2r): the principal curvatures are 1/r around the cylinder and 0 along it; "
                        "K is their product, H their average.")
     if _close(got, [1 / r ** 2, 1 / r], tol):
-        return wrong("those are a sphere's values: a cylinder is flat along its axis, so one principal curvature is 0: "
-                     "K = 0 * (1/r) = 0 and H is the average of 0 and 1/r.")
+        return wrong("those are a sphere's values: a cylinder is straight along its axis, so one of its principal "
+                     "curvatures vanishes; K is their product and H their average.")
     if _close(got, [0.0, 1 / r], tol):
         return wrong("K is right, but |H| = 1/r is the curvature around the cylinder alone; H is the average of the two "
-                     "principal curvatures, 1/r and 0.")
+                     "principal curvatures (the one along the axis vanishes).")
     if _close(got, [1 / r ** 2, 1 / (2 * r)], tol):
-        return wrong("H is right, but K is the product of the principal curvatures 1/r and 0.")
+        return wrong("H is right, but K is the product of the principal curvatures, and the one along the axis "
+                     "vanishes (the axis is a straight line).")
     bad = "K" if abs(got[0] - expected[0]) > tol else "|H|"
-    return wrong(f"your {bad} is off; the principal curvatures are 1/r around the cylinder and 0 along its axis: "
-                 f"K is their product, H their average.")
+    return wrong(f"your {bad} is off; the principal curvatures are 1/r around the cylinder and none along its "
+                 f"straight axis: K is their product, H their average.")
 
 
 def check_torus_curvature(answer) -> Result:
