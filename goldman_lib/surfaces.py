@@ -132,6 +132,17 @@ def _uv(u, v):
     return u, v
 
 
+def _first_partials(X, u, v, partials=None):
+    """``(X_u, X_v)`` only (four evaluations of ``X`` by central differences): what Newton needs."""
+    if partials is not None:
+        return _partials(X, u, v, partials)[:2]
+    shape = u.shape + (3,)
+    h = 1e-6 * np.maximum(1.0, np.maximum(np.abs(u), np.abs(v)))
+    H = h[..., None]
+    x = lambda a, b: _call(X, "X(u, v)", shape, a, b)  # noqa: E731
+    return (x(u + h, v) - x(u - h, v)) / (2 * H), (x(u, v + h) - x(u, v - h)) / (2 * H)
+
+
 def _partials(X, u, v, partials=None):
     """``(X_u, X_v, X_uu, X_uv, X_vv)`` at the parameters (each ``u.shape + (3,)``): from
     ``partials(u, v)`` if given, otherwise by central differences of ``X``."""
@@ -560,23 +571,36 @@ class ParametricSurface(Surface):
         oo, dd = np.repeat(o, k, axis=0), np.repeat(d, k, axis=0)
         t = np.einsum("ij,ij->i", self._seed_xyz[best.ravel()] - oo, dd) / np.einsum("ij,ij->i", dd, dd)
         ok = np.ones(len(t), dtype=bool)
-        for _ in range(40):
-            Xuv = _call(self.X, "X", (len(u), 3), u, v)
-            G = oo + t[:, None] * dd - Xuv
-            Xu, Xv, *_ = _partials(self.X, u, v, self.partials)
-            J = np.stack([dd, -Xu, -Xv], axis=-1)                            # columns: d/dt, d/du, d/dv
+        active = np.ones(len(t), dtype=bool)
+        for it in range(40):
+            a = np.flatnonzero(active & ok)
+            if a.size == 0:
+                break
+            ua, va, ta = u[a], v[a], t[a]
+            Xa = _call(self.X, "X(u, v)", (a.size, 3), ua, va)
+            G = oo[a] + ta[:, None] * dd[a] - Xa
+            if it >= 10:                       # not converging after 10 steps: a seed off any hit; drop it
+                far = np.linalg.norm(G, axis=1) > 1e-6 * (1 + np.abs(Xa).max(axis=1))
+                ok[a[far]] = False
+                keep = ~far
+                a, ua, va, ta, G = a[keep], ua[keep], va[keep], ta[keep], G[keep]
+                if a.size == 0:
+                    break
+            Xu, Xv = _first_partials(self.X, ua, va, self.partials)
+            J = np.stack([dd[a], -Xu, -Xv], axis=-1)                        # columns: d/dt, d/du, d/dv
             det = np.linalg.det(J)
             good = np.isfinite(det) & (np.abs(det) > 1e-300)
             step = np.zeros_like(G)
             if good.any():
                 step[good] = np.linalg.solve(J[good], G[good][..., None])[..., 0]
-            t, u, v = t - step[:, 0], u - step[:, 1], v - step[:, 2]
-            u, v = self._wrap(u, v)
-            ok &= good & np.isfinite(t) & np.isfinite(u) & np.isfinite(v)
-            u, v, t = np.where(ok, u, 0.0), np.where(ok, v, 0.0), np.where(ok, t, 0.0)
-            if np.all(np.abs(step[ok]) <= 1e-14 * (1 + np.abs(np.stack([t, u, v], -1)[ok]))):
-                break
-        Xuv = _call(self.X, "X", (len(u), 3), u, v)
+            ta, ua, va = ta - step[:, 0], ua - step[:, 1], va - step[:, 2]
+            ua, va = self._wrap(ua, va)
+            fine = good & np.isfinite(ta) & np.isfinite(ua) & np.isfinite(va)
+            ok[a] = fine
+            t[a], u[a], v[a] = np.where(fine, ta, 0.0), np.where(fine, ua, 0.0), np.where(fine, va, 0.0)
+            done = np.all(np.abs(step) <= 1e-14 * (1 + np.abs(np.stack([ta, ua, va], -1))), axis=1)
+            active[a[done]] = False
+        Xuv = _call(self.X, "X(u, v)", (len(u), 3), u, v)
         residual = np.linalg.norm(oo + t[:, None] * dd - Xuv, axis=1)
         scale = 1.0 + np.abs(Xuv).max(axis=1)
         ok &= (residual <= 1e-9 * scale) & self._inside(u, v)
