@@ -329,7 +329,10 @@ class ImplicitSurface(Surface):
             center, radius = bound
         except (TypeError, ValueError):
             raise TypeError("bound must be a pair (center, radius)") from None
-        self._bound = Sphere(center, radius)
+        try:
+            self._bound = Sphere(center, radius)
+        except (TypeError, ValueError) as exc:
+            raise type(exc)(f"bound must be (center (3,), radius > 0): {exc}") from None
         self.samples = as_int(samples, "samples", minimum=4, maximum=MAX_SAMPLES)
         self.max_hits = as_int(max_hits, "max_hits", minimum=1, maximum=16)
         self._set_material(material)
@@ -482,8 +485,10 @@ class ParametricSurface(Surface):
         self.u_range = self._range(u_range, "u_range")
         self.v_range = self._range(v_range, "v_range")
         try:
+            if len(periodic) != 2:
+                raise ValueError
             self.periodic = (bool(periodic[0]), bool(periodic[1]))
-        except (TypeError, IndexError):
+        except (TypeError, IndexError, ValueError):
             raise TypeError("periodic must be a pair of booleans (u periodic, v periodic)") from None
         self.grid = as_int(grid, "grid", minimum=2, maximum=200)
         self.starts = as_int(starts, "starts", minimum=1, maximum=16)
@@ -768,7 +773,13 @@ class Deformation:
         """The normals at ``A(P)`` of a surface with ``normals`` at ``points`` P: ``J^{-T} n``, unit
         (:func:`deformed_normals`)."""
         P = as_points(points, "points", dim=3)
-        return deformed_normals(_call(self.jacobian, "jacobian", P.shape + (3,), P), normals)
+        try:
+            return deformed_normals(_call(self.jacobian, "jacobian at the points", P.shape + (3,), P), normals)
+        except ValueError as exc:
+            if "jacobians must be invertible" in str(exc):
+                raise ValueError("points: the deformation's Jacobian is not invertible there "
+                                 "(it flattens the surface)") from None
+            raise
 
 
 def twist(degrees_per_unit: float, axis: str = "z") -> Deformation:
