@@ -40,14 +40,14 @@ from typing import NamedTuple
 
 import numpy as np
 
-from goldman_lib import lighting
+from goldman_lib import lighting, shading
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Plane, Sphere
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
                                     within_budget)
 
 __all__ = ["Camera", "Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
-           "trace", "render", "ray_tree", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
+           "trace", "render", "ray_tree", "in_shadow", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
            "OFFSET", "INDEX_RANGE", "MATERIALS"]
 
 #: The deepest recursion a render may ask for (a ray tree of depth d holds up to 2^(d+1) - 1 rays).
@@ -85,29 +85,18 @@ class Camera:
     """
 
     def __init__(self, eye, look_at, up=(0.0, 0.0, 1.0), fov: float = 45.0):
-        self.eye = as_points(eye, "eye", ndim=1, dim=3)
-        self.look_at = as_points(look_at, "look_at", ndim=1, dim=3)
-        forward = self.look_at - self.eye
-        if not np.any(forward != 0):
-            raise ValueError("look_at must differ from eye (the camera needs a viewing direction)")
-        self.forward = _unit(forward, "look_at - eye")
-        self.up_hint = _unit(up, "up")
-        right = np.cross(self.forward, self.up_hint)
-        if np.linalg.norm(right) < 1e-9:
-            raise ValueError("up must not be parallel to the viewing direction look_at - eye")
-        self.right = right / np.linalg.norm(right)
-        self.up = np.cross(self.right, self.forward)
-        self.fov = as_float(fov, "fov")
-        if not 0 < self.fov < 180:
-            raise ValueError(f"fov must lie strictly between 0 and 180 degrees; got {self.fov}")
+        # the frame and the pixel-to-ray map live in shading.Camera (one home for both renderers)
+        try:
+            self._camera = shading.Camera(eye=eye, target=look_at, up=up, fov=fov, width=1, height=1)
+        except (TypeError, ValueError) as exc:
+            raise type(exc)(str(exc).replace("target", "look_at")) from None
+        self.eye = np.array(self._camera.eye)
+        self.look_at = np.array(self._camera.target)
+        self.up_hint = np.array(self._camera.up)
+        self.fov = self._camera.fov
 
     def _screen(self, px, py, width, height):
-        half_h = math.tan(math.radians(self.fov) / 2)
-        half_w = half_h * width / height
-        x = ((np.asarray(px, dtype=float) + 0.5) / width * 2 - 1) * half_w
-        y = (1 - (np.asarray(py, dtype=float) + 0.5) / height * 2) * half_h
-        d = self.forward + x[..., None] * self.right + y[..., None] * self.up
-        return d / np.linalg.norm(d, axis=-1, keepdims=True)
+        return dataclasses.replace(self._camera, width=width, height=height).pixel_directions(px, py)
 
     def rays(self, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
         """The primary rays of a ``width`` x ``height`` image, row by row from the top:
@@ -317,9 +306,11 @@ def _image_size(width, height, depth):
 
 
 def _bounding_sphere(obj):
-    """A sphere enclosing ``obj`` (centre, radius) if it has one: ``obj.bounding_sphere`` or, for a
-    :class:`Sphere`, itself.  Rays that miss it skip the object's own intersection test."""
+    """A sphere enclosing ``obj`` (centre, radius) if it has one: ``obj.bounding_sphere()`` (the
+    simple surfaces' cull, §19.6.1; None for an unbounded surface) or, for a :class:`Sphere`, itself.  Rays that miss it skip the object's own intersection test."""
     bound = getattr(obj, "bounding_sphere", None)
+    if callable(bound):
+        bound = bound()
     if bound is not None:
         return np.asarray(bound[0], dtype=float), float(bound[1])
     if isinstance(obj, Sphere):
@@ -399,6 +390,34 @@ def _blocked(objects, bounds, P, N_f, owner, entering, lights):
     return out
 
 
+def in_shadow(scene: Scene, points, normals) -> np.ndarray:
+    """Shadow rays (Goldman §17.3): True where light ``j`` does not reach point ``i``, shape (N, L).
+
+    points: (N, 3) points on the scene's surfaces; normals: (N, 3) their normals on the side the
+    point is seen from.  A shadow ray leaves each point (nudged off the surface by :data:`OFFSET`)
+    towards each light; the light is blocked if an object lies between, or if the light is behind
+    the surface (``L . N <= 0``: the surface itself is in the way).
+
+    >>> s = Scene([Sphere((0, 0, 1), 0.5)], [Light((0, 0, 5)), Light((4, 0, 5))])
+    >>> in_shadow(s, [[0, 0, 0]], [[0, 0, 1]]).tolist()      # under the sphere: only the first is blocked
+    [[True, False]]
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
+    P = as_points(points, "points", dim=3)
+    N = lighting.unit_rows(as_points(normals, "normals", dim=3), "normals")
+    if N.shape != P.shape:
+        raise ValueError(f"normals must have the shape of points {P.shape}; got {N.shape}")
+    if not np.all(np.any(N != 0, axis=1)):
+        raise ValueError("normals must be nonzero vectors")
+    if np.abs(P).max() > 1e15:
+        raise ValueError("points must have coordinates at most 1e15 in magnitude")
+    bounds = [_bounding_sphere(obj) for obj in scene.objects]
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        return _blocked(scene.objects, bounds, P + OFFSET * N, N, np.full(len(P), -1), np.ones(len(P), dtype=bool),
+                        scene.lights)
+
+
 def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | None = None,
           miss_length: float = 3.0, counts: dict | None = None) -> np.ndarray:
     """The colour each ray brings back, traced recursively to ``depth`` (Goldman §17.2-17.5):
@@ -476,14 +495,7 @@ def _trace(scene, o, d, depth, record, miss_length, counts):
         blocked = _blocked(objects, bounds, outside, N_f, obj_h, entering, lights)
         counts["shadow"] += blocked.size
         if record is not None:
-            for i in range(len(P)):
-                for j, light in enumerate(lights):
-                    end = np.asarray(light.position, dtype=float)
-                    if blocked[i, j]:
-                        to_light = end - outside[i]
-                        tb = min(_first_t(obj, outside[i], to_light) for obj in objects)
-                        end = outside[i] + tb * to_light
-                    record.append(RaySegment("shadow", P[i].copy(), end, level, float(w[i]), bool(blocked[i, j])))
+            _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level)
         next_o, next_d, next_w, next_p, next_k = [], [], [], [], []
         order = np.argsort(obj_h, kind="stable")
         firsts = np.flatnonzero(np.diff(obj_h[order], prepend=-1))
@@ -531,9 +543,19 @@ def _accumulate(colour, pixel, brought, level):
             colour[:, c] += np.bincount(pixel, brought[:, c], minlength=len(colour))
 
 
-def _first_t(obj, origin, direction):
-    t, _ = obj.hit(origin[None], direction[None])
-    return float(t[0]) if t[0] < 1.0 else 1.0
+def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level):
+    """Append the shadow rays of one level to ``record``: to the light, or to the blocker."""
+    for j, light in enumerate(lights):
+        end = np.broadcast_to(np.asarray(light.position, dtype=float), P.shape).copy()
+        rows = np.flatnonzero(blocked[:, j])
+        if len(rows):
+            to_light = end[rows] - outside[rows]
+            distance = np.sqrt(_dot(to_light, to_light))
+            unit = to_light / np.where(distance > 0, distance, 1.0)[:, None]
+            t, _, _ = _nearest(objects, bounds, outside[rows], np.where(distance[:, None] > 0, unit, [[0, 0, 1.0]]))
+            end[rows] = outside[rows] + np.minimum(t, distance)[:, None] * unit
+        for i in range(len(P)):
+            record.append(RaySegment("shadow", P[i].copy(), end[i], level, float(w[i]), bool(blocked[i, j])))
 
 
 def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3, *,

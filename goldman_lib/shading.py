@@ -1,7 +1,28 @@
-"""Shading polygonal models (Goldman chapter 21): normals of polygons and meshes.
+"""Shading polygonal models (Goldman chapter 21): normals, a software rasteriser and five shading modes.
 
-The normal of a polygon by Newell's formula (§21.2) and area-weighted face and vertex normals of a
-triangle mesh, used by every 3D view.  How light meets a surface is :mod:`goldman_lib.lighting`.
+§21.1 polygonal models: a mesh is plain arrays, vertex ``positions`` (n, 3) and ``triangles`` (m, 3)
+of vertex indices (counterclockwise seen from outside).  The normal of a polygon by Newell's formula
+(:func:`newell_normal`, :func:`newell_face_normals`) and vertex normals averaged from the faces
+around a vertex (:func:`average_vertex_normals`; :func:`vertex_normals` weights by area).
+
+The rasteriser projects with a :class:`Camera` (the perspective matrix of
+:func:`goldman_lib.transforms.perspective`), scan-converts every triangle by barycentric coverage of
+the pixel centres in its bounding box, vectorised over batches of triangles, and keeps the nearest
+fragment per pixel in a depth buffer: :func:`rasterise_triangles`, the one scan conversion of the
+course (chapter 22's z-buffer calls it too).  :func:`render` shades what it covers:
+
+* ``uniform`` (§21.2): one intensity per face, at its centroid with its Newell normal;
+* ``gouraud`` (§21.3): intensities at the vertices, interpolated across the face;
+* ``phong`` (§21.4.1): normals (and points) interpolated, lit at every pixel;
+* ``fast_phong`` (§21.4.2-3): the diffuse and specular cosines as quadratics in the screen
+  coordinates (second-order Taylor expansions, evaluated incrementally along a scan line by forward
+  differences, :func:`forward_differences`);
+* ``slerp`` (§21.4.4): normals interpolated by spherical linear interpolation
+  (:func:`goldman_lib.vector_geometry.slerp`), so they stay unit length.
+
+All light comes from :func:`goldman_lib.lighting.intensity`, except the fast-Phong mode, which
+combines its approximate cosines with the same material and lights term by term as that function
+does (the tests check the two agree when the cosines are exact).
 
 >>> newell_normal([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]).tolist()
 [0.0, 0.0, 1.0]
@@ -9,15 +30,23 @@ triangle mesh, used by every 3D view.  How light meets a surface is :mod:`goldma
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import NamedTuple
+
 import numpy as np
 
-from goldman_lib.validation import as_float, as_float_array, as_int, as_points, check_finite, finite_result
+from goldman_lib import lighting, transforms
+from goldman_lib import vector_geometry as vg
+from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
+                                    finite_result, within_budget)
 
-__all__ = ["newell_normal", "face_normals", "vertex_normals"]
+__all__ = ["newell_normal", "face_normals", "vertex_normals", "newell_face_normals", "average_vertex_normals",
+           "uv_sphere", "Camera", "Fragments", "rasterise_triangles", "SHADING_MODES", "render",
+           "slerp_normals", "taylor_cosines", "forward_differences", "gouraud_triangle"]
 
 
 def newell_normal(polygon) -> np.ndarray:
-    """The unit normal of a (possibly non-planar) polygon by Newell's formula.
+    """The unit normal of a (possibly non-planar) polygon by Newell's formula (Goldman §21.1).
 
     ``N_x = sum (y_i - y_j)(z_i + z_j)`` and cyclically, j = i+1: twice the area vector of the
     polygon, robust for nearly collinear vertices.  polygon: (k, 3), k >= 3.  Returns (3,); zeros
@@ -36,9 +65,9 @@ def newell_normal(polygon) -> np.ndarray:
     return n / length if length > 0 else n
 
 
-def _mesh(positions, triangles) -> tuple[np.ndarray, np.ndarray]:
+def _mesh(positions, triangles, name: str = "positions") -> tuple[np.ndarray, np.ndarray]:
     """Validated vertex positions (n, 3) and triangle indices (m, 3) below n."""
-    V = as_points(positions, "positions", dim=3)
+    V = as_points(positions, name, dim=3)
     T = as_float_array(triangles, "triangles")
     if T.ndim != 2 or T.shape[1] != 3:
         raise ValueError(f"triangles must have shape (m, 3); got shape {T.shape}")
@@ -46,13 +75,14 @@ def _mesh(positions, triangles) -> tuple[np.ndarray, np.ndarray]:
     if np.any(T != np.round(T)) or (T.size and T.min() < 0):
         raise ValueError("triangles must hold non-negative integer vertex indices")
     if T.size and T.max() >= len(V):
-        raise ValueError(f"positions must hold every vertex the triangles index: {len(V)} positions, "
+        raise ValueError(f"{name} must hold every vertex the triangles index: {len(V)} {name}, "
                          f"but triangles index vertex {int(T.max())}")
     return V, T.astype(np.intp)
 
 
 def face_normals(positions, triangles) -> np.ndarray:
-    """Area-weighted normals ``(b - a) x (c - a)`` of triangles (not normalised): (m, 3).
+    """Area-weighted normals ``(b - a) x (c - a)`` of triangles (not normalised): (m, 3) (Goldman §21.1;
+    for a triangle this is Newell's vector).
 
     >>> face_normals([[0, 0, 0], [2, 0, 0], [0, 1, 0]], [[0, 1, 2]]).tolist()
     [[0.0, 0.0, 2.0]]
@@ -65,7 +95,7 @@ def face_normals(positions, triangles) -> np.ndarray:
 
 
 def vertex_normals(positions, triangles) -> np.ndarray:
-    """Unit vertex normals: area-weighted sums of the face normals around each vertex ((0, 0, 1)
+    """Unit vertex normals (Goldman §21.1): area-weighted sums of the face normals around each vertex ((0, 0, 1)
     for a vertex on no face of positive area).
 
     >>> vertex_normals(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0]]), np.array([[0, 1, 2]])).tolist()
@@ -78,3 +108,599 @@ def vertex_normals(positions, triangles) -> np.ndarray:
         np.add.at(n, T[:, k], fn)
     length = np.linalg.norm(n, axis=1, keepdims=True)
     return np.divide(n, length, out=np.zeros_like(n) + [0.0, 0.0, 1.0], where=length > 1e-300)
+
+
+# -- §21.1 polygonal models -------------------------------------------------------------------------
+
+def newell_face_normals(positions, triangles) -> np.ndarray:
+    """Unit Newell normals of the faces of a triangle mesh (Goldman §21.1): (m, 3), zeros for a
+    degenerate (zero-area) face.  For a triangle Newell's vector is ``(b - a) x (c - a)``.
+
+    >>> newell_face_normals([[0, 0, 0], [2, 0, 0], [0, 1, 0]], [[0, 1, 2]]).tolist()
+    [[0.0, 0.0, 1.0]]
+    """
+    fn = face_normals(positions, triangles)
+    return lighting.unit_rows(fn, "face normals") if len(fn) else fn
+
+
+def average_vertex_normals(positions, triangles) -> np.ndarray:
+    """The book's vertex normals (Goldman §21.1): the average of the unit Newell normals of the faces
+    that meet at each vertex, normalised: (n, 3) unit ((0, 0, 1) for a vertex on no proper face).
+
+    >>> average_vertex_normals([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
+    ...                        [[0, 2, 1], [0, 1, 3]]).round(4).tolist()[0]
+    [0.0, -0.7071, -0.7071]
+    """
+    V, T = _mesh(positions, triangles)
+    fn = newell_face_normals(V, T)
+    n = np.zeros_like(V)
+    for k in range(3):
+        np.add.at(n, T[:, k], fn)
+    length = np.linalg.norm(n, axis=1, keepdims=True)
+    return np.divide(n, length, out=np.zeros_like(n) + [0.0, 0.0, 1.0], where=length > 1e-12)
+
+
+def uv_sphere(stacks: int = 12, slices: int = 24, radius=1.0, center=(0.0, 0.0, 0.0)):
+    """A polygonal model of a sphere (Goldman §21.1): ``stacks`` bands of latitude and ``slices`` of
+    longitude, triangulated, counterclockwise seen from outside.  Returns ``(positions, triangles)``
+    with ``(stacks - 1) * slices + 2`` vertices and ``2 * slices * (stacks - 1)`` triangles.
+
+    >>> V, T = uv_sphere(3, 4)
+    >>> V.shape, T.shape
+    ((10, 3), (16, 3))
+    """
+    stacks = as_int(stacks, "stacks", minimum=2)
+    slices = within_budget(slices, "slices", cost=lambda s: 2 * s * 2, what="the sphere mesh", unit="triangles",
+                           minimum=3)
+    within_budget(stacks, "stacks", cost=lambda s: 2 * slices * s, what="the sphere mesh", unit="triangles",
+                  minimum=2)
+    r = as_float(radius, "radius", positive=True)
+    c = as_points(center, "center", ndim=1, dim=3)
+    theta = np.pi * np.arange(1, stacks) / stacks                 # polar angle of each inner ring
+    phi = 2 * np.pi * np.arange(slices) / slices
+    ring = np.stack([np.sin(theta)[:, None] * np.cos(phi), np.sin(theta)[:, None] * np.sin(phi),
+                     np.cos(theta)[:, None] * np.ones_like(phi)], axis=-1).reshape(-1, 3)
+    V = np.vstack([[0.0, 0.0, 1.0], ring, [0.0, 0.0, -1.0]])
+    with np.errstate(over="ignore", invalid="ignore"):
+        V = finite_result(c + r * V, "radius and center")
+    idx = 1 + np.arange((stacks - 1) * slices).reshape(stacks - 1, slices)
+    nxt = np.roll(idx, -1, axis=1)
+    tris = [np.stack([np.zeros(slices, np.intp), idx[0], nxt[0]], 1)]
+    a, b, cc, d = idx[:-1], nxt[:-1], idx[1:], nxt[1:]
+    tris.append(np.stack([a, cc, d], -1).reshape(-1, 3))
+    tris.append(np.stack([a, d, b], -1).reshape(-1, 3))
+    south = len(V) - 1
+    tris.append(np.stack([np.full(slices, south), nxt[-1], idx[-1]], 1))
+    return V, np.vstack(tris).astype(np.intp)
+
+
+def _image_size(width, height) -> tuple[int, int]:
+    """Image width and height, each >= 1, their product within the work budget."""
+    height = within_budget(height, "height", cost=lambda h: h, what="the image's height", unit="pixels",
+                           minimum=1)
+    width = within_budget(width, "width", cost=lambda w: w * height, what="the image", unit="pixels", minimum=1)
+    return width, height
+
+
+# -- the camera ------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Camera:
+    """A pinhole camera: eye, target, up, vertical field of view ``fov`` (degrees), image size and
+    near distance.  Projection is the perspective matrix of Goldman §13.5
+    (:func:`goldman_lib.transforms.perspective`, from the eye onto the plane one unit in front of it);
+    the plane's point is mapped to pixels (x to the right, y down the rows, pixel (i, j) centred at
+    ``(j + 0.5, i + 0.5)``).  Each projected vertex gets a depth ``z = 1 - near / w`` with ``w`` its
+    distance along the view direction: z grows with distance and is *linear in screen space* across
+    a triangle (``1/w`` is), so the rasteriser may interpolate it with screen barycentrics.
+
+    >>> cam = Camera(eye=(0, -5, 0), target=(0, 0, 0), width=8, height=6)
+    >>> cam.project([[0, 0, 0]]).round(6).tolist()
+    [[4.0, 3.0, 0.98, 5.0]]
+    """
+
+    eye: tuple = (0.0, -6.0, 2.0)
+    target: tuple = (0.0, 0.0, 0.0)
+    up: tuple = (0.0, 0.0, 1.0)
+    fov: float = 30.0
+    width: int = 256
+    height: int = 256
+    near: float = 0.1
+
+    def __post_init__(self):
+        E = as_points(self.eye, "eye", ndim=1, dim=3)
+        T = as_points(self.target, "target", ndim=1, dim=3)
+        U = as_points(self.up, "up", ndim=1, dim=3)
+        fov = as_float(self.fov, "fov")
+        if not 0 < fov < 180:
+            raise ValueError(f"fov must be in (0, 180) degrees; got {fov}")
+        width, height = _image_size(self.width, self.height)
+        near = as_float(self.near, "near", positive=True)
+        with np.errstate(over="ignore", invalid="ignore"):
+            d = finite_result(T - E, "target", why="is too far from eye")
+            dist = finite_result(np.linalg.norm(d), "target", why="is too far from eye")
+        if dist <= 1e-12 * (1 + np.abs(E).max()):
+            raise ValueError("target must differ from eye: the camera needs a direction to look in")
+        n = d / dist
+        with np.errstate(over="ignore", invalid="ignore"):
+            right = np.cross(n, U)
+            rl = np.linalg.norm(right)
+        if not np.isfinite(rl) or rl <= 1e-9 * max(np.linalg.norm(U), 1e-300):
+            raise ValueError("up must not be parallel to the view direction (target - eye)")
+        right = right / rl
+        for name, value in (("eye", E), ("target", T), ("up", U)):
+            object.__setattr__(self, name, tuple(float(v) for v in value))
+        object.__setattr__(self, "fov", fov)
+        object.__setattr__(self, "width", width)
+        object.__setattr__(self, "height", height)
+        object.__setattr__(self, "near", near)
+        object.__setattr__(self, "_frame", (E, n, right, np.cross(right, n)))
+
+    @property
+    def scale(self) -> float:
+        """Pixels per unit on the projection plane one unit in front of the eye."""
+        return 0.5 * self.height / np.tan(np.radians(self.fov) / 2)
+
+    def project(self, points) -> np.ndarray:
+        """Screen coordinates of points (Goldman §13.5): ``(n, 4)`` rows ``(x, y, z, w)``, x and y in
+        pixels, ``z = 1 - near / w`` the depth the rasteriser compares and ``w`` the distance along
+        the view direction (``z < 0`` in front of the near plane, which the rasteriser clips)."""
+        P = as_points(points, "points", dim=3)
+        E, n, right, up = self._frame
+        H = transforms.homogeneous(P, transforms.perspective(E, E + n, n))
+        w = H[:, 3]
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            Q = H[:, :3] / w[:, None] - (E + n)           # the projected point, from the plane's centre
+            x = 0.5 * self.width + self.scale * (Q @ right)
+            y = 0.5 * self.height - self.scale * (Q @ up)
+            z = 1.0 - self.near / w
+        bad = w <= 0
+        out = np.stack([x, y, z, w], axis=1)
+        out[bad, :3] = [0.0, 0.0, -1.0]                    # behind the eye: clipped by the rasteriser
+        return finite_result(out, "points", why="are too far from the camera")
+
+    def pixel_directions(self, columns, rows) -> np.ndarray:
+        """Unit directions from the eye through the centres of pixels ``(rows, columns)`` (arrays of
+        one shape; column from the left, row from the top): shape ``columns.shape + (3,)``.  The
+        one place where a pixel becomes a ray (the ray tracer of chapter 17 and ray casting of
+        chapter 22 both ask here)."""
+        E, n, right, up = self._frame
+        columns = check_finite(as_float_array(columns, "columns"), "columns")
+        rows = check_finite(as_float_array(rows, "rows"), "rows")
+        if columns.shape != rows.shape:
+            raise ValueError(f"columns and rows must have one shape; got {columns.shape} and {rows.shape}")
+        for arr, name, size in ((columns, "columns", self.width), (rows, "rows", self.height)):
+            if arr.size and (arr.min() < -1 or arr.max() > size):
+                raise ValueError(f"{name} must lie within the image (0 to {size - 1}); got {arr.min():g} to {arr.max():g}")
+        j = (columns + 0.5 - 0.5 * self.width) / self.scale
+        i = (0.5 * self.height - rows - 0.5) / self.scale
+        D = n + j[..., None] * right + i[..., None] * up
+        return D / np.linalg.norm(D, axis=-1, keepdims=True)
+
+    def rays(self):
+        """The ray through the centre of every pixel (Goldman §22.5's ray casting; §17.1):
+        ``(origin (3,), directions (height, width, 3))`` with unit directions."""
+        rows, columns = np.mgrid[0:self.height, 0:self.width]
+        return np.array(self._frame[0]), self.pixel_directions(columns, rows)
+
+
+# -- the scan conversion: one home for chapters 21 and 22 ------------------------------------------
+
+class Fragments(NamedTuple):
+    """What :func:`rasterise_triangles` leaves in each pixel: ``triangle`` (h, w) the index of the
+    nearest triangle covering the pixel centre (-1 for none), ``depth`` (h, w) its depth (1.0, the
+    far value, for none) and ``weights`` (h, w, 3) the pixel centre's screen-space barycentric
+    coordinates in that triangle (zeros for none)."""
+
+    triangle: np.ndarray
+    depth: np.ndarray
+    weights: np.ndarray
+
+
+#: Pixel candidates examined per batch of triangles (a memory bound, not a work budget).
+_BATCH = 1 << 20
+
+
+def _rasterise(S: np.ndarray, T: np.ndarray, width: int, height: int) -> Fragments:
+    """The unchecked kernel of :func:`rasterise_triangles` (S: (n, 3) screen points; T: (m, 3))."""
+    tri_buf = np.full(width * height, -1, dtype=np.intp)
+    depth = np.ones(width * height)
+    weights = np.zeros((width * height, 3))
+    if len(T) == 0:
+        return Fragments(tri_buf.reshape(height, width), depth.reshape(height, width),
+                         weights.reshape(height, width, 3))
+    X, Y, Z = S[T, 0], S[T, 1], S[T, 2]                   # (m, 3) each
+    area2 = (X[:, 1] - X[:, 0]) * (Y[:, 2] - Y[:, 0]) - (X[:, 2] - X[:, 0]) * (Y[:, 1] - Y[:, 0])
+    scale = 1.0 + np.abs(X).max(1) + np.abs(Y).max(1)
+    x0 = np.clip(np.ceil(X.min(1) - 0.5), 0, width).astype(np.intp)
+    x1 = np.clip(np.floor(X.max(1) - 0.5), -1, width - 1).astype(np.intp)
+    y0 = np.clip(np.ceil(Y.min(1) - 0.5), 0, height).astype(np.intp)
+    y1 = np.clip(np.floor(Y.max(1) - 0.5), -1, height - 1).astype(np.intp)
+    bw, bh = x1 - x0 + 1, y1 - y0 + 1
+    ok = (np.abs(area2) > 1e-12 * scale * scale) & (bw > 0) & (bh > 0) & (Z.max(1) >= 0) & (Z.min(1) < 1)
+    ids = np.flatnonzero(ok)
+    # barycentric coordinate i of the point (x, y) is a_i x + b_i y + c_i: the edge function of the
+    # edge opposite vertex i over twice the signed area (so both orientations are "inside")
+    j, k_ = [1, 2, 0], [2, 0, 1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = np.where(ok, 1.0 / np.where(ok, area2, 1.0), 0.0)[:, None]
+    coef = np.stack([(Y[:, j] - Y[:, k_]) * inv, (X[:, k_] - X[:, j]) * inv,
+                     (X[:, j] * Y[:, k_] - X[:, k_] * Y[:, j]) * inv, Z], axis=1)   # (m, 4, 3): a, b, c, z
+    counts = (bw * bh)[ids]
+    ends = np.cumsum(counts)
+    start = 0
+    while start < len(ids):
+        stop = max(start + 1, int(np.searchsorted(ends, (ends[start - 1] if start else 0) + _BATCH, "right")))
+        tris, c = ids[start:stop], counts[start:stop]
+        start = stop
+        k = np.repeat(tris, c)
+        local = np.arange(int(c.sum())) - np.repeat(np.cumsum(c) - c, c)
+        bwk = bw[k]
+        py, px = np.divmod(local, bwk)
+        px += x0[k]
+        py += y0[k]
+        cx, cy = px + 0.5, py + 0.5
+        E = coef[k]                                       # (n, 4, 3): a_i, b_i, c_i, z_i per vertex
+        lam = E[:, 0] * cx[:, None] + E[:, 1] * cy[:, None] + E[:, 2]
+        z = np.einsum("ij,ij->i", lam, E[:, 3])
+        keep = np.flatnonzero((lam.min(1) >= 0) & (z >= 0) & (z < 1))
+        k, lam, z = k[keep], lam[keep], z[keep]
+        pix = py[keep] * width + px[keep]
+        # by pixel, then depth (z in [0, 1) packed below the pixel index: one float sort, exact to
+        # ~1e-11 in z for images up to 2**20 pixels; a stable sort, so ties keep the earlier triangle)
+        sel = np.argsort(pix + z * (1 - 2 ** -40), kind="stable") \
+            if width * height <= 1 << 20 else np.lexsort((z, pix))
+        first = np.ones(len(sel), bool)
+        ps = pix[sel]
+        first[1:] = ps[1:] != ps[:-1]
+        sel = sel[first]
+        p = pix[sel]
+        better = (z[sel] < depth[p]) | ((z[sel] == depth[p]) & (tri_buf[p] < 0))
+        sel, p = sel[better], p[better]
+        depth[p] = z[sel]
+        tri_buf[p] = k[sel]
+        weights[p] = lam[sel]
+    return Fragments(tri_buf.reshape(height, width), depth.reshape(height, width), weights.reshape(height, width, 3))
+
+
+def rasterise_triangles(screen, triangles, width: int, height: int) -> Fragments:
+    """Scan-convert triangles with a depth buffer (Goldman §21.2-21.4, §22.3): the one scan
+    conversion of the course, used by :func:`render` and by chapter 22's z-buffer.
+
+    screen: (n, 3) vertices in screen coordinates ``(x, y, z)`` -- x, y in pixels (pixel (i, j) is
+    centred at ``(j + 0.5, i + 0.5)``), z the depth (smaller is nearer), as :meth:`Camera.project`
+    gives.  triangles: (m, 3) vertex indices.  A pixel belongs to a triangle when its centre lies
+    inside or on its boundary (barycentric coordinates >= 0, tested over the triangle's bounding box,
+    vectorised over batches of triangles); fragments with z outside [0, 1) are clipped (the near
+    and far planes) and zero-area (edge-on) triangles draw nothing.  Of the fragments in a pixel the
+    nearest is kept, and of equally near ones the first triangle's.  Returns :class:`Fragments`.
+
+    >>> f = rasterise_triangles([[0, 0, 0.5], [4, 0, 0.5], [0, 4, 0.5]], [[0, 1, 2]], 4, 4)
+    >>> (f.triangle + 1).tolist()
+    [[1, 1, 1, 1], [1, 1, 1, 0], [1, 1, 0, 0], [1, 0, 0, 0]]
+    """
+    width, height = _image_size(width, height)
+    S, T = _mesh(screen, triangles, "screen")
+    if len(T) > MAX_ITEMS:
+        raise ValueError(f"triangles must hold at most {MAX_ITEMS:,} triangles; got {len(T):,}")
+    if np.abs(S[:, :2]).max() > 1e9:
+        raise ValueError("screen must hold pixel coordinates within 1e9 of the image")
+    return _rasterise(S, T, width, height)
+
+
+def gouraud_triangle(screen, intensities, width: int, height: int) -> np.ndarray:
+    """Gouraud shading of one triangle in screen coordinates (Goldman §21.3): the intensities given at
+    its three vertices, interpolated linearly (by the screen barycentric coordinates of each pixel
+    centre) at every pixel the triangle covers, 0 elsewhere.  A pixel whose centre lies on an edge
+    is covered; a degenerate (zero-area) triangle covers nothing.  Scan conversion by
+    :func:`rasterise_triangles`.
+
+    screen: (3, 2) vertex pixel coordinates (x right, y down; pixel (i, j) centred at (j + 0.5, i + 0.5)).
+    intensities: (3,).  Returns (height, width).
+
+    >>> gouraud_triangle([[0, 0], [4, 0], [0, 4]], [0.0, 1.0, 0.5], 4, 2).round(3).tolist()
+    [[0.188, 0.438, 0.688, 0.938], [0.312, 0.562, 0.812, 0.0]]
+    """
+    P = as_points(screen, "screen", dim=2)
+    if P.shape != (3, 2):
+        raise ValueError(f"screen must hold the three vertices of one triangle, shape (3, 2); got {P.shape}")
+    c = check_finite(as_float_array(intensities, "intensities"), "intensities")
+    if c.shape != (3,):
+        raise ValueError(f"intensities must be three numbers, one per vertex; got shape {c.shape}")
+    width, height = _image_size(width, height)
+    if np.abs(P).max() > 1e9:
+        raise ValueError("screen must hold pixel coordinates within 1e9 of the image")
+    f = _rasterise(np.hstack([P, np.full((3, 1), 0.5)]), np.array([[0, 1, 2]]), width, height)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = np.where(f.triangle >= 0, f.weights @ c, 0.0)
+    return finite_result(out, "intensities")
+
+
+# -- §21.4.2-3 fast Phong: Taylor expansions evaluated by forward differences ----------------------
+
+def taylor_cosines(normal, normal_x, normal_y, light_direction, eye_direction):
+    """The fast-Phong quadratics (Goldman §21.4.2-3): second-order Taylor expansions, in the screen
+    offsets ``(X, Y)`` from a triangle's reference pixel, of the diffuse cosine ``L . N / |N|`` and the
+    specular cosine ``R . V = 2 (L . N)(V . N) / (N . N) - L . V`` for a normal interpolated
+    *linearly* across the screen, ``N = N0 + X Nx + Y Ny`` (Phong's un-normalised normal).
+
+    ``L . N`` and ``V . N`` are linear and ``N . N`` quadratic in (X, Y), so only the division by
+    ``|N|`` (diffuse) and by ``N . N`` (specular) needs the expansion; the light and the eye are
+    taken as directions (fixed over the triangle), as the book's fast shading does.  The expansion
+    about the reference pixel and the form of the specular numerator are our formulation.
+
+    normal, normal_x, normal_y: (m, 3) N0, Nx, Ny.  light_direction, eye_direction: (m, 3) unit L, V.
+    Returns ``(diffuse, specular)``, each (m, 6): the coefficients of ``1, X, Y, X^2, XY, Y^2``.
+
+    >>> d, s = taylor_cosines([[0, 0, 1]], [[0.01, 0, 0]], [[0, 0, 0]], [[0, 0, 1]], [[0, 0, 1]])
+    >>> d.round(6).tolist()
+    [[1.0, 0.0, 0.0, -5e-05, 0.0, 0.0]]
+    """
+    N0 = as_points(normal, "normal", dim=3)
+    Nx = as_points(normal_x, "normal_x", dim=3)
+    Ny = as_points(normal_y, "normal_y", dim=3)
+    L = lighting.unit_rows(light_direction, "light_direction")
+    V = lighting.unit_rows(eye_direction, "eye_direction")
+    for name, arr in (("normal_x", Nx), ("normal_y", Ny), ("light_direction", L), ("eye_direction", V)):
+        if arr.shape != N0.shape:
+            raise ValueError(f"{name} must have the shape of normal {N0.shape}; got {arr.shape}")
+    if np.any(np.einsum("ij,ij->i", N0, N0) <= 1e-24):
+        raise ValueError("normal must be nonzero at the reference pixel")
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = _taylor(N0, Nx, Ny, L, V)
+    why = "are too large in magnitude (the normal varies too fast across the triangle)"
+    return (finite_result(out[0], "normal, normal_x and normal_y", why=why),
+            finite_result(out[1], "normal, normal_x and normal_y", why=why))
+
+
+def _taylor(N0, Nx, Ny, L, V):
+    dot = lambda a, b: np.einsum("ij,ij->i", a, b)  # noqa: E731
+    d0, dx, dy = dot(L, N0), dot(L, Nx), dot(L, Ny)
+    e0, ex, ey = dot(V, N0), dot(V, Nx), dot(V, Ny)
+    q0 = dot(N0, N0)
+    q = (2 * dot(N0, Nx), 2 * dot(N0, Ny))                           # first partials of N . N
+    qq = {(0, 0): 2 * dot(Nx, Nx), (0, 1): 2 * dot(Nx, Ny), (1, 1): 2 * dot(Ny, Ny)}   # second partials
+    # g = q^(-1/2) and h = 1/q: values, first and second partials at the reference pixel.
+    g0 = q0 ** -0.5
+    g = tuple(-0.5 * q0 ** -1.5 * qi for qi in q)
+    gg = {ij: 0.75 * q0 ** -2.5 * q[ij[0]] * q[ij[1]] - 0.5 * q0 ** -1.5 * v for ij, v in qq.items()}
+    h0 = 1.0 / q0
+    h = tuple(-qi / q0 ** 2 for qi in q)
+    hh = {ij: 2 * q[ij[0]] * q[ij[1]] / q0 ** 3 - v / q0 ** 2 for ij, v in qq.items()}
+    d, e = (dx, dy), (ex, ey)
+    # diffuse f = d g (d linear); specular f = p h - L.V with p = 2 d e.
+    f0 = d0 * g0
+    f = [d[i] * g0 + d0 * g[i] for i in range(2)]
+    ff = {(i, j): d[i] * g[j] + d[j] * g[i] + d0 * gg[i, j] for (i, j) in qq}
+    diffuse = np.stack([f0, f[0], f[1], 0.5 * ff[0, 0], ff[0, 1], 0.5 * ff[1, 1]], 1)
+    p0 = 2 * d0 * e0
+    p = [2 * (d[i] * e0 + d0 * e[i]) for i in range(2)]
+    pp = {(i, j): 2 * (d[i] * e[j] + d[j] * e[i]) for (i, j) in qq}
+    s0 = p0 * h0 - dot(L, V)
+    s = [p[i] * h0 + p0 * h[i] for i in range(2)]
+    ss = {(i, j): pp[i, j] * h0 + p[i] * h[j] + p[j] * h[i] + p0 * hh[i, j] for (i, j) in qq}
+    specular = np.stack([s0, s[0], s[1], 0.5 * ss[0, 0], ss[0, 1], 0.5 * ss[1, 1]], 1)
+    return diffuse, specular
+
+
+def forward_differences(coefficients, x0, y, count: int) -> np.ndarray:
+    """A quadratic ``c0 + c1 X + c2 Y + c3 X^2 + c4 XY + c5 Y^2`` along one scan line, by forward
+    differences (Goldman §21.4.2): at ``X = x0, x0 + 1, ...`` (``count`` pixels) on row ``Y = y``,
+    each value is the last plus a first difference, and each first difference the last plus the
+    constant second difference ``2 c3`` -- two additions per pixel, no multiplication.  (The
+    renderer evaluates the same quadratic at every pixel at once, which numpy does faster.)
+
+    >>> forward_differences([1, 2, 0, 1, 0, 0], 0, 0, 4).tolist()
+    [1.0, 4.0, 9.0, 16.0]
+    """
+    c = as_float_array(coefficients, "coefficients")
+    if c.shape != (6,):
+        raise ValueError(f"coefficients must be 6 numbers (1, X, Y, X^2, XY, Y^2); got shape {c.shape}")
+    check_finite(c, "coefficients")
+    x0 = as_float(x0, "x0")
+    y = as_float(y, "y")
+    count = within_budget(count, "count", cost=lambda n: n, what="the scan line", unit="pixels", minimum=1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        first = c[0] + c[1] * x0 + c[2] * y + c[3] * x0 * x0 + c[4] * x0 * y + c[5] * y * y
+        delta = c[1] + c[4] * y + c[3] * (2 * x0 + 1)                  # f(x0 + 1) - f(x0)
+        steps = np.full(count, 2 * c[3])
+        steps[0] = 0.0
+        deltas = delta + np.cumsum(steps)                              # first differences, by additions
+        values = first + np.concatenate([[0.0], np.cumsum(deltas[:-1])])
+    return finite_result(values, "coefficients, x0 and y")
+
+
+# -- §21.4.4 Phong shading with slerp -------------------------------------------------------------
+
+def slerp_normals(normals, weights) -> np.ndarray:
+    """Normals across a triangle by spherical linear interpolation (Goldman §21.4.4), with the one
+    slerp of the library (:func:`goldman_lib.vector_geometry.slerp`): first along the edge from
+    ``N0`` to ``N1`` at ``w1 / (w0 + w1)``, then from there towards ``N2`` at ``w2`` (our way of
+    extending the book's slerp along edges and scan lines to barycentric weights).  Unit normals in,
+    unit normals out.  Opposite normals (no unique arc) fall back to normalised linear interpolation.
+
+    normals: (k, 3, 3) the three unit vertex normals per point; weights: (k, 3) barycentric.
+    Returns (k, 3).
+
+    >>> slerp_normals([[[1, 0, 0], [0, 1, 0], [0, 0, 1]]], [[0.5, 0.5, 0]]).round(6).tolist()
+    [[0.707107, 0.707107, 0.0]]
+    """
+    N = as_points(normals, "normals", ndim=3, dim=3)
+    W = as_points(weights, "weights", dim=3)
+    if N.shape[:2] != (len(W), 3):
+        raise ValueError(f"normals must have shape ({len(W)}, 3, 3) (three normals per row of weights); "
+                         f"got {N.shape}")
+    N = lighting.unit_rows(N, "normals")
+    if np.any(np.einsum("...i,...i->...", N, N) < 0.5):
+        raise ValueError("normals must be nonzero")
+    if np.any(W < -1e-9) or np.any(np.abs(W.sum(1) - 1) > 1e-6):
+        raise ValueError("weights must be barycentric: non-negative and summing to 1")
+    return _slerp_normals(N, np.clip(W, 0, 1))
+
+
+def _slerp_pair(a, b, t):
+    out = np.empty_like(a)
+    opposite = np.einsum("ij,ij->i", a, b) <= -1 + 1e-9
+    ok = ~opposite
+    if ok.any():
+        out[ok] = vg.slerp(a[ok], b[ok], t[ok])
+    if opposite.any():
+        lerp = (1 - t[opposite, None]) * a[opposite] + t[opposite, None] * b[opposite]
+        out[opposite] = lighting.unit_rows(lerp + 1e-12 * np.array([0.0, 0.0, 1.0]))
+    return out
+
+
+def _slerp_normals(N, W):
+    s = W[:, 0] + W[:, 1]
+    t = np.divide(W[:, 1], s, out=np.zeros_like(s), where=s > 1e-12)
+    edge = _slerp_pair(N[:, 0], N[:, 1], t)
+    return _slerp_pair(edge, N[:, 2], W[:, 2])
+
+
+# -- §21.2-21.4 rendering ------------------------------------------------------------------------
+
+#: The shading modes of :func:`render`, by name, with the section that describes each.
+SHADING_MODES = {"uniform": "§21.2", "gouraud": "§21.3", "phong": "§21.4.1", "fast_phong": "§21.4.2-3",
+                 "slerp": "§21.4.4"}
+
+
+def _combine(diffuse_cos, specular_cos, lit, lights, material, ambient_light):
+    """``I_a k_a C + sum I_p (k_d C cos_d + k_s S cos_s^n)``: the terms of lighting.intensity, from
+    cosines already computed (the fast-Phong mode)."""
+    C, S = np.asarray(material.colour), np.asarray(material.specular_colour)
+    ia = np.asarray(ambient_light, float) * material.ambient
+    total = np.broadcast_to(ia * C, diffuse_cos.shape[:1] + (3,)).copy()
+    for k, light in enumerate(lights):
+        d = np.where(lit[:, k], np.maximum(diffuse_cos[:, k], 0.0), 0.0)
+        rv = np.where(lit[:, k], np.clip(specular_cos[:, k], 0.0, 1.0), 0.0)
+        with np.errstate(under="ignore"):
+            s = np.where(rv > 0, rv ** material.exponent, 0.0)
+        total += (material.diffuse * d[:, None] * C + material.specular * s[:, None] * S) * light.rgb
+    return total
+
+
+def render(positions, triangles, camera: Camera, lights, material=None, mode: str = "phong",
+           normals=None, ambient_light=0.2, background=(0.0, 0.0, 0.0), cull_backfaces: bool = False):
+    """Render a triangle mesh with one of the shading modes of Goldman chapter 21 (§21.2-21.4):
+    project with ``camera``, scan-convert with :func:`rasterise_triangles`, light with
+    :func:`goldman_lib.lighting.intensity`.  Returns an (height, width, 3) image in [0, 1].
+
+    positions (n, 3), triangles (m, 3): the mesh.  lights: a Light or a sequence of them.
+    material: a :class:`goldman_lib.lighting.Material` (default a grey plastic).  mode: a key of
+    :data:`SHADING_MODES`.  normals: (n, 3) vertex normals (default :func:`average_vertex_normals`).
+    cull_backfaces: skip triangles facing away from the eye (for closed meshes).
+
+    Points, normals and vertex intensities are interpolated with perspective-correct weights (the
+    screen barycentrics divided by each vertex's depth w and renormalised: the same as the book's
+    interpolation along scan lines for a parallel view); fast Phong interpolates the normal
+    linearly in screen space, as §21.4.2 does.  Lighting is two-sided: where the eye sees the back of
+    a face, its normal is flipped towards the eye first.
+
+    >>> V = [[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]]
+    >>> cam = Camera(eye=(0, -4, 0), target=(0, 0, 0), width=4, height=4, fov=60)
+    >>> img = render(V, [[0, 1, 2], [0, 2, 3]], cam, lighting.Light((0, -4, 0)), mode="uniform")
+    >>> img.shape, bool(img[2, 2, 0] > 0)
+    ((4, 4, 3), True)
+    """
+    if not isinstance(camera, Camera):
+        raise TypeError(f"camera must be a goldman_lib.shading.Camera; got {type(camera).__name__}")
+    if not isinstance(mode, str) or mode not in SHADING_MODES:
+        raise ValueError(f"mode must be one of {sorted(SHADING_MODES)}; got {mode!r}")
+    material = lighting.Material() if material is None else material
+    if not isinstance(material, lighting.Material):
+        raise TypeError(f"material must be a goldman_lib.lighting.Material; got {type(material).__name__}")
+    lights = lighting._lights(lights)
+    bg = np.asarray(lighting._colour(background, "background"))
+    V, T = _mesh(positions, triangles)
+    if normals is None:
+        N = average_vertex_normals(V, T)
+    else:
+        N = lighting.unit_rows(as_points(normals, "normals", dim=3), "normals")
+        if N.shape != V.shape:
+            raise ValueError(f"normals must have the shape of positions {V.shape}; got {N.shape}")
+    ambient_light = lighting._scale(np.float64(1.0), 1.0, ambient_light, "ambient_light", "ambient_light")
+    eye = np.asarray(camera.eye)
+    S = camera.project(V)
+    if cull_backfaces and len(T):
+        fn = face_normals(V, T)
+        T = T[np.einsum("ij,ij->i", fn, eye - V[T[:, 0]]) > 0]
+    frags = _rasterise(S[:, :3], T, camera.width, camera.height)
+    image = np.broadcast_to(bg, (camera.height, camera.width, 3)).copy()
+    covered = frags.triangle >= 0
+    if not covered.any():
+        return image
+    tri = frags.triangle[covered]
+    lam = frags.weights[covered]
+    idx = T[tri]                                           # (k, 3) vertex indices per pixel
+    with np.errstate(over="ignore", invalid="ignore"):
+        shade = _shade(mode, V, T, N, S, tri, idx, lam, covered, eye, lights, material, ambient_light)
+    image[covered] = lighting.to_image(finite_result(shade, "positions", why="are too large in magnitude"))
+    return image
+
+
+def _facing(normals, points, eye):
+    """Flip normals to face the eye (one-sided lighting of whichever side is seen)."""
+    back = np.einsum("ij,ij->i", normals, eye - points) < 0
+    return np.where(back[:, None], -normals, normals)
+
+
+def _shade(mode, V, T, N, S, tri, idx, lam, covered, eye, lights, material, ambient_light):
+    w = S[:, 3]
+    pc = lam / w[idx]
+    pc /= pc.sum(1, keepdims=True)                         # perspective-correct weights
+    if mode == "uniform":
+        faces = np.unique(tri)
+        centroid = V[T[faces]].mean(1)
+        fn = newell_face_normals(V, T[faces])
+        colour = lighting.intensity(centroid, _facing(fn, centroid, eye), eye, lights, material, ambient_light)
+        lookup = np.zeros((len(T), 3))
+        lookup[faces] = colour
+        return lookup[tri]
+    if mode == "gouraud":
+        verts = np.unique(idx)
+        colour = np.zeros((len(V), 3))
+        # a vertex is lit on the side of the mesh the eye sees: the normal is flipped where it faces away
+        colour[verts] = lighting.intensity(V[verts], _facing(N[verts], V[verts], eye), eye, lights, material,
+                                           ambient_light)
+        return np.einsum("ki,kij->kj", pc, colour[idx])
+    P = np.einsum("ki,kij->kj", pc, V[idx])
+    if mode == "phong":
+        normal = np.einsum("ki,kij->kj", pc, N[idx])
+        return lighting.intensity(P, _facing(normal, P, eye), eye, lights, material, ambient_light)
+    if mode == "slerp":
+        normal = _slerp_normals(N[idx], pc)
+        return lighting.intensity(P, _facing(normal, P, eye), eye, lights, material, ambient_light)
+    return _fast_phong(V, T, N, S, tri, covered, eye, lights, material, ambient_light)
+
+
+def _fast_phong(V, T, N, S, tri, covered, eye, lights, material, ambient_light):
+    """§21.4.2-3: per triangle, the linear screen-space normal N0 + X Nx + Y Ny about its first
+    vertex's pixel, Taylor quadratics of the cosines (:func:`taylor_cosines`), evaluated at each pixel."""
+    faces, inverse = np.unique(tri, return_inverse=True)
+    Tf = T[faces]
+    xy = S[Tf][:, :, :2]                                   # (f, 3, 2)
+    ref = xy.mean(1)                                       # reference pixel: the projected centroid
+    A = np.concatenate([xy - ref[:, None], np.ones((len(Tf), 3, 1))], axis=2)   # rows (X_i, Y_i, 1)
+    det = np.linalg.det(A)
+    A[np.abs(det) < 1e-12] = np.eye(3)
+    coef = np.linalg.solve(A, N[Tf])                       # rows Nx, Ny, N0: N at vertex i = X_i Nx + Y_i Ny + N0
+    Nx, Ny, N0 = coef[:, 0], coef[:, 1], coef[:, 2]
+    centroid = V[Tf].mean(1)
+    flip = np.einsum("ij,ij->i", N0, eye - centroid) < 0   # seen from behind: light the other side
+    sign = np.where(flip, -1.0, 1.0)[:, None]
+    N0, Nx, Ny = N0 * sign, Nx * sign, Ny * sign
+    small = np.einsum("ij,ij->i", N0, N0) < 1e-12
+    N0[small] = N[Tf[small, 0]]
+    Veye = lighting.unit_rows(eye - centroid)
+    rows, cols = np.nonzero(covered)
+    X = cols + 0.5 - ref[inverse, 0]
+    Y = rows + 0.5 - ref[inverse, 1]
+    basis = np.stack([np.ones_like(X), X, Y, X * X, X * Y, Y * Y], 1)
+    dcos = np.empty((len(X), len(lights)))
+    scos = np.empty_like(dcos)
+    for k, light in enumerate(lights):
+        L = lighting.unit_rows(np.asarray(light.position) - centroid)
+        dq, sq = _taylor(N0, Nx, Ny, L, Veye)
+        dcos[:, k] = np.einsum("ij,ij->i", basis, dq[inverse])
+        scos[:, k] = np.einsum("ij,ij->i", basis, sq[inverse])
+    return _combine(dcos, scos, dcos > 0, lights, material, ambient_light)

@@ -166,7 +166,7 @@ class Surface:
             raise ValueError(f"extent must be at most {MAX_COORDINATE:g}; got {extent:g}")
         with np.errstate(all="ignore"):
             positions, triangles = self._mesh(n, extent)
-        return finite_result(np.asarray(positions, dtype=float), "extent", extent), \
+        return finite_result(np.asarray(positions, dtype=float).reshape(-1, 3), "extent", extent), \
             np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
 
     @property
@@ -308,14 +308,16 @@ MAX_DEGREE = 12
 
 
 def real_roots(coefficients) -> np.ndarray:
-    """The real roots of many polynomials at once (Goldman §19.6: the torus quartic, §19.7): the
-    eigenvalues of each companion matrix (``numpy.linalg.eigvals`` on a stack), the nearly real ones
-    polished by Newton's method.  Sorted ascending, ``inf``-padded: ``(N, n)``.
+    """The real roots of many polynomials at once (Goldman §19.6: the torus quartic, §19.7): quadratics
+    and quartics in closed form (the stable quadratic formula; Ferrari's method after removing the
+    cubic term), other degrees by the eigenvalues of each companion matrix (``numpy.linalg.eigvals``
+    on a stack); roots polished by Newton's method.  Sorted ascending, ``inf``-padded: ``(N, n)``.
 
     coefficients: ``(N, n+1)`` (or ``(n+1,)`` for one), highest degree first as ``numpy.roots``
     takes them, ``1 <= n <=`` :data:`MAX_DEGREE`.  Leading zeros lower a row's degree (a zero row has
-    no roots).  A root counts as real when its imaginary part is below ``1e-7`` of its size after
-    scaling, so a double root (a ray tangent to the surface) comes back as two equal real roots.
+    no roots).  The closed forms decide real or not by the sign of their discriminants; from the
+    eigenvalues a root counts as real when its imaginary part is below ``1e-7`` of its size.  A ray
+    exactly tangent to a surface gives a double root; rounding may turn it into a near miss.
 
     >>> real_roots([[1, 0, -5, 0, 4], [1, 0, 1, 0, 0]]).tolist()    # (t^2-1)(t^2-4); t^2 (t^2+1)
     [[-2.0, -1.0, 1.0, 2.0], [0.0, 0.0, inf, inf]]
@@ -345,6 +347,23 @@ def _real_roots(c: np.ndarray) -> np.ndarray:
         if degree <= 0:
             continue
         p = c[rows, first:] / c[rows, first:first + 1]               # monic, degree `degree`
+        if degree == 2:                                              # closed forms: quadratic, and Ferrari
+            out[rows, :2] = _quadratic_roots(np.ones(len(rows)), p[:, 1], p[:, 2])
+            continue
+        if degree == 4:
+            shift = p[:, 1] / 4                                      # x = s - c3/4 removes the cubic term
+            a, b, cc, dd = p[:, 1], p[:, 2], p[:, 3], p[:, 4]
+            pd = b - 3 * a * a / 8
+            qd = cc - a * b / 2 + a ** 3 / 8
+            rd = dd - a * cc / 4 + a * a * b / 16 - 3 * a ** 4 / 256
+            x = _depressed_quartic_roots(pd, qd, rd) - shift[:, None]
+            for _ in range(2):                                       # Newton on the quartic as given
+                f = (((x + a[:, None]) * x + b[:, None]) * x + cc[:, None]) * x + dd[:, None]
+                df = ((4 * x + 3 * a[:, None]) * x + 2 * b[:, None]) * x + cc[:, None]
+                step = np.divide(f, df, out=np.zeros_like(f), where=np.isfinite(x) & (df != 0))
+                x = np.where(np.isfinite(step) & (np.abs(step) < 1e-3 * (1 + np.abs(x))), x - step, x)
+            out[rows, :4] = np.where(np.isfinite(x), x, np.inf)
+            continue
         if degree == 1:
             roots = -p[:, 1:2] + 0j
         else:
@@ -364,7 +383,7 @@ def _real_roots(c: np.ndarray) -> np.ndarray:
         real = np.abs(roots.imag) <= 1e-7 * (1 + np.abs(roots.real))
         vals = np.sort(np.where(real & np.isfinite(x), x, np.inf), axis=1)
         out[rows, :degree] = vals
-    return np.sort(out, axis=1)
+    return np.sort(out, axis=1) + 0.0                               # no -0.0
 
 
 def _depressed_quartic_roots(p, q, r) -> np.ndarray:
@@ -946,11 +965,17 @@ class Quadric(Surface):
 
     def _mesh(self, n, extent):
         """Marching tetrahedra on an ``n^3`` grid over the cube of half-side ``extent`` about the
-        origin (the quadric has no reference point of its own)."""
+        quadric's centre ``-q Q33^-1`` (the origin if ``Q33`` is singular, as for a paraboloid)."""
+        Q3, q = self._Q[:3, :3], self._Q[:3, 3]
+        center = np.zeros(3)
+        if abs(np.linalg.det(Q3)) > 1e-9 * np.abs(Q3).max() ** 3:
+            center = -np.linalg.solve(Q3, q)
+            if not np.all(np.isfinite(center)) or np.abs(center).max() > MAX_COORDINATE:
+                center = np.zeros(3)
         s = np.linspace(-extent, extent, n)
-        X = np.stack(np.meshgrid(s, s, s, indexing="ij"), -1).reshape(-1, 3)
+        X = center + np.stack(np.meshgrid(s, s, s, indexing="ij"), -1).reshape(-1, 3)
         H = np.hstack([X, np.ones((len(X), 1))])
-        f = np.einsum("ij,jk,ik->i", H / extent, self._Q, H / extent)
+        f = np.einsum("ij,jk,ik->i", H, self._Q, H)
         return _marching_tetrahedra(X, f, n)
 
 
@@ -1181,6 +1206,16 @@ class SurfaceOfRevolution(Surface):
         mid = np.array([0.0, 0.0, self.height / S / 2])
         t0 = -np.einsum("ij,ij->i", q - mid, e)
         p = q + t0[:, None] * e
+        # the bounding test (as for the torus, §19.6.1): a ray whose line misses the bounding sphere
+        # (about the axis's midpoint, radius sqrt((h/2)^2 + max r^2)) skips the polynomial
+        reach = (self.height / 2) ** 2 + self._rmax ** 2
+        near = np.einsum("ij,ij->i", p - mid, p - mid) <= reach / S ** 2 * (1 + 1e-9)
+        out = np.full((len(o), max(2, 2 * (len(self.profile) - 1)) + 2 * self.capped), np.inf)
+        if not near.any():
+            return out
+        rows = np.flatnonzero(near)
+        q, e, p, t0, length = q[rows], e[rows], p[rows], t0[rows], length[rows]
+        o = o[rows]
         m = len(self.profile) - 1
         cs = self.profile * S ** (np.arange(m + 1) - 1.0)              # r in units of S: r_S(z) = r(S z) / S
         # r_S(pz + s ez) as a polynomial in s (ascending), by Horner's rule on polynomials
@@ -1217,7 +1252,8 @@ class SurfaceOfRevolution(Surface):
         s = np.concatenate(parts, 1)
         t = (t0[:, None] + s) * S / length[:, None]
         t[~np.isfinite(t)] = np.inf
-        return np.sort(t, axis=1)
+        out[rows] = np.sort(t, axis=1)
+        return out
 
     @property
     def bounding_sphere(self):

@@ -171,6 +171,12 @@ def _run_doctests(modules, functions, found) -> None:
             doctest.DocTestRunner(verbose=False).run(test, out=lambda s: None)
 
 
+def _camera():
+    from goldman_lib import shading
+
+    return shading.Camera((0.0, -5.0, 1.0), (0.0, 0.0, 0.0), width=16, height=12)
+
+
 def _extra_examples() -> dict:
     """Valid example calls of the public functions, classes and methods that no doctest calls (a
     method's arguments start with its instance)."""
@@ -181,8 +187,13 @@ def _extra_examples() -> dict:
     net = [[[i, j, (i * j) % 2] for j in range(3)] for i in range(3)]
     knots = [0, 0, 0, 0, 1, 2, 2, 2, 2]
     polygon = [[0, 0], [1, 2], [2, 2], [3, 0], [4, 1]]
+    from goldman_lib import solid_modeling  # chapter 20
+    _ball, _ball2 = simple_surfaces.Sphere([-0.5, 0, 0], 1.0), simple_surfaces.Sphere([0.5, 0, 0], 1.0)
     return {
         "bezier.BezierCurve": ((cubic,), {}),
+        # chapter 23
+        "radiosity.Patches": (([[0, 0, 0], [0, 1, 1]], [[1, 0, 0], [1, 0, 0]], [[0, 1, 0], [0, -1, 0]],
+                               [[0.5, 0.5, 0.5]] * 2, [[1.0, 1.0, 1.0], [0.0, 0.0, 0.0]]), {}),
         "bezier.BezierPatch": ((net,), {}),
         "bspline.BSplineCurve": ((polygon, knots, 3), {}),
         "bspline.NURBSCurve": ((polygon, [1, 2, 1, 2, 1], knots, 3), {}),
@@ -247,6 +258,19 @@ def _extra_examples() -> dict:
         "vectors.Vector": (([3.0, 4.0, 0.0],), {}),
         "vectors.Vector.dot": ((vectors.Vector([1.0, 2.0, 3.0]), vectors.Vector([4.0, -5.0, 6.0])), {}),
         "vectors.Vector.cross": ((vectors.Vector([1.0, 0.0, 0.0]), vectors.Vector([0.0, 1.0, 0.0])), {}),
+        # chapter 20
+        "solid_modeling.BRep": ((solid_modeling.cube().vertices, solid_modeling.cube().faces), {}),
+        "solid_modeling.CSG": ((_ball, _ball2), {}),
+        "solid_modeling.Union": ((_ball, _ball2), {}),
+        "solid_modeling.Intersection": ((_ball, _ball2), {}),
+        "solid_modeling.Difference": ((_ball, _ball2), {}),
+        "solid_modeling.Octree": ((_ball, (0.0, 0.0, 0.0), 2.0, 2), {}),
+        "solid_modeling.Octree.boxes": ((solid_modeling.Octree.build(_ball, depth=2), ("full",)), {}),
+        "solid_modeling.Octree.wireframe": ((solid_modeling.Octree.build(_ball, depth=2), ("partial",)), {}),
+        # chapter 21
+        "shading.Camera": (((0.0, -5.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 40.0, 16, 12, 0.1), {}),
+        "shading.Camera.project": ((_camera(), [[0.0, 0.0, 0.0], [1.0, 0.5, 0.2]]), {}),
+        "shading.Camera.rays": ((_camera(),), {}),
     }
 
 
@@ -288,7 +312,9 @@ CONFIGURATION = {
 }
 #: Functions and methods (by their last name) whose result may hold +-inf by contract, never NaN: a
 #: ray's parameter is inf where it misses (Part III's ``hits``/``intersect``/``intervals``).
-INF_BY_CONTRACT = {"hits", "hit", "intersect", "intervals", "quadratic_roots", "real_roots"}
+INF_BY_CONTRACT = {"hits", "hit", "intersect", "intervals", "quadratic_roots", "real_roots",
+                   # chapter 20: a ray's first cell and the intervals' ends are inf on a miss
+                   "first_hit", "combine_intervals"}
 #: Functions whose result may hold NaN or infinity by contract (what the docstring says).
 NONFINITE_BY_CONTRACT = {
     "validation.as_float_array": "it converts only; finiteness is check_finite's job (its docstring)",

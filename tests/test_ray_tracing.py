@@ -244,3 +244,27 @@ def test_work_budgets():
         rt.Scene([object()], [])
     with pytest.raises(ValueError, match="background"):
         rt.Scene([], [], background=(2, 0, 0))
+
+
+def test_the_bounding_sphere_cull_changes_no_pixel(monkeypatch):
+    """Chapter 19's surfaces in one scene: culling rays by each surface's bounding_sphere() gives the
+    image the tracer makes without it (every object tested against every ray)."""
+    from goldman_lib import simple_surfaces as ss
+
+    shiny = Material(colour=(0.9, 0.9, 0.2), reflect=0.5)
+    glass = Material(colour=(0.9, 0.9, 1.0), transmit=0.8, reflect=0.1, index=1.4)
+    objects = [ss.Plane((0, 0, 0), (0, 0, 1), Material(colour=(0.7, 0.7, 0.7))),
+               ss.Torus((0.5, 1.5, 0.4), (0, 0, 1), 0.8, 0.3, material=shiny),
+               ss.Cylinder((1.5, -1.5, 0.0), (0, 0, 1), 0.5, height=1.5, material=glass),
+               ss.Cone((-0.5, -0.3, 1.6), (0, 0, -1), 25.0, height=1.6),
+               ss.Ellipsoid((2.5, 0.5, 0.8), (0.6, 0.4, 0.8), material=glass),
+               ss.Polygon([[-1.5, 1.0, 0.01], [-0.5, 1.0, 0.01], [-1.0, 2.2, 1.0]], material=shiny),
+               Sphere((0.8, 0.0, 0.5), 0.5, glass)]
+    scene = rt.Scene(objects, [Light((-2.0, -2.0, 5.0)), Light((3.0, 2.0, 4.0), intensity=0.5)])
+    cam = rt.Camera((-6.0, -1.0, 2.5), (0.5, 0.2, 0.6))
+    culled = rt.render(scene, cam, 48, 36, depth=3)
+    assert all(rt._bounding_sphere(obj) is not None for obj in objects[1:])
+    monkeypatch.setattr(rt, "_bounding_sphere", lambda obj: None)
+    plain = rt.render(scene, cam, 48, 36, depth=3)
+    assert np.abs(culled - plain).max() < 1e-9
+    assert len(np.unique(culled.reshape(-1, 3).round(3), axis=0)) > 50     # a picture, not a blank

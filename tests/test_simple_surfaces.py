@@ -310,6 +310,16 @@ def test_real_roots_against_numpy_roots():
         real = np.sort(r.real[np.abs(r.imag) <= 1e-9])
         assert np.allclose(got[k, :len(real)], real, rtol=1e-8, atol=1e-8)
         assert np.all(np.isinf(got[k, len(real):]))
+    for degree in (2, 3, 4):
+        c = rng.normal(size=(300, degree + 1))
+        got = S.real_roots(c)
+        for k in range(300):
+            r = np.roots(c[k])
+            if np.any((np.abs(r.imag) > 1e-9) & (np.abs(r.imag) < 1e-5)):
+                continue
+            real = np.sort(r.real[np.abs(r.imag) <= 1e-9])
+            assert np.allclose(got[k, :len(real)], real, rtol=1e-7, atol=1e-7), (degree, k)
+            assert np.all(np.isinf(got[k, len(real):])), (degree, k)
     # a lower degree by leading zeros
     assert np.allclose(S.real_roots([[0, 0, 1, -3, 2]]), [[1, 2, np.inf, np.inf]])
 
@@ -340,3 +350,26 @@ def test_bounding_spheres_enclose_the_meshes():
         pos, _ = s.mesh(24)
         assert np.linalg.norm(pos - c, axis=1).max() <= r * (1 + 1e-9), type(s).__name__
     assert S.Cylinder([0, 0, 0], [0, 0, 1], 1).bounding_sphere is None
+
+
+def test_surface_of_revolution_against_numpy_roots_with_the_bound():
+    rng = np.random.default_rng(71)
+    c, h = [0.8, -0.6, 0.3125], 1.6
+    sor = S.SurfaceOfRevolution([0, 0, 0], [0, 0, 1], c, h, capped=False)
+    o = rng.normal(size=(300, 3)) * 3
+    d = rng.uniform(-1.5, 1.5, (300, 3)) + [0, 0, 0.8] - o
+    got = sor.hits(o, d)
+    checked = 0
+    for k in range(300):
+        x, y, z = (Poly([o[k, i], d[k, i]]) for i in range(3))
+        g = x * x + y * y - (c[0] + c[1] * z + c[2] * z * z) ** 2
+        r = np.roots(g.coef[::-1])
+        if np.any((np.abs(r.imag) > 1e-9) & (np.abs(r.imag) < 1e-4)):
+            continue
+        real = np.sort(r.real[np.abs(r.imag) <= 1e-9])
+        zs = o[k, 2] + real * d[k, 2]
+        keep = real[(zs >= 1e-7) & (zs <= h - 1e-7)]
+        mine = got[k][np.isfinite(got[k])]
+        assert len(mine) == len(keep) and np.allclose(mine, keep, rtol=1e-7, atol=1e-7), k
+        checked += 1
+    assert checked > 280 and np.isfinite(got).any(axis=1).sum() > 50

@@ -82,3 +82,17 @@ def test_replace_mesh_and_segments_change_the_vertex_count_in_place():
     with pytest.raises(ValueError, match="segments must have shape"):
         view.replace_segments("s", pos, [[0, 5]])
     assert view.to_png().startswith(b"\x89PNG")
+
+
+def test_set_color_recolours_a_mesh_in_place():
+    from goldman_lib.views.three import SceneView
+
+    view = SceneView(width=80, height=60)
+    view.add_mesh("m", [[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]], color="#112233")
+    view.set_color("m", "#ff8000")
+    assert view.data("m")["color"] == "#ff8000"
+    assert view._items["m"]["object"].material.color == "#ff8000"
+    import pytest
+
+    with pytest.raises(ValueError, match="color"):
+        view.set_color("m", "not a colour")

@@ -33,7 +33,7 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.light_control import LightControl
 
-__all__ = ["ray_tracing_view", "WIDTH", "HEIGHT", "KIND_COLOURS", "KINDS"]
+__all__ = ["ray_tracing_view", "image_strip", "WIDTH", "HEIGHT", "KIND_COLOURS", "KINDS"]
 
 #: The default image size of the view (a full re-render per slider move stays under 100 ms).
 WIDTH, HEIGHT = 160, 120
@@ -48,6 +48,33 @@ _CACHE = 24
 def _circle(center, radius, n=73):
     a = np.linspace(0, 2 * np.pi, n)
     return center[0] + radius * np.cos(a), center[2] + radius * np.sin(a)
+
+
+def image_strip(images, titles=None, width: float = 2.6) -> bytes:
+    """A static picture (PNG bytes) of rendered images side by side, each ``width`` inches wide with
+    its title: for comparing renders (depths, lights, indices) in a notebook.
+
+    >>> image_strip([np.zeros((4, 6, 3)), np.ones((4, 6, 3))], ["black", "white"])[:4]
+    b'\\x89PNG'
+    """
+    from matplotlib.figure import Figure
+
+    from goldman_lib.views.interactive import figure_png
+
+    images = [np.clip(np.asarray(img, dtype=float), 0, 1) for img in images]
+    if not images or any(img.ndim != 3 or img.shape[2] != 3 for img in images):
+        raise ValueError("images must be a non-empty list of (height, width, 3) RGB images")
+    titles = list(titles) if titles is not None else [""] * len(images)
+    if len(titles) != len(images):
+        raise ValueError(f"titles must have one title per image ({len(images)}); got {len(titles)}")
+    h, w = images[0].shape[:2]
+    fig = Figure(figsize=(width * len(images), width * h / w + 0.35), dpi=style.DPI)
+    for k, (img, title) in enumerate(zip(images, titles)):
+        ax = fig.add_axes([k / len(images) + 0.005, 0.0, 1 / len(images) - 0.01, 1 - 0.35 / (width * h / w + 0.35)])
+        ax.imshow(img, interpolation="nearest")
+        ax.set_xticks([]), ax.set_yticks([])
+        ax.set_title(title, fontsize=9)
+    return figure_png(fig)
 
 
 def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int = 70) -> InteractiveView:
@@ -99,6 +126,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
     ax_side.set_xlim(-7.6, 4.2), ax_side.set_ylim(-0.6, 6.9)
     ax_side.set_xlabel("x", fontsize=8), ax_side.set_ylabel("z", fontsize=8)
     ax_side.tick_params(labelsize=7)
+    ax_side.set_xticks([-6, -3, 0, 3]), ax_side.set_yticks([0, 2, 4, 6])
     for obj in scene0.objects:
         if isinstance(obj, Plane):
             ax_side.axhspan(-0.6, 0.0, color="#d8d4c8", zorder=0)
@@ -113,13 +141,13 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
 
     lines = LineCollection([], linewidths=1.6, zorder=3)
     ax_side.add_collection(lines)
-    (light_dot,) = ax_side.plot([], [], "o", color="#f2b700", markeredgecolor="#7a5c00", markersize=11, zorder=5,
-                                label="light (drag me)")
-    handles = [ax_side.plot([], [], color=c, label=k, linestyle="--" if k == "shadow" else "-")[0]
-               for k, c in KIND_COLOURS.items()]
-    handles.append(ax_side.plot([], [], color=_BLOCKED, linestyle="--", label="blocked shadow")[0])
-    ax_side.legend(handles=[light_dot] + handles, loc="upper right", fontsize=7, framealpha=0.85)
-    side_title = ax_side.set_title("side view (x-z plane): the ray tree of the chosen pixel", fontsize=9)
+    (light_dot,) = ax_side.plot([], [], "o", color="#f2b700", markeredgecolor="#7a5c00", markersize=11, zorder=5)
+    legend = widgets.HTML(" &nbsp;".join(
+        [f"<span style='color:#c99a00'>&#9679; light (drag it)</span>"]
+        + [f"<span style='color:{c}'>{'- -' if k == 'shadow' else '&#9472;&#9472;'} {k}</span>"
+           for k, c in KIND_COLOURS.items()]
+        + [f"<span style='color:{_BLOCKED}'>- - blocked shadow</span>"]))
+    side_title = ax_side.set_title("", fontsize=9)
 
     images: OrderedDict = OrderedDict()
 
@@ -152,10 +180,8 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         light_dot.set_data([marker[0]], [marker[2]])
         n = {k: kinds.count(k) for k in KIND_COLOURS}
         crit = rt.critical_angle(index, 1.0)
-        img_title.set_text(f"depth {depth}, glass index {index:.2f}: {counts['rays']:,} rays + "
-                           f"{counts['shadow']:,} shadow rays", )
-        side_title.set_text(f"pixel ({px}, {py}): {n['primary'] + n['reflected'] + n['refracted']} rays, "
-                            f"{n['shadow']} shadow rays in its tree")
+        img_title.set_text(f"depth {depth}, glass index {index:.2f}")
+        side_title.set_text(f"side view (x-z): ray tree of pixel ({px}, {py})")
         status = (f"{WIDTH}x{HEIGHT} image at recursion depth {depth}: {counts['rays']:,} primary, reflected and "
                   f"refracted rays and {counts['shadow']:,} shadow rays.  Pixel ({px}, {py}): {n['primary']} primary, "
                   f"{n['reflected']} reflected, {n['refracted']} refracted and {n['shadow']} shadow rays "
@@ -167,7 +193,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         return {"image": img, "segments": seg, "kinds": codes, "blocked": blocked, "pixel": pixel,
                 "rays": counts["rays"], "status": status}
 
-    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig), legend], update=update, figure=fig,
                            title="§17.2-17.5 recursive ray tracing: the image and one pixel's ray tree",
                            arrange=[widgets.HBox([widgets.VBox([controls["depth"], controls["index"],
                                                                 controls["px"], controls["py"]]),

@@ -162,6 +162,20 @@ class SceneView:
         item["colors"] = col
         item["geometry"].attributes["color"].array = col.astype(np.float32)
 
+    def set_color(self, name: str, color: str):
+        """A new single colour (``"#rrggbb"``) for mesh ``name``, in place (a picker that swaps one surface
+        for another); the static picture uses it too."""
+        item = self._item(name, "mesh")
+        from matplotlib.colors import to_hex
+
+        try:
+            color = to_hex(color)
+        except ValueError:
+            raise ValueError(f"color must be a colour such as '#66a3d2'; got {color!r}") from None
+        item["color"] = color
+        if item.get("colors") is None:
+            item["object"].material.color = color
+
     def add_segments(self, name: str, positions, segments, color: str = "#7a7a7a", width: float = 1.2):
         """Line segments between ``positions[segments[:, 0]]`` and ``positions[segments[:, 1]]``.
 

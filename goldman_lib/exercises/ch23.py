@@ -1,0 +1,319 @@
+"""Exercise checkers for chapter 23, radiosity (Goldman §23.2-23.5).
+
+Each exercise's data are module constants, so the notebook prints the problem from here and the
+checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
+``SLIPS`` the wrong answers each checker recognises.  ``None`` or ``...`` means "not answered yet".
+The data differ from the chapter's worked examples.  The programming project,
+:func:`check_progressive_refinement_project`, runs the learner's shooting solver against
+:func:`goldman_lib.radiosity.progressive_refinement` on generated scenes.
+
+>>> print(check_reciprocity(0.12).message)
+that is F_ij itself: form factors are not symmetric; A_i F_ij = A_j F_ji, so F_ji = A_i F_ij / A_j.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from goldman_lib import radiosity as rd
+from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
+from goldman_lib.exercises.projects import Case, check_project, describe
+
+__all__ = ["PROBLEMS", "SLIPS", "JACOBI_F", "JACOBI_RHO", "JACOBI_E", "GS_F", "GS_RHO", "GS_E", "RECIPROCITY",
+           "SQUARE_SIDE", "SQUARE_DISTANCE", "SHOT_AREA", "SHOT_F", "SHOT_RHO", "SHOT_DB",
+           "check_jacobi_step", "check_gauss_seidel_step", "check_reciprocity", "check_parallel_form_factor",
+           "check_shot", "check_progressive_refinement_project", "project_cases"]
+
+#: Exercise 1 (§23.5): a 2-patch system (A_1 = 1, A_2 = 2, so A_1 F_12 = A_2 F_21).
+JACOBI_F = ((0.0, 0.4), (0.2, 0.0))
+JACOBI_RHO = (0.5, 0.8)
+JACOBI_E = (2.0, 1.0)
+#: Exercise 2 (§23.5): the same form factors, other reflectances and emissions.
+GS_F = JACOBI_F
+GS_RHO = (0.6, 0.5)
+GS_E = (1.0, 3.0)
+#: Exercise 3 (§23.3): areas A_i, A_j and the form factor F_ij.
+RECIPROCITY = (2.5, 0.8, 0.12)
+#: Exercise 4 (§23.3): two directly opposed squares.
+SQUARE_SIDE = 2.0
+SQUARE_DISTANCE = 1.0
+#: Exercise 5 (§23.5): three patches, the shooter's row of F, reflectances and unshot radiosities.
+SHOT_AREA = (2.0, 1.0, 0.5)
+SHOT_F = (0.0, 0.3, 0.1)           # F_1j: what patch 1 sees
+SHOT_RHO = (0.5, 0.5, 0.8)
+SHOT_DB = (1.5, 1.0, 2.0)
+
+
+def _m(rows) -> str:
+    return "[" + ", ".join("[" + ", ".join(fmt(v) for v in r) + "]" for r in rows) + "]"
+
+
+def _v(v) -> str:
+    return "(" + ", ".join(fmt(x) for x in v) + ")"
+
+
+PROBLEMS = {
+    "check_jacobi_step": (
+        f"Two patches have form factors F = {_m(JACOBI_F)} (F_12 = {fmt(JACOBI_F[0][1])}: patch 1 sends that "
+        f"fraction of its light to patch 2), reflectances rho = {_v(JACOBI_RHO)} and emissions E = {_v(JACOBI_E)}. "
+        f"Start from B^(0) = E and make one Jacobi step B_i^(1) = E_i + rho_i sum_j F_ij B_j^(0). Give "
+        f"[B_1, B_2] (Goldman §23.5)."),
+    "check_gauss_seidel_step": (
+        f"Same form factors F = {_m(GS_F)}, now rho = {_v(GS_RHO)} and E = {_v(GS_E)}. Start from B^(0) = E and "
+        f"make one Gauss-Seidel sweep, patch 1 first, each patch gathering from the newest radiosities. Give "
+        f"[B_1, B_2] after the sweep (Goldman §23.5)."),
+    "check_reciprocity": (
+        f"Patch i has area {fmt(RECIPROCITY[0])}, patch j area {fmt(RECIPROCITY[1])}, and F_ij = "
+        f"{fmt(RECIPROCITY[2])}. What is F_ji (Goldman §23.3)?"),
+    "check_parallel_form_factor": (
+        f"Two {fmt(SQUARE_SIDE)} x {fmt(SQUARE_SIDE)} squares face each other, directly opposed, "
+        f"{fmt(SQUARE_DISTANCE)} apart. Use the closed form for directly opposed rectangles to give their form "
+        f"factor F to 3 decimals (Goldman §23.3)."),
+    "check_shot": (
+        f"Progressive refinement: three patches with areas {_v(SHOT_AREA)}, reflectances {_v(SHOT_RHO)} and unshot "
+        f"radiosities dB = {_v(SHOT_DB)}. Patch 1 has the most unshot power A dB, so it shoots; its form factors are "
+        f"F_12 = {fmt(SHOT_F[1])}, F_13 = {fmt(SHOT_F[2])}. Give the unshot radiosities [dB_1, dB_2, dB_3] after the "
+        f"shot (Goldman §23.5)."),
+}
+
+
+def _pair(answer, what, n, ask):
+    got, err = read_points(answer, what, ask=ask)
+    if err is not None:
+        return None, err
+    if got.shape != (n,):
+        return None, wrong(f"{what} should be {n} numbers; yours has shape {got.shape}.")
+    return got, None
+
+
+def _close(a, b, tol=1e-4) -> bool:
+    return bool(np.all(np.abs(np.asarray(a, float) - np.asarray(b, float)) <= tol * np.maximum(1, np.abs(b))))
+
+
+def _dist(a, b) -> str:
+    return off_by(float(np.linalg.norm(np.asarray(a, float) - np.asarray(b, float))), 0.0)
+
+
+def _jacobi(F, rho, E):
+    F, rho, E = np.array(F), np.array(rho), np.array(E)
+    return E + rho * (F @ E)
+
+
+def _gs(F, rho, E, order=(0, 1)):
+    F, rho, E = np.array(F), np.array(rho), np.array(E, dtype=float)
+    B = E.copy()
+    for i in order:
+        B[i] = E[i] + rho[i] * (F[i] @ B)
+    return B
+
+
+def check_jacobi_step(answer) -> Result:
+    """Check one Jacobi step ``B^(1) = E + rho F E`` (Goldman §23.5).  Recognises a Gauss-Seidel sweep,
+    the transposed form factors, a missing reflectance and a missing emission.
+
+    >>> print(check_jacobi_step([2.2, 1.352]).message)
+    that is a Gauss-Seidel sweep: you used patch 1's new radiosity for patch 2. Jacobi gathers from B^(0) only.
+    """
+    got, err = _pair(answer, "your [B_1, B_2]", 2, "[B_1, B_2]")
+    if err is not None:
+        return err
+    F, rho, E = np.array(JACOBI_F), np.array(JACOBI_RHO), np.array(JACOBI_E)
+    right = _jacobi(F, rho, E)
+    if _close(got, right):
+        return correct("one bounce of light: each patch keeps its emission and gathers rho_i F_ij B_j from the other.")
+    if _close(got, _gs(F, rho, E)):
+        return wrong("that is a Gauss-Seidel sweep: you used patch 1's new radiosity for patch 2. Jacobi gathers "
+                     "from B^(0) only.")
+    if _close(got, _jacobi(F.T, rho, E)):
+        return wrong("you used F_ji where F_ij belongs: patch i gathers sum_j F_ij B_j, row i of F.")
+    if _close(got, E + F @ E):
+        return wrong("the reflectance is missing: a patch reflects only rho_i of the light it gathers.")
+    if _close(got, rho * (F @ E)):
+        return wrong("that is only the gathered light; add the patch's own emission E_i.")
+    return wrong(f"your [B_1, B_2] is {_dist(got, right)}; compute E_i + rho_i (F_i1 B_1 + F_i2 B_2) with B = E.")
+
+
+def check_gauss_seidel_step(answer) -> Result:
+    """Check one Gauss-Seidel sweep, patch 1 first (Goldman §23.5).  Recognises the Jacobi step,
+    the sweep in the other order and a missing emission.
+
+    >>> print(check_gauss_seidel_step([1.72, 3.1]).message)
+    that is the Jacobi step: patch 2 should gather from patch 1's radiosity as updated in this sweep.
+    """
+    got, err = _pair(answer, "your [B_1, B_2]", 2, "[B_1, B_2]")
+    if err is not None:
+        return err
+    F, rho, E = np.array(GS_F), np.array(GS_RHO), np.array(GS_E)
+    right = _gs(F, rho, E)
+    if _close(got, right):
+        return correct("patch 2 already saw patch 1's updated radiosity: that is why Gauss-Seidel needs fewer sweeps.")
+    if _close(got, _jacobi(F, rho, E)):
+        return wrong("that is the Jacobi step: patch 2 should gather from patch 1's radiosity as updated in this sweep.")
+    if _close(got, _gs(F, rho, E, order=(1, 0))):
+        return wrong("you swept patch 2 first; the sweep goes in patch order, patch 1 first.")
+    if _close(got, _gs(F, rho, np.zeros(2)) + 0) or _close(got, right - E):
+        return wrong("the emission is missing: B_i = E_i + rho_i sum_j F_ij B_j.")
+    return wrong(f"your [B_1, B_2] is {_dist(got, right)}; update B_1 first, then use it for B_2.")
+
+
+def check_reciprocity(answer) -> Result:
+    """Check ``F_ji = A_i F_ij / A_j`` (Goldman §23.3).  Recognises the ratio upside down, F_ij itself
+    and the complement ``1 - F_ij``.
+
+    >>> print(check_reciprocity(0.0384).message)
+    you divided the wrong way: A_i F_ij = A_j F_ji, so F_ji = A_i F_ij / A_j (the smaller patch sees more of the bigger one).
+    """
+    value, err = read_number(answer, "your F_ji")
+    if err is not None:
+        return err
+    Ai, Aj, Fij = RECIPROCITY
+    right = Ai * Fij / Aj
+    if abs(value - right) <= 1e-4:
+        return correct("A_i F_ij = A_j F_ji: the smaller patch sees a larger share of the bigger one.")
+    if abs(value - Aj * Fij / Ai) <= 1e-4:
+        return wrong("you divided the wrong way: A_i F_ij = A_j F_ji, so F_ji = A_i F_ij / A_j (the smaller patch "
+                     "sees more of the bigger one).")
+    if abs(value - Fij) <= 1e-4:
+        return wrong("that is F_ij itself: form factors are not symmetric; A_i F_ij = A_j F_ji, so F_ji = A_i F_ij / A_j.")
+    if abs(value - (1 - Fij)) <= 1e-4:
+        return wrong("1 - F_ij is what patch i sends elsewhere, not what j sends to i; use reciprocity.")
+    return wrong(f"your F_ji is {off_by(value, right)}; use A_i F_ij = A_j F_ji.")
+
+
+def check_parallel_form_factor(answer) -> Result:
+    """Check the closed form for two directly opposed squares (Goldman §23.3).  Recognises the ratio
+    X = distance / side, the small-patch estimate A / (pi d^2) and the unit-square value.
+
+    >>> print(check_parallel_form_factor(1.2732).message)
+    that is A / (pi d^2), the estimate for small, distant patches: it even exceeds 1 here. Use the closed form.
+    """
+    value, err = read_number(answer, "your F")
+    if err is not None:
+        return err
+    right = rd.form_factor_parallel_rectangles(SQUARE_SIDE, SQUARE_SIDE, SQUARE_DISTANCE)
+    if abs(value - right) <= 6e-4:
+        return correct("bigger squares at the same distance catch much more of each other's light than unit squares.")
+    if abs(value - rd.form_factor_parallel_rectangles(SQUARE_DISTANCE, SQUARE_DISTANCE, SQUARE_SIDE)) <= 6e-4:
+        return wrong("you used X = distance / side; the closed form takes X = width / distance and Y = height / distance.")
+    if abs(value - SQUARE_SIDE ** 2 / (np.pi * SQUARE_DISTANCE ** 2)) <= 6e-4:
+        return wrong("that is A / (pi d^2), the estimate for small, distant patches: it even exceeds 1 here. Use the "
+                     "closed form.")
+    if abs(value - rd.form_factor_parallel_rectangles(1, 1, 1)) <= 6e-4:
+        return wrong("that is the value for unit squares at unit distance; here X = Y = side / distance is not 1.")
+    return wrong(f"your F is {off_by(value, right)}; evaluate the closed form with X = Y = side / distance.")
+
+
+def _shot(F_row, area, rho, dB, reciprocal=True, zero=True, reflect=True):
+    F_row, area, rho, dB = (np.array(a, float) for a in (F_row, area, rho, dB))
+    F_back = F_row * area[0] / area if reciprocal else F_row
+    out = dB + (rho if reflect else 1.0) * F_back * dB[0]
+    out[0] = 0.0 if zero else dB[0]
+    return out
+
+
+def check_shot(answer) -> Result:
+    """Check one shot of progressive refinement (Goldman §23.5).  Recognises F_1j used without
+    reciprocity, the shooter's unshot radiosity not cleared, and a missing reflectance.
+
+    >>> print(check_shot([0, 1.225, 2.12]).message)
+    you used F_1j where patch j receives through F_j1 = A_1 F_1j / A_j (reciprocity).
+    """
+    got, err = _pair(answer, "your [dB_1, dB_2, dB_3]", 3, "[dB_1, dB_2, dB_3]")
+    if err is not None:
+        return err
+    args = (SHOT_F, SHOT_AREA, SHOT_RHO, SHOT_DB)
+    right = _shot(*args)
+    if _close(got, right):
+        return correct("patch 1's unshot light is now spread to the others, each receiving rho_j F_j1 dB_1.")
+    if _close(got, _shot(*args, reciprocal=False)):
+        return wrong("you used F_1j where patch j receives through F_j1 = A_1 F_1j / A_j (reciprocity).")
+    if _close(got, _shot(*args, zero=False)):
+        return wrong("after shooting, patch 1 has no unshot radiosity left: clear its dB.")
+    if _close(got, _shot(*args, reflect=False)):
+        return wrong("the reflectance is missing: patch j keeps rho_j of what arrives.")
+    return wrong(f"your [dB_1, dB_2, dB_3] is {_dist(got, right)}; add rho_j F_j1 dB_1 to each dB_j, then clear dB_1.")
+
+
+# -- the programming project --------------------------------------------------------------------------
+
+def _random_scene(rng, n):
+    area = rng.uniform(0.3, 3.0, n)
+    S = rng.uniform(0.0, 1.0, (n, n))
+    S = S + S.T
+    np.fill_diagonal(S, 0.0)
+    F = S / area[:, None]
+    F = F / F.sum(axis=1).max() * rng.uniform(0.6, 0.95)          # rows <= 1; A F symmetric
+    rho = rng.uniform(0.1, 0.9, n)
+    E = np.zeros(n)
+    E[rng.choice(n, size=max(1, n // 4), replace=False)] = rng.uniform(1.0, 5.0, max(1, n // 4))
+    return F, rho, E, area
+
+
+def project_cases(seed: int = 23) -> list[Case]:
+    """The cases of :func:`check_progressive_refinement_project`, from a fixed seed: random scenes with
+    unequal areas (reciprocal form factors), a closed box (rows of F summing to 1), a scene that emits
+    nothing, one with a black patch, and a single patch."""
+    rng = np.random.default_rng(seed)
+    cases = []
+    for n in (4, 9):
+        F, rho, E, area = _random_scene(rng, n)
+        cases.append(Case(f"a random scene of {n} patches with unequal areas", (F, rho, E, area), kind="random scene"))
+    box = rd.cornell_box(2, closed=True, blocks=False)
+    F = rd.enforce_reciprocity(rd.hemicube_form_factors(box, 16), box.areas)
+    F = F / F.sum(axis=1, keepdims=True)
+    cases.append(Case(f"a closed box of {len(box)} patches (rows of F sum to 1), lit from the ceiling",
+                      (F, box.reflectance[:, 0].copy(), box.emission[:, 0].copy(), box.areas), kind="closed box"))
+    F, rho, E, area = _random_scene(rng, 5)
+    cases.append(Case("a scene of 5 patches that emits nothing", (F, rho, np.zeros(5), area), kind="no emission"))
+    F, rho, E, area = _random_scene(rng, 6)
+    rho = rho.copy()
+    rho[np.argmax(E)] = 0.0
+    rho[0] = 0.0
+    cases.append(Case("6 patches, two of them black (rho = 0)", (F, rho, E, area), kind="black patch"))
+    cases.append(Case("a single patch (F = [[0]]) emitting 2", (np.zeros((1, 1)), np.array([0.5]), np.array([2.0]),
+                                                                 np.array([1.5])), kind="one patch"))
+    return cases
+
+
+def _reference(F, rho, E, area):
+    return rd.progressive_refinement(F, rho, E, area, tol=1e-12)
+
+
+def _compare(got, expected, case):
+    arr = np.asarray(got, dtype=float)
+    exp = np.asarray(expected, dtype=float)
+    if arr.shape != exp.shape:
+        return f"it has shape {arr.shape}; the radiosities have shape {exp.shape} (one per patch)"
+    if not np.all(np.isfinite(arr)):
+        return "it contains NaN or infinite values"
+    err = np.abs(arr - exp)
+    if err.max() <= 1e-6 * max(1.0, np.abs(exp).max()):
+        return None
+    k = int(np.argmax(err))
+    return (f"patch {k} has radiosity {fmt(arr[k])}, expected {fmt(exp[k])} ({int((err > 1e-6).sum())} of "
+            f"{len(exp)} patches off){'; did you shoot until the unshot radiosity is negligible?' if np.all(arr <= exp + 1e-9) else ''}")
+
+
+def check_progressive_refinement_project(function) -> Result:
+    """Check the learner's ``progressive_refinement(F, rho, E, area)`` (one channel: ``F`` ``(n, n)``,
+    ``rho``, ``E``, ``area`` ``(n,)``; returns the radiosities ``(n,)`` converged to about 1e-9) against
+    :func:`goldman_lib.radiosity.progressive_refinement` on :func:`project_cases` (Goldman §23.5).
+
+    >>> def gather_once(F, rho, E, area):
+    ...     return E + rho * (F @ E)
+    >>> print(check_progressive_refinement_project(gather_once).message)   # doctest: +ELLIPSIS
+    case 1 of 6 (a random scene of 4 patches with unequal areas): ... patches off); did you shoot until ...
+    """
+    return check_project(function, project_cases(), reference=_reference, compare=_compare,
+                         what="progressive refinement",
+                         hint="shoot from the patch with the largest A_i dB_i; patch j receives rho_j F_ji dB_i with "
+                              "F_ji = A_i F_ij / A_j; stop when the largest unshot radiosity is below about 1e-12")
+
+
+SLIPS = {
+    "check_jacobi_step": [[2.2, 1.352], [2.1, 1.64], [2.4, 1.4], [0.2, 0.32]],
+    "check_gauss_seidel_step": [[1.72, 3.1], [1.744, 3.1], [0.72, 0.172]],
+    "check_reciprocity": [0.0384, 0.12, 0.88],
+    "check_parallel_form_factor": [0.0686, 1.2732, 0.1998],
+    "check_shot": [[0, 1.225, 2.12], [1.5, 1.45, 2.48], [0, 1.9, 2.6]],
+}

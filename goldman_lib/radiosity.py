@@ -1,0 +1,942 @@
+"""Radiosity (Goldman ch. 23): light bounced between diffuse patches until it settles.
+
+A scene is cut into small flat patches.  Each patch ``i`` has an area ``A_i``, a reflectance
+``rho_i`` (per RGB channel) and an emission ``E_i``; its **radiosity** ``B_i`` is the light leaving
+it per unit area.  The rendering equation, restricted to diffuse surfaces and made discrete, is
+the **radiosity equation** (§23.2)
+
+    B_i = E_i + rho_i sum_j F_ij B_j ,      that is      (I - diag(rho) F) B = E,
+
+where the **form factor** ``F_ij`` is the fraction of the light leaving patch ``i`` that arrives at
+patch ``j`` (the book's convention: row ``i`` is what ``i`` sees).  Form factors obey
+**reciprocity**, ``A_i F_ij = A_j F_ji``, and in a closed scene every row sums to 1.
+
+This module gives:
+
+* form factors in closed form for the two cases the book treats -- two directly opposed equal
+  rectangles (:func:`form_factor_parallel_rectangles`) and two rectangles at right angles sharing an
+  edge (:func:`form_factor_perpendicular_rectangles`) -- and from a point to a polygon
+  (:func:`form_factor_point_polygon`, Lambert's contour formula);
+* form factors between the patches of a scene by **hemi-cubes** (§23.3,
+  :func:`hemicube_form_factors`): the delta form factors of the cells of a hemi-cube's top and side
+  faces (:func:`hemicube_delta_form_factors`), every patch projected onto the hemi-cube of each patch
+  and the nearest one kept in each cell (an item buffer, vectorised over cells and patches);
+* the solvers of §23.5: gathering by :func:`jacobi` and :func:`gauss_seidel`, shooting by
+  :func:`progressive_refinement`, each stopping when the residual ``max |E + rho F B - B|`` is at most
+  ``tol`` and, on request (``return_history=True``), returning a :class:`SolverHistory` with the
+  residual and the radiosities after every iteration;
+* a Cornell box (:func:`cornell_box`) with several hundred patches and a square light on its
+  ceiling, and the display step of §23.4: radiosities averaged at the vertices for smooth (Gouraud)
+  display (:func:`vertex_radiosities`) and mapped to colours (:func:`to_colours`).
+
+The formulation is ours where the book is not at hand: residuals are measured in the max norm, the
+hemi-cube is sampled at cell centres (a ray per cell, which is what projecting the patches and
+keeping the nearest in each cell computes), and the iterations start from ``B = E``.
+
+Points are row vectors; the box is ``[0, 1]^3`` with ``z`` up, its open side at ``y = 0``.
+
+>>> round(form_factor_parallel_rectangles(1, 1, 1), 4), round(form_factor_perpendicular_rectangles(1, 1, 1), 4)
+(0.1998, 0.2)
+>>> F = np.array([[0.0, 0.5], [0.5, 0.0]]); rho = np.array([0.5, 0.5]); E = np.array([1.0, 0.0])
+>>> np.round(jacobi(F, rho, E, tol=1e-12), 6)
+array([1.066667, 0.266667])
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from goldman_lib.validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points,
+                                    as_tolerance, check_finite, within_budget)
+
+__all__ = ["Patches", "SolverHistory", "form_factor_parallel_rectangles", "form_factor_perpendicular_rectangles",
+           "form_factor_point_polygon", "hemicube_cells", "hemicube_delta_form_factors", "hemicube_form_factors",
+           "reciprocity_error", "enforce_reciprocity", "radiosity_matrix", "residual", "jacobi", "gauss_seidel", "progressive_refinement",
+           "cornell_box", "light_emission", "patch_mesh", "vertex_radiosities", "corner_radiosities", "to_colours", "CORNELL_COLOURS"]
+
+#: The reflectances of the Cornell box's surfaces (RGB): white walls, red left wall, green right wall.
+CORNELL_COLOURS = {"white": (0.75, 0.75, 0.75), "red": (0.63, 0.065, 0.05), "green": (0.14, 0.45, 0.09)}
+
+#: The most ray-patch tests one call of :func:`hemicube_form_factors` may make (about a minute's work).
+MAX_HEMICUBE_TESTS = 200 * MAX_ITEMS
+
+
+# -- patches -----------------------------------------------------------------------------------------
+
+@dataclass(frozen=True, eq=False)
+class Patches:
+    """The patches of a radiosity scene (Goldman §23.2): parallelograms ``origin + s edge_u + t
+    edge_v`` for ``0 <= s, t <= 1``, facing along ``edge_u x edge_v``.
+
+    origin, edge_u, edge_v: ``(n, 3)``.  reflectance, emission: ``(n, 3)`` RGB (reflectance in
+    [0, 1], emission >= 0).  labels: a name per patch (its wall).  Derived: :attr:`centres`,
+    :attr:`normals` (unit), :attr:`areas`, :attr:`corners` ``(n, 4, 3)``.
+    """
+
+    origin: np.ndarray
+    edge_u: np.ndarray
+    edge_v: np.ndarray
+    reflectance: np.ndarray
+    emission: np.ndarray
+    labels: tuple = ()
+    grids: tuple = ()
+
+    def __post_init__(self):
+        origin = as_points(self.origin, "origin", dim=3)
+        n = len(origin)
+        edge_u = as_points(self.edge_u, "edge_u", dim=3)
+        edge_v = as_points(self.edge_v, "edge_v", dim=3)
+        refl = as_points(self.reflectance, "reflectance", dim=3)
+        emis = as_points(self.emission, "emission", dim=3)
+        for name, arr in (("edge_u", edge_u), ("edge_v", edge_v), ("reflectance", refl), ("emission", emis)):
+            if len(arr) != n:
+                raise ValueError(f"{name} must hold one row per patch, as many as origin has ({n}); got shape "
+                                 f"{arr.shape}")
+        cross = np.cross(edge_u, edge_v)
+        area = np.linalg.norm(cross, axis=1)
+        if np.any(area <= 1e-12 * np.maximum(1.0, np.linalg.norm(edge_u, axis=1) * np.linalg.norm(edge_v, axis=1))):
+            k = int(np.flatnonzero(area <= 1e-12 * np.maximum(1.0, np.linalg.norm(edge_u, axis=1)
+                                                                * np.linalg.norm(edge_v, axis=1)))[0])
+            raise ValueError(f"edge_u and edge_v must span a parallelogram; patch {k} has zero area")
+        if not np.all(np.isfinite(area)) or not np.all(np.isfinite(origin + edge_u + edge_v)):
+            raise ValueError("origin must be small enough that the patches' corners and areas are finite")
+        if np.any((refl < 0) | (refl > 1)):
+            raise ValueError("reflectance must be in [0, 1] in every channel")
+        if np.any(emis < 0):
+            raise ValueError("emission must be >= 0 in every channel")
+        if isinstance(self.labels, str) or not isinstance(self.labels, (tuple, list)):
+            raise TypeError(f"labels must be a tuple or list of names, one per patch; got {type(self.labels).__name__}")
+        if not isinstance(self.grids, (tuple, list)):
+            raise TypeError(f"grids must be a tuple of (start, nu, nv) triples; got {type(self.grids).__name__}")
+        labels = tuple(str(s) for s in self.labels) if len(self.labels) else ("patch",) * n
+        if len(labels) != n:
+            raise ValueError(f"labels must name every patch ({n}); got {len(labels)}")
+        for name, arr in (("origin", origin), ("edge_u", edge_u), ("edge_v", edge_v), ("reflectance", refl),
+                          ("emission", emis)):
+            object.__setattr__(self, name, arr)
+        object.__setattr__(self, "labels", labels)
+        object.__setattr__(self, "grids", self._check_grids(self.grids, n))
+
+    def _check_grids(self, grids, n):
+        out = []
+        used = np.zeros(n, bool)
+        for g in grids:
+            if not isinstance(g, (tuple, list)) or len(g) != 3:
+                raise ValueError(f"grids must hold (start, nu, nv) triples; got {g!r}")
+            start, nu, nv = (as_int(v, "grids", minimum=0) for v in g)
+            if nu < 1 or nv < 1 or start + nu * nv > n:
+                raise ValueError(f"grids: ({start}, {nu}, {nv}) must name nu x nv >= 1 patches among the {n}")
+            if used[start:start + nu * nv].any():
+                raise ValueError(f"grids must not overlap; ({start}, {nu}, {nv}) overlaps another grid")
+            used[start:start + nu * nv] = True
+            a, b = np.divmod(np.arange(nu * nv), nv)
+            k = start + a * nv + b
+            expect = self.origin[start] + a[:, None] * self.edge_u[start] + b[:, None] * self.edge_v[start]
+            size = np.abs(self.edge_u[start]).max() + np.abs(self.edge_v[start]).max()
+            if (np.abs(self.origin[k] - expect).max() > 1e-9 * size
+                    or np.abs(self.edge_u[k] - self.edge_u[start]).max() > 1e-9 * size
+                    or np.abs(self.edge_v[k] - self.edge_v[start]).max() > 1e-9 * size):
+                raise ValueError(f"grids: the patches ({start}, {nu}, {nv}) do not tile a parallelogram in order")
+            out.append((start, nu, nv))
+        return tuple(out)
+
+    def __len__(self) -> int:
+        return len(self.origin)
+
+    @property
+    def areas(self) -> np.ndarray:
+        """``(n,)`` the patches' areas ``|edge_u x edge_v|``."""
+        return np.linalg.norm(np.cross(self.edge_u, self.edge_v), axis=1)
+
+    @property
+    def normals(self) -> np.ndarray:
+        """``(n, 3)`` unit normals along ``edge_u x edge_v`` (the side that emits and reflects)."""
+        cross = np.cross(self.edge_u, self.edge_v)
+        return cross / np.linalg.norm(cross, axis=1, keepdims=True)
+
+    @property
+    def centres(self) -> np.ndarray:
+        """``(n, 3)`` the patches' centres."""
+        return self.origin + 0.5 * (self.edge_u + self.edge_v)
+
+    @property
+    def corners(self) -> np.ndarray:
+        """``(n, 4, 3)`` corners in order ``origin, +edge_u, +edge_u+edge_v, +edge_v``."""
+        o, u, v = self.origin, self.edge_u, self.edge_v
+        return np.stack([o, o + u, o + u + v, o + v], axis=1)
+
+    def with_emission(self, emission) -> "Patches":
+        """The same patches with another emission ``(n, 3)``."""
+        return Patches(self.origin, self.edge_u, self.edge_v, self.reflectance, emission, self.labels, self.grids)
+
+
+@dataclass(frozen=True, eq=False)
+class SolverHistory:
+    """What a solver did (Goldman §23.5): ``radiosities`` the final ``B``; ``residuals[k]`` the
+    residual ``max |E + rho F B_k - B_k|`` after ``k`` iterations (``k = 0`` is the start ``B = E``);
+    ``iterates[k]`` ``B_k``; ``converged`` whether the last residual is ``<= tol``; ``shooters``
+    (progressive refinement) the patch shot at each step."""
+
+    radiosities: np.ndarray
+    residuals: np.ndarray
+    iterates: np.ndarray
+    converged: bool
+    shooters: np.ndarray | None = None
+
+    @property
+    def iterations(self) -> int:
+        """How many iterations (sweeps or shots) were made."""
+        return len(self.residuals) - 1
+
+
+# -- analytic form factors ---------------------------------------------------------------------------
+
+def _positive(x, name):
+    value = as_float(x, name)
+    if value <= 0:
+        raise ValueError(f"{name} must be > 0; got {value}")
+    if value > 1e100 or value < 1e-100:
+        raise ValueError(f"{name} must be between 1e-100 and 1e100; got {value}")
+    return value
+
+
+def form_factor_parallel_rectangles(width, height, distance) -> float:
+    """The form factor between two equal ``width`` x ``height`` rectangles directly opposite each
+    other at ``distance`` (parallel, aligned, facing each other) in closed form (Goldman §23.3):
+
+        F = 2 / (pi X Y) [ ln sqrt((1+X^2)(1+Y^2) / (1+X^2+Y^2)) + X sqrt(1+Y^2) atan(X / sqrt(1+Y^2))
+                           + Y sqrt(1+X^2) atan(Y / sqrt(1+X^2)) - X atan X - Y atan Y ],
+
+    ``X = width / distance``, ``Y = height / distance``.  All three must be > 0.
+
+    >>> round(form_factor_parallel_rectangles(1, 1, 1), 5)
+    0.19982
+    """
+    a, b, c = _positive(width, "width"), _positive(height, "height"), _positive(distance, "distance")
+    X, Y = a / c, b / c
+    if X > 1e6 or Y > 1e6 or X < 1e-6 or Y < 1e-6:
+        raise ValueError(f"width/distance and height/distance must be between 1e-6 and 1e6; got {X:g} and {Y:g}")
+    x2, y2 = X * X, Y * Y
+    sx, sy = math.sqrt(1 + x2), math.sqrt(1 + y2)
+    value = (0.5 * (math.log1p(x2) + math.log1p(y2) - math.log1p(x2 + y2))
+             + X * sy * math.atan(X / sy) + Y * sx * math.atan(Y / sx) - X * math.atan(X) - Y * math.atan(Y))
+    return float(min(max(2.0 / (math.pi * X * Y) * value, 0.0), 1.0))
+
+
+def form_factor_perpendicular_rectangles(common_edge, width_from, width_to) -> float:
+    """The form factor from a ``common_edge`` x ``width_from`` rectangle to a ``common_edge`` x
+    ``width_to`` rectangle at right angles to it, the two sharing the edge of length
+    ``common_edge`` (Goldman §23.3), in closed form: with ``W = width_from / l``, ``H = width_to / l``,
+
+        F = 1 / (pi W) [ W atan(1/W) + H atan(1/H) - sqrt(H^2+W^2) atan(1/sqrt(H^2+W^2))
+            + 1/4 ln( (1+W^2)(1+H^2)/(1+W^2+H^2) * (W^2 (1+W^2+H^2) / ((1+W^2)(W^2+H^2)))^(W^2)
+                                                 * (H^2 (1+H^2+W^2) / ((1+H^2)(H^2+W^2)))^(H^2) ) ].
+
+    >>> round(form_factor_perpendicular_rectangles(1, 1, 1), 5)
+    0.20004
+    """
+    ell = _positive(common_edge, "common_edge")
+    W, H = _positive(width_from, "width_from") / ell, _positive(width_to, "width_to") / ell
+    if W > 1e6 or H > 1e6 or W < 1e-6 or H < 1e-6:
+        raise ValueError(f"width_from/common_edge and width_to/common_edge must be between 1e-6 and 1e6; "
+                         f"got {W:g} and {H:g}")
+    w2, h2 = W * W, H * H
+    r = math.sqrt(w2 + h2)
+    log_term = (math.log1p(w2) + math.log1p(h2) - math.log1p(w2 + h2)
+                + w2 * (math.log(w2) + math.log1p(w2 + h2) - math.log1p(w2) - math.log(w2 + h2))
+                + h2 * (math.log(h2) + math.log1p(w2 + h2) - math.log1p(h2) - math.log(w2 + h2)))
+    value = W * math.atan(1 / W) + H * math.atan(1 / H) - r * math.atan(1 / r) + 0.25 * log_term
+    return float(min(max(value / (math.pi * W), 0.0), 1.0))
+
+
+def form_factor_point_polygon(point, normal, polygon) -> float:
+    """The form factor from a differential area at ``point`` with unit ``normal`` to a planar
+    ``polygon`` (Goldman §23.3, the limit of a small patch): Lambert's contour formula
+
+        F = 1 / (2 pi) sum_k gamma_k  n . (R_k x R_{k+1}) / |R_k x R_{k+1}|,
+
+    ``R_k`` the vertices relative to ``point`` and ``gamma_k`` the angle between ``R_k`` and
+    ``R_{k+1}``.  The part of the polygon below the point's tangent plane is clipped away first.
+    point, normal: ``(3,)``; polygon: ``(k, 3)``, ``k >= 3``, its vertices in either order.
+
+    >>> round(form_factor_point_polygon([0, 0, 0], [0, 0, 1], [[-9e3, -9e3, 1], [9e3, -9e3, 1], [9e3, 9e3, 1], [-9e3, 9e3, 1]]), 4)
+    1.0
+    """
+    p = as_points(point, "point", ndim=1, dim=3)
+    n = as_points(normal, "normal", ndim=1, dim=3)
+    poly = as_points(polygon, "polygon", dim=3)
+    if len(poly) < 3:
+        raise ValueError(f"polygon must have at least 3 vertices; got {len(poly)}")
+    length = float(np.linalg.norm(n))
+    if not np.isfinite(length) or length == 0:
+        raise ValueError("normal must be a nonzero vector")
+    n = n / length
+    scale = float(np.abs(poly - p).max())
+    if not np.isfinite(scale) or scale > 1e100:
+        raise ValueError("polygon must lie within 1e100 of point")
+    R = poly - p
+    h = R @ n
+    eps = 1e-12 * max(scale, 1e-300)
+    # clip to the half-space above the tangent plane (Sutherland-Hodgman with one plane)
+    clipped = []
+    for k in range(len(R)):
+        a, b, ha, hb = R[k], R[(k + 1) % len(R)], h[k], h[(k + 1) % len(R)]
+        if ha > eps:
+            clipped.append(a)
+        if (ha > eps) != (hb > eps):
+            t = (eps - ha) / (hb - ha)
+            clipped.append(a + t * (b - a))
+    if len(clipped) < 3:
+        return 0.0
+    R = np.array(clipped)
+    R = R / np.linalg.norm(R, axis=1, keepdims=True)
+    Rn = np.roll(R, -1, axis=0)
+    cross = np.cross(R, Rn)
+    sin = np.linalg.norm(cross, axis=1)
+    gamma = np.arctan2(sin, np.einsum("ij,ij->i", R, Rn))
+    safe = np.where(sin > 0, sin, 1.0)
+    total = np.sum(np.where(sin > 0, gamma * (cross @ n) / safe, 0.0))
+    return float(min(abs(total) / (2 * math.pi), 1.0))
+
+
+# -- hemi-cubes --------------------------------------------------------------------------------------
+
+def _check_resolution(resolution):
+    res = as_int(resolution, "resolution", minimum=2)
+    if res % 2:
+        raise ValueError(f"resolution must be even (the side faces are half as tall as they are wide); got {res}")
+    return within_budget(res, "resolution", cost=lambda r: 3 * r * r, what="the hemi-cube", unit="cells")
+
+
+def hemicube_cells(resolution=16):
+    """The cells of a unit hemi-cube (Goldman §23.3): the top face ``z = 1``, ``-1 <= x, y <= 1`` cut
+    into ``resolution`` x ``resolution`` cells, and the four half side faces (``x = +-1`` or
+    ``y = +-1``, ``0 <= z <= 1``) into ``resolution`` x ``resolution/2`` cells each.
+
+    Returns ``(directions, face)``: ``directions`` ``(3 r^2, 3)`` the cell centres (the directions from
+    the patch's centre, in its local frame with the normal along ``z``), ``face`` ``(3 r^2,)`` 0 for
+    the top face and 1-4 for the sides.  ``resolution`` must be even.
+
+    >>> d, face = hemicube_cells(4)
+    >>> d.shape, int((face == 0).sum())
+    ((48, 3), 16)
+    """
+    r = _check_resolution(resolution)
+    c = -1 + (np.arange(r) + 0.5) * (2.0 / r)            # centres across a face
+    z = (np.arange(r // 2) + 0.5) * (2.0 / r)            # centres up a side face
+    X, Y = np.meshgrid(c, c, indexing="ij")
+    top = np.stack([X.ravel(), Y.ravel(), np.ones(r * r)], axis=1)
+    S, Z = np.meshgrid(c, z, indexing="ij")
+    s, zz, one = S.ravel(), Z.ravel(), np.ones(S.size)
+    sides = [np.stack([one, s, zz], 1), np.stack([-one, s, zz], 1), np.stack([s, one, zz], 1),
+             np.stack([s, -one, zz], 1)]
+    directions = np.concatenate([top] + sides)
+    face = np.concatenate([np.zeros(r * r, int)] + [np.full(S.size, k, int) for k in range(1, 5)])
+    return directions, face
+
+
+def hemicube_delta_form_factors(resolution=16) -> np.ndarray:
+    """The delta form factors of the hemi-cube's cells (Goldman §23.3), in the order of
+    :func:`hemicube_cells`: a cell of area ``dA = (2/r)^2`` at ``(x, y, 1)`` on the top face has
+    ``dF = dA / (pi (x^2 + y^2 + 1)^2)``; one at ``(1, y, z)`` on a side face has
+    ``dF = z dA / (pi (y^2 + z^2 + 1)^2)``.  Both are ``dA cos(theta_patch) cos(theta_cell) / (pi d^2)``
+    and they sum to about 1 (exactly 1 as ``r`` grows).
+
+    >>> round(float(hemicube_delta_form_factors(64).sum()), 3)
+    1.0
+    """
+    d, _ = hemicube_cells(resolution)
+    r = int(resolution)
+    dA = (2.0 / r) ** 2
+    d2 = np.einsum("ij,ij->i", d, d)
+    return dA * d[:, 2] / (np.pi * d2 * d2)
+
+
+def _frames(normals):
+    """Two unit tangents completing each normal to a right-handed frame."""
+    helper = np.where(np.abs(normals[:, :1]) < 0.9, np.array([[1.0, 0, 0]]), np.array([[0.0, 1, 0]]))
+    t1 = np.cross(normals, helper)
+    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
+    t2 = np.cross(normals, t1)
+    return t1, t2
+
+
+def _surfaces(patches: Patches):
+    """The rectangles the patches tile: (origin, edge_u, edge_v, nu, nv, start) arrays, one row per
+    grid of :attr:`Patches.grids` (a lone patch is a 1 x 1 grid)."""
+    n = len(patches)
+    grids = list(patches.grids)
+    covered = np.zeros(n, bool)
+    for start, nu, nv in grids:
+        covered[start:start + nu * nv] = True
+    grids += [(int(k), 1, 1) for k in np.flatnonzero(~covered)]
+    start = np.array([g[0] for g in grids]); nu = np.array([g[1] for g in grids]); nv = np.array([g[2] for g in grids])
+    return (patches.origin[start], patches.edge_u[start] * nu[:, None], patches.edge_v[start] * nv[:, None],
+            nu, nv, start)
+
+
+def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1) -> np.ndarray:
+    """Form factors ``F_ij`` between all patches of a scene by hemi-cubes (Goldman §23.3).
+
+    For each patch ``i`` a hemi-cube is set on its centre, facing along its normal; every other patch
+    is projected onto the hemi-cube's cells and each cell keeps the nearest patch it sees (an item
+    buffer: the smallest depth along the cell's ray wins, so hidden patches get nothing).
+    ``F_ij`` is the sum of the delta form factors (:func:`hemicube_delta_form_factors`) of the cells
+    that keep ``j``; a cell that sees the back of a patch, or nothing, counts for no one.
+    ``subdivisions`` ``s > 1`` puts hemi-cubes at the centres of an ``s`` x ``s`` grid on patch ``i``
+    and averages them (the area average that defines ``F_ij``; one hemi-cube at the centre assumes the
+    patch is small beside its distance to the others).
+
+    Vectorised over cells, surfaces and hemi-cubes: the patches of a rectangle cut into a grid
+    (:attr:`Patches.grids`, as :func:`cornell_box` makes) are projected together -- the cell's ray
+    meets the rectangle's plane at grid coordinates that name the patch -- so the work grows with the
+    number of rectangles, not of patches.  Returns ``(n, n)`` with zero diagonal.  resolution: even,
+    cells across the top face; the work (``n s^2 3 r^2`` cells times the rectangles) is bounded
+    (:data:`MAX_HEMICUBE_TESTS`).
+
+    >>> two = Patches([[0, 0, 0], [0, 1, 1]], [[1, 0, 0], [1, 0, 0]], [[0, 1, 0], [0, -1, 0]],
+    ...               [[0.5] * 3] * 2, [[0.0] * 3] * 2)
+    >>> F = hemicube_form_factors(two, resolution=32, subdivisions=6)
+    >>> bool(abs(F[0, 1] - 0.1998) < 0.004)
+    True
+    """
+    if not isinstance(patches, Patches):
+        raise TypeError(f"patches must be a radiosity.Patches; got {type(patches).__name__}")
+    n = len(patches)
+    subdivisions = as_int(subdivisions, "subdivisions", minimum=1)
+    res = _check_resolution(resolution)
+    so, su_, sv_, nu, nv, first = _surfaces(patches)
+    m = len(so)
+    within_budget(subdivisions, "subdivisions", cost=lambda s: n * s * s * 3 * res * res * m,
+                  what=f"the hemi-cubes of {n} patches at resolution {res}", unit="ray-rectangle tests",
+                  limit=MAX_HEMICUBE_TESTS)
+    directions, _ = hemicube_cells(res)
+    delta = hemicube_delta_form_factors(res)
+    R = len(directions)
+    cross = np.cross(su_, sv_)
+    c2 = np.einsum("ij,ij->i", cross, cross)
+    dual_u = np.cross(sv_, cross) / c2[:, None]             # (p - o) . dual_u = s in [0, 1]
+    dual_v = np.cross(cross, su_) / c2[:, None]             # (p - o) . dual_v = t in [0, 1]
+    normals = patches.normals
+    t1, t2 = _frames(normals)
+    grid = (np.arange(subdivisions) + 0.5) / subdivisions
+    ga, gb = [g.ravel() for g in np.meshgrid(grid, grid, indexing="ij")]
+    # the eyes: s^2 points on every patch, each with its patch's frame
+    eyes = (patches.origin[:, None, :] + ga[None, :, None] * patches.edge_u[:, None, :]
+            + gb[None, :, None] * patches.edge_v[:, None, :]).reshape(-1, 3)
+    owner = np.repeat(np.arange(n), len(ga))
+    # turn each hemi-cube about its normal by its own angle (the golden angle times the patch's
+    # index): cells then do not line up with the edges of a regular grid of patches, which would
+    # send whole rows of cell rays onto patch boundaries (aliasing)
+    turn = np.radians(137.50776405 * np.arange(n))[:, None]
+    t1, t2 = np.cos(turn) * t1 + np.sin(turn) * t2, -np.sin(turn) * t1 + np.cos(turn) * t2
+    frames = np.stack([t1, t2, normals], axis=1)            # (n, 3, 3) rows: local x, y, z
+    scale = float(np.abs(patches.origin).max() + np.linalg.norm(patches.edge_u, axis=1).max()
+                  + np.linalg.norm(patches.edge_v, axis=1).max())
+    eps = 1e-9 * max(scale, 1e-300)
+    wn0, wu0, wv0 = (np.einsum("ij,ij->i", so, c) for c in (cross, dual_u, dual_v))
+    F = np.zeros((n, n))
+    chunk = max(1, 400_000 // (R * m))
+    cells = np.arange(R)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for lo in range(0, len(eyes), chunk):
+            x, who = eyes[lo:lo + chunk], owner[lo:lo + chunk]
+            D = np.einsum("cj,ejk->eck", directions, frames[who])        # (e, R, 3) world directions
+            Dn, Du, Dv = D @ cross.T, D @ dual_u.T, D @ dual_v.T          # (e, R, m)
+            wn = (wn0[None, :] - x @ cross.T)[:, None, :]                 # (e, 1, m): (o - x) . cross
+            t = wn / Dn
+            s = t * Du - (wu0[None, :] - x @ dual_u.T)[:, None, :]
+            u = t * Dv - (wv0[None, :] - x @ dual_v.T)[:, None, :]
+            hit = (t > eps) & (s >= 0) & (s <= 1) & (u >= 0) & (u <= 1)
+            depth = np.where(hit, t, np.inf)
+            k = depth.argmin(axis=2)                                      # (e, R) nearest rectangle
+            e_idx = np.arange(len(x))[:, None]
+            seen = np.isfinite(depth[e_idx, cells[None, :], k]) & (Dn[e_idx, cells[None, :], k] < 0)
+            a = np.minimum((s[e_idx, cells[None, :], k] * nu[k]).astype(int), nu[k] - 1)
+            b = np.minimum((u[e_idx, cells[None, :], k] * nv[k]).astype(int), nv[k] - 1)
+            patch = first[k] + np.clip(a, 0, None) * nv[k] + np.clip(b, 0, None)
+            rows = np.broadcast_to(who[:, None], patch.shape)
+            weights = np.broadcast_to(delta[None, :], patch.shape)
+            F += np.bincount((rows * n + patch)[seen], weights=weights[seen], minlength=n * n).reshape(n, n)
+    F /= len(ga)
+    np.fill_diagonal(F, 0.0)
+    return F
+
+
+def reciprocity_error(F, area) -> float:
+    """How far form factors are from reciprocity ``A_i F_ij = A_j F_ji`` (Goldman §23.3): the total
+    ``sum |A_i F_ij - A_j F_ji|`` relative to ``sum A_i F_ij`` (0 for exact form factors; hemi-cubes,
+    which sample each row from one point, give a small positive number).
+
+    >>> reciprocity_error([[0, 0.5], [0.25, 0]], [1, 2])
+    0.0
+    >>> reciprocity_error([[0, 0.5], [0.5, 0]], [1, 2])          # A F: 0.5 and 1.0, off by 0.5 twice in 1.5
+    0.6666666666666666
+    """
+    F = _check_F(F)
+    A = _check_area(area, len(F))
+    AF = A[:, None] * F
+    total = float(AF.sum())
+    if total == 0:
+        return 0.0
+    return float(np.abs(AF - AF.T).sum() / total)
+
+
+def enforce_reciprocity(F, area) -> np.ndarray:
+    """Form factors made reciprocal (Goldman §23.3): ``F'_ij = (A_i F_ij + A_j F_ji) / (2 A_i)``, the
+    average of what the hemi-cubes of ``i`` and of ``j`` say about the pair, so that
+    ``A_i F'_ij = A_j F'_ji`` exactly.  Shooting (:func:`progressive_refinement`) and gathering then
+    solve the same equation.
+
+    >>> enforce_reciprocity([[0, 0.5], [0.5, 0]], [1, 2]).tolist()
+    [[0.0, 0.75], [0.375, 0.0]]
+    """
+    F = _check_F(F)
+    A = _check_area(area, len(F))
+    AF = A[:, None] * F
+    return (AF + AF.T) / (2 * A[:, None])
+
+
+# -- the radiosity equation and its solvers --------------------------------------------------------------
+
+def _check_F(F) -> np.ndarray:
+    F = check_finite(as_float_array(F, "F"), "F")
+    if F.ndim != 2 or F.shape[0] != F.shape[1] or F.shape[0] == 0:
+        raise ValueError(f"F must be a square (n, n) matrix of form factors; got shape {F.shape}")
+    if np.any(F < 0) or np.any(F > 1):
+        raise ValueError("F must hold form factors in [0, 1]")
+    rows = F.sum(axis=1)
+    if np.any(rows > 1.05):
+        k = int(np.argmax(rows))
+        raise ValueError(f"F's rows must sum to at most 1 (a patch cannot send out more than all its light); "
+                         f"row {k} sums to {rows[k]:.4g}")
+    return F
+
+
+def _check_area(area, n) -> np.ndarray:
+    A = check_finite(as_float_array(area, "area"), "area")
+    if A.shape != (n,):
+        raise ValueError(f"area must hold one area per patch, shape ({n},); got shape {A.shape}")
+    if np.any(A <= 0) or np.any(A > 1e150):
+        raise ValueError("area must be positive (and below 1e150)")
+    return A
+
+
+def _check_system(F, rho, E):
+    F = _check_F(F)
+    n = len(F)
+    E = check_finite(as_float_array(E, "E"), "E")
+    if E.ndim not in (1, 2) or E.shape[0] != n:
+        raise ValueError(f"E must have shape ({n},) or ({n}, channels); got shape {E.shape}")
+    if np.any(E < 0) or np.any(E > 1e100):
+        raise ValueError("E must be >= 0 (emitted light) and below 1e100")
+    rho = check_finite(as_float_array(rho, "rho"), "rho")
+    if rho.ndim == 0 or rho.shape[0] != n or rho.ndim > 2:
+        raise ValueError(f"rho must have shape ({n},) or ({n}, channels); got shape {rho.shape}")
+    if np.any(rho < 0) or np.any(rho > 1):
+        raise ValueError("rho must be a reflectance in [0, 1]")
+    if not (rho.shape == E.shape or rho.shape == (n,)):
+        raise ValueError(f"rho must have the shape of E, {E.shape}, or ({n},) (one reflectance for every channel); "
+                         f"got shape {rho.shape}")
+    if rho.ndim < E.ndim:
+        rho = rho[:, None]
+    shape = np.broadcast_shapes(rho.shape, E.shape)
+    return F, np.broadcast_to(rho, shape).astype(float), np.broadcast_to(E, shape).astype(float)
+
+
+def _check_iterations(value, name, n, channels, keep):
+    if value is None:                       # as many as the budget allows
+        return MAX_ITERATIONS if not keep else min(MAX_ITERATIONS, MAX_ITEMS // (n * channels) - 1)
+    k = as_int(value, name, minimum=0)
+    within_budget(k, name, cost=lambda m: m, what="the solver", unit="iterations", limit=MAX_ITERATIONS)
+    if keep:
+        within_budget(k, name, cost=lambda m: (m + 1) * n * channels, what="the stored iterates",
+                      unit="numbers", limit=MAX_ITEMS)
+    return k
+
+
+def radiosity_matrix(F, rho) -> np.ndarray:
+    """The matrix ``I - diag(rho) F`` of the radiosity equation ``(I - diag(rho) F) B = E`` (Goldman
+    §23.2) for one channel (``rho`` of shape ``(n,)``).
+
+    >>> radiosity_matrix([[0, 0.5], [0.5, 0]], [0.5, 0.2])
+    array([[ 1.  , -0.25],
+           [-0.1 ,  1.  ]])
+    """
+    F = _check_F(F)
+    rho = check_finite(as_float_array(rho, "rho"), "rho")
+    if rho.shape != (len(F),):
+        raise ValueError(f"rho must have shape ({len(F)},) (one channel); got shape {rho.shape}")
+    if np.any(rho < 0) or np.any(rho > 1):
+        raise ValueError("rho must be a reflectance in [0, 1]")
+    return np.eye(len(F)) - rho[:, None] * F
+
+
+def residual(F, rho, E, B) -> float:
+    """The residual ``max |E + rho F B - B|`` of radiosities ``B`` in the radiosity equation (Goldman
+    §23.2): 0 for the solution.  Shapes as for :func:`jacobi`.
+
+    >>> residual([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 0], [1, 0])
+    0.25
+    """
+    F, rho, E = _check_system(F, rho, E)
+    B = check_finite(as_float_array(B, "B"), "B")
+    if B.shape != E.shape:
+        raise ValueError(f"B must have the shape of E, {E.shape}; got {B.shape}")
+    return float(np.abs(E + rho * (F @ B) - B).max())
+
+
+def _history(iterates, residuals, tol, keep, shooters=None):
+    B = iterates[-1]
+    if not keep:
+        return B
+    return SolverHistory(B, np.array(residuals), np.array(iterates), bool(residuals[-1] <= tol),
+                         None if shooters is None else np.array(shooters, dtype=int))
+
+
+def jacobi(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
+    """Solve the radiosity equation ``B = E + rho F B`` by Jacobi iteration, a gathering method
+    (Goldman §23.5): every patch gathers light from the radiosities of the previous iteration,
+
+        B_i^(k+1) = E_i + rho_i sum_j F_ij B_j^(k),      B^(0) = E,
+
+    so ``B^(k)`` holds the light after ``k`` bounces.  Stops when the residual ``max |E + rho F B - B|``
+    is ``<= tol`` or after ``max_iterations`` (default and bound: the work budget, and with a history
+    the memory its iterates take).
+
+    F: ``(n, n)`` form factors (rows summing to at most 1).  rho: ``(n,)`` or ``(n, c)`` reflectances in
+    [0, 1].  E: ``(n,)`` or ``(n, c)`` emission (c colour channels).  Returns the radiosities (the shape
+    of E), or with ``return_history=True`` a :class:`SolverHistory` with the residual and ``B`` after
+    every iteration.
+
+    >>> h = jacobi([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 0], tol=1e-10, return_history=True)
+    >>> h.iterates[1].tolist(), h.converged
+    ([1.0, 0.25], True)
+    """
+    F, rho, E = _check_system(F, rho, E)
+    tol = as_tolerance(tol)
+    channels = 1 if E.ndim == 1 else E.shape[1]
+    kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
+    B = E.copy()
+    gathered = rho * (F @ B)
+    residuals = [float(np.abs(E + gathered - B).max())]
+    iterates = [B]
+    while residuals[-1] > tol and len(residuals) <= kmax:
+        B = E + gathered
+        gathered = rho * (F @ B)
+        residuals.append(float(np.abs(E + gathered - B).max()))
+        iterates.append(B) if return_history else iterates.__setitem__(0, B)
+    return _history(iterates, residuals, tol, return_history)
+
+
+def gauss_seidel(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
+    """Solve the radiosity equation by Gauss-Seidel iteration, a gathering method (Goldman §23.5):
+    like :func:`jacobi`, but each patch gathers with the radiosities already updated in this sweep,
+
+        B_i^(k+1) = E_i + rho_i (sum_{j<i} F_ij B_j^(k+1) + sum_{j>=i} F_ij B_j^(k)),
+
+    so one sweep carries light further and the iteration converges in fewer sweeps.  One iteration is
+    one sweep over all patches.  Arguments and result as for :func:`jacobi`.
+
+    >>> h = gauss_seidel([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 1], tol=1e-10, return_history=True)
+    >>> h.iterates[1].tolist()          # Jacobi's first iterate is [1.25, 1.25]
+    [1.25, 1.3125]
+    """
+    F, rho, E = _check_system(F, rho, E)
+    tol = as_tolerance(tol)
+    channels = 1 if E.ndim == 1 else E.shape[1]
+    kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
+    B = E.copy()
+    residuals = [float(np.abs(E + rho * (F @ B) - B).max())]
+    iterates = [B.copy()]
+    while residuals[-1] > tol and len(residuals) <= kmax:
+        for i in range(len(F)):
+            B[i] = E[i] + rho[i] * (F[i] @ B)
+        residuals.append(float(np.abs(E + rho * (F @ B) - B).max()))
+        iterates.append(B.copy()) if return_history else iterates.__setitem__(0, B.copy())
+    return _history(iterates, residuals, tol, return_history)
+
+
+def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, return_history=False):
+    """Solve the radiosity equation by progressive refinement, a shooting method (Goldman §23.5).
+
+    Every patch keeps its radiosity ``B`` and its unshot radiosity ``dB`` (both start at ``E``).  Each
+    iteration shoots from the patch ``i`` with the most unshot power ``A_i dB_i`` (summed over the
+    channels): every patch ``j`` receives ``rho_j F_ji dB_i``, with ``F_ji = A_i F_ij / A_j`` by
+    reciprocity (so only row ``i`` of ``F`` -- one hemi-cube -- is needed), added to both ``B_j`` and
+    ``dB_j``; then ``dB_i = 0``.  Shooting uses row ``i`` only, so it solves the equation whose form
+    factors are ``F_ji = A_i F_ij / A_j``: the same as the gathering methods' when ``F`` is reciprocal
+    (:func:`enforce_reciprocity`).  The residual ``max |E + rho F B - B|`` of that equation equals
+    ``max |rho F dB|``.  Stops when it is ``<= tol`` or after ``max_iterations`` shots.
+
+    area: ``(n,)`` patch areas; the rest as for :func:`jacobi`.  The history's ``shooters`` lists the
+    patch shot at each step.
+
+    >>> progressive_refinement([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 0], [1, 1], tol=1e-12).round(6)
+    array([1.066667, 0.266667])
+    """
+    F, rho, E = _check_system(F, rho, E)
+    A = _check_area(area, len(F))
+    tol = as_tolerance(tol)
+    channels = 1 if E.ndim == 1 else E.shape[1]
+    kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
+    B = E.copy()
+    dB = E.copy()
+    power_weight = A if E.ndim == 1 else A[:, None]
+    shoot = np.ascontiguousarray(F * (A[:, None] / A[None, :]))   # shoot[i, j] = F_ji = A_i F_ij / A_j
+    if E.ndim == 2:
+        shoot = shoot[:, :, None]
+    received_by = np.ascontiguousarray((A[None, :] * F.T) / A[:, None])   # [j, i] = A_i F_ij / A_j
+    r = rho * (received_by @ dB)                          # the residual vector rho F dB
+    residuals = [float(np.abs(r).max())]
+    iterates = [B.copy()]
+    shooters = []
+    # The residual after a shot follows from the one before in O(n): dB changes by -dB_i e_i + c
+    # (c what the others receive), so rho F dB changes by -c + rho F c = -c + H[:, i] dB_i with
+    # H = diag(rho) F diag(rho) F, formed once (n^3) when up to 600 patches may shoot more than 2n
+    # times; otherwise each shot pays a matrix-vector product.  The residual is recomputed exactly
+    # before stopping.
+    H = None
+    if len(F) <= 600 and kmax > 2 * len(F):
+        rf = rho[:, :, None] * received_by[:, None, :] if E.ndim == 2 else rho[:, None] * received_by
+        if E.ndim == 2:
+            H = np.stack([rf[:, c, :] @ rf[:, c, :] for c in range(E.shape[1])], axis=2)   # (n, n, c)
+            H = np.ascontiguousarray(H.transpose(1, 0, 2))                                  # H[i] = column i
+        else:
+            H = np.ascontiguousarray((rf @ rf).T)
+    while residuals[-1] > tol and len(residuals) <= kmax:
+        power = power_weight * dB
+        i = int(np.argmax(power if E.ndim == 1 else power.sum(axis=1)))
+        shot = dB[i].copy()
+        received = rho * (shoot[i] * shot)
+        B += received
+        dB[i] -= shot                                         # shot; what i sends itself (F_ii > 0) stays unshot
+        dB += received
+        shooters.append(i)
+        if H is not None:
+            r += H[i] * shot - received
+            value = float(np.abs(r).max())
+            if value <= tol:                                  # confirm without the round-off of the updates
+                r = rho * (received_by @ dB)
+                value = float(np.abs(r).max())
+        else:
+            value = float(np.abs(rho * (received_by @ dB)).max())
+        residuals.append(value)
+        if return_history:
+            iterates.append(B.copy())
+    if not return_history:
+        return B
+    return SolverHistory(B, np.array(residuals), np.array(iterates), bool(residuals[-1] <= tol),
+                         np.array(shooters, dtype=int))
+
+
+# -- the Cornell box ---------------------------------------------------------------------------------
+
+def _grid(origin, edge_u, edge_v, nu, nv):
+    """A rectangle cut into nu x nv patches: (origins, edge_u, edge_v) arrays."""
+    origin, edge_u, edge_v = (np.asarray(a, float) for a in (origin, edge_u, edge_v))
+    a, b = np.meshgrid(np.arange(nu) / nu, np.arange(nv) / nv, indexing="ij")
+    origins = origin + a.ravel()[:, None] * edge_u + b.ravel()[:, None] * edge_v
+    count = nu * nv
+    return origins, np.tile(edge_u / nu, (count, 1)), np.tile(edge_v / nv, (count, 1))
+
+
+#: The blocks of :func:`cornell_box`: (label, lowest corner, highest corner), on the floor.
+_BLOCKS = (("short block", (0.5, 0.125, 0.0), (0.875, 0.5, 0.375)),
+           ("tall block", (0.125, 0.5, 0.0), (0.5, 0.875, 0.75)))
+
+
+def _block(lo, hi, n):
+    """The five visible faces (top and sides) of an axis-aligned block, facing outwards."""
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    div = lambda length: max(1, int(round(length * n)))  # noqa: E731
+    dx, dy, dz = x1 - x0, y1 - y0, z1 - z0
+    faces = [
+        ((x0, y0, z1), (dx, 0, 0), (0, dy, 0), div(dx), div(dy)),      # top, +z
+        ((x0, y0, z0), (dx, 0, 0), (0, 0, dz), div(dx), div(dz)),      # front, -y
+        ((x1, y1, z0), (-dx, 0, 0), (0, 0, dz), div(dx), div(dz)),     # back, +y
+        ((x0, y1, z0), (0, -dy, 0), (0, 0, dz), div(dy), div(dz)),     # left, -x
+        ((x1, y0, z0), (0, dy, 0), (0, 0, dz), div(dy), div(dz)),      # right, +x
+    ]
+    return faces
+
+
+def light_emission(patches: Patches, x=0.5, y=0.5, size=0.25, emission=(10.0, 10.0, 10.0)) -> np.ndarray:
+    """The emission of a square light of side ``size`` centred at ``(x, y)`` on the ceiling ``z = 1``
+    of a :func:`cornell_box` (Goldman §23.2): the light is part of the ceiling, so each ceiling patch
+    emits ``emission`` times the fraction of its area the square covers (a light moved by a fraction
+    of a patch changes the emission smoothly).  Returns ``(n, 3)``.
+
+    >>> box = cornell_box(4, blocks=False)
+    >>> E = light_emission(box, 0.5, 0.5, 0.5, (1, 1, 1))
+    >>> float((E[:, 0] * box.areas).sum())              # emitted power = emission x the light's area
+    0.25
+    """
+    if not isinstance(patches, Patches):
+        raise TypeError(f"patches must be a radiosity.Patches; got {type(patches).__name__}")
+    x, y = as_float(x, "x"), as_float(y, "y")
+    size = as_float(size, "size")
+    if not 0 < size <= 1:
+        raise ValueError(f"size must be in (0, 1] (the light is a square on the unit ceiling); got {size}")
+    half = size / 2
+    for name, v in (("x", x), ("y", y)):
+        if not half <= v <= 1 - half:
+            raise ValueError(f"{name} must keep the light on the ceiling: in [{half:g}, {1 - half:g}]; got {v}")
+    emis = as_points(emission, "emission", ndim=1, dim=3)
+    if np.any(emis < 0) or np.any(emis > 1e100):
+        raise ValueError("emission must be >= 0 (and below 1e100) in every channel")
+    normals, corners = patches.normals, patches.corners
+    ceiling = (normals[:, 2] < -0.999) & (np.abs(corners[:, :, 2] - 1.0).max(axis=1) < 1e-9)
+    lo, hi = corners[:, :, :2].min(axis=1), corners[:, :, :2].max(axis=1)
+    ox = np.clip(np.minimum(hi[:, 0], x + half) - np.maximum(lo[:, 0], x - half), 0, None)
+    oy = np.clip(np.minimum(hi[:, 1], y + half) - np.maximum(lo[:, 1], y - half), 0, None)
+    fraction = np.where(ceiling, ox * oy / patches.areas, 0.0)
+    return fraction[:, None] * emis[None, :]
+
+
+def cornell_box(n=8, closed=False, blocks=True, light=(0.5, 0.5), light_size=0.25,
+                light_emission_rgb=(10.0, 10.0, 10.0)) -> Patches:
+    """A Cornell box (Goldman §23.2): the unit cube ``[0, 1]^3`` (``z`` up) with a white floor, ceiling
+    and back wall, a red left wall (``x = 0``), a green right wall (``x = 1``), each cut into ``n`` x ``n``
+    patches facing inwards; the front ``y = 0`` open (``closed=True`` closes it with a white wall);
+    with ``blocks`` two white blocks on the floor; a square light of side ``light_size`` at ``light``
+    on the ceiling (:func:`light_emission`).  The floor's patches under the blocks see nothing and
+    are seen by nothing.  ``n = 8`` gives 446 patches; every wall and block face is a grid (:attr:`Patches.grids`).
+
+    >>> len(cornell_box()), len(cornell_box(4, closed=True, blocks=False))
+    (446, 96)
+    """
+    n = as_int(n, "n", minimum=1)
+    n = within_budget(n, "n", cost=lambda m: 7 * m * m, what="the Cornell box", unit="patches", limit=20_000)
+    lx, ly = (as_float(v, "light") for v in as_points(light, "light", ndim=1, dim=2))
+    light_size = as_float(light_size, "light_size")
+    if not 0 < light_size <= 1:
+        raise ValueError(f"light_size must be in (0, 1] (a square on the unit ceiling); got {light_size}")
+    if not (light_size / 2 <= lx <= 1 - light_size / 2 and light_size / 2 <= ly <= 1 - light_size / 2):
+        raise ValueError(f"light must keep the light on the ceiling: both in [{light_size / 2:g}, {1 - light_size / 2:g}]; "
+                         f"got ({lx}, {ly})")
+    rgb = as_points(light_emission_rgb, "light_emission_rgb", ndim=1, dim=3)
+    if np.any(rgb < 0) or np.any(rgb > 1e100):
+        raise ValueError("light_emission_rgb must be >= 0 (and below 1e100) in every channel")
+    walls = [
+        ("floor", (0, 0, 0), (1, 0, 0), (0, 1, 0), "white"),
+        ("ceiling", (0, 0, 1), (0, 1, 0), (1, 0, 0), "white"),
+        ("back", (0, 1, 0), (1, 0, 0), (0, 0, 1), "white"),
+        ("left", (0, 0, 0), (0, 1, 0), (0, 0, 1), "red"),
+        ("right", (1, 0, 0), (0, 0, 1), (0, 1, 0), "green"),
+    ]
+    if closed:
+        walls.append(("front", (0, 0, 0), (0, 0, 1), (1, 0, 0), "white"))
+    parts = []                                  # (label, origins, edge_u, edge_v, colour, grid (nu, nv) or None)
+    for name, o, u, v, colour in walls:
+        orig, eu, ev = _grid(o, u, v, n, n)
+        parts.append((name, orig, eu, ev, colour, (n, n)))
+    for name, lo, hi in (_BLOCKS if blocks else []):
+        for o, u, v, nu, nv in _block(lo, hi, n):
+            parts.append((name, *_grid(o, u, v, nu, nv), "white", (nu, nv)))
+    origin = np.concatenate([p[1] for p in parts])
+    edge_u = np.concatenate([p[2] for p in parts])
+    edge_v = np.concatenate([p[3] for p in parts])
+    refl = np.concatenate([np.tile(CORNELL_COLOURS[p[4]], (len(p[1]), 1)) for p in parts])
+    labels = tuple(name for p in parts for name in [p[0]] * len(p[1]))
+    starts = np.cumsum([0] + [len(p[1]) for p in parts])[:-1]
+    grids = tuple((int(st), *p[5]) for st, p in zip(starts, parts) if p[5] is not None)
+    box = Patches(origin, edge_u, edge_v, refl, np.zeros_like(refl), labels, grids)
+    return box.with_emission(light_emission(box, lx, ly, light_size, rgb))
+
+
+# -- display (§23.4) -----------------------------------------------------------------------------------
+
+def patch_mesh(patches: Patches, shared=True):
+    """Triangles to draw the patches (Goldman §23.4): ``(positions, triangles, patch_of_vertex)``.
+    With ``shared`` the patches of one plane share their corner vertices (for smooth display); otherwise
+    every patch has its own four (flat display).  Each patch gives two triangles, patch ``k`` being
+    triangles ``2k`` and ``2k + 1``; ``patch_of_vertex`` is -1 for shared vertices.
+
+    >>> pos, tri, owner = patch_mesh(cornell_box(2, blocks=False))
+    >>> pos.shape, tri.shape
+    ((45, 3), (40, 3))
+    """
+    if not isinstance(patches, Patches):
+        raise TypeError(f"patches must be a radiosity.Patches; got {type(patches).__name__}")
+    corners = patches.corners.reshape(-1, 3)
+    n = len(patches)
+    local = np.array([[0, 1, 2], [0, 2, 3]])
+    if not shared:
+        tri = (4 * np.arange(n)[:, None, None] + local[None]).reshape(-1, 3)
+        return corners, tri, np.repeat(np.arange(n), 4)
+    key = np.concatenate([np.round(corners * 1e6), np.repeat(np.round(patches.normals * 1e3), 4, axis=0)], axis=1)
+    _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    inverse = inverse.ravel()
+    positions = corners[first]
+    tri = inverse[(4 * np.arange(n)[:, None, None] + local[None]).reshape(-1, 3)]
+    return positions, tri, np.full(len(positions), -1)
+
+
+def vertex_radiosities(patches: Patches, B) -> tuple:
+    """Radiosities at the vertices for smooth display (Goldman §23.4): each vertex of
+    :func:`patch_mesh` (``shared=True``) gets the average of the radiosities of the patches (of its
+    plane) that meet there, so Gouraud interpolation across the triangles hides the patch edges.
+
+    B: ``(n,)`` or ``(n, c)``.  Returns ``(positions, triangles, vertex_B)``.
+
+    >>> box = cornell_box(2, blocks=False)
+    >>> pos, tri, VB = vertex_radiosities(box, np.arange(len(box), dtype=float))
+    >>> float(VB[np.argmin(np.abs(pos - [0.5, 0.5, 0]).sum(1))])     # the floor's centre: 4 patches
+    1.5
+    """
+    if not isinstance(patches, Patches):
+        raise TypeError(f"patches must be a radiosity.Patches; got {type(patches).__name__}")
+    B = check_finite(as_float_array(B, "B"), "B")
+    if B.ndim not in (1, 2) or B.shape[0] != len(patches):
+        raise ValueError(f"B must have shape ({len(patches)},) or ({len(patches)}, c); got shape {B.shape}")
+    positions, tri, _ = patch_mesh(patches, shared=True)
+    quads = tri.reshape(-1, 6)[:, [0, 1, 2, 5]]              # the four corners of each patch
+    count = np.bincount(quads.ravel(), minlength=len(positions)).astype(float)
+    flat = B.reshape(len(patches), -1)
+    total = np.zeros((len(positions), flat.shape[1]))
+    np.add.at(total, quads.ravel(), np.repeat(flat, 4, axis=0))
+    VB = total / count[:, None]
+    return positions, tri, VB.reshape((len(positions),) + B.shape[1:])
+
+
+def corner_radiosities(patches: Patches, B, smooth=True) -> np.ndarray:
+    """Radiosities at the four corners of every patch, in the vertex order of
+    ``patch_mesh(patches, shared=False)`` (Goldman §23.4): flat display gives all four the patch's
+    radiosity; smooth display gives each corner the vertex radiosity of :func:`vertex_radiosities`.
+    Returns ``(4 n,)`` or ``(4 n, c)``.
+
+    >>> box = cornell_box(2, blocks=False)
+    >>> corner_radiosities(box, np.arange(len(box), dtype=float), smooth=False)[:5].tolist()
+    [0.0, 0.0, 0.0, 0.0, 1.0]
+    """
+    if not isinstance(patches, Patches):
+        raise TypeError(f"patches must be a radiosity.Patches; got {type(patches).__name__}")
+    B = check_finite(as_float_array(B, "B"), "B")
+    if B.ndim not in (1, 2) or B.shape[0] != len(patches):
+        raise ValueError(f"B must have shape ({len(patches)},) or ({len(patches)}, c); got shape {B.shape}")
+    if not smooth:
+        return np.repeat(B, 4, axis=0)
+    _, tri, VB = vertex_radiosities(patches, B)
+    quads = tri.reshape(-1, 6)[:, [0, 1, 2, 5]]
+    return VB[quads.ravel()]
+
+
+def to_colours(B, white=1.0, gamma=2.2) -> np.ndarray:
+    """Display colours in [0, 1] for radiosities ``B`` (Goldman §23.4): ``(B / white)^(1/gamma)``
+    clipped to [0, 1] (``white`` the radiosity shown as full white).
+
+    >>> to_colours([0.25, 1.0, 4.0], white=1.0, gamma=2.0).tolist()
+    [0.5, 1.0, 1.0]
+    """
+    B = check_finite(as_float_array(B, "B"), "B")
+    white = as_float(white, "white")
+    gamma = as_float(gamma, "gamma")
+    if not 1e-100 < white < 1e100:
+        raise ValueError(f"white must be positive (and below 1e100); got {white}")
+    if not 0.1 <= gamma <= 10:
+        raise ValueError(f"gamma must be in [0.1, 10]; got {gamma}")
+    return np.clip(np.clip(B / white, 0, None) ** (1.0 / gamma), 0.0, 1.0)
