@@ -5,14 +5,14 @@ chapter 17, the rasteriser of chapter 21, the hidden-surface algorithms of chapt
 radiosity display of chapter 23), the static pictures of every three.js view and the lights of
 :class:`goldman_lib.views.three.SceneView` take their lights from here.
 
-Goldman §16.2-16.4 builds the intensity of light leaving a point ``P`` with unit normal ``N`` seen
+Goldman §16.3-16.6 builds the intensity of light leaving a point ``P`` with unit normal ``N`` seen
 from an eye at ``E`` as the sum of three terms, one colour channel at a time:
 
-* **ambient** (§16.2.1): ``I_a k_a``, light scattered so often it comes from everywhere;
-* **diffuse** (§16.2.2, Lambert's law): ``I_p k_d (L . N)``, ``L`` the unit vector from ``P`` to a
+* **ambient** (§16.3): ``I_a k_a``, light scattered so often it comes from everywhere;
+* **diffuse** (§16.4, Lambert's law): ``I_p k_d (L . N)``, ``L`` the unit vector from ``P`` to a
   point light; a matte surface scatters equally in all directions, so only the angle of
   incidence matters;
-* **specular** (§16.2.3, Phong's model): ``I_p k_s (R . V)^n``, ``R = 2 (L . N) N - L`` the mirror
+* **specular** (§16.5, Phong's model): ``I_p k_s (R . V)^n``, ``R = 2 (L . N) N - L`` the mirror
   image of ``L`` about the normal, ``V`` the unit vector from ``P`` to the eye and ``n`` the
   specular exponent: the larger ``n``, the smaller and sharper the highlight.
 
@@ -39,7 +39,7 @@ import numpy as np
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
 
 __all__ = ["Light", "Material", "unit_rows", "reflect", "ambient", "diffuse", "specular", "intensity",
-           "to_image", "light_direction", "default_lights", "shade_faces"]
+           "to_image", "light_direction", "default_lights", "shade_faces", "highlight_half_width"]
 
 
 def _colour(value, name: str) -> tuple[float, float, float]:
@@ -87,7 +87,7 @@ class Light:
 
 @dataclass(frozen=True)
 class Material:
-    """How a surface answers light (Goldman §16.2): its colour, the coefficients ``k_a``, ``k_d``,
+    """How a surface answers light (Goldman §16.2-16.5): its colour, the coefficients ``k_a``, ``k_d``,
     ``k_s`` (each >= 0) and the specular exponent ``n`` (>= 0).
 
     ``reflect`` and ``transmit`` (in [0, 1]) and ``index`` (the index of refraction, > 0) are what
@@ -138,7 +138,7 @@ def _dot(a, b):
 
 
 def reflect(vectors, normals) -> np.ndarray:
-    """The mirror image ``2 (v . N) N - v`` of each vector about its unit normal (Goldman §16.2.3:
+    """The mirror image ``2 (v . N) N - v`` of each vector about its unit normal (Goldman §16.5:
     ``R`` from ``L``).  A ray travelling in direction ``d`` leaves a mirror in direction
     ``reflect(-d, N)``.
 
@@ -197,7 +197,7 @@ def _lights(lights) -> tuple:
 
 
 def ambient(ka, ambient_intensity) -> np.ndarray:
-    """The ambient term ``I_a k_a`` (Goldman §16.2.1); each a number or an RGB triple.
+    """The ambient term ``I_a k_a`` (Goldman §16.3); each a number or an RGB triple.
 
     >>> ambient(0.5, [1.0, 0.5, 0.0]).tolist()
     [0.5, 0.25, 0.0]
@@ -206,7 +206,7 @@ def ambient(ka, ambient_intensity) -> np.ndarray:
 
 
 def diffuse(points, normals, light_position, kd, light_intensity) -> np.ndarray:
-    """Lambert's diffuse term ``I_p k_d max(L . N, 0)`` at each point (Goldman §16.2.2).
+    """Lambert's diffuse term ``I_p k_d max(L . N, 0)`` at each point (Goldman §16.4).
 
     points, normals: (..., 3) (normals need not be unit); light_position: (3,); kd and
     light_intensity: numbers or RGB triples.  Returns (...) or (..., 3) if either is RGB.
@@ -220,7 +220,7 @@ def diffuse(points, normals, light_position, kd, light_intensity) -> np.ndarray:
 
 
 def specular(points, normals, light_position, eye, ks, exponent, light_intensity) -> np.ndarray:
-    """Phong's specular term ``I_p k_s (R . V)^n`` (Goldman §16.2.3): ``R`` the mirror image of the
+    """Phong's specular term ``I_p k_s (R . V)^n`` (Goldman §16.5): ``R`` the mirror image of the
     unit vector ``L`` to the light, ``V`` the unit vector to the eye (one point (3,) or one per
     point); 0 where ``L . N <= 0`` (the
     light is behind the surface) or ``R . V <= 0``.  No ``L . N`` factor, no attenuation.
@@ -242,7 +242,7 @@ def specular(points, normals, light_position, eye, ks, exponent, light_intensity
 def intensity(points, normals, eye, lights, material: Material, ambient_light=0.2, shadowed=None,
               two_sided: bool = False) -> np.ndarray:
     """The total RGB intensity ``I_a k_a C + sum over lights of I_p (k_d C (L . N) + k_s S (R . V)^n)``
-    at each point (Goldman §16.3-16.4), ``C`` the material's colour and ``S`` its specular colour.
+    at each point (Goldman §16.6), ``C`` the material's colour and ``S`` its specular colour.
 
     points, normals: (..., 3); eye: (3,), or one eye per point (..., 3) (a reflected or refracted
     ray's viewer is its own origin); lights: a :class:`Light` or a sequence of them;
@@ -281,6 +281,25 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
             term[shadowed[..., k]] = 0.0
         total += term
     return total
+
+
+def highlight_half_width(exponent, fraction=0.5) -> float:
+    """The angular half-width, in degrees, of a Phong highlight (Goldman §16.5): the angle between
+    ``R`` and ``V`` at which ``(R . V)^n = cos^n`` falls to ``fraction`` of its peak,
+    ``arccos(fraction^(1/n))``.  The larger the exponent ``n``, the narrower the highlight (for large
+    ``n`` the width shrinks like ``1/sqrt(n)``).
+
+    exponent: ``n > 0``.  fraction: in (0, 1) (default 0.5, the half-maximum).
+
+    >>> round(highlight_half_width(1), 6), round(highlight_half_width(100), 4)
+    (60.0, 6.7383)
+    """
+    n = as_float(exponent, "exponent", positive=True)
+    f = as_float(fraction, "fraction", positive=True)
+    if f >= 1:
+        raise ValueError(f"fraction must be in (0, 1) (a fraction of the highlight's peak); got {f}")
+    with np.errstate(under="ignore"):
+        return float(np.degrees(np.arccos(f ** (1.0 / n))))
 
 
 def to_image(values) -> np.ndarray:

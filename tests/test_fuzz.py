@@ -180,7 +180,8 @@ def _camera():
 def _extra_examples() -> dict:
     """Valid example calls of the public functions, classes and methods that no doctest calls (a
     method's arguments start with its instance)."""
-    from goldman_lib import bezier, bspline, ifs, lighting, simple_surfaces, subdivision_surfaces, turtle, vectors
+    from goldman_lib import bezier, bspline, ifs, lighting, simple_surfaces, subdivision_surfaces, surfaces, turtle, \
+        vectors
 
     cubic = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
     net = [[[i, j, (i * j) % 2] for j in range(3)] for i in range(3)]
@@ -238,6 +239,21 @@ def _extra_examples() -> dict:
         "simple_surfaces.Torus": (([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 2.0, 0.5), {}),
         "simple_surfaces.SurfaceOfRevolution": (([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, -0.25], 1.0), {}),
         "simple_surfaces.Surface.mesh": ((simple_surfaces.Torus([0, 0, 0], [0, 0, 1], 2, 0.5), 12, 2.0), {}),
+        # chapter 18
+        "surfaces.ImplicitSurface": ((surfaces.implicit_sphere().f, surfaces.implicit_sphere().grad, None,
+                                      ((0.0, 0.0, 0.0), 2.0), 32, 2), {}),
+        "surfaces.ImplicitSurface.value": ((surfaces.implicit_torus(2.0, 0.5), [[2.5, 0.0, 0.0], [0.0, 0.0, 1.0]]), {}),
+        "surfaces.ImplicitSurface.curvature": ((surfaces.implicit_torus(2.0, 0.5), [[2.5, 0.0, 0.0]]), {}),
+        "surfaces.ParametricSurface": ((surfaces.parametric_torus(2.0, 0.5).X, (0.0, 6.0), (0.0, 6.0), None,
+                                        (True, True), 12, 4), {}),
+        "surfaces.ParametricSurface.grid_mesh": ((surfaces.parametric_sphere(1.0), 8), {}),
+        "surfaces.ParametricSurface.hit": ((surfaces.parametric_sphere(1.0), [[0.0, 0.0, -3.0]], [[0.0, 0.1, 1.0]]), {}),
+        "surfaces.ParametricSurface.parameters": ((surfaces.parametric_sphere(1.0), [[0.0, 1.0, 0.0]]), {}),
+        "surfaces.Deformation": ((surfaces.twist(30.0).forward, surfaces.twist(30.0).inverse,
+                                  surfaces.twist(30.0).jacobian), {}),
+        "surfaces.Deformation.undo": ((surfaces.taper(0.5), [[1.5, 0.0, 1.0]]), {}),
+        "surfaces.Deformation.normals": ((surfaces.taper(0.5), [[1.0, 0.0, 0.0]], [[1.0, 0.0, 0.0]]), {}),
+        "surfaces.DeformedSurface": ((surfaces.implicit_sphere(), surfaces.twist(45.0)), {}),
         "vectors.Point": (([1.0, 2.0, 0.0],), {}),
         "vectors.Vector": (([3.0, 4.0, 0.0],), {}),
         "vectors.Vector.dot": ((vectors.Vector([1.0, 2.0, 3.0]), vectors.Vector([4.0, -5.0, 6.0])), {}),

@@ -108,6 +108,27 @@ def test_intensity_refuses_other_types():
         lighting.intensity(P0, UP, [0, 0, 1], [(0, 0, 1)], Material())
 
 
+# chapter 16: the highlight's width
+def test_highlight_half_width_against_a_sweep_of_the_specular_term():
+    # by hand: n = 1 -> arccos(1/2) = 60 degrees; n = 2 -> arccos(sqrt(1/2)) = 45 degrees
+    assert lighting.highlight_half_width(1) == pytest.approx(60.0)
+    assert lighting.highlight_half_width(2) == pytest.approx(45.0)
+    assert lighting.highlight_half_width(3, fraction=0.125) == pytest.approx(60.0)
+    # against the specular term itself: move the eye round the mirror direction until it halves
+    for n in (5.0, 40.0, 200.0):
+        angles = np.linspace(0.0, 89.0, 89001)
+        light = [0.0, 0.0, 5.0]                         # light straight above: R = N
+        eyes = np.stack([5 * np.sin(np.radians(angles)), np.zeros_like(angles), 5 * np.cos(np.radians(angles))], 1)
+        s = np.array([lighting.specular(P0, UP, light, e, 1.0, n, 1.0)[0] for e in eyes[::100]])
+        a = angles[::100]
+        width = np.interp(0.5, s[::-1], a[::-1])
+        assert width == pytest.approx(lighting.highlight_half_width(n), abs=0.05)
+    with pytest.raises(ValueError, match="fraction"):
+        lighting.highlight_half_width(3, fraction=1.0)
+    with pytest.raises(ValueError, match="exponent"):
+        lighting.highlight_half_width(0)
+
+
 def test_one_eye_per_point_matches_one_call_per_point():
     """A ray tracer's secondary rays each see the surface from their own origin (chapter 17)."""
     P = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]])
