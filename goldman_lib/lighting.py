@@ -205,6 +205,28 @@ def ambient(ka, ambient_intensity) -> np.ndarray:
     return _scale(np.float64(1.0), ka, ambient_intensity, "ka", "ambient_intensity")
 
 
+def _unit(v):
+    """Unchecked: rows of ``v`` scaled to length 1 (zero rows stay zero)."""
+    length = np.sqrt(np.einsum("...i,...i->...", v, v))[..., None]
+    return np.divide(v, length, out=np.zeros_like(v), where=length > 0)
+
+
+def _cosines(P, N, light_position, V=None, exponent=None):
+    """Unchecked kernel of the three terms for one light: ``max(L . N, 0)`` and, given unit ``V``,
+    ``(R . V)^n`` (0 where ``L . N <= 0`` or ``R . V <= 0``), using ``R . V = 2 (L . N)(N . V) - L . V``
+    so ``R`` itself is never formed.  P, N (unit), V: (..., 3)."""
+    L = _unit(light_position - P)
+    ln = _dot(L, N)
+    cos_d = np.maximum(ln, 0.0)
+    if V is None:
+        return cos_d, None
+    rv = 2.0 * ln * _dot(N, V) - _dot(L, V)
+    rv = np.where(ln > 0, np.maximum(rv, 0.0), 0.0)
+    with np.errstate(under="ignore", divide="ignore"):
+        power = np.where(rv > 0, np.power(rv, exponent), 0.0)
+    return cos_d, power
+
+
 def diffuse(points, normals, light_position, kd, light_intensity) -> np.ndarray:
     """Lambert's diffuse term ``I_p k_d max(L . N, 0)`` at each point (Goldman §16.4).
 
@@ -215,8 +237,8 @@ def diffuse(points, normals, light_position, kd, light_intensity) -> np.ndarray:
     [0.707107, 0.0]
     """
     P, N = _geometry(points, normals)
-    L = unit_rows(as_points(light_position, "light_position", ndim=1, dim=3) - P, "light_position - points")
-    return _scale(np.maximum(_dot(L, N), 0.0), kd, light_intensity, "kd", "light_intensity")
+    cos_d, _ = _cosines(P, N, as_points(light_position, "light_position", ndim=1, dim=3))
+    return _scale(cos_d, kd, light_intensity, "kd", "light_intensity")
 
 
 def specular(points, normals, light_position, eye, ks, exponent, light_intensity) -> np.ndarray:
@@ -229,13 +251,9 @@ def specular(points, normals, light_position, eye, ks, exponent, light_intensity
     [0.5]
     """
     P, N = _geometry(points, normals)
-    L = unit_rows(as_points(light_position, "light_position", ndim=1, dim=3) - P, "light_position - points")
+    light = as_points(light_position, "light_position", ndim=1, dim=3)
     V = unit_rows(_eye(eye, P) - P, "eye - points")
-    n = _non_negative(exponent, "exponent")
-    lit = _dot(L, N) > 0
-    rv = np.where(lit, np.maximum(_dot(2 * _dot(L, N)[..., None] * N - L, V), 0.0), 0.0)
-    with np.errstate(under="ignore"):
-        power = np.where(rv > 0, rv ** n, 0.0)
+    _, power = _cosines(P, N, light, V, _non_negative(exponent, "exponent"))
     return _scale(power, ks, light_intensity, "ks", "light_intensity")
 
 
@@ -273,10 +291,12 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
     C, S = np.asarray(material.colour), np.asarray(material.specular_colour)
     ia = _scale(np.float64(1.0), material.ambient, ambient_light, "material.ambient", "ambient_light")
     total = np.broadcast_to(ia * C, P.shape).copy()
+    V = unit_rows(E - P, "eye - points") if material.specular > 0 else None     # once for all lights
     for k, light in enumerate(lights):
-        d = diffuse(P, N, light.position, material.diffuse, 1.0)
-        s = specular(P, N, light.position, E, material.specular, material.exponent, 1.0)
-        term = (d[..., None] * C + s[..., None] * S) * light.rgb
+        cos_d, power = _cosines(P, N, np.asarray(light.position), V, material.exponent)
+        term = cos_d[..., None] * (material.diffuse * C * light.rgb)
+        if power is not None:
+            term += power[..., None] * (material.specular * S * light.rgb)
         if shadowed is not None:
             term[shadowed[..., k]] = 0.0
         total += term
