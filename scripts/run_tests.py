@@ -4,9 +4,10 @@
    (whose kernels run under another numpy SIMD dispatch: the portability check, see conftest.py),
    spread over two pytest-xdist workers by file (``--dist loadfile``: a notebook's cells run in
    order in one kernel, and a module's cached results, such as the fuzz test's, are made once).
-2. the browser tests (one JupyterLab server and one headless Chromium for the run), which mostly
-   wait for a kernel or for the browser to draw; started first, their output is printed when
-   they finish (and kept in build/test-browser.log).
+2. the browser tests (one JupyterLab server and one headless Chromium for the run): the longest
+   part, about one core's worth of work (Chromium draws JupyterLab, the figures and three.js in
+   software: some 15-20 s of CPU a chapter), so they start first, at normal priority, and part 1
+   takes the rest; their output is printed when they finish (and kept in build/test-browser.log).
 
 Prints each part's time, the total wall time and the counts of both parts on one line, and fails
 if either part fails.  Extra arguments go to both pytest runs (``make test ARGS="-k ch24"``); a
@@ -32,6 +33,7 @@ PYTEST = [sys.executable, "-m", "pytest", "-rs"]
 UNIT = ["-n", WORKERS, "--dist", "loadfile", "--nbval-lax", "tests", "goldman_lib", "benchmarks", "course",
         "--ignore=tests/browser"]
 BROWSER = ["tests/browser"]
+NICE = 5
 NO_TESTS = 5   # pytest's exit status when it ran no test
 COUNT = re.compile(r"(\d+) (passed|failed|skipped|errors?|xfailed|xpassed|deselected)\b")
 
@@ -56,10 +58,12 @@ def main(args: list[str]) -> int:
         try:
             print(f"make test: the browser tests run beside the rest (their output follows at the end; "
                   f"also in {LOG.relative_to(ROOT)})", flush=True)
-            # Part 1 goes to the terminal as it runs; a copy is kept for its counts.
+            # Part 1 goes to the terminal as it runs; a copy is kept for its counts.  It runs at a
+            # lower priority (nice 5): the browser tests are the longer part and wait on timeouts,
+            # the xdist workers take whatever CPU the browser leaves.
             unit = subprocess.Popen(PYTEST + UNIT + args, cwd=ROOT, stdout=subprocess.PIPE,
                                     stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True,
-                                    errors="replace", bufsize=1)
+                                    errors="replace", bufsize=1, preexec_fn=lambda: os.nice(NICE))
             lines = []
             for line in unit.stdout:
                 sys.stdout.write(line)
