@@ -98,10 +98,10 @@ def pytest_runtest_call(item):
 
 def pytest_configure(config):
     """A notebook's cells run in order in one kernel: under pytest-xdist they must all go to one
-    worker, which ``--dist loadfile`` does (``make test`` uses it); ``--dist load`` would deal them
-    out one by one."""
+    worker, which ``--dist loadfile`` does (``make test`` uses it); ``--dist load`` (the default of
+    ``-n``) and ``worksteal`` would deal them out one by one."""
     nbval = getattr(config.option, "nbval", False) or getattr(config.option, "nbval_lax", False)
-    if nbval and getattr(config.option, "dist", "no") == "load":
+    if nbval and getattr(config.option, "dist", "no") in ("load", "worksteal"):
         raise pytest.UsageError("nbval under pytest-xdist needs --dist loadfile (each notebook in one worker)")
 
 
