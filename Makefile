@@ -24,12 +24,12 @@ venv: $(STAMP)
 lab: $(STAMP)
 	$(BIN)/jupyter lab --ServerApp.root_dir="$(CURDIR)" $$([ "$$(id -u)" = 0 ] && echo --allow-root) $(ARGS) course/index.ipynb
 
-## make test: unit, property, doctest, notebook (nbval), widget-sweep and browser tests.
+## make test: unit, property, doctest, notebook (nbval under another SIMD dispatch: the portability
+## check), widget-sweep and fuzz tests on two pytest-xdist workers, and beside them the browser tests
+## (scripts/run_tests.py); prints each part's time and the total wall time, fails if either part fails.
 test: $(STAMP)
 	@bash scripts/setup_browser.sh
-	@start=$$(date +%s); status=0; \
-	$(BIN)/python -m pytest -rs --nbval-lax tests goldman_lib benchmarks course $(ARGS) || status=$$?; \
-	echo "make test: total wall time $$(( $$(date +%s) - start )) s"; exit $$status
+	@$(BIN)/python scripts/run_tests.py $(ARGS)
 
 ## make outputs: re-execute every notebook from a clean kernel and store its outputs (the nbval baseline).
 outputs: $(STAMP)

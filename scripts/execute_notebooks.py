@@ -2,7 +2,9 @@
 
 The stored outputs are nbval's regression baseline, so they must come from one clean run, with
 execution counts 1..n and nothing that changes from run to run but widget model ids: no timing
-metadata and no saved widget state (static pages show each view's fallback PNG instead).
+metadata and no saved widget state (static pages show each view's fallback PNG instead).  They are
+made with numpy's normal SIMD dispatch; the tests run the notebooks under another one
+(:func:`other_dispatch_env`) and compare, so a checked result printed to its last bits fails there.
 
 Usage: python scripts/execute_notebooks.py course/*.ipynb
 """
@@ -46,6 +48,49 @@ def coalesce_streams(outputs: list) -> list:
         else:
             merged.append(out)
     return merged
+
+
+def dispatched_simd_extensions() -> list[str]:
+    """The SIMD extensions numpy found on this CPU and dispatches to at run time (not the baseline,
+    which cannot be switched off)."""
+    try:
+        from numpy._core import _multiarray_umath as umath
+    except ImportError:  # numpy 1.x
+        from numpy.core import _multiarray_umath as umath
+    features = umath.__cpu_features__
+    return [name for name in umath.__cpu_dispatch__ if features.get(name)]
+
+
+def other_dispatch_env() -> dict[str, str]:
+    """The environment variable that makes a new process's numpy run another code path than this
+    one's: ``NPY_DISABLE_CPU_FEATURES`` naming every dispatched SIMD extension ({} where numpy
+    dispatches none, or where the caller already chose with ``NPY_DISABLE_CPU_FEATURES``)."""
+    import os
+
+    found = dispatched_simd_extensions()
+    if not found or "NPY_DISABLE_CPU_FEATURES" in os.environ:
+        return {}
+    return {"NPY_DISABLE_CPU_FEATURES": ",".join(found)}
+
+
+TEXT_TYPES = ("text/plain", "text/html", "text/markdown", "text/latex")
+
+
+def text_outputs(outputs: list) -> list[tuple[str, str]]:
+    """[(kind, text)] for a cell's text outputs, kind being the stream's name, ``error`` or a text
+    mime type (consecutive stream chunks merged first; images and widget model ids left out)."""
+    found = []
+    for out in coalesce_streams([dict(o) for o in outputs]):
+        if out["output_type"] == "stream":
+            found.append((out["name"], out["text"]))
+        elif out["output_type"] == "error":
+            found.append(("error", f"{out['ename']}: {out['evalue']}"))
+        else:
+            for kind in TEXT_TYPES:
+                if kind in out.get("data", {}):
+                    text = out["data"][kind]
+                    found.append((kind, "".join(text) if isinstance(text, list) else text))
+    return found
 
 
 def main(paths: list[str]) -> int:
