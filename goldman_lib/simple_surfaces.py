@@ -638,8 +638,8 @@ class _AxialQuadric(Surface):
     def _local_dir(self, d):
         return (d @ self._F.T) * self._scale
 
-    def _lateral(self, q, e):
-        raise NotImplementedError
+    # Each subclass (elliptic cylinder, elliptic cone) defines ``_lateral(q, e)`` -> the quadratic's
+    # coefficients (A, B, C) in local coordinates and ``_lateral_residual(L)`` -> its implicit value.
 
     def _hits(self, o, d):
         q, e = self._local(o), self._local_dir(d)
@@ -1085,13 +1085,13 @@ class Torus(Surface):
         p = q + t0[:, None] * e                                      # the ray's point nearest the centre
         R, r = self.R / S, self.r / S
         out = np.full((len(o), 4), np.inf)
-        todo = np.isfinite(t0) & np.all(np.isfinite(p), axis=1)
+        pending = np.isfinite(t0) & np.all(np.isfinite(p), axis=1)
         if self.bound:
             pp = np.einsum("ij,ij->i", p, p)
             half = np.sqrt(np.maximum(1.0 - pp, 0.0))
             s1, s2 = _slab(p[:, 2] + r, e[:, 2], 2 * r)
-            todo &= (pp <= 1.0) & (np.maximum(-half, s1) <= np.minimum(half, s2))
-        rows = np.flatnonzero(todo)
+            pending &= (pp <= 1.0) & (np.maximum(-half, s1) <= np.minimum(half, s2))
+        rows = np.flatnonzero(pending)
         self.quartics_solved = int(len(rows))
         if len(rows) == 0:
             return out
