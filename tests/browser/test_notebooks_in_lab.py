@@ -1,5 +1,6 @@
 """Every chapter in real JupyterLab (headless Chromium): it runs without an error, its widgets and
-three.js canvases render (non-blank pixels), and moving a slider changes each interactive view.
+three.js canvases render (non-blank pixels), moving a slider changes each interactive view, and
+moving the light of a view with the light-position control changes its picture.
 
 Screenshots of every canvas and of each view before/after its slider moved are written to
 tests/browser/screenshots/ on every run, so a person can look at what the test saw.
@@ -101,6 +102,27 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             f"{rel}: moving the first slider of interactive view {i} changed only {frac:.2%} of its pixels "
             f"(see screenshots/{stem}-view{i}-before.png and -after.png)")
         assert "\u26a0" not in status, f"{rel}: view {i} reports an error after the slider moved: {status}"
+        # A view lit through the light-position control: moving the light must change its three.js
+        # view where it has one, its figure otherwise (the views' unit tests check that the rendered
+        # image itself changes with the light, not only the light's marker).
+        light = view.locator(".goldman-controls .widget-slider", has_text="light x")
+        if light.count():
+            target = view.locator(THREE).first if view.locator(THREE).count() else view.locator(MPL).first
+            lit_before, _ = wait_nonblank(target)
+            knob = light.first.locator(".noUi-handle").first
+            knob.scroll_into_view_if_needed()
+            knob.focus()
+            knob.press("End")
+            lit_after, lit_frac = wait_changed(target, lit_before, CHANGE_TOLERANCE, timeout=20)
+            if lit_frac <= CHANGE_TOLERANCE:       # the light started at the end of its range
+                knob.press("Home")
+                lit_after, lit_frac = wait_changed(target, lit_before, CHANGE_TOLERANCE, timeout=20)
+            (SCREENSHOTS / f"{stem}-view{i}-light.png").write_bytes(lit_after)
+            kind = "three.js view" if view.locator(THREE).count() else "image"
+            report.append(f"  view {i}: moving the light changed {lit_frac:.1%} of its {kind}")
+            assert lit_frac > CHANGE_TOLERANCE, (
+                f"{rel}: moving the light of interactive view {i} changed only {lit_frac:.2%} of its {kind} "
+                f"(see screenshots/{stem}-view{i}-light.png)")
     problems = lab.dom_problems()
     assert not problems, f"{rel}: errors after moving sliders:\n" + "\n".join(problems)
     print("\n".join(report))
