@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Result", "correct", "wrong", "unanswered", "is_unanswered", "read_number", "read_points", "check_number",
+__all__ = ["Result", "read_vector", "all_close", "distance_text", "correct", "wrong", "unanswered", "is_unanswered", "read_number", "read_points", "check_number",
            "check_points", "fmt", "fmt_points", "off_by"]
 
 
@@ -146,6 +146,39 @@ def read_points(answer, what: str, ask: str | None = None) -> tuple[np.ndarray |
     if not np.all(np.isfinite(arr)):
         return None, wrong(f"{what} contain a NaN or infinite value.")
     return arr, None
+
+
+def read_vector(answer, what: str, n: int, ask: str | None = None) -> tuple[np.ndarray | None, Result | None]:
+    """Read one vector of ``n`` numbers: ``(vector, None)``, or ``(None, result)`` saying what is wrong
+    with the answer (not answered, not numbers, the wrong shape).
+
+    >>> read_vector([1, 2, 3], "N", 3)[0].tolist()
+    [1.0, 2.0, 3.0]
+    """
+    got, err = read_points(answer, what, ask=ask)
+    if err is not None:
+        return None, err
+    if got.shape != (n,):
+        return None, wrong(f"{what} should be {n} numbers; yours has shape {got.shape}.")
+    return got, None
+
+
+def all_close(a, b, tol) -> bool:
+    """Whether every entry of ``a`` is within ``tol`` of the matching entry of ``b``.
+
+    >>> all_close([1.0, 2.0], [1.0, 2.00004], 1e-4)
+    True
+    """
+    return bool(np.all(np.abs(np.asarray(a, float) - np.asarray(b, float)) <= tol))
+
+
+def distance_text(a, b) -> str:
+    """How far apart two answers are, as a short number for a message (2 digits).
+
+    >>> distance_text([0, 0], [3, 4])
+    '5'
+    """
+    return fmt(float(np.linalg.norm(np.asarray(a, float) - np.asarray(b, float))), 2)
 
 
 def check_number(answer, expected: float, *, what: str, tol: float = 1e-6, hint: str | None = None) -> Result:

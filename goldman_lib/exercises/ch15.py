@@ -24,6 +24,7 @@ import numpy as np
 
 from goldman_lib import quaternions as qt
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
+from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.exercises.projects import Case, check_project, describe
 
 __all__ = ["PROBLEMS", "SLIPS", "COMPLEX_FROM", "COMPLEX_TO", "PRODUCT_P", "PRODUCT_Q", "ROTATION_AXIS",
@@ -98,23 +99,6 @@ PROBLEMS = {
 
 
 # -- reading answers ---------------------------------------------------------------------------------
-
-def _read_vector(answer, what: str, n: int, ask: str):
-    got, err = read_points(answer, what, ask=ask)
-    if err is not None:
-        return None, err
-    if got.shape != (n,):
-        return None, wrong(f"{what} should be {n} numbers; yours has shape {got.shape}.")
-    return got, None
-
-
-def _close(a, b, tol) -> bool:
-    return bool(np.all(np.abs(np.asarray(a, float) - np.asarray(b, float)) <= tol))
-
-
-def _dist(a, b) -> str:
-    return fmt(float(np.linalg.norm(np.asarray(a, float) - np.asarray(b, float))), 2)
-
 
 # -- §15.2 ---------------------------------------------------------------------------------------------
 

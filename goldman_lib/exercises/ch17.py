@@ -21,6 +21,7 @@ import numpy as np
 from goldman_lib import lighting
 from goldman_lib import ray_tracing as rt
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, unanswered, wrong, is_unanswered
+from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Plane, Sphere
 
@@ -95,23 +96,6 @@ PROBLEMS = {
 
 
 # -- reading answers ---------------------------------------------------------------------------------
-
-def _read_vector(answer, what: str, n: int, ask: str):
-    got, err = read_points(answer, what, ask=ask)
-    if err is not None:
-        return None, err
-    if got.shape != (n,):
-        return None, wrong(f"{what} should be {n} numbers; yours has shape {got.shape}.")
-    return got, None
-
-
-def _close(a, b, tol) -> bool:
-    return bool(np.all(np.abs(np.asarray(a, float) - np.asarray(b, float)) <= tol))
-
-
-def _dist(a, b) -> str:
-    return fmt(float(np.linalg.norm(np.asarray(a, float) - np.asarray(b, float))), 2)
-
 
 # -- §17.4 ---------------------------------------------------------------------------------------------
 

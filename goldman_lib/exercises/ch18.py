@@ -19,7 +19,7 @@ import numpy as np
 
 from goldman_lib import surfaces as sf
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
-
+from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 __all__ = ["PROBLEMS", "SLIPS", "IMPLICIT_POINT", "GRAPH_UV", "DEFORM_NORMAL", "NEWTON_START", "NEWTON_ORIGIN",
            "NEWTON_DIRECTION", "CYLINDER_RADIUS", "TORUS_R", "TORUS_r", "TORUS_V",
            "check_implicit_normal", "check_parametric_normal", "check_deformed_normal", "check_newton_step",
@@ -88,26 +88,9 @@ PROBLEMS = {
 }
 
 
-def _read_vector(answer, what: str, n: int, ask: str):
-    got, err = read_points(answer, what, ask=ask)
-    if err is not None:
-        return None, err
-    if got.shape != (n,):
-        return None, wrong(f"{what} should be {n} numbers; yours has shape {got.shape}.")
-    return got, None
-
-
-def _close(a, b, tol) -> bool:
-    return bool(np.all(np.abs(np.asarray(a, float) - np.asarray(b, float)) <= tol))
-
-
 def _unit(v):
     v = np.asarray(v, float)
     return v / np.linalg.norm(v)
-
-
-def _dist(a, b) -> str:
-    return fmt(float(np.linalg.norm(np.asarray(a, float) - np.asarray(b, float))), 2)
 
 
 # -- §18.2 ---------------------------------------------------------------------------------------------

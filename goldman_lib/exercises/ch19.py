@@ -19,6 +19,7 @@ import numpy as np
 
 from goldman_lib import simple_surfaces as S
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
+from goldman_lib.exercises import read_vector as _read_vector  # shared readers
 from goldman_lib.exercises.projects import Case, check_project, describe
 
 __all__ = ["PROBLEMS", "SLIPS", "PLANE_POINT", "PLANE_NORMAL", "PLANE_RAY", "POLYGON", "POLYGON_QUERIES",
@@ -84,15 +85,6 @@ PROBLEMS = {
         f"direction) " + "; ".join(f"{_v(o)}, {_v(d)}" for o, d in BOUND_RAYS)
         + ", which must solve the quartic? Give five True/False."),
 }
-
-
-def _read_vector(answer, what, n, ask):
-    got, err = read_points(answer, what, ask)
-    if err is not None:
-        return None, err
-    if got.shape != (n,):
-        return None, wrong(f"{what} should be {n} numbers; yours has shape {got.shape}.")
-    return got, None
 
 
 def _read_flags(answer, what, n):
