@@ -102,12 +102,17 @@ def vertex_normals(positions, triangles) -> np.ndarray:
     [[0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0]]
     """
     V, T = _mesh(positions, triangles)
-    fn = face_normals(V, T)
+    return _vertex_sums(V, T, face_normals(V, T), 1e-300)
+
+
+def _vertex_sums(V, T, face_vectors, tiny) -> np.ndarray:
+    """Unchecked: the sum of ``face_vectors`` over the faces at each vertex, normalised ((0, 0, 1)
+    where the sum is no longer than ``tiny``)."""
     n = np.zeros_like(V)
     for k in range(3):
-        np.add.at(n, T[:, k], fn)
+        np.add.at(n, T[:, k], face_vectors)
     length = np.linalg.norm(n, axis=1, keepdims=True)
-    return np.divide(n, length, out=np.zeros_like(n) + [0.0, 0.0, 1.0], where=length > 1e-300)
+    return np.divide(n, length, out=np.zeros_like(n) + [0.0, 0.0, 1.0], where=length > tiny)
 
 
 # -- §21.1 polygonal models -------------------------------------------------------------------------
@@ -132,12 +137,7 @@ def average_vertex_normals(positions, triangles) -> np.ndarray:
     [0.0, -0.7071, -0.7071]
     """
     V, T = _mesh(positions, triangles)
-    fn = newell_face_normals(V, T)
-    n = np.zeros_like(V)
-    for k in range(3):
-        np.add.at(n, T[:, k], fn)
-    length = np.linalg.norm(n, axis=1, keepdims=True)
-    return np.divide(n, length, out=np.zeros_like(n) + [0.0, 0.0, 1.0], where=length > 1e-12)
+    return _vertex_sums(V, T, newell_face_normals(V, T), 1e-12)
 
 
 def uv_sphere(stacks: int = 12, slices: int = 24, radius=1.0, center=(0.0, 0.0, 0.0)):

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 import matplotlib
+import numpy as np
 
 FIGSIZE = (5.6, 4.2)      # inches; 560 x 420 px at DPI: fits beside sliders on a deck slide
 WIDE_FIGSIZE = (9.6, 4.2)  # two panels side by side
@@ -135,3 +136,16 @@ def _plain_power(value, _pos=None) -> str:
 
 
 __all__ += ["few_ticks"]
+
+
+def equal_3d_limits(ax, points) -> None:
+    """Give a 3D axes one scale on x, y and z: a cube of limits around ``points`` (n, 3), box aspect 1."""
+    pts = np.asarray(points, dtype=float).reshape(-1, 3)
+    lo, hi = pts.min(0), pts.max(0)
+    mid, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9)
+    for setter, m in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), mid):
+        setter(m - half, m + half)
+    ax.set_box_aspect((1, 1, 1))
+
+
+__all__ += ["equal_3d_limits"]

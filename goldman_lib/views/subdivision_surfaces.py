@@ -80,12 +80,7 @@ def plot_mesh(mesh: ss.Mesh, ax=None, color=None, edges: bool = True, control: s
         C = control.vertices
         ax.add_collection3d(Line3DCollection(C[control.edges], colors="#444444", linewidths=1.0))
         pts = np.concatenate([V, C])
-    lo, hi = pts.min(0), pts.max(0)
-    mid, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9)
-    ax.set_xlim(mid[0] - half, mid[0] + half)
-    ax.set_ylim(mid[1] - half, mid[1] + half)
-    ax.set_zlim(mid[2] - half, mid[2] + half)
-    ax.set_box_aspect((1, 1, 1))
+    style.equal_3d_limits(ax, pts)
     ax.view_init(elev=28, azim=-55)
     ax.set_axis_off()
     return ax
@@ -234,12 +229,7 @@ def plot_angle_defects(mesh: ss.Mesh | None = None, level: int = 4, fig=None):
         if sharp.any():
             ax.scatter(*V[sharp].T, s=28, color=cmap(norm(np.abs(d[sharp]))), edgecolors="white", linewidths=0.6,
                        depthshade=False)
-        lo, hi = V.min(0), V.max(0)
-        mid, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9)
-        ax.set_xlim(mid[0] - half, mid[0] + half)
-        ax.set_ylim(mid[1] - half, mid[1] + half)
-        ax.set_zlim(mid[2] - half, mid[2] + half)
-        ax.set_box_aspect((1, 1, 1))
+        style.equal_3d_limits(ax, V)
         ax.view_init(elev=28, azim=-55)
         ax.set_axis_off()
         ax.set_title(f"{names[rule]}, level {level}\nlargest defect {np.abs(d).max():.3g}", fontsize=9)

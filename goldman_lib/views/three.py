@@ -25,6 +25,7 @@ import numpy as np
 from goldman_lib import lighting, shading
 from goldman_lib.shading import vertex_normals
 from goldman_lib.validation import as_points, within_budget
+from goldman_lib.views import style
 
 __all__ = ["SceneView", "grid_triangles", "vertex_normals"]
 
@@ -334,11 +335,7 @@ class SceneView:
                 ax.scatter(*pos.T, color=item["color"], s=18, depthshade=False, zorder=200 + order)
                 everything.append(pos)
         if everything:
-            pts = np.concatenate(everything)
-            lo, hi = pts.min(0), pts.max(0)
-            mid, half = (lo + hi) / 2, max(float((hi - lo).max()) / 2, 1e-9)
-            for setter, m in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), mid):
-                setter(m - half, m + half)
+            style.equal_3d_limits(ax, np.concatenate(everything))
         ax.set_box_aspect((1, 1, 1))
         ax.set_xlabel("x"), ax.set_ylabel("y"), ax.set_zlabel("z")
         buf = io.BytesIO()
