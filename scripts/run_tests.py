@@ -4,10 +4,12 @@
    (whose kernels run under another numpy SIMD dispatch: the portability check, see conftest.py),
    spread over two pytest-xdist workers by file (``--dist loadfile``: a notebook's cells run in
    order in one kernel, and a module's cached results, such as the fuzz test's, are made once).
-2. the browser tests (one JupyterLab server and one headless Chromium for the run): the longest
-   part, about one core's worth of work (Chromium draws JupyterLab, the figures and three.js in
-   software: some 15-20 s of CPU a chapter), so they start first, at normal priority, and part 1
-   takes the rest; their output is printed when they finish (and kept in build/test-browser.log).
+2. the browser tests (one JupyterLab server and one headless Chromium): the longest part, and
+   mostly waiting (about two thirds of a core), so they start first, at normal priority, and part 1
+   takes the rest; when part 1 is done, a second browser process (its own JupyterLab and Chromium)
+   takes chapter notebooks from the end while the first goes on from the start: each notebook is
+   run once, by whichever process claims it first (tests/browser/conftest.py).  Their output is
+   printed when they finish (and kept in build/test-browser.log and build/test-browser-2.log).
 
 Prints each part's time, the total wall time and the counts of both parts on one line, and fails
 if either part fails.  Extra arguments go to both pytest runs (``make test ARGS="-k ch24"``); a
@@ -20,14 +22,19 @@ from __future__ import annotations
 
 import os
 import re
+import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 LOG = ROOT / "build" / "test-browser.log"
+LOG2 = ROOT / "build" / "test-browser-2.log"
+NOTEBOOK_TESTS = ["tests/browser/test_notebooks_in_lab.py"]
+CLAIM_SKIP = re.compile(r"^SKIPPED \[(\d+)\].*run by the other browser process", re.M)
 WORKERS = os.environ.get("GOLDMAN_TEST_WORKERS", "2")
 PYTEST = [sys.executable, "-m", "pytest", "-rs"]
 UNIT = ["-n", WORKERS, "--dist", "loadfile", "--nbval-lax", "tests", "goldman_lib", "benchmarks", "course",
@@ -52,9 +59,12 @@ def counts(output: str) -> dict[str, int]:
 def main(args: list[str]) -> int:
     start = time.monotonic()
     LOG.parent.mkdir(exist_ok=True)
-    with open(LOG, "w") as log:
+    claims = tempfile.mkdtemp(prefix="goldman-browser-claims-")
+    env = dict(os.environ, GOLDMAN_BROWSER_CLAIMS=claims)
+    browser2 = None
+    with open(LOG, "w") as log, open(LOG2, "w") as log2:
         browser = subprocess.Popen(PYTEST + BROWSER + args, cwd=ROOT, stdout=log, stderr=subprocess.STDOUT,
-                                   stdin=subprocess.DEVNULL)
+                                   stdin=subprocess.DEVNULL, env=env)
         try:
             print(f"make test: the browser tests run beside the rest (their output follows at the end; "
                   f"also in {LOG.relative_to(ROOT)})", flush=True)
@@ -71,20 +81,34 @@ def main(args: list[str]) -> int:
                 lines.append(line)
             unit_status = unit.wait()
             unit_seconds = time.monotonic() - start
+            if browser.poll() is None:    # the cores part 1 used: a second browser process
+                browser2 = subprocess.Popen(PYTEST + NOTEBOOK_TESTS + args, cwd=ROOT, stdout=log2,
+                                            stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                            env=dict(env, GOLDMAN_BROWSER_REVERSE="1"))
             browser_status = browser.wait()
+            browser2_status = browser2.wait() if browser2 is not None else 0
             browser_seconds = time.monotonic() - start
         finally:
-            if browser.poll() is None:   # interrupted: stop the browser tests too, letting their
-                browser.send_signal(signal.SIGINT)   # fixtures stop JupyterLab and Chromium
-                try:
-                    browser.wait(timeout=60)
-                except subprocess.TimeoutExpired:
-                    browser.kill()
-                    browser.wait()
+            for proc in (browser, browser2):
+                if proc is not None and proc.poll() is None:   # interrupted: stop the browser tests
+                    proc.send_signal(signal.SIGINT)   # too, letting their fixtures stop Lab and Chromium
+                    try:
+                        proc.wait(timeout=60)
+                    except subprocess.TimeoutExpired:
+                        proc.kill()
+                        proc.wait()
+            shutil.rmtree(claims, ignore_errors=True)
     browser_output = LOG.read_text(errors="replace")
+    browser2_output = LOG2.read_text(errors="replace") if browser2 is not None else ""
     print("\n" + "=" * 30 + " browser tests " + "=" * 30, flush=True)
     sys.stdout.write(browser_output)
     parts = {"unit+nbval": (unit_status, counts("".join(lines))), "browser": (browser_status, counts(browser_output))}
+    if browser2 is not None:
+        print("\n" + "=" * 25 + " browser tests, second process " + "=" * 25, flush=True)
+        sys.stdout.write(browser2_output)
+        parts["browser 2"] = (browser2_status, counts(browser2_output))
+    # a notebook the other browser process ran is skipped here: not a skip of the suite
+    shared = sum(int(n) for out in (browser_output, browser2_output) for n in CLAIM_SKIP.findall(out))
     ran = {name: sum(c.get(k, 0) for k in ("passed", "failed", "error", "xfailed", "xpassed"))
            for name, (_, c) in parts.items()}
     failed = []
@@ -95,7 +119,9 @@ def main(args: list[str]) -> int:
             continue   # the arguments selected tests of the other part only
         failed.append(f"{name} (pytest exit status {status})")
     total = {k: sum(c.get(k, 0) for _, c in parts.values()) for k in ("passed", "failed", "error", "skipped")}
-    print(f"\nmake test: unit+nbval {unit_seconds:.0f} s, browser {browser_seconds:.0f} s (side by side); "
+    total["skipped"] -= shared
+    print(f"\nmake test: unit+nbval {unit_seconds:.0f} s, browser {browser_seconds:.0f} s (side by side; "
+          f"{'two browser processes after the first part' if browser2 is not None else 'one browser process'}); "
           f"total wall time {time.monotonic() - start:.0f} s")
     if failed:
         print("make test: FAILED: " + ", ".join(failed))
