@@ -4,12 +4,12 @@
    (whose kernels run under another numpy SIMD dispatch: the portability check, see conftest.py),
    spread over two pytest-xdist workers by file (``--dist loadfile``: a notebook's cells run in
    order in one kernel, and a module's cached results, such as the fuzz test's, are made once).
-2. the browser tests (one JupyterLab server and one headless Chromium): the longest part, and
-   mostly waiting (about two thirds of a core), so they start first, at normal priority, and part 1
-   takes the rest; when part 1 is done, a second browser process (its own JupyterLab and Chromium)
-   takes chapter notebooks from the end while the first goes on from the start: each notebook is
-   run once, by whichever process claims it first (tests/browser/conftest.py).  Their output is
-   printed when they finish (and kept in build/test-browser.log and build/test-browser-2.log).
+2. the browser tests: the longest part, and mostly waiting (one process keeps about two thirds of
+   a core busy), so two processes run them, each with its own JupyterLab and Chromium, at normal
+   priority, and part 1 takes the rest.  The first runs every browser test from the start, the
+   second only the chapter runs, from the end: each notebook is run once, by whichever process
+   claims it first (tests/browser/conftest.py).  Their output is printed when they finish (and kept
+   in build/test-browser.log and build/test-browser-2.log).
 
 Prints each part's time, the total wall time and the counts of both parts on one line, and fails
 if either part fails.  Extra arguments go to both pytest runs (``make test ARGS="-k ch24"``); a
@@ -65,6 +65,8 @@ def main(args: list[str]) -> int:
     with open(LOG, "w") as log, open(LOG2, "w") as log2:
         browser = subprocess.Popen(PYTEST + BROWSER + args, cwd=ROOT, stdout=log, stderr=subprocess.STDOUT,
                                    stdin=subprocess.DEVNULL, env=env)
+        browser2 = subprocess.Popen(PYTEST + NOTEBOOK_TESTS + args, cwd=ROOT, stdout=log2, stderr=subprocess.STDOUT,
+                                    stdin=subprocess.DEVNULL, env=dict(env, GOLDMAN_BROWSER_REVERSE="1"))
         try:
             print(f"make test: the browser tests run beside the rest (their output follows at the end; "
                   f"also in {LOG.relative_to(ROOT)})", flush=True)
@@ -81,12 +83,8 @@ def main(args: list[str]) -> int:
                 lines.append(line)
             unit_status = unit.wait()
             unit_seconds = time.monotonic() - start
-            if browser.poll() is None:    # the cores part 1 used: a second browser process
-                browser2 = subprocess.Popen(PYTEST + NOTEBOOK_TESTS + args, cwd=ROOT, stdout=log2,
-                                            stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                                            env=dict(env, GOLDMAN_BROWSER_REVERSE="1"))
             browser_status = browser.wait()
-            browser2_status = browser2.wait() if browser2 is not None else 0
+            browser2_status = browser2.wait()
             browser_seconds = time.monotonic() - start
         finally:
             for proc in (browser, browser2):
@@ -99,14 +97,13 @@ def main(args: list[str]) -> int:
                         proc.wait()
             shutil.rmtree(claims, ignore_errors=True)
     browser_output = LOG.read_text(errors="replace")
-    browser2_output = LOG2.read_text(errors="replace") if browser2 is not None else ""
+    browser2_output = LOG2.read_text(errors="replace")
     print("\n" + "=" * 30 + " browser tests " + "=" * 30, flush=True)
     sys.stdout.write(browser_output)
     parts = {"unit+nbval": (unit_status, counts("".join(lines))), "browser": (browser_status, counts(browser_output))}
-    if browser2 is not None:
-        print("\n" + "=" * 25 + " browser tests, second process " + "=" * 25, flush=True)
-        sys.stdout.write(browser2_output)
-        parts["browser 2"] = (browser2_status, counts(browser2_output))
+    print("\n" + "=" * 25 + " browser tests, second process " + "=" * 25, flush=True)
+    sys.stdout.write(browser2_output)
+    parts["browser 2"] = (browser2_status, counts(browser2_output))
     # a notebook the other browser process ran is skipped here: not a skip of the suite
     shared = sum(int(n) for out in (browser_output, browser2_output) for n in CLAIM_SKIP.findall(out))
     ran = {name: sum(c.get(k, 0) for k in ("passed", "failed", "error", "xfailed", "xpassed"))
@@ -120,8 +117,8 @@ def main(args: list[str]) -> int:
         failed.append(f"{name} (pytest exit status {status})")
     total = {k: sum(c.get(k, 0) for _, c in parts.values()) for k in ("passed", "failed", "error", "skipped")}
     total["skipped"] -= shared
-    print(f"\nmake test: unit+nbval {unit_seconds:.0f} s, browser {browser_seconds:.0f} s (side by side; "
-          f"{'two browser processes after the first part' if browser2 is not None else 'one browser process'}); "
+    print(f"\nmake test: unit+nbval {unit_seconds:.0f} s, browser {browser_seconds:.0f} s (side by side, "
+          f"two browser processes); "
           f"total wall time {time.monotonic() - start:.0f} s")
     if failed:
         print("make test: FAILED: " + ", ".join(failed))

@@ -55,9 +55,9 @@ def course_notebooks() -> list[Path]:
     return sorted((LAB_ROOT / "course").glob("*.ipynb"))
 
 
-#: Two browser processes may share the chapter notebooks (``make test`` starts a second one when the
-#: other tests are done): each notebook is run by whichever process claims it first, through a file
-#: created exclusively in this folder; the second process walks the notebooks from the end.
+#: Two browser processes share the chapter runs of test_notebooks_in_lab (``make test`` starts both):
+#: each notebook is run by whichever process claims it first, through a file created exclusively in
+#: this folder; the second process walks the notebooks from the end.
 CLAIMS = os.environ.get("GOLDMAN_BROWSER_CLAIMS")
 CLAIMED_ELSEWHERE = "run by the other browser process"
 
@@ -69,13 +69,13 @@ def pytest_collection_modifyitems(config, items):
 
 def pytest_runtest_setup(item):
     """Before any fixture (no page is opened for a notebook the other process has)."""
-    callspec = getattr(item, "callspec", None)
-    notebook = callspec.params.get("notebook") if callspec is not None else None
-    if CLAIMS and notebook is not None:
-        try:
-            os.close(os.open(os.path.join(CLAIMS, Path(notebook).stem), os.O_CREAT | os.O_EXCL | os.O_WRONLY))
-        except FileExistsError:
-            pytest.skip(CLAIMED_ELSEWHERE)
+    if not CLAIMS or getattr(item, "originalname", None) != "test_notebook_runs_and_views_respond":
+        return          # only the chapter runs are shared out (the live-deck tests also take a notebook)
+    notebook = item.callspec.params["notebook"]
+    try:
+        os.close(os.open(os.path.join(CLAIMS, Path(notebook).stem), os.O_CREAT | os.O_EXCL | os.O_WRONLY))
+    except FileExistsError:
+        pytest.skip(CLAIMED_ELSEWHERE)
 
 
 def _free_port() -> int:
