@@ -18,6 +18,7 @@ import numpy as np
 
 from goldman_lib import hidden_surfaces as hs
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, wrong
+from goldman_lib.exercises import read_vector as _read_list  # the shared reader
 from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "PAINTER_DEPTHS", "FRAGMENTS", "SCAN_POLYGON", "SCAN_ROW", "SPLIT_TRIANGLE",
@@ -85,15 +86,6 @@ PROBLEMS = {
         f"behind the root (z < 0) a leaf holds polygon 4. Give the back-to-front order for the eye at {_v(BSP_EYE)} "
         "as a list of polygon numbers (Goldman §22.7)."),
 }
-
-
-def _read_list(answer, what, n, ask):
-    got, err = read_points(answer, what, ask=ask)
-    if err is not None:
-        return None, err
-    if got.shape != (n,):
-        return None, wrong(f"{what} should be {n} numbers; yours has shape {got.shape}.")
-    return got, None
 
 
 # -- §22.2 -------------------------------------------------------------------------------------------

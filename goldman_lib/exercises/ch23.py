@@ -17,6 +17,7 @@ import numpy as np
 
 from goldman_lib import radiosity as rd
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
+from goldman_lib.exercises import read_vector as _pair  # the shared reader
 from goldman_lib.exercises.projects import Case, check_project, describe
 
 __all__ = ["PROBLEMS", "SLIPS", "JACOBI_F", "JACOBI_RHO", "JACOBI_E", "GS_F", "GS_RHO", "GS_E", "RECIPROCITY",
@@ -75,15 +76,6 @@ PROBLEMS = {
         f"F_12 = {fmt(SHOT_F[1])}, F_13 = {fmt(SHOT_F[2])}. Give the unshot radiosities [dB_1, dB_2, dB_3] after the "
         f"shot (Goldman §23.5)."),
 }
-
-
-def _pair(answer, what, n, ask):
-    got, err = read_points(answer, what, ask=ask)
-    if err is not None:
-        return None, err
-    if got.shape != (n,):
-        return None, wrong(f"{what} should be {n} numbers; yours has shape {got.shape}.")
-    return got, None
 
 
 def _close(a, b, tol=1e-4) -> bool:
