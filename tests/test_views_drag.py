@@ -77,3 +77,69 @@ def test_drag_sliders_refuses_unknown_controls():
     view, ax, _ = _view()
     with pytest.raises(KeyError, match="x9"):
         drag_sliders(view, ax, [("x9", "y0")])
+
+
+def _pixel_event(drag, name, px, py):
+    from matplotlib.backend_bases import MouseEvent
+
+    canvas = drag.ax.figure.canvas
+    canvas.callbacks.process(name, MouseEvent(name, canvas, px, py, button=1))
+
+
+def test_the_drag_plan_grabs_a_point_and_takes_it_where_it_says():
+    view, ax, _ = _view()
+    drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
+    view.figure.canvas.draw()
+    plan = drag.plan(distance=40)
+    assert plan["index"] == 0
+    assert np.allclose(plan["start"], drag.screen_position(0))
+    assert np.hypot(*np.subtract(plan["end"], plan["start"])) == pytest.approx(40.0)
+    assert plan["figure"] == [view.figure.bbox.width, view.figure.bbox.height]
+    x0, y0 = plan["start"]
+    _pixel_event(drag, "button_press_event", x0, y0)
+    _pixel_event(drag, "motion_notify_event", *plan["end"])
+    _pixel_event(drag, "button_release_event", *plan["end"])
+    now = drag.screen_position(0)
+    assert np.hypot(now[0] - plan["end"][0], now[1] - plan["end"][1]) < 6   # within a 0.1 slider step
+    assert view.values()["x1"] == 5.0 and view.values()["y1"] == 5.0
+
+
+def test_the_drag_plan_is_none_when_no_point_is_inside_the_axes():
+    view, ax, _ = _view()
+    drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
+    ax.set_xlim(20, 30)
+    assert drag.plan() is None
+    with pytest.raises(ValueError, match="distance"):
+        drag.plan(distance=-1)
+    with pytest.raises(ValueError, match="index"):
+        drag.screen_position(2)
+
+
+@pytest.mark.parametrize("name", ["vectors.affine_combination_view", "bezier.de_casteljau_explorer",
+                                  "vector_geometry.inside_outside_view", "color_intensity.shaded_sphere_view"])
+def test_every_kind_of_draggable_view_has_a_plan_that_moves_a_point(name):
+    """What the browser test does with a real mouse, here with matplotlib events on Agg."""
+    import importlib
+
+    module, factory = name.split(".")
+    view = getattr(importlib.import_module(f"goldman_lib.views.{module}"), factory)()
+    drag = view.drag
+    view.figure.canvas.draw()
+    plan = drag.plan()
+    assert plan is not None, f"{name}: no point can be dragged 40 px"
+    _pixel_event(drag, "button_press_event", *plan["start"])
+    _pixel_event(drag, "motion_notify_event", *plan["end"])
+    _pixel_event(drag, "button_release_event", *plan["end"])
+    now = drag.screen_position(plan["index"])
+    along = np.dot(np.subtract(now, plan["start"]), np.subtract(plan["end"], plan["start"])) / 40.0
+    assert along >= 10.0, f"{name}: the point moved only {along:.1f} px along a 40 px drag"
+
+
+def test_interactive_view_find_names_its_rules():
+    view, _, _ = _view()
+    assert InteractiveView.find(view.uid) is view
+    assert f"goldman-view-{view.uid}" in view._dom_classes
+    with pytest.raises(TypeError, match="uid"):
+        InteractiveView.find("0")
+    with pytest.raises(ValueError, match="uid"):
+        InteractiveView.find(-1)

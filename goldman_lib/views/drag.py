@@ -69,6 +69,48 @@ class PointDrag:
         k = int(np.argmin(d))
         return k if d[k] <= self.radius else None
 
+    def plan(self, distance: float = 40.0) -> dict | None:
+        """A drag a test can make with a real mouse: a draggable point well inside the axes that a
+        press on it grabs (no other point nearer), and where to take it, ``distance`` display pixels
+        away in one of the four axis directions and still inside the axes.  Returns ``{"index",
+        "start", "end", "figure"}`` (positions in figure pixels, origin bottom left; the figure's
+        width and height in pixels) or None if no point can be dragged that far.
+
+        >>> from matplotlib.figure import Figure
+        >>> fig = Figure(figsize=(4, 3), dpi=100); ax = fig.add_subplot(); _ = ax.set_xlim(0, 10), ax.set_ylim(0, 10)
+        >>> d = PointDrag(ax, lambda: np.array([[5.0, 5.0]]), lambda k, x, y: None)
+        >>> p = d.plan(); p["index"], p["end"][0] - p["start"][0], p["figure"]
+        (0, 40.0, [400.0, 300.0])
+        """
+        if isinstance(distance, bool) or not isinstance(distance, (int, float)) or not 0 < distance < 1e4:
+            raise ValueError(f"distance must be a number of pixels in (0, 10000); got {distance!r}")
+        pts = np.asarray(self.get_points(), dtype=float).reshape(-1, 2)
+        if len(pts) == 0:
+            return None
+        screen = self.ax.transData.transform(pts)
+        box = self.ax.bbox
+        margin = 6.0
+
+        def inside(x, y):
+            return box.x0 + margin <= x <= box.x1 - margin and box.y0 + margin <= y <= box.y1 - margin
+
+        for k, (x, y) in enumerate(screen):
+            if not (np.isfinite(x) and np.isfinite(y) and inside(x, y)) or self.nearest(x, y) != k:
+                continue
+            for dx, dy in ((distance, 0.0), (-distance, 0.0), (0.0, distance), (0.0, -distance)):
+                if inside(x + dx, y + dy):
+                    w, h = self.ax.figure.bbox.width, self.ax.figure.bbox.height
+                    return {"index": k, "start": [float(x), float(y)], "end": [float(x + dx), float(y + dy)],
+                            "figure": [float(w), float(h)]}
+        return None
+
+    def screen_position(self, index: int) -> list[float]:
+        """Where point ``index`` is drawn now, in figure pixels (origin bottom left)."""
+        pts = np.asarray(self.get_points(), dtype=float).reshape(-1, 2)
+        if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or not 0 <= index < len(pts):
+            raise ValueError(f"index must be a point number in [0, {len(pts) - 1}]; got {index!r}")
+        return [float(v) for v in self.ax.transData.transform(pts[int(index)])]
+
     # -- matplotlib event handlers ------------------------------------------------------------------
     def _press(self, event):
         if not self.enabled or event.inaxes is not self.ax or event.button not in (1, None):

@@ -25,6 +25,7 @@ import html
 import io
 import itertools
 import math
+import weakref
 from typing import Callable, Mapping
 
 import ipywidgets as widgets
@@ -140,9 +141,15 @@ class InteractiveView(widgets.VBox):
     more widgets under the controls (a program editor's help text, a reset button).
     """
 
+    #: Every live view by its number (``uid``), which its box also carries as the CSS class
+    #: ``goldman-view-<uid>``: how a browser test asks the kernel about the view it sees.
+    _live: "weakref.WeakValueDictionary[int, InteractiveView]" = weakref.WeakValueDictionary()
+    _count = itertools.count()
+
     def __init__(self, *, controls: Mapping[str, widgets.Widget], views: list, update: Callable[..., dict],
                  figure=None, static: Callable[[], bytes] | None = None, title: str = "",
                  side: bool = False, extra: list | None = None, arrange: list | None = None):
+        self.uid = next(InteractiveView._count)
         self.controls = dict(controls)
         self.update = _checked(update, self.controls)
         self.figure = figure
@@ -166,9 +173,26 @@ class InteractiveView(widgets.VBox):
             body = [widgets.HTML(f"<b>{html.escape(title)}</b>")] + body
         super().__init__(body)
         self.add_class("goldman-interactive")
+        self.add_class(f"goldman-view-{self.uid}")
+        InteractiveView._live[self.uid] = self
         for w in self.controls.values():
             w.observe(self._on_change, names="value")
         self.refresh()
+
+    @classmethod
+    def find(cls, uid: int) -> "InteractiveView":
+        """The live view numbered ``uid`` (its box has the CSS class ``goldman-view-<uid>``).
+
+        >>> v = InteractiveView(controls={}, views=[], update=lambda: {})
+        >>> InteractiveView.find(v.uid) is v
+        True
+        """
+        if isinstance(uid, bool) or not isinstance(uid, (int, np.integer)):
+            raise TypeError(f"uid must be an integer; got {type(uid).__name__}")
+        try:
+            return cls._live[int(uid)]
+        except KeyError:
+            raise ValueError(f"uid must name a live view; no view numbered {uid}") from None
 
     # -- the plain-function side -------------------------------------------------------------
     def values(self) -> dict:

@@ -81,6 +81,22 @@ def wait_for(predicate, timeout: float, interval: float = 0.25, message: str = "
 
 
 # -- JupyterLab --------------------------------------------------------------------------------------
+# Runs code in the current notebook's kernel and returns what it printed.
+_JS_KERNEL = """
+async (code) => {
+  const w = window.jupyterapp.shell.currentWidget;
+  const kernel = w.sessionContext.session.kernel;
+  const future = kernel.requestExecute({code, silent: false, store_history: false});
+  let out = '';
+  future.onIOPub = (msg) => {
+    if (msg.header.msg_type === 'stream') out += msg.content.text;
+    if (msg.header.msg_type === 'error') out += 'ERROR ' + msg.content.ename + ': ' + msg.content.evalue;
+  };
+  await future.done;
+  return out;
+}
+"""
+
 _JS_OPEN = """
 async (path) => {
   const app = window.jupyterapp;
@@ -207,6 +223,11 @@ class Lab:
                 self.page.evaluate(_JS_WIDGETS_RENDERED)), 60, message="widget views to render")
         return state
 
+    def kernel(self, code: str) -> str:
+        """Run ``code`` in the open notebook's kernel (not in a cell) and return what it printed;
+        an exception comes back as the text ``ERROR name: message``."""
+        return self.page.evaluate(_JS_KERNEL, code)
+
     def dom_problems(self) -> list[str]:
         return self.page.evaluate(_JS_DOM_PROBLEMS)
 
@@ -253,3 +274,54 @@ def wait_changed(locator, before: bytes, tolerance: float, timeout: float = 20) 
         if frac > tolerance or time.monotonic() > deadline:
             return png, frac
         time.sleep(0.4)
+
+
+# -- dragging on an ipympl canvas ----------------------------------------------------------------------
+def figure_to_page(box: dict, figure_size, xy) -> tuple[float, float]:
+    """A point in figure pixels (origin bottom left, as matplotlib's transforms give it) of a
+    figure of ``figure_size`` = (width, height) pixels, on the page: mapped onto the canvas
+    element's ``box`` (``locator.bounding_box()``), whatever CSS size the browser gave it."""
+    fw, fh = figure_size
+    return box["x"] + xy[0] * box["width"] / fw, box["y"] + (fh - xy[1]) * box["height"] / fh
+
+
+def drag_until(page, canvas, plan, arrived, *, attempts: int = 3, timeout: float = 60, steps: int = 4,
+               pause: float = 0.1, refine=None, on_miss=None, message: str = "the drag to arrive"):
+    """Drag with the mouse on an ipympl ``canvas`` until ``arrived()`` returns something truthy,
+    and return that.
+
+    ``plan()`` gives ``(start, end, figure_size)``, positions in figure pixels (asked afresh each
+    attempt, so a retry starts from wherever the point is now).  The mouse goes down at ``start``
+    (moved to ``refine(start_on_page, box)`` if given), moves to ``end`` in ``steps`` motion events
+    ``pause`` seconds apart, and comes up.  The kernel handles the motion events one at a time, so
+    a loaded machine may take a while: ``arrived`` is polled for ``timeout`` seconds.  If it never
+    holds, ``on_miss(attempt)`` may raise (the press must have missed: nothing should have moved)
+    and the drag is tried again, up to ``attempts`` times: a press can miss when the page shifts
+    under the mouse (an image above finishing its layout) between measuring and pressing.
+    """
+    misses = []
+    for attempt in range(attempts):
+        canvas.scroll_into_view_if_needed()
+        box = canvas.bounding_box()
+        assert box and box["width"] > 10 and box["height"] > 10, f"the canvas has no size: {box}"
+        start_fig, end_fig, size = plan()
+        start, end = figure_to_page(box, size, start_fig), figure_to_page(box, size, end_fig)
+        if refine is not None:
+            moved = refine(start, box)
+            end = (end[0] + moved[0] - start[0], end[1] + moved[1] - start[1])
+            start = moved
+        page.mouse.move(*start)
+        page.mouse.down()
+        for k in range(1, steps + 1):
+            page.mouse.move(start[0] + (end[0] - start[0]) * k / steps, start[1] + (end[1] - start[1]) * k / steps)
+            time.sleep(pause)
+        page.mouse.up()
+        try:
+            return wait_for(arrived, timeout, interval=0.5, message=message)
+        except TimeoutError:
+            misses.append(f"attempt {attempt}: pressed at page {tuple(round(v) for v in start)} "
+                          f"(figure {tuple(round(v) for v in start_fig)}, canvas box {box})")
+            print(misses[-1])
+            if on_miss is not None:
+                on_miss(attempt)
+    raise AssertionError(f"{attempts} drags never brought {message}:\n" + "\n".join(misses))

@@ -19,7 +19,7 @@ import pytest
 from PIL import Image
 
 from .conftest import REPO, SCREENSHOTS
-from .labdriver import changed_fraction, screenshot, wait_changed, wait_for, wait_nonblank
+from .labdriver import changed_fraction, drag_until, screenshot, wait_changed, wait_nonblank
 
 pytestmark = pytest.mark.browser
 
@@ -104,29 +104,20 @@ def test_dragging_a_control_point_moves_the_curve_and_its_sliders(lab):
         v = p1()
         return v if None not in v and abs(v[0] - target[0]) <= 0.15 and abs(v[1] - target[1]) <= 0.15 else None
 
-    moved = None
-    for attempt in range(3):
-        canvas.scroll_into_view_if_needed()
-        box = canvas.bounding_box()
-        assert box and box["width"] > 100, f"the canvas has no size: {box}"
-        kx, ky = box["width"] / fig_w, box["height"] / fig_h     # CSS pixels per figure pixel
-        guess = (box["x"] + p[0] * kx, box["y"] + (fig_h - p[1]) * ky)
-        start, hits = _refine(screenshot(canvas), guess, box)
-        dx, dy = MOVE[0] * per_unit[0] * kx, -MOVE[1] * per_unit[1] * ky
-        page.mouse.move(*start)
-        page.mouse.down()
-        for k in range(1, 9):                                     # a drag in eight steps
-            page.mouse.move(start[0] + dx * k / 8, start[1] + dy * k / 8)
-            time.sleep(0.05)
-        page.mouse.up()
-        try:
-            moved = wait_for(arrived, 90, interval=0.5, message="P1's sliders to follow the drag")
-            break
-        except TimeoutError:
-            now = p1()
-            assert now == (x0, y0), f"P1's sliders read {now} after a drag to about {target}"
-            print(f"attempt {attempt}: the press at {start} (guess {guess}, {hits} grey pixels) grabbed nothing")
-    assert moved is not None, "three drags never moved P1's sliders"
+    def plan():
+        return p, (p[0] + MOVE[0] * per_unit[0], p[1] + MOVE[1] * per_unit[1]), (fig_w, fig_h)
+
+    def refine(start, box):
+        spot, hits = _refine(screenshot(canvas), start, box)
+        print(f"press at {spot} (guess {start}, {hits} grey pixels near it)")
+        return spot
+
+    def missed(attempt):
+        now = p1()
+        assert now == (x0, y0), f"P1's sliders read {now} after a drag to about {target}"
+
+    moved = drag_until(page, canvas, plan, arrived, timeout=90, steps=8, pause=0.05, refine=refine,
+                       on_miss=missed, message="P1's sliders to follow the drag")
     # the other points stayed where they were
     assert (_readout(view, "x0"), _readout(view, "y0"), _readout(view, "x3")) == (0.0, 0.0, 4.0)
     after, frac = wait_changed(canvas, before, CHANGE_TOLERANCE, timeout=30)

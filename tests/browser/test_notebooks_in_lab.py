@@ -1,6 +1,7 @@
 """Every chapter in real JupyterLab (headless Chromium): it runs without an error, its widgets and
-three.js canvases render (non-blank pixels), moving a slider changes each interactive view, and
-moving the light of a view with the light-position control changes its picture.
+three.js canvases render (non-blank pixels), moving a slider changes each interactive view,
+moving the light of a view with the light-position control changes its picture, and in every view
+whose points the mouse drags, a real mouse drag moves a point and changes the picture.
 
 Screenshots of every canvas and of each view before/after its slider moved are written to
 tests/browser/screenshots/ on every run, so a person can look at what the test saw.
@@ -8,10 +9,13 @@ tests/browser/screenshots/ on every run, so a person can look at what the test s
 
 from __future__ import annotations
 
+import json
+
+import numpy as np
 import pytest
 
 from .conftest import SCREENSHOTS, course_notebooks
-from .labdriver import changed_fraction, pixel_stats, screenshot, wait_changed, wait_nonblank
+from .labdriver import drag_until, pixel_stats, wait_changed, wait_nonblank
 
 pytestmark = pytest.mark.browser
 
@@ -19,6 +23,20 @@ NOTEBOOKS = course_notebooks()
 # A slider move must change more than this fraction of the display's pixels (0.1%: a few hundred
 # pixels of a ~400k-pixel display; two renders of the same values differ by none at threshold 24).
 CHANGE_TOLERANCE = 0.001
+
+# The drag a real mouse can make in view UID (None if it has no points to drag, or no ipympl canvas).
+_PLAN = """
+import json as _json
+from goldman_lib.views.interactive import InteractiveView as _IV
+def _goldman_plan(v):
+    d = getattr(v, "drag", None)
+    live = v.figure is not None and type(v.figure.canvas).__module__.startswith("ipympl")
+    return d.plan() if d is not None and d.enabled and live else None
+print(_json.dumps(_goldman_plan(_IV.find(UID))))
+del _goldman_plan
+"""
+# Where point K of view UID is drawn now (figure pixels).
+_WHERE = "import json as _json; print(_json.dumps(_IV.find(UID).drag.screen_position(K)))"
 
 # ipympl draws its figure in .jupyter-matplotlib-canvas-div; pythreejs renderers are .jupyter-threejs.
 MPL = ".jupyter-matplotlib-canvas-div"
@@ -123,6 +141,37 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             assert lit_frac > CHANGE_TOLERANCE, (
                 f"{rel}: moving the light of interactive view {i} changed only {lit_frac:.2%} of its {kind} "
                 f"(see screenshots/{stem}-view{i}-light.png)")
+        # A view whose points the mouse drags: drag one with the real mouse.  The kernel says which
+        # point a press grabs and where to take it (PointDrag.plan); the point must follow the mouse
+        # and the picture must change.
+        uid = view.evaluate("e => ([...e.classList].find(c => c.startsWith('goldman-view-')) || '').slice(13)")
+        plan = json.loads(lab.kernel(_PLAN.replace("UID", uid)).strip() or "null") if uid else None
+        if plan:
+            canvas = view.locator(MPL + " canvas").first
+            drag_before, _ = wait_nonblank(canvas)
+            start, end = plan["start"], plan["end"]
+            length = float(np.hypot(end[0] - start[0], end[1] - start[1]))
+            unit = ((end[0] - start[0]) / length, (end[1] - start[1]) / length)
+
+            def followed():
+                now = json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip())
+                along = (now[0] - start[0]) * unit[0] + (now[1] - start[1]) * unit[1]
+                return along if along >= 0.25 * length else None
+
+            def missed(attempt):
+                now = json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip())
+                assert np.hypot(now[0] - start[0], now[1] - start[1]) < 1.0, (
+                    f"{rel}: view {i}'s point {plan['index']} went to {now}, not along the drag {start} -> {end}")
+
+            along = drag_until(page, canvas, lambda: (start, end, plan["figure"]), followed, timeout=45,
+                               on_miss=missed, message=f"point {plan['index']} of view {i} to follow the mouse")
+            drag_after, drag_frac = wait_changed(canvas, drag_before, CHANGE_TOLERANCE, timeout=20)
+            (SCREENSHOTS / f"{stem}-view{i}-drag.png").write_bytes(drag_after)
+            report.append(f"  view {i}: dragging point {plan['index']} {length:.0f} px moved it {along:.0f} px "
+                          f"and changed {drag_frac:.1%} of the canvas")
+            assert drag_frac > CHANGE_TOLERANCE, (
+                f"{rel}: dragging point {plan['index']} of view {i} changed only {drag_frac:.2%} of its canvas "
+                f"(see screenshots/{stem}-view{i}-drag.png)")
     problems = lab.dom_problems()
-    assert not problems, f"{rel}: errors after moving sliders:\n" + "\n".join(problems)
+    assert not problems, f"{rel}: errors after moving sliders and dragging points:\n" + "\n".join(problems)
     print("\n".join(report))

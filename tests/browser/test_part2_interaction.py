@@ -3,7 +3,8 @@ inside-outside map with the mouse, and presses Play on chapter 15's key-frame an
 
 * Drag: the test asks the kernel where the query point is on the ipympl canvas (the view's axes
   transform, in figure pixels), presses the mouse there, drags it to where (3, -2) is drawn and lets
-  go.  The canvas pixels must change, the query point's sliders must follow (qx = 3, qy = -2, to the
+  go (``labdriver.drag_until``, which maps figure pixels onto the canvas's box and tries again if
+  the press missed).  The canvas pixels must change, the query point's sliders must follow (qx = 3, qy = -2, to the
   slider step), and the status line must give the new winding number.
 * Play: pressing the ``Play`` widget (CSS class ``goldman-play``) must advance the frame slider it
   drives and change the three.js picture of the two bricks.
@@ -17,33 +18,13 @@ import time
 import pytest
 
 from .conftest import SCREENSHOTS, course_notebooks
-from .labdriver import changed_fraction, screenshot, wait_changed, wait_for, wait_nonblank
+from .labdriver import drag_until, wait_changed, wait_for, wait_nonblank
 
 pytestmark = pytest.mark.browser
 
 NAMES = {p.name for p in course_notebooks()}
 CH11 = "11_vector_geometry_applications.ipynb"
 CH15 = "15_quaternions.ipynb"
-
-# Runs code in the notebook's kernel and returns what it printed.
-_JS_KERNEL = """
-async (code) => {
-  const w = window.jupyterapp.shell.currentWidget;
-  const kernel = w.sessionContext.session.kernel;
-  const future = kernel.requestExecute({code, silent: false, store_history: false});
-  let out = '';
-  future.onIOPub = (msg) => {
-    if (msg.header.msg_type === 'stream') out += msg.content.text;
-    if (msg.header.msg_type === 'error') out += 'ERROR ' + msg.content.ename + ': ' + msg.content.evalue;
-  };
-  await future.done;
-  return out;
-}
-"""
-
-
-def kernel(lab, code: str) -> str:
-    return lab.page.evaluate(_JS_KERNEL, code)
 
 
 def _view_with(nb, text: str):
@@ -65,30 +46,25 @@ def test_drag_the_query_point_of_the_inside_outside_map(lab):
     canvas = view.locator(".jupyter-matplotlib-canvas-div").first
     canvas.scroll_into_view_if_needed()
     before, _ = wait_nonblank(canvas)
-    where = json.loads(kernel(lab, (
-        "import json\n"
-        "v = inside_outside\n"
-        "a = v.ax.transData.transform((v.values()['qx'], v.values()['qy']))\n"
-        "b = v.ax.transData.transform((3.0, -2.0))\n"
-        "print(json.dumps([*map(float, a), *map(float, b), float(v.figure.bbox.height)]))")).strip())
-    ax_, ay_, bx_, by_, height = where
-    box = canvas.bounding_box()
-    # figure pixels (origin bottom left) -> page pixels (origin top left of the canvas)
-    start = (box["x"] + ax_, box["y"] + height - ay_)
-    end = (box["x"] + bx_, box["y"] + height - by_)
-    page.mouse.move(*start)
-    page.mouse.down()
-    for k in range(1, 5):   # few motion events: the kernel handles them one at a time (update + redraw)
-        page.mouse.move(start[0] + (end[0] - start[0]) * k / 4, start[1] + (end[1] - start[1]) * k / 4)
-        time.sleep(0.1)
-    page.mouse.up()
+
+    def plan():
+        # asked afresh each attempt: a retry starts from wherever the point is now
+        a_, b_, size = json.loads(lab.kernel((
+            "import json\n"
+            "v = inside_outside\n"
+            "a = v.ax.transData.transform((v.values()['qx'], v.values()['qy']))\n"
+            "b = v.ax.transData.transform((3.0, -2.0))\n"
+            "print(json.dumps([[*map(float, a)], [*map(float, b)], [float(v.figure.bbox.width), float(v.figure.bbox.height)]]))"
+        )).strip())
+        return a_, b_, size
 
     def moved():
-        vals = json.loads(kernel(lab, "import json; print(json.dumps(inside_outside.values()))").strip())
+        vals = json.loads(lab.kernel("import json; print(json.dumps(inside_outside.values()))").strip())
         return vals if abs(vals["qx"] - 3.0) <= 0.06 and abs(vals["qy"] + 2.0) <= 0.06 else None
 
-    # a loaded 2-core machine may take a while to work through the motion events
-    vals = wait_for(moved, 90, message="the query point's sliders to follow the drag to (3, -2)")
+    canvas_el = view.locator(".jupyter-matplotlib-canvas-div canvas").first
+    vals = drag_until(page, canvas_el, plan, moved, timeout=60,
+                      message="the query point's sliders to follow the drag to (3, -2)")
     time.sleep(1.0)   # the last redraw reaches the browser after the sliders have moved
     after, frac = wait_changed(canvas, before, 0.001)
     SCREENSHOTS.mkdir(parents=True, exist_ok=True)
@@ -112,11 +88,11 @@ def test_play_moves_the_key_frame_animation(lab):
     display = view.locator(".goldman-display").first
     before, st = wait_nonblank(display)
     assert st.nonblank(), f"the key-frame view looks blank ({st})"
-    frame0 = int(kernel(lab, "print(animation.values()['frame'])").strip())
+    frame0 = int(lab.kernel("print(animation.values()['frame'])").strip())
     play.locator("button").first.click()
 
     def advanced():
-        f = int(kernel(lab, "print(animation.values()['frame'])").strip())
+        f = int(lab.kernel("print(animation.values()['frame'])").strip())
         return f if f != frame0 else None
 
     frame1 = wait_for(advanced, 30, message="Play to advance the frame slider")
