@@ -114,3 +114,25 @@ def test_a_map_is_edited_by_dragging_the_images_of_three_points():
     # the sliders snap to steps of 0.001 and of 1 degree (0.5 sin 0.5° = 0.0044 at most)
     assert np.allclose(after, [[0, 0], [0.5, 0.25], [0, 0.5]], atol=6e-3)
     assert editor.last_error is None and editor.values()["angle0"] != 0
+
+
+def test_the_frame_holds_still_while_a_grip_is_dragged_and_fits_on_release():
+    """The editor fits its frame to the attractor after every change, except while a grip is being
+    dragged: a frame that rescaled under the mouse would carry the grip away from it (a real-mouse
+    drag in the browser moved a grip 93 px for a 40 px drag).  On release the frame fits again."""
+    editor = ed.ifs_editor("Barnsley fern", points=2000)
+    editor.figure.canvas.draw()
+    limits = editor.ax.get_xlim(), editor.ax.get_ylim()
+    plan = editor.drag.plan(distance=60)
+    x, y = editor.ax.transData.inverted().transform(plan["start"])
+    x1, y1 = editor.ax.transData.inverted().transform(plan["end"])
+    editor.drag.press_at(x, y)
+    for t in (0.5, 1.0):
+        editor.drag.move_to(x + t * (x1 - x), y + t * (y1 - y))
+        assert (editor.ax.get_xlim(), editor.ax.get_ylim()) == limits
+    now = editor.drag.screen_position(plan["index"])
+    assert np.hypot(now[0] - plan["end"][0], now[1] - plan["end"][1]) < 6.0   # the grip is under the mouse
+    editor.drag.release()
+    assert (editor.ax.get_xlim(), editor.ax.get_ylim()) != limits                 # fitted to the new attractor
+    assert editor.last_error is None
+    plt.close(editor.figure)

@@ -253,6 +253,10 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
                                                 description="condensation", style={"description_width": "90px"},
                                                 layout=widgets.Layout(width="290px"))
 
+    # While a grip is dragged the frame holds still, so the grip stays under the mouse; the view
+    # fits the new attractor when the mouse lets go.
+    frame = {"hold": False}
+
     def update(maps, edit, algorithm, points, levels, condensation, **params):
         k = _checks.integer(maps, "maps", 1, max_maps)
         values = {"maps": k, "condensation": condensation, **params}
@@ -290,7 +294,8 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
             handles.set_data(grip[:, 0], grip[:, 1])
         else:
             handles.set_data([], [])
-        _fit(ax, pts if s.is_contractive() else np.zeros((0, 2)), images)
+        if not frame["hold"]:
+            _fit(ax, pts if s.is_contractive() else np.zeros((0, 2)), images)
         count = f"{len(pts):,} points" if algorithm == "chaos game" else f"{len(pts):,} points, level {levels}"
         title.set_text(f"{s.name}: {algorithm}, {count}")
         if sel_map >= k:
@@ -364,10 +369,16 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
         return affine.apply(REFERENCE_TRIANGLE, system_from_values(vals).maps[i])
 
     def on_drag(k, x, y):
+        frame["hold"] = True
         i = int(controls["edit"].value) - 1
         view.set_values(**map_values_from_points(i, grips(), k, (x, y)))
 
-    view.drag = PointDrag(ax, grips, on_drag)
+    def on_release(k):
+        if frame["hold"]:
+            frame["hold"] = False
+            view.refresh()
+
+    view.drag = PointDrag(ax, grips, on_drag, on_release=on_release)
     return view
 
 
