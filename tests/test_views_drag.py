@@ -115,24 +115,48 @@ def test_the_drag_plan_is_none_when_no_point_is_inside_the_axes():
         drag.screen_position(2)
 
 
-@pytest.mark.parametrize("name", ["vectors.affine_combination_view", "bezier.de_casteljau_explorer",
-                                  "vector_geometry.inside_outside_view", "color_intensity.shaded_sphere_view"])
-def test_every_kind_of_draggable_view_has_a_plan_that_moves_a_point(name):
-    """What the browser test does with a real mouse, here with matplotlib events on Agg."""
-    import importlib
+def _draggable_factories():
+    from goldman_lib.views.interactive import discover_factories
 
-    module, factory = name.split(".")
-    view = getattr(importlib.import_module(f"goldman_lib.views.{module}"), factory)()
+    import inspect
+
+    def drags(f, depth=1):
+        # a factory that makes its points draggable calls drag_sliders, LightControl.drag_in or
+        # PointDrag, itself or through a helper of its module
+        if any(word in inspect.getsource(f) for word in ("drag_sliders(", ".drag_in(", "PointDrag(")):
+            return True
+        helpers = [f.__globals__.get(n) for n in f.__code__.co_names]
+        return depth > 0 and any(inspect.isfunction(h) and h.__module__ == f.__module__ and drags(h, depth - 1)
+                                 for h in helpers)
+
+    return [(name, f) for name, f in discover_factories() if drags(f)]
+
+
+@pytest.mark.parametrize("name,factory", _draggable_factories(), ids=lambda v: v if isinstance(v, str) else "")
+def test_every_drag_plan_takes_its_point_to_the_mouse(name, factory):
+    """What the browser test does with a real mouse in every view with draggable points, here with
+    matplotlib events on Agg: press on the planned point, move in four steps, and at the end the
+    point is under the mouse (to its sliders' steps) and only it moved."""
+    import matplotlib.pyplot as plt
+
+    view = factory()
     drag = view.drag
     view.figure.canvas.draw()
     plan = drag.plan()
     assert plan is not None, f"{name}: no point can be dragged 40 px"
-    _pixel_event(drag, "button_press_event", *plan["start"])
-    _pixel_event(drag, "motion_notify_event", *plan["end"])
-    _pixel_event(drag, "button_release_event", *plan["end"])
-    now = drag.screen_position(plan["index"])
-    along = np.dot(np.subtract(now, plan["start"]), np.subtract(plan["end"], plan["start"])) / 40.0
-    assert along >= 10.0, f"{name}: the point moved only {along:.1f} px along a 40 px drag"
+    others = np.delete(np.asarray(drag.get_points(), float).reshape(-1, 2), plan["index"], axis=0)
+    start, end = np.array(plan["start"]), np.array(plan["end"])
+    _pixel_event(drag, "button_press_event", *start)
+    for k in range(1, 5):
+        _pixel_event(drag, "motion_notify_event", *(start + (end - start) * k / 4))
+    now = np.array(drag.screen_position(plan["index"]))
+    _pixel_event(drag, "button_release_event", *end)
+    assert np.hypot(*(now - end)) <= 10.0, f"{name}: the point is {np.hypot(*(now - end)):.1f} px from the mouse"
+    after = np.delete(np.asarray(drag.get_points(), float).reshape(-1, 2), plan["index"], axis=0)
+    if name != "ifs_editor.ifs_editor":      # there the three grips are one map's images: they move together
+        assert np.allclose(after, others), f"{name}: points other than the dragged one moved"
+    assert view.last_error is None, view.last_error
+    plt.close(view.figure)
 
 
 def test_interactive_view_find_names_its_rules():
