@@ -28,14 +28,15 @@ CHANGE_TOLERANCE = 0.001
 # with matplotlib events on Agg).
 DRAG_TOLERANCE = 10.0
 
-# The drag a real mouse can make in view UID (None if it has no points to drag, or no ipympl canvas).
+# Whether view UID has points the mouse drags on an ipympl canvas, and the drag a real mouse can
+# make there (PointDrag.plan; None if no point can be dragged 40 px).
 _PLAN = """
 import json as _json
 from goldman_lib.views.interactive import InteractiveView as _IV
 def _goldman_plan(v):
     d = getattr(v, "drag", None)
-    live = v.figure is not None and type(v.figure.canvas).__module__.startswith("ipympl")
-    return d.plan() if d is not None and d.enabled and live else None
+    live = d is not None and d.enabled and type(d.ax.figure.canvas).__module__.startswith("ipympl")
+    return {"drag": live, "plan": d.plan() if live else None}
 print(_json.dumps(_goldman_plan(_IV.find(UID))))
 del _goldman_plan
 """
@@ -99,6 +100,47 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             report.append(f"  view {i}: typed a program, changed {frac:.1%} of the display")
             assert frac > CHANGE_TOLERANCE, f"{rel}: typing a program into view {i} did not change its drawing"
             continue
+        # A view whose points the mouse drags: drag one with the real mouse, at the view's first
+        # values (before the sliders move a point out of the axes).  The kernel says which point a
+        # press grabs and where to take it (PointDrag.plan); the point must follow the mouse and the
+        # picture must change.
+        uid = view.evaluate("e => ([...e.classList].find(c => c.startsWith('goldman-view-')) || '').slice(13)")
+        assert uid, f"{rel}: interactive view {i} has no goldman-view-<uid> class"
+        found = json.loads(lab.kernel(_PLAN.replace("UID", uid)).strip())
+        assert not (found["drag"] and found["plan"] is None), (
+            f"{rel}: view {i} has draggable points but none that a press can grab and move 40 px")
+        plan = found["plan"]
+        if plan:
+            canvas = view.locator(MPL + " canvas").first
+            drag_before, _ = wait_nonblank(canvas)
+            start, end = plan["start"], plan["end"]
+            length = float(np.hypot(end[0] - start[0], end[1] - start[1]))
+            unit = ((end[0] - start[0]) / length, (end[1] - start[1]) / length)
+
+            def followed():
+                # the kernel handles the motion events one at a time: wait for the end of the drag,
+                # where the point must be under the mouse (to its sliders' steps: a few pixels)
+                now = json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip())
+                along = (now[0] - start[0]) * unit[0] + (now[1] - start[1]) * unit[1]
+                off = float(np.hypot(now[0] - end[0], now[1] - end[1]))
+                return (along, off) if off <= DRAG_TOLERANCE else None
+
+            def missed(attempt):
+                # a press that missed moved nothing; a point that moved but not to the mouse is a bug
+                now = json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip())
+                assert np.hypot(now[0] - start[0], now[1] - start[1]) < 1.0, (
+                    f"{rel}: view {i}'s point {plan['index']} went to {now}, not to the mouse at {end} "
+                    f"(dragged from {start})")
+
+            along, off = drag_until(page, canvas, lambda: (start, end, plan["figure"]), followed, timeout=45,
+                                    on_miss=missed, message=f"point {plan['index']} of view {i} to follow the mouse")
+            drag_after, drag_frac = wait_changed(canvas, drag_before, CHANGE_TOLERANCE, timeout=20)
+            (SCREENSHOTS / f"{stem}-view{i}-drag.png").write_bytes(drag_after)
+            report.append(f"  view {i}: dragging point {plan['index']} {length:.0f} px moved it {along:.0f} px "
+                          f"({off:.1f} px from the mouse) and changed {drag_frac:.1%} of the canvas")
+            assert drag_frac > CHANGE_TOLERANCE, (
+                f"{rel}: dragging point {plan['index']} of view {i} changed only {drag_frac:.2%} of its canvas "
+                f"(see screenshots/{stem}-view{i}-drag.png)")
         before, st = wait_nonblank(display)
         (SCREENSHOTS / f"{stem}-view{i}-before.png").write_bytes(before)
         assert st.nonblank(), f"{rel}: interactive view {i} looks blank ({st})"
@@ -145,42 +187,6 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             assert lit_frac > CHANGE_TOLERANCE, (
                 f"{rel}: moving the light of interactive view {i} changed only {lit_frac:.2%} of its {kind} "
                 f"(see screenshots/{stem}-view{i}-light.png)")
-        # A view whose points the mouse drags: drag one with the real mouse.  The kernel says which
-        # point a press grabs and where to take it (PointDrag.plan); the point must follow the mouse
-        # and the picture must change.
-        uid = view.evaluate("e => ([...e.classList].find(c => c.startsWith('goldman-view-')) || '').slice(13)")
-        plan = json.loads(lab.kernel(_PLAN.replace("UID", uid)).strip() or "null") if uid else None
-        if plan:
-            canvas = view.locator(MPL + " canvas").first
-            drag_before, _ = wait_nonblank(canvas)
-            start, end = plan["start"], plan["end"]
-            length = float(np.hypot(end[0] - start[0], end[1] - start[1]))
-            unit = ((end[0] - start[0]) / length, (end[1] - start[1]) / length)
-
-            def followed():
-                # the kernel handles the motion events one at a time: wait for the end of the drag,
-                # where the point must be under the mouse (to its sliders' steps: a few pixels)
-                now = json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip())
-                along = (now[0] - start[0]) * unit[0] + (now[1] - start[1]) * unit[1]
-                off = float(np.hypot(now[0] - end[0], now[1] - end[1]))
-                return (along, off) if off <= DRAG_TOLERANCE else None
-
-            def missed(attempt):
-                # a press that missed moved nothing; a point that moved but not to the mouse is a bug
-                now = json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip())
-                assert np.hypot(now[0] - start[0], now[1] - start[1]) < 1.0, (
-                    f"{rel}: view {i}'s point {plan['index']} went to {now}, not to the mouse at {end} "
-                    f"(dragged from {start})")
-
-            along, off = drag_until(page, canvas, lambda: (start, end, plan["figure"]), followed, timeout=45,
-                                    on_miss=missed, message=f"point {plan['index']} of view {i} to follow the mouse")
-            drag_after, drag_frac = wait_changed(canvas, drag_before, CHANGE_TOLERANCE, timeout=20)
-            (SCREENSHOTS / f"{stem}-view{i}-drag.png").write_bytes(drag_after)
-            report.append(f"  view {i}: dragging point {plan['index']} {length:.0f} px moved it {along:.0f} px "
-                          f"({off:.1f} px from the mouse) and changed {drag_frac:.1%} of the canvas")
-            assert drag_frac > CHANGE_TOLERANCE, (
-                f"{rel}: dragging point {plan['index']} of view {i} changed only {drag_frac:.2%} of its canvas "
-                f"(see screenshots/{stem}-view{i}-drag.png)")
     problems = lab.dom_problems()
     assert not problems, f"{rel}: errors after moving sliders and dragging points:\n" + "\n".join(problems)
     print("\n".join(report))
