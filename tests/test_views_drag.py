@@ -167,3 +167,24 @@ def test_interactive_view_find_names_its_rules():
         InteractiveView.find("0")
     with pytest.raises(ValueError, match="uid"):
         InteractiveView.find(-1)
+
+
+def test_the_point_ends_where_the_mouse_lets_go_even_if_motions_were_lost():
+    """A browser may drop motion events while the kernel draws; the release still carries the
+    mouse's position, and the held point ends there (once: no second update if it is already there)."""
+    view, ax, calls = _view()
+    drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
+    calls.clear()
+    drag.press_at(1.0, 1.0)
+    drag.move_to(2.0, 2.0)                 # the motions to (4, 3) never arrived
+    drag.release(4.0, 3.0)
+    assert view.values()["x0"] == 4.0 and view.values()["y0"] == 3.0
+    assert calls == [(2.0, 2.0, 5.0, 5.0), (4.0, 3.0, 5.0, 5.0)]
+    calls.clear()
+    drag.press_at(4.0, 3.0)
+    drag.move_to(6.0, 3.0)
+    drag.release(6.0, 3.0)                 # released where the last motion was: no extra update
+    assert calls == [(6.0, 3.0, 5.0, 5.0)]
+    calls.clear()
+    drag.release(8.0, 8.0)                 # nothing held: a release moves nothing
+    assert calls == [] and view.values()["x1"] == 5.0

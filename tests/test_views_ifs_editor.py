@@ -111,7 +111,7 @@ def test_a_map_is_edited_by_dragging_the_images_of_three_points():
     editor.drag.move_to(0.5, 0.25)
     editor.drag.release()
     after = affine.apply(REFERENCE_TRIANGLE, system_from_values(editor.values()).maps[0])
-    # the sliders snap to steps of 0.001 and of 1 degree (0.5 sin 0.5° = 0.0044 at most)
+    # the sliders snap to steps of 0.001 and of 0.1 degree
     assert np.allclose(after, [[0, 0], [0.5, 0.25], [0, 0.5]], atol=6e-3)
     assert editor.last_error is None and editor.values()["angle0"] != 0
 

@@ -125,13 +125,22 @@ class PointDrag:
         self._drag_to(event.xdata, event.ydata)
 
     def _release(self, event):
+        # The point ends where the mouse lets go, even if the last motion events never arrived (a
+        # browser may coalesce or drop them while the kernel is busy drawing).
+        if (self.active is not None and event.inaxes is self.ax and event.xdata is not None
+                and self._last != (event.xdata, event.ydata)):
+            self._drag_to(event.xdata, event.ydata)
         if self.active is not None and self.on_release is not None:
             self.on_release(self.active)
         self.active = None
+        self._last = None
+
+    _last = None
 
     def _drag_to(self, x, y):
         if x is None or y is None or not (np.isfinite(x) and np.isfinite(y)):
             return
+        self._last = (x, y)
         self.on_drag(self.active, float(x), float(y))
 
     # -- driving it from code (tests, demos) ------------------------------------------------------------
@@ -150,12 +159,15 @@ class PointDrag:
         """Move the mouse to data position (x, y)."""
         self._event("motion_notify_event", x, y)
 
-    def release(self):
-        """Release the mouse button."""
+    def release(self, x: float | None = None, y: float | None = None):
+        """Release the mouse button (at data position (x, y) if given: the held point ends there)."""
         from matplotlib.backend_bases import MouseEvent
 
-        event = MouseEvent("button_release_event", self.ax.figure.canvas, 0, 0, button=1)
-        self.ax.figure.canvas.callbacks.process("button_release_event", event)
+        if x is None or y is None:
+            event = MouseEvent("button_release_event", self.ax.figure.canvas, 0, 0, button=1)
+            self.ax.figure.canvas.callbacks.process("button_release_event", event)
+        else:
+            self._event("button_release_event", x, y)
 
 
 def _snap(slider, value: float) -> float:

@@ -52,10 +52,10 @@ MAX_MAPS = 8
 
 #: Slider of each map parameter: (label, low, high, step).
 PARAMETERS = {
-    "angle": ("rot°", -180.0, 180.0, 1.0),
+    "angle": ("rot°", -180.0, 180.0, 0.1),
     "sx": ("sx", 0.0, 1.0, 0.001),
     "sy": ("sy", -1.0, 1.0, 0.001),
-    "shear": ("shear", -1.0, 1.0, 0.01),
+    "shear": ("shear", -1.0, 1.0, 0.001),
     "tx": ("tx", -1.0, 2.0, 0.001),
     "ty": ("ty", -1.0, 2.0, 0.001),
     "p": ("p", 0.0, 1.0, 0.01),
@@ -243,7 +243,7 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
     for i in range(max_maps):
         for key, (label, low, high, step) in PARAMETERS.items():
             controls[f"{key}{i}"] = float_slider(label, initial[f"{key}{i}"], low, high, step,
-                                                 readout=".0f" if key == "angle" else ".3f")
+                                                 readout=".1f" if key == "angle" else ".3f")
     controls["algorithm"] = widgets.ToggleButtons(options=_ALGORITHMS, value=algorithm,
                                                   style={"button_width": "110px"})
     controls["points"] = int_slider("points", points, 1000, 100_000)

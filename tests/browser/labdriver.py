@@ -285,6 +285,21 @@ def figure_to_page(box: dict, figure_size, xy) -> tuple[float, float]:
     return box["x"] + xy[0] * box["width"] / fw, box["y"] + (fh - xy[1]) * box["height"] / fh
 
 
+def stable_box(locator, timeout: float = 10, interval: float = 0.15) -> dict | None:
+    """The element's box once it holds still (the same in two reads ``interval`` apart): the page
+    may still be scrolling, or outputs above may still be laying out, and a mouse pressed at a box
+    read mid-move lands beside the point (a real-mouse drag then carries the point to the wrong
+    place: seen as 12-14 px misses in three chapters)."""
+    deadline = time.monotonic() + timeout
+    last = locator.bounding_box()
+    while True:
+        time.sleep(interval)
+        box = locator.bounding_box()
+        if box == last or time.monotonic() > deadline:
+            return box
+        last = box
+
+
 def drag_until(page, canvas, plan, arrived, *, attempts: int = 3, timeout: float = 60, steps: int = 4,
                pause: float = 0.1, refine=None, on_miss=None, message: str = "the drag to arrive"):
     """Drag with the mouse on an ipympl ``canvas`` until ``arrived()`` returns something truthy,
@@ -302,7 +317,7 @@ def drag_until(page, canvas, plan, arrived, *, attempts: int = 3, timeout: float
     misses = []
     for attempt in range(attempts):
         canvas.scroll_into_view_if_needed()
-        box = canvas.bounding_box()
+        box = stable_box(canvas)
         assert box and box["width"] > 10 and box["height"] > 10, f"the canvas has no size: {box}"
         start_fig, end_fig, size = plan()
         start, end = figure_to_page(box, size, start_fig), figure_to_page(box, size, end_fig)
