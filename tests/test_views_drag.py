@@ -188,3 +188,15 @@ def test_the_point_ends_where_the_mouse_lets_go_even_if_motions_were_lost():
     calls.clear()
     drag.release(8.0, 8.0)                 # nothing held: a release moves nothing
     assert calls == [] and view.values()["x1"] == 5.0
+
+
+def test_the_drag_plan_also_gives_data_coordinates_and_the_scale():
+    view, ax, _ = _view()
+    drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
+    view.figure.canvas.draw()
+    plan = drag.plan(distance=40)
+    assert plan["start_data"] == drag.position(0) == [1.0, 1.0]
+    scale = np.array(plan["pixels_per_unit"])
+    assert np.allclose((np.array(plan["end_data"]) - plan["start_data"]) * scale,
+                       np.abs(np.subtract(plan["end"], plan["start"])))
+    assert np.allclose(ax.transData.transform(plan["end_data"]), plan["end"])

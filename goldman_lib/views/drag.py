@@ -73,8 +73,11 @@ class PointDrag:
         """A drag a test can make with a real mouse: a draggable point well inside the axes that a
         press on it grabs (no other point nearer), and where to take it, ``distance`` display pixels
         away in one of the four axis directions and still inside the axes.  Returns ``{"index",
-        "start", "end", "figure"}`` (positions in figure pixels, origin bottom left; the figure's
-        width and height in pixels) or None if no point can be dragged that far.
+        "start", "end", "figure", "start_data", "end_data", "pixels_per_unit"}``: positions in
+        figure pixels (origin bottom left), the figure's width and height in pixels, the two
+        positions in data coordinates and the axes' scale now (a view may refit its axes when the mouse lets go, so a
+        test compares where the point ends in data coordinates).  None if no point can be dragged
+        that far.
 
         >>> from matplotlib.figure import Figure
         >>> fig = Figure(figsize=(4, 3), dpi=100); ax = fig.add_subplot(); _ = ax.set_xlim(0, 10), ax.set_ylim(0, 10)
@@ -100,9 +103,21 @@ class PointDrag:
             for dx, dy in ((distance, 0.0), (-distance, 0.0), (0.0, distance), (0.0, -distance)):
                 if inside(x + dx, y + dy):
                     w, h = self.ax.figure.bbox.width, self.ax.figure.bbox.height
+                    inverse = self.ax.transData.inverted()
+                    end_data = inverse.transform((x + dx, y + dy))
+                    one = self.ax.transData.transform(pts[k] + 1.0) - self.ax.transData.transform(pts[k])
                     return {"index": k, "start": [float(x), float(y)], "end": [float(x + dx), float(y + dy)],
-                            "figure": [float(w), float(h)]}
+                            "figure": [float(w), float(h)], "start_data": [float(v) for v in pts[k]],
+                            "end_data": [float(v) for v in end_data],
+                            "pixels_per_unit": [float(abs(v)) for v in one]}
         return None
+
+    def position(self, index: int) -> list[float]:
+        """Where point ``index`` is now, in data coordinates."""
+        pts = np.asarray(self.get_points(), dtype=float).reshape(-1, 2)
+        if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or not 0 <= index < len(pts):
+            raise ValueError(f"index must be a point number in [0, {len(pts) - 1}]; got {index!r}")
+        return [float(v) for v in pts[int(index)]]
 
     def screen_position(self, index: int) -> list[float]:
         """Where point ``index`` is drawn now, in figure pixels (origin bottom left)."""

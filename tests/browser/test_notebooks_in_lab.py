@@ -40,8 +40,8 @@ def _goldman_plan(v):
 print(_json.dumps(_goldman_plan(_IV.find(UID))))
 del _goldman_plan
 """
-# Where point K of view UID is drawn now (figure pixels).
-_WHERE = "import json as _json; print(_json.dumps(_IV.find(UID).drag.screen_position(K)))"
+# Where point K of view UID is now (data coordinates).
+_WHERE = "import json as _json; print(_json.dumps(_IV.find(UID).drag.position(K)))"
 
 # ipympl draws its figure in .jupyter-matplotlib-canvas-div; pythreejs renderers are .jupyter-threejs.
 MPL = ".jupyter-matplotlib-canvas-div"
@@ -115,22 +115,30 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             drag_before, _ = wait_nonblank(canvas)
             start, end = plan["start"], plan["end"]
             length = float(np.hypot(end[0] - start[0], end[1] - start[1]))
-            unit = ((end[0] - start[0]) / length, (end[1] - start[1]) / length)
+            unit = np.array([end[0] - start[0], end[1] - start[1]]) / length
+
+            end_data, per_unit = np.array(plan["end_data"]), np.array(plan["pixels_per_unit"])
+            start_data = np.array(plan["start_data"])
+
+            def moved_by():
+                # where the point is, in pixels of the axes' scale when the drag began (data
+                # coordinates: a view may refit its axes once the mouse lets go)
+                now = np.array(json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip()))
+                return (now - start_data) * per_unit, (now - end_data) * per_unit
 
             def followed():
                 # the kernel handles the motion events one at a time: wait for the end of the drag,
                 # where the point must be under the mouse (to its sliders' steps: a few pixels)
-                now = json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip())
-                along = (now[0] - start[0]) * unit[0] + (now[1] - start[1]) * unit[1]
-                off = float(np.hypot(now[0] - end[0], now[1] - end[1]))
+                from_start, from_end = moved_by()
+                along, off = float(from_start @ unit), float(np.hypot(*from_end))
                 return (along, off) if off <= DRAG_TOLERANCE else None
 
             def missed(attempt):
                 # a press that missed moved nothing; a point that moved but not to the mouse is a bug
-                now = json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip())
-                assert np.hypot(now[0] - start[0], now[1] - start[1]) < 1.0, (
-                    f"{rel}: view {i}'s point {plan['index']} went to {now}, not to the mouse at {end} "
-                    f"(dragged from {start})")
+                from_start, from_end = moved_by()
+                assert np.hypot(*from_start) < 1.0, (
+                    f"{rel}: view {i}'s point {plan['index']} moved {from_start.round(1).tolist()} px, "
+                    f"ending {from_end.round(1).tolist()} px from the mouse")
 
             along, off = drag_until(page, canvas, lambda: (start, end, plan["figure"]), followed, timeout=45,
                                     on_miss=missed, message=f"point {plan['index']} of view {i} to follow the mouse")
