@@ -193,22 +193,42 @@ def _curves_pair(a, b, moderate: bool = False):
 # merging -- is many times faster there.  Each piece is subdivided once however many pairs it is
 # in (its halves are cached), corner guesses are tried only where a flat pair reaches the corner,
 # and at a tangency (a double root: Newton's steps only halve the error) a doubled step is taken
-# when it does better, which restores fast convergence there.
+# when it does better, which restores fast convergence there.  A pair that can touch at most once
+# (:func:`_may_touch`) is settled by a tangential contact found inside it rather than subdivided
+# until flat, and de Casteljau's steps for cubics and quadratics are written out (no lists).
 
 #: Curves with at most this many control points each take the scalar path.
 _SMALL = 8
+
+#: A pair of pieces whose chords make an angle with sine below this may hold a tangency: see
+#: :func:`_may_touch`.
+_TANGENT_SINE = 0.25
 
 
 class _Piece:
     """A piece of a curve: control points xs, ys (tuples), parameter interval [lo, hi], its box,
     and, once asked for, its (even) flatness and its two halves."""
 
-    __slots__ = ("xs", "ys", "lo", "hi", "x0", "x1", "y0", "y1", "_flat", "_halves")
+    __slots__ = ("xs", "ys", "lo", "hi", "x0", "x1", "y0", "y1", "_flat", "_halves", "_turn")
 
     def __init__(self, xs, ys, lo, hi):
         self.xs, self.ys, self.lo, self.hi = xs, ys, lo, hi
         self.x0, self.x1, self.y0, self.y1 = min(xs), max(xs), min(ys), max(ys)
-        self._flat = self._halves = None
+        self._flat = self._halves = self._turn = None
+
+    def turn(self) -> int:
+        """How the control polygon turns: 1 all left (or straight), -1 all right, 0 straight, 2 both ways."""
+        if self._turn is None:
+            xs, ys = self.xs, self.ys
+            left = right = False
+            for k in range(len(xs) - 2):
+                c = (xs[k + 1] - xs[k]) * (ys[k + 2] - ys[k + 1]) - (ys[k + 1] - ys[k]) * (xs[k + 2] - xs[k + 1])
+                if c > 0.0:
+                    left = True
+                elif c < 0.0:
+                    right = True
+            self._turn = 2 if left and right else 1 if left else -1 if right else 0
+        return self._turn
 
     def flat(self) -> float:
         """:func:`goldman_lib._kernels.flatness` (even) of this piece."""
@@ -231,7 +251,19 @@ class _Piece:
         if self._halves is None:
             mid = 0.5 * (self.lo + self.hi)
             xs, ys = self.xs, self.ys
-            if len(xs) == 3:             # quadratics and cubics inline: most of the work at a tangency
+            n = len(xs)
+            if n == 4:                   # cubics and quadratics inline: most of the work
+                a, b, c, d = xs
+                ab, bc, cd = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c, 0.5 * c + 0.5 * d
+                abc, bcd = 0.5 * ab + 0.5 * bc, 0.5 * bc + 0.5 * cd
+                m = 0.5 * abc + 0.5 * bcd
+                lx, rx = (a, ab, abc, m), (m, bcd, cd, d)
+                a, b, c, d = ys
+                ab, bc, cd = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c, 0.5 * c + 0.5 * d
+                abc, bcd = 0.5 * ab + 0.5 * bc, 0.5 * bc + 0.5 * cd
+                m = 0.5 * abc + 0.5 * bcd
+                ly, ry = (a, ab, abc, m), (m, bcd, cd, d)
+            elif n == 3:
                 a, b, c = xs
                 ab, bc = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c
                 m = 0.5 * ab + 0.5 * bc
@@ -279,9 +311,23 @@ def _halve(xs):
 def _point_and_tangent(xs, ys, t):
     """Curve point and derivative at t from one de Casteljau pyramid (the last leg is the tangent)."""
     n = len(xs) - 1
+    s = 1.0 - t
+    if n == 3:                           # the usual cubic and quadratic unrolled (the same arithmetic)
+        x0, x1, x2, x3 = xs
+        y0, y1, y2, y3 = ys
+        x0, x1, x2 = s * x0 + t * x1, s * x1 + t * x2, s * x2 + t * x3
+        y0, y1, y2 = s * y0 + t * y1, s * y1 + t * y2, s * y2 + t * y3
+        x0, x1 = s * x0 + t * x1, s * x1 + t * x2
+        y0, y1 = s * y0 + t * y1, s * y1 + t * y2
+        return s * x0 + t * x1, s * y0 + t * y1, 3 * (x1 - x0), 3 * (y1 - y0)
+    if n == 2:
+        x0, x1, x2 = xs
+        y0, y1, y2 = ys
+        x0, x1 = s * x0 + t * x1, s * x1 + t * x2
+        y0, y1 = s * y0 + t * y1, s * y1 + t * y2
+        return s * x0 + t * x1, s * y0 + t * y1, 2 * (x1 - x0), 2 * (y1 - y0)
     if n == 0:
         return xs[0], ys[0], 0.0, 0.0
-    s = 1.0 - t
     x, y = list(xs), list(ys)
     for m in range(n, 1, -1):
         for j in range(m):
@@ -311,6 +357,67 @@ def _nearly_parallel(p: _Piece, q: _Piece, sine: float = 0.1) -> bool:
     dax, day = p.xs[-1] - p.xs[0], p.ys[-1] - p.ys[0]
     dbx, dby = q.xs[-1] - q.xs[0], q.ys[-1] - q.ys[0]
     return abs(dax * dby - day * dbx) <= sine * ((dax * dax + day * day) * (dbx * dbx + dby * dby)) ** 0.5
+
+
+def _graph(xs, ys, ux, uy):
+    """The polygon xs, ys as a graph over the direction (ux, uy): None unless every leg points along
+    it (positive dot product) or every leg against it; else (sign, least slope, greatest slope)
+    with the legs' slopes against (ux, uy) -- by the hodograph's convex hull, the curve's slopes
+    lie between them."""
+    sign = 0
+    lo, hi = float("inf"), float("-inf")
+    for k in range(len(xs) - 1):
+        dx, dy = xs[k + 1] - xs[k], ys[k + 1] - ys[k]
+        d = dx * ux + dy * uy
+        if d > 0.0 and sign >= 0:
+            sign = 1
+        elif d < 0.0 and sign <= 0:
+            sign = -1
+        else:
+            return None
+        m = (dy * ux - dx * uy) / d
+        if m < lo:
+            lo = m
+        if m > hi:
+            hi = m
+    return sign, lo, hi
+
+
+def _may_touch(p: _Piece, q: _Piece) -> bool:
+    """Whether two pieces are graphs over one direction, one convex and the other concave, whose
+    slopes can be equal.
+
+    Along u, the sum of the two chords (oriented alike), a piece whose control polygon legs all
+    point one way is a graph y = f(x) over u; one whose polygon turns one way only is a convex arc
+    (variation diminishing: a line meets the curve no more often than its polygon), convex or
+    concave as a graph by the turn and the leg direction.  Then f - g is convex (or concave) where
+    both are defined, so the pieces meet at most twice, and once only if they meet tangentially
+    (a zero with zero slope is the extremum of f - g); they can meet tangentially only if the
+    ranges of slopes of their legs overlap.  A straight piece counts as convex and as concave.
+    """
+    tp, tq = p.turn(), q.turn()
+    if tp == 2 or tq == 2:
+        return False
+    ux, uy = p.xs[-1] - p.xs[0], p.ys[-1] - p.ys[0]
+    vx, vy = q.xs[-1] - q.xs[0], q.ys[-1] - q.ys[0]
+    if ux * vx + uy * vy < 0.0:
+        vx, vy = -vx, -vy
+    ux, uy = ux + vx, uy + vy
+    gp = _graph(p.xs, p.ys, ux, uy)
+    if gp is None:
+        return False
+    gq = _graph(q.xs, q.ys, ux, uy)
+    if gq is None:
+        return False
+    return tp * gp[0] * tq * gq[0] <= 0 and gp[1] <= gq[2] and gq[1] <= gp[2]
+
+
+def _tangential(ca, cb, s, t) -> bool:
+    """Whether the curves' tangents at a(s) and b(t) are parallel (sine below 1e-6)."""
+    pa = _point_and_tangent(ca[0], ca[1], s)
+    pb = _point_and_tangent(cb[0], cb[1], t)
+    cross = pa[2] * pb[3] - pa[3] * pb[2]
+    return abs(cross) <= 1e-6 * (pa[2] * pa[2] + pa[3] * pa[3]) ** 0.5 * (pb[2] * pb[2] + pb[3] * pb[3]) ** 0.5
 
 
 def _step2(a, b, c, d, f0, f1):
@@ -373,7 +480,7 @@ def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float,
     cb = (tuple(B[:, 0].tolist()), tuple(B[:, 1].tolist()))
     pad = 1e-12 * scale
     flat_tol = 1e-3 * scale
-    pairs = [(_Piece(ca[0], ca[1], 0.0, 1.0), _Piece(cb[0], cb[1], 0.0, 1.0))]
+    pairs = [(_Piece(ca[0], ca[1], 0.0, 1.0), _Piece(cb[0], cb[1], 0.0, 1.0), True)]   # (p, q, may try Newton)
     guesses = {}                       # start (s, t) -> the parameter box of its flat pair
     extra = {}                         # more starts, in the flat pairs whose chords are nearly parallel
     reach = set()                      # corners of the unit square that a flat pair reaches
@@ -381,14 +488,35 @@ def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float,
     if not (first[0].x0 <= first[1].x1 + pad and first[1].x0 <= first[0].x1 + pad
             and first[0].y0 <= first[1].y1 + pad and first[1].y0 <= first[0].y1 + pad):
         pairs = []
+    found = []                         # Newton's solutions (s, t, residual)
+    contacts = []                      # those that are tangential contacts
+    margin = 1e-9
     for level in range(max_depth + 1):
         kept = pairs                   # every pair here has overlapping boxes
-        flat = [p.flat() <= flat_tol and q.flat() <= flat_tol for p, q in kept]
+        flat = [p.flat() <= flat_tol and q.flat() <= flat_tol for p, q, _ in kept]
         if level == max_depth or 4 * flat.count(False) > max_pairs:
             flat = [True] * len(kept)
         pairs = []
         append = pairs.append
-        for (p, q), f in zip(kept, flat):
+        for (p, q, may_try), f in zip(kept, flat):
+            if not f and (may_try or contacts) and _nearly_parallel(p, q, _TANGENT_SINE) \
+                    and _may_touch(p, q):
+                # a tangency in the making: nearly parallel chords, and the pieces meet at most
+                # twice, once only at a tangential contact.  A contact inside the pair settles it
+                # (no more subdivision there): one found before, or Newton's from the chords.
+                lo_s, hi_s, lo_t, hi_t = p.lo - margin, p.hi + margin, q.lo - margin, q.hi + margin
+                if any(lo_s <= u <= hi_s and lo_t <= v <= hi_t for u, v in contacts):
+                    continue
+                if may_try:
+                    may_try = False            # nor will the children of this pair
+                    s, t = _chord_guess(p, q)
+                    r = _newton_small(ca, cb, s, t, scale)
+                    if r is not None and r[2] <= tol_abs:
+                        found.append(r)
+                        if _tangential(ca, cb, r[0], r[1]):
+                            contacts.append(r[:2])
+                            if lo_s <= r[0] <= hi_s and lo_t <= r[1] <= hi_t:
+                                continue
             if f:
                 s, t = _chord_guess(p, q)
                 box = (p.lo, p.hi, q.lo, q.hi)
@@ -409,7 +537,7 @@ def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float,
                 for c in p.halves():
                     for d in q.halves():
                         if c.x0 <= d.x1 + pad and d.x0 <= c.x1 + pad and c.y0 <= d.y1 + pad and d.y0 <= c.y1 + pad:
-                            append((c, d))
+                            append((c, d, may_try))
         if not pairs:
             break
     for c in reach:
@@ -425,9 +553,6 @@ def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float,
         pb = _point_and_tangent(cb[0], cb[1], st[1])
         return (pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2
 
-    found = []
-    contacts = []
-    margin = 1e-9
     starts = sorted(guesses, key=lambda st: (gap_at(st), st))
     starts += sorted(st for st in extra if st not in guesses)
     guesses.update((st, box) for st, box in extra.items() if st not in guesses)
@@ -438,10 +563,7 @@ def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float,
         r = _newton_small(ca, cb, s, t, scale)
         if r is not None and r[2] <= tol_abs:
             found.append(r)
-            pa = _point_and_tangent(ca[0], ca[1], r[0])
-            pb = _point_and_tangent(cb[0], cb[1], r[1])
-            cross = pa[2] * pb[3] - pa[3] * pb[2]
-            if abs(cross) <= 1e-6 * (pa[2] * pa[2] + pa[3] * pa[3]) ** 0.5 * (pb[2] * pb[2] + pb[3] * pb[3]) ** 0.5:
+            if _tangential(ca, cb, r[0], r[1]):
                 contacts.append(r[:2])
     # :func:`_merge_solutions` on floats: best residual first, one solution per cluster
     found.sort(key=lambda r: r[2])
@@ -487,7 +609,13 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     chords are nearly parallel also starts Newton from the corners of its parameter box (two
     close crossings can share one flat pair), Newton takes the doubled step where the residual
     only quarters (a tangency), and a tangential contact once found is not polished again from
-    the neighbouring pairs that all contain it.
+    the neighbouring pairs that all contain it.  A tangency is also cut short before its pieces
+    are flat (§25.3.1 would halve them level after level, four pairs round the contact at every
+    level): a pair whose chords are nearly parallel and whose pieces bend apart -- graphs over
+    one direction, one convex and one concave, with slopes that can agree -- meets at most twice,
+    and only once if it meets tangentially, so Newton is tried on it once (and on none of its
+    descendants); a tangential contact inside the pair ends the search there, and settles every
+    other such pair round it.
 
     a: (n+1, 2), b: (m+1, 2) control points.  tol: positive float, how close (relative to the
     size of the control points, at least 1) the curves must come to count as meeting.
