@@ -412,14 +412,6 @@ def _may_touch(p: _Piece, q: _Piece) -> bool:
     return tp * gp[0] * tq * gq[0] <= 0 and gp[1] <= gq[2] and gq[1] <= gp[2]
 
 
-def _tangential(ca, cb, s, t) -> bool:
-    """Whether the curves' tangents at a(s) and b(t) are parallel (sine below 1e-6)."""
-    pa = _point_and_tangent(ca[0], ca[1], s)
-    pb = _point_and_tangent(cb[0], cb[1], t)
-    cross = pa[2] * pb[3] - pa[3] * pb[2]
-    return abs(cross) <= 1e-6 * (pa[2] * pa[2] + pa[3] * pa[3]) ** 0.5 * (pb[2] * pb[2] + pb[3] * pb[3]) ** 0.5
-
-
 def _step2(a, b, c, d, f0, f1):
     """:func:`_solve2` for one 2x2 system [[a, b], [c, d]] step = -J^+ F."""
     det = a * d - b * c
@@ -437,7 +429,9 @@ def _step2(a, b, c, d, f0, f1):
 
 
 def _newton_small(A, B, s, t, scale, iterations=100):
-    """:func:`_newton_pairs` for one start on plain floats; None for a start dropped as hopeless.
+    """:func:`_newton_pairs` for one start on plain floats: ``(s, t, residual, tangential)``, or None
+    for a start dropped as hopeless; ``tangential`` says whether the curves' tangents at the end
+    are parallel (sine below 1e-6).
 
     After a step that cut the residual by less than 5 (a tangency: the residual only quarters per
     step), the doubled step is tried too and kept if it meets better -- Newton's method for a
@@ -470,14 +464,14 @@ def _newton_small(A, B, s, t, scale, iterations=100):
         s, t, pa, pb, f0, f1, res = ns, nt, pa2, pb2, g0, g1, new_res
         if moved <= 1e-15:
             break
-    return s, t, res
+    cross = pa[2] * pb[3] - pa[3] * pb[2]
+    tangential = abs(cross) <= 1e-6 * (pa[2] * pa[2] + pa[3] * pa[3]) ** 0.5 * (pb[2] * pb[2] + pb[3] * pb[3]) ** 0.5
+    return s, t, res, tangential
 
 
-def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float, max_depth: int,
-                     max_pairs: int = 20000) -> np.ndarray:
-    """:func:`intersect_curves` on plain floats for curves of 2 to :data:`_SMALL` points each."""
-    ca = (tuple(A[:, 0].tolist()), tuple(A[:, 1].tolist()))
-    cb = (tuple(B[:, 0].tolist()), tuple(B[:, 1].tolist()))
+def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_pairs: int = 20000) -> np.ndarray:
+    """:func:`intersect_curves` on plain floats for curves of 2 to :data:`_SMALL` points each,
+    given as ``(xs, ys)`` tuples of their control points' coordinates."""
     pad = 1e-12 * scale
     flat_tol = 1e-3 * scale
     pairs = [(_Piece(ca[0], ca[1], 0.0, 1.0), _Piece(cb[0], cb[1], 0.0, 1.0), True)]   # (p, q, may try Newton)
@@ -513,7 +507,7 @@ def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float,
                     r = _newton_small(ca, cb, s, t, scale)
                     if r is not None and r[2] <= tol_abs:
                         found.append(r)
-                        if _tangential(ca, cb, r[0], r[1]):
+                        if r[3]:
                             contacts.append(r[:2])
                             if lo_s <= r[0] <= hi_s and lo_t <= r[1] <= hi_t:
                                 continue
@@ -563,12 +557,12 @@ def _intersect_small(A: np.ndarray, B: np.ndarray, tol_abs: float, scale: float,
         r = _newton_small(ca, cb, s, t, scale)
         if r is not None and r[2] <= tol_abs:
             found.append(r)
-            if _tangential(ca, cb, r[0], r[1]):
+            if r[3]:
                 contacts.append(r[:2])
     # :func:`_merge_solutions` on floats: best residual first, one solution per cluster
     found.sort(key=lambda r: r[2])
     kept = []
-    for s, t, _ in found:
+    for s, t, _, _ in found:
         for u, v in kept:
             gap = max(abs(s - u), abs(t - v))
             if gap <= 1e-9:
@@ -636,12 +630,17 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     A, B = _curves_pair(a, b)
     tol = _tolerance(tol)
     max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=60)
-    big_a, big_b = float(np.abs(A).max()), float(np.abs(B).max())
+    small = 2 <= len(A) <= _SMALL and 2 <= len(B) <= _SMALL
+    if small:                          # plain floats from here on (cheaper than numpy's reductions)
+        ca, cb = tuple(map(tuple, A.T.tolist())), tuple(map(tuple, B.T.tolist()))
+        big_a, big_b = max(map(abs, ca[0] + ca[1])), max(map(abs, cb[0] + cb[1]))
+    else:
+        big_a, big_b = float(np.abs(A).max()), float(np.abs(B).max())
     if max(big_a, big_b) > MAX_COORDINATE:
         _moderate(A, "a"), _moderate(B, "b")          # raises, naming the curve
     scale = max(1.0, big_a, big_b)
-    if 2 <= len(A) <= _SMALL and 2 <= len(B) <= _SMALL:
-        return _intersect_small(A, B, tol * scale, scale, max_depth)
+    if small:
+        return _intersect_small(ca, cb, tol * scale, scale, max_depth)
     guesses = [np.array([[0.0, 0.0], [0.0, 1.0], [1.0, 0.0], [1.0, 1.0]])]
     for _, pa, pb, ia, ib, flat in _pair_levels(A, B, pad=1e-12 * scale, flat_tol=1e-3 * scale,
                                                   max_depth=max_depth, max_pairs=20000):
