@@ -359,6 +359,28 @@ def _nearly_parallel(p: _Piece, q: _Piece, sine: float = 0.1) -> bool:
     return abs(dax * dby - day * dbx) <= sine * ((dax * dax + day * day) * (dbx * dbx + dby * dby)) ** 0.5
 
 
+def _fat_line_apart(p: _Piece, q: _Piece, pad: float) -> bool:
+    """Whether q's control points all lie on one side of p's fat line (the band round p's chord
+    that holds p's control points), farther than ``pad``: then, by the convex hull property, the
+    pieces do not meet (the fat-line test of Bezier clipping, Sederberg and Nishita)."""
+    xs, ys = p.xs, p.ys
+    nx, ny = ys[0] - ys[-1], xs[-1] - xs[0]              # normal of the chord (not unit)
+    size = (nx * nx + ny * ny) ** 0.5
+    if size == 0.0:
+        return False
+    x0, y0 = xs[0], ys[0]
+    lo = hi = 0.0
+    for k in range(1, len(xs) - 1):
+        d = (xs[k] - x0) * nx + (ys[k] - y0) * ny
+        if d < lo:
+            lo = d
+        elif d > hi:
+            hi = d
+    gap = pad * size
+    ds = [(x - x0) * nx + (y - y0) * ny for x, y in zip(q.xs, q.ys)]
+    return min(ds) > hi + gap or max(ds) < lo - gap
+
+
 def _graph(xs, ys, ux, uy):
     """The polygon xs, ys as a graph over the direction (ux, uy): None unless every leg points along
     it (positive dot product) or every leg against it; else (sign, least slope, greatest slope)
@@ -428,10 +450,11 @@ def _step2(a, b, c, d, f0, f1):
     return -(m11 * g0 - m01 * g1) / mdet, -(m00 * g1 - m01 * g0) / mdet
 
 
-def _newton_small(A, B, s, t, scale, iterations=100):
+def _newton_small(A, B, s, t, scale, iterations=100, patience=0):
     """:func:`_newton_pairs` for one start on plain floats: ``(s, t, residual, tangential)``, or None
     for a start dropped as hopeless; ``tangential`` says whether the curves' tangents at the end
-    are parallel (sine below 1e-6).
+    are parallel (sine below 1e-6).  With ``patience`` > 0 the start is also dropped after that
+    many steps in a row that do not halve the residual (the curves come close but do not meet).
 
     After a step that cut the residual by less than 5 (a tangency: the residual only quarters per
     step), the doubled step is tried too and kept if it meets better -- Newton's method for a
@@ -441,6 +464,7 @@ def _newton_small(A, B, s, t, scale, iterations=100):
     pb = _point_and_tangent(bx, by, t)
     f0, f1 = pa[0] - pb[0], pa[1] - pb[1]
     res = (f0 * f0 + f1 * f1) ** 0.5
+    stalled = 0
     for it in range(iterations):
         if it == 12 and res > 1e-3 * scale:
             return None
@@ -460,6 +484,10 @@ def _newton_small(A, B, s, t, scale, iterations=100):
             res3 = (h0 * h0 + h1 * h1) ** 0.5
             if res3 < new_res:
                 ns, nt, pa2, pb2, g0, g1, new_res = s2, t2, pa3, pb3, h0, h1, res3
+        if patience:
+            stalled = stalled + 1 if new_res > 0.5 * res else 0
+            if stalled >= patience:
+                return None
         moved = max(abs(ns - s), abs(nt - t))
         s, t, pa, pb, f0, f1, res = ns, nt, pa2, pb2, g0, g1, new_res
         if moved <= 1e-15:
@@ -503,8 +531,10 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
                     continue
                 if may_try:
                     may_try = False            # nor will the children of this pair
+                    if _fat_line_apart(p, q, pad) or _fat_line_apart(q, p, pad):
+                        continue               # a near miss: the pieces do not meet
                     s, t = _chord_guess(p, q)
-                    r = _newton_small(ca, cb, s, t, scale)
+                    r = _newton_small(ca, cb, s, t, scale, iterations=20, patience=2)
                     if r is not None and r[2] <= tol_abs:
                         found.append(r)
                         if r[3]:
@@ -608,8 +638,11 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     level): a pair whose chords are nearly parallel and whose pieces bend apart -- graphs over
     one direction, one convex and one concave, with slopes that can agree -- meets at most twice,
     and only once if it meets tangentially, so Newton is tried on it once (and on none of its
-    descendants); a tangential contact inside the pair ends the search there, and settles every
-    other such pair round it.
+    descendants; a near miss is dropped first if the fat lines of Bezier clipping show the pieces
+    apart, and Newton gives up after two steps in a row that do not halve the gap); a tangential
+    contact inside the pair ends the search there, and settles every other such pair round it.
+    Near a tangency this also finds both of two crossings a hair apart that the flat pairs alone
+    can miss.
 
     a: (n+1, 2), b: (m+1, 2) control points.  tol: positive float, how close (relative to the
     size of the control points, at least 1) the curves must come to count as meeting.

@@ -192,3 +192,42 @@ def test_may_touch_needs_opposite_bending_and_common_slopes():
     assert not bi._may_touch(cap, higher_cap)                   # both concave: f - g neither convex nor concave
     assert not bi._may_touch(s_curve, line)
     assert not bi._may_touch(flat_cap, rising)                  # the slopes never agree: no tangency
+
+
+NEAR_TANGENT_PAIRS = [
+    # a parabola arc against its mirror image across a tangent line, nudged: two crossings a few
+    # 1e-4 to 1e-3 apart in parameter, both distinct (the curves part by more than tol between them)
+    ([[0.087252158, 0.124659212], [0.735076899, -0.984489902], [-0.86703424, 0.564641087]],
+     [[0.516641252, 0.09493112], [-0.27785106, -0.91436123], [1.522454555, 0.399208586]]),
+    ([[0.559493648, 0.175837799], [0.93836753, -0.201627526], [0.794196276, 0.003809856]],
+     [[1.064957156, -0.351467899], [0.703847846, 0.043026157], [0.903005974, -0.109701995]]),
+    ([[-0.450664991, 0.933598927], [0.674675147, -0.741877365], [0.691779731, -0.357794835]],
+     [[0.171176272, -2.115142031], [0.550421198, -0.132777326], [0.716606917, -0.479469529]]),
+    # a cubic and a line close to one of its tangents
+    ([[-0.305093148, 0.296558163], [0.488721742, -0.787461004], [0.689867492, 0.32558751], [-0.893802078, -0.494662344]],
+     [[0.289987555, -0.347997477], [0.308521239, -0.02687187]]),
+]
+
+
+@pytest.mark.parametrize("a, b", NEAR_TANGENT_PAIRS)
+def test_near_tangent_pairs_against_the_bezier_package(a, b):
+    got = bezier.intersect_curves(a, b)
+    ref = _reference(a, b)
+    assert got.shape == ref.shape == (2, 2), (got, ref)
+    np.testing.assert_allclose(got, ref, atol=1e-9)
+    points_a, points_b = bezier.de_casteljau(a, got[:, 0]), bezier.de_casteljau(b, got[:, 1])
+    assert np.abs(points_a - points_b).max() < 1e-12
+    halfway = (got[0] + got[1]) / 2                            # two crossings, not one contact
+    assert np.abs(bezier.de_casteljau(a, halfway[:1]) - bezier.de_casteljau(b, halfway[1:])).max() > 1e-9
+
+
+def test_fat_line_apart():
+    P = bi._Piece
+    cap = P((0.0, 0.5, 1.0), (0.0, 1.0, 0.0), 0.0, 1.0)          # fat line: 0 <= y <= 1 (control points)
+    below = P((0.0, 1.0), (-0.1, -0.2), 0.0, 1.0)
+    crossing = P((0.0, 1.0), (-0.1, 0.2), 0.0, 1.0)
+    inside = P((0.2, 0.8), (0.9, 0.9), 0.0, 1.0)              # within the fat line, above the curve itself
+    assert bi._fat_line_apart(cap, below, 1e-12)
+    assert not bi._fat_line_apart(cap, crossing, 1e-12)
+    assert not bi._fat_line_apart(cap, inside, 1e-12)          # the test is conservative
+    assert not bi._fat_line_apart(cap, below, 0.2)             # within the padding
