@@ -521,15 +521,15 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
         pairs = []
         append = pairs.append
         for (p, q, may_try), f in zip(kept, flat):
-            if not f and (may_try or contacts) and _nearly_parallel(p, q, _TANGENT_SINE) \
-                    and _may_touch(p, q):
-                # a tangency in the making: nearly parallel chords, and the pieces meet at most
-                # twice, once only at a tangential contact.  A contact inside the pair settles it
-                # (no more subdivision there): one found before, or Newton's from the chords.
-                lo_s, hi_s, lo_t, hi_t = p.lo - margin, p.hi + margin, q.lo - margin, q.hi + margin
-                if any(lo_s <= u <= hi_s and lo_t <= v <= hi_t for u, v in contacts):
-                    continue
-                if may_try:
+            if not f:
+                if contacts and any(p.lo - margin <= u <= p.hi + margin and q.lo - margin <= v <= q.hi + margin
+                                    for u, v in contacts):
+                    if _may_touch(p, q):
+                        continue               # a tangential contact found before settles this pair too
+                elif may_try and _nearly_parallel(p, q, _TANGENT_SINE) and _may_touch(p, q):
+                    # a tangency in the making: nearly parallel chords, and the pieces meet at most
+                    # twice, once only at a tangential contact.  Try Newton from the chords once;
+                    # a tangential contact inside the pair settles it (no more subdivision there)
                     may_try = False            # nor will the children of this pair
                     if _fat_line_apart(p, q, pad) or _fat_line_apart(q, p, pad):
                         continue               # a near miss: the pieces do not meet
@@ -539,7 +539,7 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
                         found.append(r)
                         if r[3]:
                             contacts.append(r[:2])
-                            if lo_s <= r[0] <= hi_s and lo_t <= r[1] <= hi_t:
+                            if p.lo - margin <= r[0] <= p.hi + margin and q.lo - margin <= r[1] <= q.hi + margin:
                                 continue
             if f:
                 s, t = _chord_guess(p, q)
