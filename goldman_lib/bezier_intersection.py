@@ -13,6 +13,8 @@ which calls :func:`intersect_curves`).  Every public name here is also importabl
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from goldman_lib._kernels import flatness as _flatness, split as _split
@@ -195,7 +197,9 @@ def _curves_pair(a, b, moderate: bool = False):
 # and at a tangency (a double root: Newton's steps only halve the error) a doubled step is taken
 # when it does better, which restores fast convergence there.  A pair that can touch at most once
 # (:func:`_may_touch`) is settled by a tangential contact found inside it rather than subdivided
-# until flat, and de Casteljau's steps for cubics and quadratics are written out (no lists).
+# until flat, and de Casteljau's steps for cubics and quadratics are written out (no lists).  A
+# small float64 array is checked on plain floats too (:func:`_small_floats`): numpy's checks cost
+# microseconds each, as much as the whole search at a tangency.
 
 #: Curves with at most this many control points each take the scalar path.
 _SMALL = 8
@@ -497,6 +501,23 @@ def _newton_small(A, B, s, t, scale, iterations=100, patience=0):
     return s, t, res, tangential
 
 
+def _small_floats(P):
+    """For :func:`intersect_curves`: ``((xs, ys), size)`` -- coordinate tuples and the largest
+    magnitude -- if ``P`` is a float64 (k, 2) array of 2 to :data:`_SMALL` finite points within
+    :data:`MAX_COORDINATE`, the checks of :func:`_curves_pair` passed without their numpy calls
+    (microseconds each on a few points); None for anything else, which the general checks take."""
+    if type(P) is not np.ndarray or P.dtype != np.float64 or P.ndim != 2 or P.shape[1] != 2 \
+            or not 2 <= P.shape[0] <= _SMALL:
+        return None
+    xs, ys = P.T.tolist()
+    if not math.isfinite(sum(xs) + sum(ys)):                # a nan or an infinity anywhere
+        return None
+    big = max(map(abs, xs + ys))
+    if big > MAX_COORDINATE:
+        return None
+    return (tuple(xs), tuple(ys)), big
+
+
 def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_pairs: int = 20000) -> np.ndarray:
     """:func:`intersect_curves` on plain floats for curves of 2 to :data:`_SMALL` points each,
     given as ``(xs, ys)`` tuples of their control points' coordinates."""
@@ -660,9 +681,19 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     >>> intersect_curves([[0, 0], [1, 0]], [[0, 1], [1, 1]]).shape
     (0, 2)
     """
-    A, B = _curves_pair(a, b)
-    tol = _tolerance(tol)
-    max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=60)
+    fa = _small_floats(a)
+    fb = _small_floats(b) if fa else None
+    if fb:                             # valid small float arrays: the same checks, on plain floats
+        (ca, big_a), (cb, big_b) = fa, fb
+    else:
+        A, B = _curves_pair(a, b)
+    if type(tol) is not float or not 0.0 < tol < math.inf:
+        tol = _tolerance(tol)
+    if type(max_depth) is not int or not 1 <= max_depth <= 60:
+        max_depth = as_int(max_depth, "max_depth", minimum=1, maximum=60)
+    if fb:
+        scale = max(1.0, big_a, big_b)
+        return _intersect_small(ca, cb, tol * scale, scale, max_depth)
     small = 2 <= len(A) <= _SMALL and 2 <= len(B) <= _SMALL
     if small:                          # plain floats from here on (cheaper than numpy's reductions)
         ca, cb = tuple(map(tuple, A.T.tolist())), tuple(map(tuple, B.T.tolist()))

@@ -231,3 +231,28 @@ def test_fat_line_apart():
     assert not bi._fat_line_apart(cap, crossing, 1e-12)
     assert not bi._fat_line_apart(cap, inside, 1e-12)          # the test is conservative
     assert not bi._fat_line_apart(cap, below, 0.2)             # within the padding
+
+
+@pytest.mark.parametrize("a, b, kwargs, error, match", [
+    (np.array([[0, np.nan], [1, 2.0]]), np.array([[0, 0.75], [2, 0.75]]), {}, ValueError, r"a must be finite; a\[0, 1\] is nan"),
+    (np.array([[0, 0], [1, 2.0]]), np.array([[0, 1], [1, np.inf]]), {}, ValueError, r"b must be finite; b\[1, 1\] is inf"),
+    (np.array([[0, 0], [1, 2e200]]), np.array([[0, 1], [1, 0.0]]), {}, ValueError, "a is too large in magnitude"),
+    (np.array([[0, 0], [1, 2.0]]), np.array([[0, 1], [1, 0.0]]), {"tol": float("nan")}, ValueError, "tol must be finite"),
+    (np.array([[0, 0], [1, 2.0]]), np.array([[0, 1], [1, 0.0]]), {"tol": 0.0}, ValueError, "tol must be positive"),
+    (np.array([[0, 0], [1, 2.0]]), np.array([[0, 1], [1, 0.0]]), {"max_depth": True}, TypeError, "max_depth must be an integer"),
+    (np.array([[0, 0], [1, 2.0]]), np.array([[0, 1], [1, 0.0]]), {"max_depth": 61}, ValueError, "max_depth must be <= 60"),
+])
+def test_float_arrays_are_checked_like_any_input(a, b, kwargs, error, match):
+    """Small float64 arrays skip numpy's checks for the same checks on plain floats; a bad one
+    still gets the general message naming the parameter."""
+    with pytest.raises(error, match=match):
+        bezier.intersect_curves(a, b, **kwargs)
+
+
+def test_float_arrays_and_lists_give_the_same_answer():
+    rng = np.random.default_rng(12)
+    for _ in range(20):
+        a, b = rng.uniform(0, 1, (4, 2)), rng.uniform(0, 1, (3, 2))
+        fast = bezier.intersect_curves(a, b)
+        np.testing.assert_array_equal(fast, bezier.intersect_curves(a.tolist(), b.tolist()))
+        np.testing.assert_array_equal(fast, bezier.intersect_curves(a, b, tol=np.float64(1e-10), max_depth=np.int64(40)))
