@@ -304,5 +304,7 @@ def pseudoperspective_view(eye_y: float = 1.0, eye_z: float = 0.0, plane_z: floa
     controls = {"eye_y": float_slider("eye y", eye_y, -2.0, 4.0, 0.1),
                 "eye_z": float_slider("eye z", eye_z, -3.0, 6.0, 0.1),
                 "plane_z": float_slider("plane z", plane_z, -3.0, 10.0, 0.1)}
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="perspective versus pseudoperspective (side view)")
+    style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+    return view

@@ -218,5 +218,6 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
                            update=update, figure=fig, static=static,
                            title="§23.5 radiosity of a Cornell box, iteration by iteration")
     light.drag_in(view, ax_map, plane="xy")
+    style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
     view.scene, view.light = scene, light
     return view
