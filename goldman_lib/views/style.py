@@ -166,7 +166,8 @@ def pin_layout(fig) -> None:
     >>> ax.xaxis._autolabelpos, ax._autotitlepos
     (False, False)
     """
-    fig.canvas.draw()           # matplotlib places titles and labels while drawing
+    fig.draw_without_rendering()   # matplotlib places titles and labels while drawing (not on the
+                                   # canvas: an ipympl canvas would send a picture before it is shown)
     for ax in fig.axes:
         to_axes = ax.transAxes.inverted()
         for axis in (ax.xaxis, ax.yaxis):

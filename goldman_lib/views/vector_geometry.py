@@ -303,6 +303,11 @@ def _rgba(hex_colour: str) -> np.ndarray:
     return np.array(to_rgba(hex_colour))
 
 
+def _rgba_bytes(rgba) -> np.ndarray:
+    """RGBA floats in [0, 1] as the bytes 0..255 an image is drawn with."""
+    return np.round(np.asarray(rgba, float) * 255).astype(np.uint8)
+
+
 def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: float = 3.5) -> InteractiveView:
     """The inside-outside map of a polygon (Goldman §11.7): every pixel of a ``grid`` x ``grid``
     image over ``[-box, box]²`` is coloured by its winding number
@@ -324,11 +329,13 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
     xs = np.linspace(-box, box, grid)
     gx, gy = np.meshgrid(xs, xs)
     pixels = np.stack([gx, gy], axis=-1)
-    table = np.array([_rgba(WINDING_COLOURS[k]) for k in range(-3, 4)])
-    differ_rgba, inside_rgba = _rgba(_DIFFER), _rgba(WINDING_COLOURS[1])
+    # the colours as the bytes Agg draws (an RGBA float image is converted to them at every redraw)
+    table = _rgba_bytes([_rgba(WINDING_COLOURS[k]) for k in range(-3, 4)])
+    differ_rgba, inside_rgba = _rgba_bytes(_rgba(_DIFFER)), _rgba_bytes(_rgba(WINDING_COLOURS[1]))
+    blank = np.full((grid, grid, 4), 255, dtype=np.uint8)
 
     fig, ax = style.new_axes()
-    image = ax.imshow(np.ones((grid, grid, 4)), extent=(-box, box, -box, box), origin="lower",
+    image = ax.imshow(blank, extent=(-box, box, -box, box), origin="lower",
                       interpolation="nearest", zorder=0)
     (outline,) = ax.plot([], [], "-", color="#2b2b2b", linewidth=1.4, zorder=2)
     (vertices,) = ax.plot([], [], "o", color=style.PALETTE["control"], markersize=7, zorder=3)
@@ -352,6 +359,8 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
         controls[f"x{k}"] = float_slider(f"x{k}", float(x), -box, box, 0.05)
         controls[f"y{k}"] = float_slider(f"y{k}", float(y), -box, box, 0.05)
 
+    maps: dict = {}   # the polygon's pixel maps (moving the query point Q does not change them)
+
     def update(mode, qx, qy, **coords):
         pts = np.array([[coords[f"x{k}"], coords[f"y{k}"]] for k in range(n)], dtype=float)
         q = np.array([qx, qy], dtype=float)
@@ -363,15 +372,20 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
         qmark.set_data([qx], [qy])
         ray.set_data([qx, box], [qy, qy])
         try:
-            wind = vg.winding_number(pts, pixels)
-            odd = vg.ray_casting_inside(pts, pixels)
+            key = pts.tobytes()
+            if maps.get("key") != key:
+                maps.clear()
+                maps["wind"] = vg.winding_number(pts, pixels)
+                maps["odd"] = vg.ray_casting_inside(pts, pixels)
+                maps["key"] = key
+            wind, odd = maps["wind"], maps["odd"]
             crossings, signs = vg.ray_crossings(pts, q)
             w_q = int(vg.winding_number(pts, q))
             odd_q = bool(vg.ray_casting_inside(pts, q))
         except ValueError as exc:   # fewer than three distinct vertices
             ups.set_data([], [])
             downs.set_data([], [])
-            image.set_data(np.ones((grid, grid, 4)))
+            image.set_data(blank)
             return {"polygon": pts, "status": f"no polygon to test: {exc}"}
         if mode == "winding":
             rgba = table[np.clip(wind, -3, 3) + 3]
@@ -403,6 +417,7 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
                            title="inside or outside? winding number and ray casting", arrange=arrange, side=True)
     view.ax = ax
     drag_sliders(view, ax, [(f"x{k}", f"y{k}") for k in range(n)] + [("qx", "qy")])
+    style.pin_layout(fig)       # fixed limits: the title need not be placed again at each redraw
     return view
 
 
