@@ -156,8 +156,8 @@ def pin_layout(fig) -> None:
     them now, so that a redraw does not place them again.
 
     Matplotlib re-measures the tick labels of every axes at every draw to place each title (above
-    any top tick labels) and each axis label (clear of the tick labels): a third of the redraw of a
-    small figure.  A view whose limits and tick labels do not change with its sliders calls this
+    any top tick labels) and each axis label (clear of the tick labels): up to a third of the redraw
+    of a small figure.  A view whose limits and tick labels do not change with its sliders calls this
     once, after ``tight_layout``; the picture is the same (the positions are kept in axes
     coordinates, so they also hold at another dpi).  Not for views that rescale their axes.
 
@@ -176,11 +176,9 @@ def pin_layout(fig) -> None:
                 continue
             display = label.get_transform().transform(label.get_position())
             axis.set_label_coords(*to_axes.transform(display))
-        titles = (ax.title, ax._left_title, ax._right_title)
-        ys = [t.get_position()[1] for t in titles]
-        for title, y in zip(titles, ys):
-            title.set_y(y)
-        ax._autotitlepos = False   # what ``set_title(..., y=...)`` does: keep the titles where they are
+        # what ``set_title(..., y=...)`` does (without resetting the titles' fonts): the titles stay
+        # where they are, also when their text changes
+        ax._autotitlepos = False
 
 
 __all__ += ["pin_layout"]
