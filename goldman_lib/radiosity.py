@@ -684,9 +684,10 @@ class ShootingOperators:
 def shooting_operators(F, rho, area, update_residual=True) -> ShootingOperators:
     """The emission-independent part of :func:`progressive_refinement` for form factors ``F``
     ``(n, n)``, reflectances ``rho`` (``(n,)`` or ``(n, c)``, the shape of the emission to be shot)
-    and patch areas ``area`` ``(n,)``.  With ``update_residual`` (the default) it also forms the
-    residual updates ``change`` (``n^3`` work per channel, ``n^2`` numbers per channel kept), which
-    pays when many shots are made or the scene is solved for several lights.
+    and patch areas ``area`` ``(n,)``: ``n^2`` numbers per channel.  With ``update_residual`` (the
+    default) it also forms the residual updates ``change`` (``n^3`` work and ``n^2`` more numbers per
+    channel), which pays when many shots are made or the scene is solved for several lights.  Bounded
+    by the work budget (``MAX_ITEMS`` numbers kept).
 
     >>> ops = shooting_operators([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 1])
     >>> ops.received.tolist()                     # rho_j F_ji: patch 1 gets 0.25 per unit shot from 0
@@ -704,9 +705,8 @@ def shooting_operators(F, rho, area, update_residual=True) -> ShootingOperators:
     if np.any(rho < 0) or np.any(rho > 1):
         raise ValueError("rho must be a reflectance in [0, 1]")
     channels = 1 if rho.ndim == 1 else rho.shape[1]
-    if update_residual:
-        within_budget(n, "F", cost=lambda m: m * m * channels * 3, what="the shooting operators",
-                      unit="numbers", limit=MAX_ITEMS)
+    within_budget(n, "F", cost=lambda m: m * m * channels * (3 if update_residual else 1),
+                  what="the shooting operators", unit="numbers", limit=MAX_ITEMS)
     shoot = F * (A[:, None] / A[None, :])                                    # shoot[i, j] = F_ji = A_i F_ij / A_j
     received_by = np.ascontiguousarray((A[None, :] * F.T) / A[:, None])     # [j, i] = A_i F_ij / A_j
     if rho.ndim == 1:
@@ -759,16 +759,22 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
     tol = as_tolerance(tol)
     channels = 1 if E.ndim == 1 else E.shape[1]
     kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
-    if operators is None:
+    if operators is None and len(F) <= 600 and kmax > 2 * len(F):
         # The residual after a shot follows from the one before in O(n) (ShootingOperators.change),
         # formed once (n^3) when up to 600 patches may shoot more than 2n times; otherwise each shot
         # pays a matrix-vector product.
-        operators = shooting_operators(F, rho, A, update_residual=len(F) <= 600 and kmax > 2 * len(F))
+        operators = shooting_operators(F, rho, A)
+    if operators is None:                                 # what a shot sends, formed shot by shot
+        shoot = F * (A[:, None] / A[None, :])             # shoot[i, j] = F_ji = A_i F_ij / A_j
+        shoot = shoot[:, :, None] if E.ndim == 2 else shoot
+        received_of, change = None, None
+        received_by = np.ascontiguousarray((A[None, :] * F.T) / A[:, None])   # [j, i] = A_i F_ij / A_j
     elif not isinstance(operators, ShootingOperators):
         raise TypeError(f"operators must come from shooting_operators(F, rho, area); got {type(operators).__name__}")
     elif not (_same(operators.F, F) and _same(operators.rho, rho) and _same(operators.area, A)):
         raise ValueError("operators must be the shooting_operators of these F, rho (the shape of E) and area")
-    received_of, received_by, change = operators.received, operators.received_by, operators.change
+    else:
+        received_of, received_by, change = operators.received, operators.received_by, operators.change
     B = E.copy()
     dB = E.copy()
     power_weight = A if E.ndim == 1 else A[:, None]
@@ -780,7 +786,7 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
         power = power_weight * dB
         i = int(np.argmax(power if E.ndim == 1 else power.sum(axis=1)))
         shot = dB[i].copy()
-        received = received_of[i] * shot
+        received = received_of[i] * shot if received_of is not None else rho * (shoot[i] * shot)
         B += received
         dB[i] -= shot                                         # shot; what i sends itself (F_ii > 0) stays unshot
         dB += received
