@@ -303,11 +303,6 @@ def _rgba(hex_colour: str) -> np.ndarray:
     return np.array(to_rgba(hex_colour))
 
 
-def _rgba_bytes(rgba) -> np.ndarray:
-    """RGBA floats in [0, 1] as the bytes 0..255 an image is drawn with."""
-    return np.round(np.asarray(rgba, float) * 255).astype(np.uint8)
-
-
 def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: float = 3.5) -> InteractiveView:
     """The inside-outside map of a polygon (Goldman §11.7): every pixel of a ``grid`` x ``grid``
     image over ``[-box, box]²`` is coloured by its winding number
@@ -329,10 +324,9 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
     xs = np.linspace(-box, box, grid)
     gx, gy = np.meshgrid(xs, xs)
     pixels = np.stack([gx, gy], axis=-1)
-    # the colours as the bytes Agg draws (an RGBA float image is converted to them at every redraw)
-    table = _rgba_bytes([_rgba(WINDING_COLOURS[k]) for k in range(-3, 4)])
-    differ_rgba, inside_rgba = _rgba_bytes(_rgba(_DIFFER)), _rgba_bytes(_rgba(WINDING_COLOURS[1]))
-    blank = np.full((grid, grid, 4), 255, dtype=np.uint8)
+    table = np.array([_rgba(WINDING_COLOURS[k]) for k in range(-3, 4)])
+    differ_rgba, inside_rgba = _rgba(_DIFFER), _rgba(WINDING_COLOURS[1])
+    blank = np.ones((grid, grid, 4))
 
     fig, ax = style.new_axes()
     image = ax.imshow(blank, extent=(-box, box, -box, box), origin="lower",
@@ -378,6 +372,8 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
                 maps["wind"] = vg.winding_number(pts, pixels)
                 maps["odd"] = vg.ray_casting_inside(pts, pixels)
                 maps["key"] = key
+                for a in (maps["wind"], maps["odd"]):
+                    a.setflags(write=False)     # returned as "map": shared while Q moves
             wind, odd = maps["wind"], maps["odd"]
             crossings, signs = vg.ray_crossings(pts, q)
             w_q = int(vg.winding_number(pts, q))
