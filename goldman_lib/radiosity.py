@@ -55,6 +55,7 @@ from goldman_lib.validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_floa
 __all__ = ["Patches", "SolverHistory", "form_factor_parallel_rectangles", "form_factor_perpendicular_rectangles",
            "form_factor_point_polygon", "hemicube_cells", "hemicube_delta_form_factors", "hemicube_form_factors",
            "reciprocity_error", "enforce_reciprocity", "radiosity_matrix", "residual", "jacobi", "gauss_seidel", "progressive_refinement",
+           "ShootingOperators", "shooting_operators",
            "cornell_box", "light_emission", "patch_mesh", "vertex_radiosities", "corner_radiosities", "to_colours", "CORNELL_COLOURS"]
 
 #: The reflectances of the Cornell box's surfaces (RGB): white walls, red left wall, green right wall.
@@ -660,7 +661,80 @@ def gauss_seidel(F, rho, E, tol=1e-6, max_iterations=None, return_history=False)
     return _history(iterates, residuals, tol, return_history)
 
 
-def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, return_history=False):
+@dataclass(frozen=True, eq=False)
+class ShootingOperators:
+    """What progressive refinement needs of a scene that does not depend on its emission (Goldman
+    §23.5), made once by :func:`shooting_operators` and reused while only the lights change.
+
+    ``received[i]`` is what every patch receives per unit of radiosity shot from patch ``i``,
+    ``rho_j F_ji = rho_j A_i F_ij / A_j`` (shape ``(n, n)`` or ``(n, n, c)``); ``received_by[j, i]``
+    is ``F_ji`` (the residual ``rho F dB`` is ``rho * (received_by @ dB)``); ``change[i]``, when
+    made, is how the residual vector moves per unit shot from ``i`` (``rho F received[i] -
+    received[i]``), which turns the residual after a shot into an O(n) update; ``F``, ``rho`` and
+    ``area`` are the arrays it was made from."""
+
+    F: np.ndarray
+    rho: np.ndarray
+    area: np.ndarray
+    received: np.ndarray
+    received_by: np.ndarray
+    change: np.ndarray | None
+
+
+def shooting_operators(F, rho, area, update_residual=True) -> ShootingOperators:
+    """The emission-independent part of :func:`progressive_refinement` for form factors ``F``
+    ``(n, n)``, reflectances ``rho`` (``(n,)`` or ``(n, c)``, the shape of the emission to be shot)
+    and patch areas ``area`` ``(n,)``: ``n^2`` numbers per channel.  With ``update_residual`` (the
+    default) it also forms the residual updates ``change`` (``n^3`` work and ``n^2`` more numbers per
+    channel), which pays when many shots are made or the scene is solved for several lights.  Bounded
+    by the work budget (``MAX_ITEMS`` numbers kept).
+
+    >>> ops = shooting_operators([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 1])
+    >>> ops.received.tolist()                     # rho_j F_ji: patch 1 gets 0.25 per unit shot from 0
+    [[0.0, 0.25], [0.25, 0.0]]
+    >>> progressive_refinement([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 0], [1, 1], tol=1e-12,
+    ...                        operators=ops).round(6)
+    array([1.066667, 0.266667])
+    """
+    F = _check_F(F)
+    n = len(F)
+    A = _check_area(area, n)
+    rho = check_finite(as_float_array(rho, "rho"), "rho")
+    if rho.ndim not in (1, 2) or rho.shape[0] != n:
+        raise ValueError(f"rho must have shape ({n},) or ({n}, c); got shape {rho.shape}")
+    if np.any(rho < 0) or np.any(rho > 1):
+        raise ValueError("rho must be a reflectance in [0, 1]")
+    channels = 1 if rho.ndim == 1 else rho.shape[1]
+    within_budget(n, "F", cost=lambda m: m * m * channels * (3 if update_residual else 1),
+                  what="the shooting operators", unit="numbers", limit=MAX_ITEMS)
+    shoot = F * (A[:, None] / A[None, :])                                    # shoot[i, j] = F_ji = A_i F_ij / A_j
+    received_by = np.ascontiguousarray((A[None, :] * F.T) / A[:, None])     # [j, i] = A_i F_ij / A_j
+    if rho.ndim == 1:
+        received = np.ascontiguousarray(rho[None, :] * shoot)
+    else:
+        received = np.ascontiguousarray(rho[None, :, :] * shoot[:, :, None])   # (i, j, c)
+    change = None
+    if update_residual:
+        # a shot of dB_i from i adds c = received[i] dB_i to dB (and takes dB_i from dB_i), so the
+        # residual vector rho F dB moves by rho F c - c for the received part: H[:, i] - received[i]
+        if rho.ndim == 1:
+            rf = rho[:, None] * received_by
+            change = np.ascontiguousarray((rf @ rf).T - received)
+        else:
+            H = np.stack([(rho[:, c, None] * received_by) @ (rho[:, c, None] * received_by)
+                          for c in range(channels)], axis=2)                    # H[j, i, c]
+            change = np.ascontiguousarray(H.transpose(1, 0, 2) - received)
+    F, rho, A = (np.array(a) for a in (F, rho, A))                            # copies: the caller's stay writable
+    for a in (F, rho, A, received, received_by) + ((change,) if change is not None else ()):
+        a.setflags(write=False)
+    return ShootingOperators(F, rho, A, received, received_by, change)
+
+
+def _same(a, b) -> bool:
+    return a is b or (a.shape == b.shape and np.array_equal(a, b))
+
+
+def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, return_history=False, operators=None):
     """Solve the radiosity equation by progressive refinement, a shooting method (Goldman §23.5).
 
     Every patch keeps its radiosity ``B`` and its unshot radiosity ``dB`` (both start at ``E``).  Each
@@ -673,7 +747,9 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
     ``max |rho F dB|``.  Stops when it is ``<= tol`` or after ``max_iterations`` shots.
 
     area: ``(n,)`` patch areas; the rest as for :func:`jacobi`.  The history's ``shooters`` lists the
-    patch shot at each step.
+    patch shot at each step.  operators: the :func:`shooting_operators` of these ``F``, ``rho`` (of
+    the shape of ``E``) and ``area``, to reuse when the same scene is solved for several emissions
+    (a moving light); made here when not given.
 
     >>> progressive_refinement([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 0], [1, 1], tol=1e-12).round(6)
     array([1.066667, 0.266667])
@@ -683,41 +759,40 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
     tol = as_tolerance(tol)
     channels = 1 if E.ndim == 1 else E.shape[1]
     kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
+    if operators is None and len(F) <= 600 and kmax > 2 * len(F):
+        # The residual after a shot follows from the one before in O(n) (ShootingOperators.change),
+        # formed once (n^3) when up to 600 patches may shoot more than 2n times; otherwise each shot
+        # pays a matrix-vector product.
+        operators = shooting_operators(F, rho, A)
+    if operators is None:                                 # what a shot sends, formed shot by shot
+        shoot = F * (A[:, None] / A[None, :])             # shoot[i, j] = F_ji = A_i F_ij / A_j
+        shoot = shoot[:, :, None] if E.ndim == 2 else shoot
+        received_of, change = None, None
+        received_by = np.ascontiguousarray((A[None, :] * F.T) / A[:, None])   # [j, i] = A_i F_ij / A_j
+    elif not isinstance(operators, ShootingOperators):
+        raise TypeError(f"operators must come from shooting_operators(F, rho, area); got {type(operators).__name__}")
+    elif not (_same(operators.F, F) and _same(operators.rho, rho) and _same(operators.area, A)):
+        raise ValueError("operators must be the shooting_operators of these F, rho (the shape of E) and area")
+    else:
+        received_of, received_by, change = operators.received, operators.received_by, operators.change
     B = E.copy()
     dB = E.copy()
     power_weight = A if E.ndim == 1 else A[:, None]
-    shoot = np.ascontiguousarray(F * (A[:, None] / A[None, :]))   # shoot[i, j] = F_ji = A_i F_ij / A_j
-    if E.ndim == 2:
-        shoot = shoot[:, :, None]
-    received_by = np.ascontiguousarray((A[None, :] * F.T) / A[:, None])   # [j, i] = A_i F_ij / A_j
     r = rho * (received_by @ dB)                          # the residual vector rho F dB
     residuals = [float(np.abs(r).max())]
     iterates = [B.copy()]
     shooters = []
-    # The residual after a shot follows from the one before in O(n): dB changes by -dB_i e_i + c
-    # (c what the others receive), so rho F dB changes by -c + rho F c = -c + H[:, i] dB_i with
-    # H = diag(rho) F diag(rho) F, formed once (n^3) when up to 600 patches may shoot more than 2n
-    # times; otherwise each shot pays a matrix-vector product.  The residual is recomputed exactly
-    # before stopping.
-    H = None
-    if len(F) <= 600 and kmax > 2 * len(F):
-        rf = rho[:, :, None] * received_by[:, None, :] if E.ndim == 2 else rho[:, None] * received_by
-        if E.ndim == 2:
-            H = np.stack([rf[:, c, :] @ rf[:, c, :] for c in range(E.shape[1])], axis=2)   # (n, n, c)
-            H = np.ascontiguousarray(H.transpose(1, 0, 2))                                  # H[i] = column i
-        else:
-            H = np.ascontiguousarray((rf @ rf).T)
     while residuals[-1] > tol and len(residuals) <= kmax:
         power = power_weight * dB
         i = int(np.argmax(power if E.ndim == 1 else power.sum(axis=1)))
         shot = dB[i].copy()
-        received = rho * (shoot[i] * shot)
+        received = received_of[i] * shot if received_of is not None else rho * (shoot[i] * shot)
         B += received
         dB[i] -= shot                                         # shot; what i sends itself (F_ii > 0) stays unshot
         dB += received
         shooters.append(i)
-        if H is not None:
-            r += H[i] * shot - received
+        if change is not None:
+            r += change[i] * shot
             value = float(np.abs(r).max())
             if value <= tol:                                  # confirm without the round-off of the updates
                 r = rho * (received_by @ dB)

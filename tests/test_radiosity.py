@@ -184,3 +184,25 @@ def test_a_patch_that_sees_itself():
     for B in (rd.jacobi(F, [0.5, 0.5], [1.0, 0.0], tol=1e-13), rd.gauss_seidel(F, [0.5, 0.5], [1.0, 0.0], tol=1e-13),
               rd.progressive_refinement(F, [0.5, 0.5], [1.0, 0.0], [1.0, 1.0], tol=1e-13)):
         assert np.allclose(B, [1.5, 0.5], atol=1e-12)
+
+
+def test_shooting_operators_are_reused_and_checked():
+    F, rho, E, area = _system()
+    ops = rd.shooting_operators(F, rho, area)
+    plain = rd.progressive_refinement(F, rho, E, area, tol=1e-11, return_history=True)
+    reused = rd.progressive_refinement(F, rho, E, area, tol=1e-11, return_history=True, operators=ops)
+    assert np.array_equal(plain.shooters, reused.shooters)
+    assert np.abs(plain.iterates - reused.iterates).max() < 1e-12
+    moved = E[::-1].copy()                                   # another emission, the same operators
+    assert np.abs(rd.progressive_refinement(F, rho, moved, area, tol=1e-11, operators=ops)
+                  - _solve(F, rho, moved)).max() < 1e-9
+    short = rd.shooting_operators(F, rho, area, update_residual=False)
+    assert short.change is None
+    assert np.abs(rd.progressive_refinement(F, rho, E, area, tol=1e-11, operators=short) - plain.radiosities).max() < 1e-12
+    with pytest.raises(ValueError, match="operators"):
+        rd.progressive_refinement(F, rho * 0.5, E, area, operators=ops)
+    with pytest.raises(TypeError, match="operators"):
+        rd.progressive_refinement(F, rho, E, area, operators="cached")
+    F[0, 0] += 0.01                                          # the caller's F stays writable; ops keep a copy
+    with pytest.raises(ValueError, match="operators"):
+        rd.progressive_refinement(F, rho, E, area, operators=ops)

@@ -195,6 +195,7 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
                            arrange=[widgets.HBox([material_box, light_box])])
     light.drag_in(view, ax_side, plane="xz")
     view.light_control = light
+    style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
     return view
 
 

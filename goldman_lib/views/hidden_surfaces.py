@@ -66,6 +66,7 @@ def hidden_surfaces_view(algorithm: str = "depth sort", step: int = 0, width: in
     for ax in axes:
         ax.set_axis_off()
     fig.tight_layout()
+    finished = {}   # algorithm -> its finished picture (the step slider does not change it)
 
     def update(algorithm, step):
         frames = all_frames[algorithm]
@@ -74,7 +75,9 @@ def hidden_surfaces_view(algorithm: str = "depth sort", step: int = 0, width: in
         frame = finals[algorithm].ids if k == 0 else frames[k - 1]
         images[0].set_data(hs.shade(frame, polygons, colours, camera))
         final = finals[algorithm].ids
-        images[1].set_data(hs.shade(final, polygons, colours, camera))
+        if algorithm not in finished:
+            finished[algorithm] = hs.shade(final, polygons, colours, camera)
+        images[1].set_data(finished[algorithm])
         wrong = (final != reference) & ~edges
         rows, cols = np.nonzero(wrong)
         marks.set_data(cols, rows)
@@ -86,5 +89,7 @@ def hidden_surfaces_view(algorithm: str = "depth sort", step: int = 0, width: in
                   f"{int(wrong.sum())} pixels differ from the z-buffer's image away from edges")
         return {"frame": frame, "final": final, "step": k, "steps": steps, "wrong": int(wrong.sum()), "status": status}
 
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="§22.2-22.7 hidden surfaces, step by step")
+    style.pin_layout(fig)       # titles need not be placed again at each redraw
+    return view

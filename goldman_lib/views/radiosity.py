@@ -6,9 +6,10 @@ light-position control moving the light -- which here is not a point light but a
 of the ceiling (§23.2): its x and y slide it over the ceiling (z is the ceiling's), its intensity and
 colour set its emission.
 
-The form factors are computed once per box (hemi-cubes, made reciprocal) and cached; the solvers'
-iterates are stored per light, so an iteration slider only indexes them and a light move re-solves
-one solver.  Every number shown comes from :mod:`goldman_lib.radiosity`; this module only draws.
+The form factors are computed once per box (hemi-cubes, made reciprocal) and cached, and so are
+progressive refinement's shooting operators (they depend on the form factors, not on the light); the
+solvers' iterates are stored per light, so an iteration slider only indexes them and a light move
+re-solves one solver.  Every number shown comes from :mod:`goldman_lib.radiosity`; this module only draws.
 
 >>> view = radiosity_view()
 >>> r = view.set_values(solver="jacobi", jacobi_k=0)
@@ -21,6 +22,7 @@ from __future__ import annotations
 import functools
 
 import numpy as np
+from matplotlib import ticker
 
 from goldman_lib import radiosity as rd
 from goldman_lib.validation import as_int
@@ -69,13 +71,22 @@ def _side_by_side(*pngs) -> bytes:
     return buf.getvalue()
 
 
-def _solve(name, F, rho, E, area):
+@functools.lru_cache(maxsize=4)
+def _shooting(n: int = 8, resolution: int = 16):
+    """The shooting operators of :func:`cornell_scene` (made once per box: a light move re-shoots
+    with them instead of re-forming them)."""
+    box, F = cornell_scene(n, resolution)
+    return rd.shooting_operators(F, box.reflectance, box.areas)
+
+
+def _solve(name, F, rho, E, area, operators=None):
     steps = MAX_STEPS[name]
     if name == "jacobi":
         return rd.jacobi(F, rho, E, tol=1e-9, max_iterations=steps, return_history=True)
     if name == "gauss_seidel":
         return rd.gauss_seidel(F, rho, E, tol=1e-9, max_iterations=steps, return_history=True)
-    return rd.progressive_refinement(F, rho, E, area, tol=1e-9, max_iterations=steps, return_history=True)
+    return rd.progressive_refinement(F, rho, E, area, tol=1e-9, max_iterations=steps, return_history=True,
+                                     operators=operators)
 
 
 def radiosity_view(solver: str = "progressive", smooth: bool = True) -> InteractiveView:
@@ -97,6 +108,7 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     from goldman_lib.views.three import SceneView
 
     box, F = cornell_scene()
+    shooting = _shooting()
     n = len(box)
     rho, area = box.reflectance, box.areas
     light = LightControl([(0.5, 0.5, 0.99)], box=[(LIGHT_SIZE / 2, 1 - LIGHT_SIZE / 2)] * 2 + [(0.0, 1.0)],
@@ -131,9 +143,16 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     (outline,) = ax_map.plot([], [], color="#f2b700", linewidth=1.2)
     (lamp_dot,) = ax_map.plot([], [], "o", color="#f2b700", markeredgecolor="#222222", markersize=8)
     ax_map.set_xlim(0, 1), ax_map.set_ylim(0, 1)
+    ax_map.set_xticks([0, 0.5, 1]), ax_map.set_yticks([0, 0.5, 1])   # the same on both sides of the square
     ax_map.set_title("ceiling: drag the light", fontsize=9)
     ax_map.set_xlabel("x"), ax_map.set_ylabel("y")
     ax.set_yscale("log")
+    # every second decade labelled, the others ticked: the 64 minor ticks and 9 labels had been half the
+    # redraw of a slider move
+    ax.yaxis.set_major_locator(ticker.LogLocator(numticks=6))
+    ax.yaxis.set_minor_locator(ticker.LogLocator(subs=(1.0,), numticks=12))
+    ax.yaxis.set_minor_formatter(ticker.NullFormatter())
+    ax.xaxis.set_major_locator(ticker.MultipleLocator(10))
     ax.set_xlabel("work (sweeps; a shot is 1/n of one)")
     ax.set_ylabel("residual max |E + ρFB − B|")
     colours = {"jacobi": "#1f77b4", "gauss_seidel": "#2ca02c", "progressive": "#d62728"}
@@ -157,7 +176,7 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
                                             EMISSION * light0_I * np.asarray(lamp.colour, float))
         E = solved["E"]
         if solver not in solved:
-            solved[solver] = _solve(solver, F, rho, E, area)
+            solved[solver] = _solve(solver, F, rho, E, area, shooting)
         history = solved[solver]
         k = min(int({"jacobi": jacobi_k, "gauss_seidel": gs_k, "progressive": shots}[solver]), history.iterations)
         B = history.iterates[k]
@@ -202,5 +221,6 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
                            update=update, figure=fig, static=static,
                            title="§23.5 radiosity of a Cornell box, iteration by iteration")
     light.drag_in(view, ax_map, plane="xy")
+    style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
     view.scene, view.light = scene, light
     return view

@@ -103,6 +103,7 @@ def shading_view(mode_a: str = "gouraud", mode_b: str = "phong", facets: int = 8
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="§21.2-21.4 shading modes side by side")
     control.drag_in(view, ax_scene, plane="xz")
+    style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
     return view
 
 

@@ -14,6 +14,8 @@ and normal), lit by :mod:`goldman_lib.lighting` with shadows; the three.js view 
 
 from __future__ import annotations
 
+import pickle
+
 import numpy as np
 
 from goldman_lib import lighting, simple_surfaces as S
@@ -35,6 +37,8 @@ SURFACES = {
 
 #: The ray-traced picture's default size (width, height) in pixels: one primary ray per pixel.
 GALLERY_SIZE = (160, 120)
+#: How many pictures the gallery view keeps (160 x 120 RGB, 0.5 MB each).
+_KEEP_PICTURES = 8
 
 _COLOURS = {
     "plane": (0.55, 0.7, 0.55), "polygon (non-convex)": (0.9, 0.55, 0.2), "sphere": (0.85, 0.2, 0.2),
@@ -123,7 +127,9 @@ def gallery_view(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
     set by the light-position control.  The image is drawn once and updated with ``set_data``.
 
     ``update(kind, radius, height, half_angle, R, r, light0_x, ...)`` returns ``{"image" (h, w, 3),
-    "status"}``.  A full re-render per slider move (under 100 ms at the default size).
+    "status"}``.  A full re-render per slider move (under 100 ms at the default size); the last few
+    pictures are kept, keyed by the surface and the lights themselves, so a slider the picked
+    surface does not use (``R`` for a sphere) or a return to a picture redraws without re-rendering.
 
     >>> v = gallery_view(width=40, height_px=30)
     >>> v.set_values(kind="sphere")["image"].shape
@@ -143,11 +149,20 @@ def gallery_view(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
     ax.set_axis_off()
     im = ax.imshow(np.zeros((height_px, width, 3)), interpolation="nearest")
     title = ax.set_title("", fontsize=9)
+    rendered: dict = {}   # (surface, lights) as pickled bytes -> picture, the least recently shown first
 
     def update(kind, radius, height, half_angle, R, r, **lights):
         surface = make_surface(kind, radius, height, half_angle, R, r)
-        scene = rt.Scene([floor, surface], light.lights(lights), ambient_light=0.25, background=(0.62, 0.76, 0.92))
-        image = rt.render(scene, camera, width, height_px, depth=0)
+        lamps = light.lights(lights)
+        key = pickle.dumps((surface, lamps))      # the objects' own state: equal surfaces, equal keys
+        image = rendered.pop(key, None)
+        if image is None:
+            scene = rt.Scene([floor, surface], lamps, ambient_light=0.25, background=(0.62, 0.76, 0.92))
+            image = rt.render(scene, camera, width, height_px, depth=0)
+            image.setflags(write=False)
+            while len(rendered) >= _KEEP_PICTURES:
+                rendered.pop(next(iter(rendered)))
+        rendered[key] = image
         im.set_data(image)
         title.set_text(f"{kind} ({SURFACES[kind]}), ray traced")
         return {"image": image, "status": _describe(surface, kind)}
@@ -155,6 +170,7 @@ def gallery_view(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="§19 simple surfaces, ray traced", side=True)
     view.light_control = light
+    style.pin_layout(fig)       # the title need not be placed again at each redraw
     return view
 
 

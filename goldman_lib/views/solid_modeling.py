@@ -12,6 +12,7 @@ Every number a view shows comes from :mod:`goldman_lib.solid_modeling`; this mod
 from __future__ import annotations
 
 import numpy as np
+from matplotlib import ticker
 
 from goldman_lib import lighting
 from goldman_lib import solid_modeling as sm
@@ -45,6 +46,8 @@ EXTENT = (-1.6, 1.6, -1.2, 1.2)
 _EYE = np.array([0.0, -6.0, 0.0])
 _BACKGROUND = np.array([0.96, 0.96, 0.97])
 _T_WINDOW = (-1.0, 7.0)
+#: How many rendered CSG images the view keeps (one per tree formula; 84 x 112 RGB, 0.2 MB each).
+_KEEP_IMAGES = 32
 
 
 def csg_tree(first: str, op: str, second: str, op2: str = "none", third: str = "none"):
@@ -89,7 +92,9 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
     second operation with a third primitive); the solid is ray traced by ray classification (left,
     :func:`goldman_lib.ray_tracing.render`, depth 0: local light and shadows) and, on the right, the inside intervals of the horizontal ray ``(-3, 0, z) + t (1, 0, 0)`` (the
     dashed line on the image, height ``ray z``) are drawn for each primitive and for the result
-    (:func:`goldman_lib.solid_modeling.intervals`).  A full re-render per change (~100 ms).
+    (:func:`goldman_lib.solid_modeling.intervals`).  A change of the tree re-renders the image (~50-100
+    ms); the rendered images are kept per tree, so moving the ray (or coming back to a tree) only
+    redraws.
 
     ``update(first, op, second, op2, third, ray_z)`` returns ``{"image" (h, w, 3), "intervals"
     {name: (M, 2)} (clipped to the drawn window of t, [-1, 7]), "tree", "status"}``.
@@ -121,6 +126,9 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
     im = ax_img.imshow(np.ones((height, width, 3)), extent=EXTENT, interpolation="nearest")
     ray_line = ax_img.axhline(ray_z, color="#222222", linestyle="--", linewidth=1.0)
     ax_img.set_xlabel("x"), ax_img.set_ylabel("z")
+    # whole units on the image: its tick labels were a quarter of a redraw
+    ax_img.xaxis.set_major_locator(ticker.MultipleLocator(1))
+    ax_img.yaxis.set_major_locator(ticker.MultipleLocator(1))
     title = ax_img.set_title("", fontsize=10)
     rows = ["first", "second", "third", "result"]
     colours = {"first": "#d1495b", "second": "#3d5a80", "third": "#30a24b", "result": "#222222"}
@@ -135,10 +143,18 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
     fig.tight_layout()
     fig.subplots_adjust(top=0.9)
 
+    rendered: dict = {}   # tree formula -> its image (the ray slider does not change it)
+
     def update(first, op, second, op2, third, ray_z):
         tree, text = csg_tree(first, op, second, op2, third)
-        scene = ray_tracing.Scene([tree], light, ambient_light=0.3, background=_BACKGROUND)
-        image = ray_tracing.render(scene, camera, width, height, depth=0)
+        image = rendered.pop(text, None)
+        if image is None:
+            scene = ray_tracing.Scene([tree], light, ambient_light=0.3, background=_BACKGROUND)
+            image = ray_tracing.render(scene, camera, width, height, depth=0)
+            image.setflags(write=False)
+            while len(rendered) >= _KEEP_IMAGES:
+                rendered.pop(next(iter(rendered)))        # the least recently shown
+        rendered[text] = image
         im.set_data(image)
         ray_line.set_ydata([ray_z, ray_z])
         o, d = [[-3.0, 0.0, ray_z]], [[1.0, 0.0, 0.0]]
@@ -167,6 +183,7 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
 
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="§20.2 CSG by ray classification")
+    style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
     return view
 
 

@@ -326,9 +326,10 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
     pixels = np.stack([gx, gy], axis=-1)
     table = np.array([_rgba(WINDING_COLOURS[k]) for k in range(-3, 4)])
     differ_rgba, inside_rgba = _rgba(_DIFFER), _rgba(WINDING_COLOURS[1])
+    blank = np.ones((grid, grid, 4))
 
     fig, ax = style.new_axes()
-    image = ax.imshow(np.ones((grid, grid, 4)), extent=(-box, box, -box, box), origin="lower",
+    image = ax.imshow(blank, extent=(-box, box, -box, box), origin="lower",
                       interpolation="nearest", zorder=0)
     (outline,) = ax.plot([], [], "-", color="#2b2b2b", linewidth=1.4, zorder=2)
     (vertices,) = ax.plot([], [], "o", color=style.PALETTE["control"], markersize=7, zorder=3)
@@ -352,6 +353,8 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
         controls[f"x{k}"] = float_slider(f"x{k}", float(x), -box, box, 0.05)
         controls[f"y{k}"] = float_slider(f"y{k}", float(y), -box, box, 0.05)
 
+    maps: dict = {}   # the polygon's pixel maps (moving the query point Q does not change them)
+
     def update(mode, qx, qy, **coords):
         pts = np.array([[coords[f"x{k}"], coords[f"y{k}"]] for k in range(n)], dtype=float)
         q = np.array([qx, qy], dtype=float)
@@ -363,15 +366,22 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
         qmark.set_data([qx], [qy])
         ray.set_data([qx, box], [qy, qy])
         try:
-            wind = vg.winding_number(pts, pixels)
-            odd = vg.ray_casting_inside(pts, pixels)
+            key = pts.tobytes()
+            if maps.get("key") != key:
+                maps.clear()
+                maps["wind"] = vg.winding_number(pts, pixels)
+                maps["odd"] = vg.ray_casting_inside(pts, pixels)
+                maps["key"] = key
+                for a in (maps["wind"], maps["odd"]):
+                    a.setflags(write=False)     # returned as "map": shared while Q moves
+            wind, odd = maps["wind"], maps["odd"]
             crossings, signs = vg.ray_crossings(pts, q)
             w_q = int(vg.winding_number(pts, q))
             odd_q = bool(vg.ray_casting_inside(pts, q))
         except ValueError as exc:   # fewer than three distinct vertices
             ups.set_data([], [])
             downs.set_data([], [])
-            image.set_data(np.ones((grid, grid, 4)))
+            image.set_data(blank)
             return {"polygon": pts, "status": f"no polygon to test: {exc}"}
         if mode == "winding":
             rgba = table[np.clip(wind, -3, 3) + 3]
@@ -403,6 +413,7 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
                            title="inside or outside? winding number and ray casting", arrange=arrange, side=True)
     view.ax = ax
     drag_sliders(view, ax, [(f"x{k}", f"y{k}") for k in range(n)] + [("qx", "qy")])
+    style.pin_layout(fig)       # fixed limits: the title need not be placed again at each redraw
     return view
 
 
