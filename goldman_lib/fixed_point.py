@@ -398,7 +398,39 @@ def contraction_factor(M) -> float | np.ndarray:
 
 #: The early-exit scan of :func:`_directed_sq`: the first block of A (doubling up to the cap), and
 #: the distances one step computes (at least ``_STEP_MIN`` points of B per step).
-_FIRST_BLOCK, _BLOCK_CAP, _STEP_WORK, _STEP_MIN = 16, 1024, 2 ** 14, 64
+_FIRST_BLOCK, _BLOCK_CAP, _STEP_WORK, _STEP_MIN = 16, 1024, 2 ** 14, 16
+#: Grid neighbours of each point of A that bound its distance to B (:func:`_window_bounds`), and how
+#: long a random scan must expect to be (points of B) before they are worth computing.
+_WINDOW, _WINDOW_WHEN = 16, 32
+
+
+def _window_bounds(A: np.ndarray, B: np.ndarray) -> np.ndarray:
+    """For each point of A, the squared distance to the nearest of ``_WINDOW`` points of B that lie
+    near it in a snake order of a coarse grid (over the first two coordinates): a distance to a
+    point of B, so an upper bound on its distance to B, and usually a close one."""
+    m, d = B.shape
+    W = _WINDOW
+    lo = np.minimum(A[:, :2].min(axis=0), B[:, :2].min(axis=0))
+    hi = np.maximum(A[:, :2].max(axis=0), B[:, :2].max(axis=0))
+    g = max(1, int(np.sqrt(m / W)))
+    inv = np.where(hi > lo, g / np.where(hi > lo, hi - lo, 1.0), 0.0)
+
+    def key(P):
+        c = ((P[:, :2] - lo) * inv).astype(np.int64)
+        np.minimum(c, g - 1, out=c)
+        cx, cy = c[:, 0], c[:, 1]
+        return cy * g + cx + (cy & 1) * (g - 1 - 2 * cx)     # rows of cells, every other one reversed
+
+    kb = key(B)
+    order = np.argsort(kb, kind="stable")
+    start = np.clip(np.searchsorted(kb[order], key(A)) - W // 2, 0, m - W)
+    d2 = None
+    for k in range(d):
+        near = np.lib.stride_tricks.sliding_window_view(B[order, k], W)[start]
+        diff = A[:, k][:, None] - near
+        diff *= diff
+        d2 = diff if d2 is None else d2.__iadd__(diff)
+    return d2.min(axis=1)
 
 
 def _directed_sq(A: np.ndarray, B: np.ndarray) -> float:
@@ -409,9 +441,13 @@ def _directed_sq(A: np.ndarray, B: np.ndarray) -> float:
     steps, keeping each point's running minimum; a point whose running minimum falls below the
     largest minimum found so far (``cmax``) cannot raise the maximum and leaves the scan.  The
     points that reach the end of B have their exact minimum, and ``cmax`` becomes the largest of
-    them.  Blocks start small (so ``cmax`` is soon large) and double.  Distances are computed from
-    the differences ``a - b`` (no ``|a|^2 - 2 a.b + |b|^2`` cancellation), so the result is exact
-    in floating point whatever the order.  Memory: about ``_STEP_WORK`` floats.
+    them.  Blocks start small (so ``cmax`` is soon large) and double.  When the sets overlap,
+    ``cmax`` is small and a random scan long, so after the first block every other point of A starts
+    with the distance to its grid neighbours in B (:func:`_window_bounds`, ours) as its running
+    minimum, and the points are taken largest bound first: most leave before scanning anything.
+    Distances are computed from the differences ``a - b`` (no ``|a|^2 - 2 a.b + |b|^2``
+    cancellation), so the result is exact in floating point whatever the order.  Memory: about
+    ``_STEP_WORK`` floats (``_WINDOW`` per point of A for the bounds).
     """
     rng = np.random.default_rng(0)
     A = A[rng.permutation(len(A))]
@@ -419,12 +455,13 @@ def _directed_sq(A: np.ndarray, B: np.ndarray) -> float:
     d, m = A.shape[1], len(B)
     Ac = [np.ascontiguousarray(A[:, k]) for k in range(d)]
     Bc = [np.ascontiguousarray(B[:, k]) for k in range(d)]
+    ub = np.full(len(A), np.inf)
     cmax = 0.0
     start, size = 0, _FIRST_BLOCK
     while start < len(A):
         stop = min(start + size, len(A))
-        best = np.full(stop - start, np.inf)
-        alive = np.arange(stop - start)
+        best = ub[start:stop].copy()
+        alive = np.flatnonzero(best >= cmax)
         bs = 0
         while bs < m and alive.size:
             step = min(max(_STEP_WORK // alive.size, _STEP_MIN), m - bs)
@@ -439,6 +476,17 @@ def _directed_sq(A: np.ndarray, B: np.ndarray) -> float:
             bs += step
         if alive.size:
             cmax = max(cmax, float(best[alive].max()))
+        if start == 0 and stop < len(A) and d >= 2 and m > _WINDOW:
+            # cmax is now the largest distance of a few random points; a random scan meets a point
+            # of B within sqrt(cmax) after about area / (pi cmax) points of B
+            ext = np.ptp(B[:, :2], axis=0)
+            area = float(ext[0] * ext[1])
+            if area > 0 and (cmax == 0 or area / (np.pi * cmax) > _WINDOW_WHEN):
+                bound = _window_bounds(A[stop:], B)
+                order = stop + np.argsort(-bound, kind="stable")
+                A = np.concatenate([A[:stop], A[order]])
+                ub[stop:] = bound[order - stop]
+                Ac = [np.ascontiguousarray(A[:, k]) for k in range(d)]
         start, size = stop, min(2 * size, _BLOCK_CAP)
     return cmax
 

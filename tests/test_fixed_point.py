@@ -154,3 +154,41 @@ def test_fractal_theorem_bound_holds_level_by_level(name, start):
 def test_fractal_theorem_rejects_expanding_maps():
     with pytest.raises(ValueError, match="contraction"):
         fp.fractal_theorem(ifs.IFS([affine.scaling(1.5)]), [[0, 0]], 2)
+
+
+@pytest.mark.parametrize("case", ["overlapping", "apart", "clustered", "duplicates", "collinear", "3d", "inside"])
+def test_hausdorff_distance_is_scipys_exactly_on_every_path(case):
+    """The early-exit scan, with and without the grid-neighbour bounds (overlapping sets take them,
+    sets apart do not), gives scipy's directed_hausdorff to the last bit."""
+    from scipy.spatial.distance import directed_hausdorff
+
+    from goldman_lib import fixed_point as fp
+
+    rng = np.random.default_rng(7)
+    A, B = rng.uniform(0, 1, (3000, 2)), rng.uniform(0, 1, (2500, 2))
+    if case == "apart":
+        B = B + [0.3, 0.1]
+    elif case == "clustered":
+        A = rng.normal(0, 0.01, (3000, 2)) + rng.integers(0, 5, (3000, 1)) * 0.2
+        B = rng.normal(0, 0.01, (2500, 2)) + rng.integers(0, 5, (2500, 1)) * 0.2
+    elif case == "duplicates":
+        B = np.concatenate([A[:1000], A[:1000]])
+    elif case == "collinear":
+        A = np.stack([rng.uniform(0, 1, 3000), np.zeros(3000)], axis=1)
+        B = np.stack([rng.uniform(0, 1, 2500), np.zeros(2500)], axis=1)
+    elif case == "3d":
+        A, B = rng.uniform(0, 1, (3000, 3)), rng.uniform(0, 1, (2500, 3))
+    elif case == "inside":
+        A = rng.uniform(0.4, 0.6, (3000, 2))
+    used = []
+    real = fp._window_bounds
+    try:
+        fp._window_bounds = lambda a, b: (used.append(1), real(a, b))[1]
+        ours = fp.hausdorff_distance(A, B)
+    finally:
+        fp._window_bounds = real
+    assert ours == max(directed_hausdorff(A, B)[0], directed_hausdorff(B, A)[0])
+    if case in ("overlapping", "clustered", "duplicates", "3d"):
+        assert used, f"{case}: the grid-neighbour bounds were not used"
+    if case == "apart":
+        assert len(used) <= 1, "sets apart should mostly scan at random"

@@ -286,16 +286,17 @@ def figure_to_page(box: dict, figure_size, xy) -> tuple[float, float]:
 
 
 def stable_box(locator, timeout: float = 10, interval: float = 0.15) -> dict | None:
-    """The element's box once it holds still (the same in two reads ``interval`` apart): the page
+    """The element's box once it holds still (the same in four reads ``interval`` apart): the page
     may still be scrolling, or outputs above may still be laying out, and a mouse pressed at a box
     read mid-move lands beside the point (a real-mouse drag then carries the point to the wrong
     place: seen as 12-14 px misses in three chapters)."""
     deadline = time.monotonic() + timeout
-    last = locator.bounding_box()
+    last, still = locator.bounding_box(), 0
     while True:
         time.sleep(interval)
         box = locator.bounding_box()
-        if box == last or time.monotonic() > deadline:
+        still = still + 1 if box == last else 0
+        if still >= 3 or time.monotonic() > deadline:      # still for three reads in a row
             return box
         last = box
 
@@ -312,7 +313,9 @@ def drag_until(page, canvas, plan, arrived, *, attempts: int = 3, timeout: float
     a loaded machine may take a while: ``arrived`` is polled for ``timeout`` seconds.  If it never
     holds, ``on_miss(attempt)`` may raise (the press must have missed: nothing should have moved)
     and the drag is tried again, up to ``attempts`` times: a press can miss when the page shifts
-    under the mouse (an image above finishing its layout) between measuring and pressing.
+    under the mouse (an image above finishing its layout) between measuring and pressing.  If the
+    canvas itself moved during the drag (a formula above typeset late), the mouse's later
+    positions fell elsewhere on it: ``on_miss`` is not asked, and the drag is planned afresh.
     """
     misses = []
     for attempt in range(attempts):
@@ -331,12 +334,14 @@ def drag_until(page, canvas, plan, arrived, *, attempts: int = 3, timeout: float
             page.mouse.move(start[0] + (end[0] - start[0]) * k / steps, start[1] + (end[1] - start[1]) * k / steps)
             time.sleep(pause)
         page.mouse.up()
+        shifted = canvas.bounding_box() != box
         try:
             return wait_for(arrived, timeout, interval=0.5, message=message)
         except TimeoutError:
             misses.append(f"attempt {attempt}: pressed at page {tuple(round(v) for v in start)} "
-                          f"(figure {tuple(round(v) for v in start_fig)}, canvas box {box})")
+                          f"(figure {tuple(round(v) for v in start_fig)}, canvas box {box}"
+                          f"{'; the canvas moved during the drag' if shifted else ''})")
             print(misses[-1])
-            if on_miss is not None:
+            if on_miss is not None and not shifted:
                 on_miss(attempt)
     raise AssertionError(f"{attempts} drags never brought {message}:\n" + "\n".join(misses))

@@ -113,23 +113,30 @@ def test_notebook_runs_and_views_respond(lab, notebook):
         if plan:
             canvas = view.locator(MPL + " canvas").first
             drag_before, _ = wait_nonblank(canvas)
-            start, end = plan["start"], plan["end"]
-            length = float(np.hypot(end[0] - start[0], end[1] - start[1]))
-            unit = np.array([end[0] - start[0], end[1] - start[1]]) / length
+            length = float(np.hypot(*np.subtract(plan["end"], plan["start"])))
+            tries = []
 
-            end_data, per_unit = np.array(plan["end_data"]), np.array(plan["pixels_per_unit"])
-            start_data = np.array(plan["start_data"])
+            def replan():
+                # asked afresh before each retry: it starts from wherever the point is now
+                nonlocal plan
+                if tries:
+                    plan = json.loads(lab.kernel(_PLAN.replace("UID", uid)).strip())["plan"]
+                    assert plan, f"{rel}: view {i} offers no drag any more"
+                tries.append(plan)
+                return plan["start"], plan["end"], plan["figure"]
 
             def moved_by():
                 # where the point is, in pixels of the axes' scale when the drag began (data
                 # coordinates: a view may refit its axes once the mouse lets go)
                 now = np.array(json.loads(lab.kernel(_WHERE.replace("UID", uid).replace("K", str(plan["index"]))).strip()))
-                return (now - start_data) * per_unit, (now - end_data) * per_unit
+                per_unit = np.array(plan["pixels_per_unit"])
+                return (now - plan["start_data"]) * per_unit, (now - plan["end_data"]) * per_unit
 
             def followed():
                 # the kernel handles the motion events one at a time: wait for the end of the drag,
                 # where the point must be under the mouse (to its sliders' steps: a few pixels)
                 from_start, from_end = moved_by()
+                unit = np.subtract(plan["end"], plan["start"]) / length
                 along, off = float(from_start @ unit), float(np.hypot(*from_end))
                 return (along, off) if off <= DRAG_TOLERANCE else None
 
@@ -140,7 +147,7 @@ def test_notebook_runs_and_views_respond(lab, notebook):
                     f"{rel}: view {i}'s point {plan['index']} moved {from_start.round(1).tolist()} px, "
                     f"ending {from_end.round(1).tolist()} px from the mouse")
 
-            along, off = drag_until(page, canvas, lambda: (start, end, plan["figure"]), followed, timeout=45,
+            along, off = drag_until(page, canvas, replan, followed, timeout=45,
                                     on_miss=missed, message=f"point {plan['index']} of view {i} to follow the mouse")
             drag_after, drag_frac = wait_changed(canvas, drag_before, CHANGE_TOLERANCE, timeout=20)
             (SCREENSHOTS / f"{stem}-view{i}-drag.png").write_bytes(drag_after)
