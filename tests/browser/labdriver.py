@@ -320,6 +320,10 @@ def drag_until(page, canvas, plan, arrived, *, attempts: int = 3, timeout: float
     misses = []
     for attempt in range(attempts):
         canvas.scroll_into_view_if_needed()
+        # ipympl focuses the canvas and its div when the mouse goes down, and focusing may scroll
+        # the notebook: focus them first, so any such scroll is over before the box is measured
+        canvas.evaluate("c => { c.focus({preventScroll: false}); const d = c.closest('.jupyter-matplotlib-canvas-div');"
+                        " if (d) d.focus({preventScroll: false}); }")
         box = stable_box(canvas)
         assert box and box["width"] > 10 and box["height"] > 10, f"the canvas has no size: {box}"
         start_fig, end_fig, size = plan()

@@ -141,8 +141,17 @@ def test_notebook_runs_and_views_respond(lab, notebook):
                 return (along, off) if off <= DRAG_TOLERANCE else None
 
             def missed(attempt):
-                # a press that missed moved nothing; a point that moved but not to the mouse is a bug
+                # A press that missed moved nothing.  A point that stopped short on the way to the
+                # mouse (the last events of the drag lost, seen once in three full runs on a loaded
+                # machine) is reported and dragged again from where it is.  A point that went
+                # anywhere else is a bug.
                 from_start, from_end = moved_by()
+                unit = np.subtract(plan["end"], plan["start"]) / length
+                along = float(from_start @ unit)
+                across = float(np.hypot(*(from_start - along * unit)))
+                if 0 < along < length and across <= DRAG_TOLERANCE:
+                    report.append(f"  view {i}: a drag stopped {length - along:.0f} px short of the mouse; dragged again")
+                    return
                 assert np.hypot(*from_start) < 1.0, (
                     f"{rel}: view {i}'s point {plan['index']} moved {from_start.round(1).tolist()} px, "
                     f"ending {from_end.round(1).tolist()} px from the mouse")
