@@ -75,9 +75,9 @@ class PointDrag:
         away in one of the four axis directions and still inside the axes.  Returns ``{"index",
         "start", "end", "figure", "start_data", "end_data", "pixels_per_unit"}``: positions in
         figure pixels (origin bottom left), the figure's width and height in pixels, the two
-        positions in data coordinates and the axes' scale now (a view may refit its axes when the mouse lets go, so a
-        test compares where the point ends in data coordinates).  None if no point can be dragged
-        that far.
+        positions in data coordinates and the axes' scale now (a view may refit its axes when the
+        mouse lets go, so a test compares where the point ends in data coordinates).  None if no
+        point can be dragged that far.
 
         >>> from matplotlib.figure import Figure
         >>> fig = Figure(figsize=(4, 3), dpi=100); ax = fig.add_subplot(); _ = ax.set_xlim(0, 10), ax.set_ylim(0, 10)
@@ -121,10 +121,7 @@ class PointDrag:
 
     def screen_position(self, index: int) -> list[float]:
         """Where point ``index`` is drawn now, in figure pixels (origin bottom left)."""
-        pts = np.asarray(self.get_points(), dtype=float).reshape(-1, 2)
-        if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or not 0 <= index < len(pts):
-            raise ValueError(f"index must be a point number in [0, {len(pts) - 1}]; got {index!r}")
-        return [float(v) for v in self.ax.transData.transform(pts[int(index)])]
+        return [float(v) for v in self.ax.transData.transform(self.position(index))]
 
     # -- matplotlib event handlers ------------------------------------------------------------------
     def _press(self, event):
