@@ -56,18 +56,14 @@ TREE_COLOURS = {
 }
 
 
-def _v(v) -> str:
-    return "(" + ", ".join(fmt(x, 5) for x in v) + ")"
-
-
 PROBLEMS = {
     "check_reflected_direction": (
         f"A ray travelling in the direction d = (1/3, 2/3, -2/3) meets a mirror whose normal there points along "
-        f"{_v(REFLECT_N)}. In which unit direction does the reflected ray leave? Give [x, y, z] to 4 decimals "
+        f"{fmt(REFLECT_N, 5)}. In which unit direction does the reflected ray leave? Give [x, y, z] to 4 decimals "
         f"(Goldman §17.4)."),
     "check_refracted_direction": (
-        f"A ray in air (index {fmt(REFRACT_N1)}) travelling in the unit direction d = {_v(REFRACT_D)} meets the flat "
-        f"surface z = 0 of a transparent plastic of index {fmt(REFRACT_N2)} (normal {_v(REFRACT_N)}). In which unit "
+        f"A ray in air (index {fmt(REFRACT_N1)}) travelling in the unit direction d = {fmt(REFRACT_D, 5)} meets the flat "
+        f"surface z = 0 of a transparent plastic of index {fmt(REFRACT_N2)} (normal {fmt(REFRACT_N, 5)}). In which unit "
         f"direction does the refracted ray travel inside? Give [x, y, z] to 4 decimals (Goldman §17.5)."),
     "check_critical_angle": (
         f"Light travels inside a block of flint glass (index of refraction {fmt(CRITICAL_N1)}) towards its flat face, "
@@ -75,9 +71,9 @@ PROBLEMS = {
         f"(measured from the normal) is the light totally internally reflected? Give the critical angle in degrees, "
         f"to 2 decimals (Goldman §17.5)."),
     "check_blocked_lights": (
-        f"The point P = {_v(SHADOW_POINT)} lies on the floor z = 0 (normal (0, 0, 1)); above it hangs an opaque "
-        f"sphere of centre {_v(SHADOW_SPHERE[0])} and radius {fmt(SHADOW_SPHERE[1])}. The lights are "
-        + ", ".join(f"L{k} = {_v(p)}" for k, p in enumerate(SHADOW_LIGHTS))
+        f"The point P = {fmt(SHADOW_POINT, 5)} lies on the floor z = 0 (normal (0, 0, 1)); above it hangs an opaque "
+        f"sphere of centre {fmt(SHADOW_SPHERE[0], 5)} and radius {fmt(SHADOW_SPHERE[1])}. The lights are "
+        + ", ".join(f"L{k} = {fmt(p, 5)}" for k, p in enumerate(SHADOW_LIGHTS))
         + ". Send a shadow ray from P to each light: which lights does P not receive? Give the list of their "
           "numbers, e.g. [1, 3] (Goldman §17.3)."),
     "check_ray_tree_size": (
@@ -86,10 +82,10 @@ PROBLEMS = {
         f"every point a ray hits. At most how many rays (primary, reflected, refracted and shadow rays together) can "
         f"one pixel's ray tree hold? (Goldman §17.2)"),
     "check_ray_tree_colour": (
-        f"A pixel's primary ray hits a shiny floor: local colour {_v(TREE_COLOURS['floor_local'])}, reflection "
+        f"A pixel's primary ray hits a shiny floor: local colour {fmt(TREE_COLOURS['floor_local'], 5)}, reflection "
         f"coefficient k_r = {fmt(TREE_COLOURS['floor_reflect'])}. Its reflected ray hits a sphere: local colour "
-        f"{_v(TREE_COLOURS['sphere_local'])}, k_r = {fmt(TREE_COLOURS['sphere_reflect'])}. The sphere's reflected ray "
-        f"hits nothing and sees the background {_v(TREE_COLOURS['background'])}. Nothing is transparent. With "
+        f"{fmt(TREE_COLOURS['sphere_local'], 5)}, k_r = {fmt(TREE_COLOURS['sphere_reflect'])}. The sphere's reflected ray "
+        f"hits nothing and sees the background {fmt(TREE_COLOURS['background'], 5)}. Nothing is transparent. With "
         f"I = I_local + k_r I_reflected, what RGB colour does the pixel get at recursion depth 2? Give [r, g, b] "
         f"(Goldman §17.2)."),
 }

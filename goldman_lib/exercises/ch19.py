@@ -51,38 +51,34 @@ BOUND_RAYS = (((-5, 0, 0.3), (1, 0, 0)), ((-5, 3, 0), (1, 0, 0)), ((-5, 0, 1), (
               ((-5, 2.4, 0), (1, 0, 0)))
 
 
-def _v(p) -> str:
-    return fmt(p)
-
-
 PROBLEMS = {
     "check_plane_parameter": (
-        f"The ray P(t) = {_v(PLANE_RAY[0])} + t {_v(PLANE_RAY[1])} meets the plane through {_v(PLANE_POINT)} "
-        f"with normal {_v(PLANE_NORMAL)}. At which parameter t? (Goldman §19.3; t in units of the direction "
+        f"The ray P(t) = {fmt(PLANE_RAY[0])} + t {fmt(PLANE_RAY[1])} meets the plane through {fmt(PLANE_POINT)} "
+        f"with normal {fmt(PLANE_NORMAL)}. At which parameter t? (Goldman §19.3; t in units of the direction "
         f"as given, which is not a unit vector.)"),
     "check_polygon_inside": (
-        f"The U-shaped polygon with vertices {', '.join(_v(p) for p in POLYGON)} lies in the plane z = 2. "
-        f"Which of the points {', '.join(_v(p) for p in POLYGON_QUERIES)} lie inside it? Give a list of five "
+        f"The U-shaped polygon with vertices {', '.join(fmt(p) for p in POLYGON)} lies in the plane z = 2. "
+        f"Which of the points {', '.join(fmt(p) for p in POLYGON_QUERIES)} lie inside it? Give a list of five "
         f"True/False (Goldman §19.3: the polygon is not convex)."),
     "check_sphere_hit": (
-        f"The ray P(t) = {_v(SPHERE_RAY[0])} + t {_v(SPHERE_RAY[1])} is aimed at the sphere with center "
-        f"{_v(SPHERE_CENTER)} and radius {fmt(SPHERE_RADIUS)}. Give the parameter t of the first hit in front "
+        f"The ray P(t) = {fmt(SPHERE_RAY[0])} + t {fmt(SPHERE_RAY[1])} is aimed at the sphere with center "
+        f"{fmt(SPHERE_CENTER)} and radius {fmt(SPHERE_RADIUS)}. Give the parameter t of the first hit in front "
         f"of the origin, to 4 decimals (Goldman §19.4.1)."),
     "check_cylinder_hit": (
-        f"A solid cylinder has its base (bottom end) at {_v(CYLINDER[0])}, axis {_v(CYLINDER[1])}, radius "
+        f"A solid cylinder has its base (bottom end) at {fmt(CYLINDER[0])}, axis {fmt(CYLINDER[1])}, radius "
         f"{fmt(CYLINDER[2])} and height {fmt(CYLINDER[3])}, closed by its two end discs. The ray P(t) = "
-        f"{_v(CYLINDER_RAY[0])} + t {_v(CYLINDER_RAY[1])} comes from above. Give the parameter t where it "
+        f"{fmt(CYLINDER_RAY[0])} + t {fmt(CYLINDER_RAY[1])} comes from above. Give the parameter t where it "
         f"enters the solid (Goldman §19.4.2)."),
     "check_torus_normal": (
-        f"The torus with center {_v(TORUS[0])}, axis {_v(TORUS[1])}, R = {fmt(TORUS[2])} and r = {fmt(TORUS[3])} "
-        f"passes through P = {_v(TORUS_POINT)}. Give the unit outward normal there as [x, y, z] "
+        f"The torus with center {fmt(TORUS[0])}, axis {fmt(TORUS[1])}, R = {fmt(TORUS[2])} and r = {fmt(TORUS[3])} "
+        f"passes through P = {fmt(TORUS_POINT)}. Give the unit outward normal there as [x, y, z] "
         f"(Goldman §19.6: the normal is the gradient of (x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + y^2))."),
     "check_torus_bound": (
-        f"Bounding test for the torus with center {_v(BOUND_TORUS[0])}, axis {_v(BOUND_TORUS[1])}, "
+        f"Bounding test for the torus with center {fmt(BOUND_TORUS[0])}, axis {fmt(BOUND_TORUS[1])}, "
         f"R = {fmt(BOUND_TORUS[2])}, r = {fmt(BOUND_TORUS[3])} (Goldman §19.6.1): the torus lies inside the "
         f"sphere of radius R + r about its center and inside the slab |z| <= r; a ray whose line misses the "
         f"sphere, or meets the sphere only outside the slab, skips the quartic. For the rays (origin, "
-        f"direction) " + "; ".join(f"{_v(o)}, {_v(d)}" for o, d in BOUND_RAYS)
+        f"direction) " + "; ".join(f"{fmt(o)}, {fmt(d)}" for o, d in BOUND_RAYS)
         + ", which must solve the quartic? Give five True/False."),
 }
 

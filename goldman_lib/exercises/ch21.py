@@ -58,32 +58,28 @@ NLERP_ANGLE = 120.0
 NLERP_T = 0.25
 
 
-def _v(p) -> str:
-    return "(" + ", ".join(fmt(c) for c in p) + ")"
-
-
 PROBLEMS = {
     "check_newell_normal": (
-        f"The quadrilateral with vertices {', '.join(_v(p) for p in NEWELL_QUAD)} (in this order) is not planar. "
+        f"The quadrilateral with vertices {', '.join(fmt(p) for p in NEWELL_QUAD)} (in this order) is not planar. "
         f"Give its unit normal by Newell's formula, N_x = Σ (y_i - y_(i+1))(z_i + z_(i+1)) and cyclically, "
         f"normalised, as [x, y, z] to 4 decimals (Goldman §21.1)."),
     "check_vertex_normal": (
         f"Three triangles meet at a vertex; their Newell vectors (normals whose length is twice the area) are "
-        f"{', '.join(_v(p) for p in FACE_VECTORS)}. Give the vertex normal as the book builds it for Gouraud and "
+        f"{', '.join(fmt(p) for p in FACE_VECTORS)}. Give the vertex normal as the book builds it for Gouraud and "
         f"Phong shading: the average of the faces' unit normals, normalised. [x, y, z] to 4 decimals "
         f"(Goldman §21.1)."),
     "check_pixels_covered": (
-        f"A triangle has screen vertices {', '.join(_v(p) for p in COVER_TRIANGLE)} (x right, y down). A pixel "
+        f"A triangle has screen vertices {', '.join(fmt(p) for p in COVER_TRIANGLE)} (x right, y down). A pixel "
         f"(row i, column j) is drawn when its centre (j + 0.5, i + 0.5) lies inside the triangle. How many pixels "
         f"does scan conversion draw? (Goldman §21.2)"),
     "check_gouraud_pixel": (
-        f"Gouraud shading: a triangle has screen vertices {', '.join(_v(p) for p in GOURAUD_TRIANGLE)} with "
+        f"Gouraud shading: a triangle has screen vertices {', '.join(fmt(p) for p in GOURAUD_TRIANGLE)} with "
         f"intensities {', '.join(fmt(c) for c in GOURAUD_INTENSITIES)}. Give the intensity at the pixel in row "
         f"{GOURAUD_PIXEL[0]}, column {GOURAUD_PIXEL[1]} (the intensities interpolated linearly at its centre), "
         f"to 4 decimals (Goldman §21.3)."),
     "check_phong_diffuse": (
-        f"Phong shading: on a scan line the normals at the two ends of a span are N_a = {_v(PHONG_NA)} and "
-        f"N_b = {_v(PHONG_NB)}. At the pixel a fraction t = {fmt(PHONG_T)} of the way from a to b, give the "
+        f"Phong shading: on a scan line the normals at the two ends of a span are N_a = {fmt(PHONG_NA)} and "
+        f"N_b = {fmt(PHONG_NB)}. At the pixel a fraction t = {fmt(PHONG_T)} of the way from a to b, give the "
         f"diffuse cosine L·N for the unit light direction L = (1/3, 2/3, 2/3), with N the interpolated normal "
         f"made unit length, to 4 decimals (Goldman §21.4.1)."),
     "check_forward_differences": (

@@ -41,10 +41,6 @@ SPLIT_NORMAL = (1.0, 2.0, 0.0)
 BSP_EYE = (-1.0, 0.0, 2.0)
 
 
-def _v(p) -> str:
-    return "(" + ", ".join(fmt(c) for c in p) + ")"
-
-
 def exercise_bsp_tree() -> hs.BSPNode:
     """The BSP tree of exercise 5: root polygon 0 in the plane z = 0 (normal +z); in front of it node
     polygon 1 in the plane x = 1 (normal +x) with polygon 2 in front and polygon 3 behind; behind the
@@ -72,18 +68,18 @@ PROBLEMS = {
         + ". A fragment is written only if it is strictly nearer than the stored depth. Give [the polygon shown "
           "at the end, the number of times the pixel was written] (Goldman §22.3)."),
     "check_scan_line_span": (
-        f"A polygon has screen vertices {', '.join(_v(p) for p in SCAN_POLYGON)} (x right, y down). On scan line "
+        f"A polygon has screen vertices {', '.join(fmt(p) for p in SCAN_POLYGON)} (x right, y down). On scan line "
         f"(row) {SCAN_ROW}, sampled at the pixel centres' height y = {SCAN_ROW} + 0.5, the active edge list holds the "
         f"two edges it crosses. Give the span [x_left, x_right] where the scan line is inside the polygon, to 4 "
         f"decimals (Goldman §22.4)."),
     "check_split_points": (
-        f"Depth sort and BSP trees split polygons by planes. The plane through {_v(SPLIT_POINT)} with normal "
-        f"{_v(SPLIT_NORMAL)} cuts the triangle {', '.join(_v(p) for p in SPLIT_TRIANGLE)}. Give the two points "
+        f"Depth sort and BSP trees split polygons by planes. The plane through {fmt(SPLIT_POINT)} with normal "
+        f"{fmt(SPLIT_NORMAL)} cuts the triangle {', '.join(fmt(p) for p in SPLIT_TRIANGLE)}. Give the two points "
         f"where it crosses the triangle's edges, [[x, y, z], [x, y, z]] in either order (Goldman §22.6)."),
     "check_bsp_order": (
         "A BSP tree: the root holds polygon 0 in the plane z = 0 (normal +z); in front of it (z > 0) a node holds "
         "polygon 1 in the plane x = 1 (normal +x), with polygon 2 in front of that plane and polygon 3 behind it; "
-        f"behind the root (z < 0) a leaf holds polygon 4. Give the back-to-front order for the eye at {_v(BSP_EYE)} "
+        f"behind the root (z < 0) a leaf holds polygon 4. Give the back-to-front order for the eye at {fmt(BSP_EYE)} "
         "as a list of polygon numbers (Goldman §22.7)."),
 }
 

@@ -49,18 +49,14 @@ def _m(rows) -> str:
     return "[" + ", ".join("[" + ", ".join(fmt(v) for v in r) + "]" for r in rows) + "]"
 
 
-def _v(v) -> str:
-    return "(" + ", ".join(fmt(x) for x in v) + ")"
-
-
 PROBLEMS = {
     "check_jacobi_step": (
         f"Two patches have form factors F = {_m(JACOBI_F)} (F_12 = {fmt(JACOBI_F[0][1])}: patch 1 sends that "
-        f"fraction of its light to patch 2), reflectances rho = {_v(JACOBI_RHO)} and emissions E = {_v(JACOBI_E)}. "
+        f"fraction of its light to patch 2), reflectances rho = {fmt(JACOBI_RHO)} and emissions E = {fmt(JACOBI_E)}. "
         f"Start from B^(0) = E and make one Jacobi step B_i^(1) = E_i + rho_i sum_j F_ij B_j^(0). Give "
         f"[B_1, B_2] (Goldman §23.5)."),
     "check_gauss_seidel_step": (
-        f"Same form factors F = {_m(GS_F)}, now rho = {_v(GS_RHO)} and E = {_v(GS_E)}. Start from B^(0) = E and "
+        f"Same form factors F = {_m(GS_F)}, now rho = {fmt(GS_RHO)} and E = {fmt(GS_E)}. Start from B^(0) = E and "
         f"make one Gauss-Seidel sweep, patch 1 first, each patch gathering from the newest radiosities. Give "
         f"[B_1, B_2] after the sweep (Goldman §23.5)."),
     "check_reciprocity": (
@@ -71,8 +67,8 @@ PROBLEMS = {
         f"{fmt(SQUARE_DISTANCE)} apart. Use the closed form for directly opposed rectangles to give their form "
         f"factor F to 3 decimals (Goldman §23.3)."),
     "check_shot": (
-        f"Progressive refinement: three patches with areas {_v(SHOT_AREA)}, reflectances {_v(SHOT_RHO)} and unshot "
-        f"radiosities dB = {_v(SHOT_DB)}. Patch 1 has the most unshot power A dB, so it shoots; its form factors are "
+        f"Progressive refinement: three patches with areas {fmt(SHOT_AREA)}, reflectances {fmt(SHOT_RHO)} and unshot "
+        f"radiosities dB = {fmt(SHOT_DB)}. Patch 1 has the most unshot power A dB, so it shoots; its form factors are "
         f"F_12 = {fmt(SHOT_F[1])}, F_13 = {fmt(SHOT_F[2])}. Give the unshot radiosities [dB_1, dB_2, dB_3] after the "
         f"shot (Goldman §23.5)."),
 }
