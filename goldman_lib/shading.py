@@ -260,7 +260,11 @@ class Camera:
         return finite_result(out, "points", why="are too far from the camera")
 
     def view_depth(self, points) -> np.ndarray:
-        """The distance ``w`` of points along the view direction (negative behind the eye): ``(n,)``."""
+        """The distance ``w`` of points along the view direction (negative behind the eye): ``(n,)``.
+
+        >>> Camera(eye=(0, -5, 0), target=(0, 0, 0)).view_depth([[0, 0, 0], [3, -6, 1]]).tolist()
+        [5.0, -1.0]
+        """
         P = as_points(points, "points", dim=3)
         E, n, _, _ = self._frame
         with np.errstate(over="ignore", invalid="ignore"):
