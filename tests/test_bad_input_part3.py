@@ -88,7 +88,7 @@ SCENES = {
     "floor, side wall and wall": [FLOOR, SIDE, WALL],
     "a triangle nearer than the near plane": [TOO_NEAR, WALL],
     "a triangle behind the eye": [BEHIND, WALL],
-    "a wall crossing the near plane": [[[-4, -7.3, -3], [4, -6.2, -3], [4, -6.2, 3], [-4, -7.3, 3]], WALL],
+    "a wall crossing the near plane": [[[-0.3, -7.3, -3], [0.6, -5, -3], [0.6, -5, 3], [-0.3, -7.3, 3]], WALL],
 }
 
 
@@ -106,13 +106,14 @@ def pictures():
 def test_all_six_algorithms_draw_the_reference_picture_of_geometry_behind_the_eye(pictures, label):
     """Off the edges of the reference picture, all six agree with it pixel for pixel (these scenes
     have no cycles or piercing, so the heedless painter is right too); on its edge pixels (where a
-    pixel centre lies within rounding of a polygon's edge or of the near plane's cut) at most 2% of
-    the image differs (measured: at most 0.4%)."""
+    pixel centre lies within rounding of a polygon's edge or of the near plane's cut) at most 0.5% of
+    the image may differ (measured: no pixel differs in any of these scenes; the allowance is for a
+    pixel centre within rounding of an edge on another CPU or BLAS)."""
     ref, ids = pictures[label]
     edges = hs.edge_pixels(ref)
     for name, got in ids.items():
         assert np.array_equal(got[~edges], ref[~edges]), (label, name, int((got != ref).sum()))
-        assert (got != ref).mean() <= 0.02, (label, name)
+        assert (got != ref).mean() <= 0.005, (label, name)
 
 
 def test_the_near_plane_pictures_are_not_empty_and_the_too_near_triangle_is_gone(pictures):
@@ -227,8 +228,9 @@ def test_a_closed_box_of_perfect_reflectors_is_refused_before_iterating(label):
 
 
 def test_a_row_of_rho_F_above_1_is_accepted_when_the_spectral_radius_is_below_1():
-    # row 0 of rho F sums to 1.04 (hemi-cube rows may exceed 1 by a little) but rho(M) = sqrt(0.52)
-    F, rho, E = np.array([[0.0, 1.04], [0.5, 0.0]]), np.array([1.0, 1.0]), np.array([1.0, 2.0])
+    # row 0 of rho F sums to 1.04 (hemi-cube rows may exceed 1 by a little) but the spectral radius
+    # of [[0.54, 0.5], [0.5, 0]] is 0.27 + sqrt(0.27^2 + 0.25) = 0.838
+    F, rho, E = np.array([[0.54, 0.5], [0.5, 0.0]]), np.array([1.0, 1.0]), np.array([1.0, 2.0])
     exact = np.linalg.solve(np.eye(2) - rho[:, None] * F, E)
     for B in (rd.jacobi(F, rho, E, tol=1e-12), rd.gauss_seidel(F, rho, E, tol=1e-12),
               rd.progressive_refinement(F, rho, E, [1.0, 1.0], tol=1e-12)):
