@@ -287,7 +287,9 @@ class Camera:
         P = as_points(polygon, "polygon", dim=3, min_count=3)
         if len(P) < 3:
             raise ValueError(f"polygon must have at least 3 vertices; got {len(P)}")
-        w = self.view_depth(P) - self.near
+        E, n, _, _ = self._frame
+        with np.errstate(over="ignore", invalid="ignore"):
+            w = finite_result((P - E) @ n - self.near, "polygon", why="is too far from the camera")
         return _clip_half_space(P, w)
 
     def pixel_directions(self, columns, rows) -> np.ndarray:
