@@ -20,7 +20,13 @@ it drew it, for the step-through of the views.
   (:func:`bsp_back_to_front`); then paint.
 
 All but the heedless painter produce the same ``ids`` up to pixels on the edges of polygons (and on
-the lines where polygons cross); the painters scan convert with the same rule.  :func:`shade`
+the lines where polygons cross); the painters scan convert with the same rule.  Every algorithm draws
+the same part of each polygon: the part at or beyond the camera's near plane, clipped once for all
+(:meth:`goldman_lib.shading.Camera.clip_polygon`, with a guard band of :data:`GUARD` image sizes), so
+a polygon reaching behind the eye, or one nearer than the near plane, is one picture in all six.
+The work is bounded before any pixel is drawn: the polygons' screen extents summed (their overdraw;
+polygons x pixels for ray casting) by :data:`MAX_PIXEL_TESTS`, the depth sort's pairs of polygons
+overlapping in depth by :data:`MAX_PAIR_TESTS`.  :func:`shade`
 colours an ``ids`` image by uniform shading (one :func:`goldman_lib.lighting.intensity` per polygon).
 
 >>> polygons, colours = default_scene()
@@ -51,6 +57,9 @@ MAX_POLYGONS = 2000
 #: The most pixel candidates one rendering may examine: the polygons' screen extents summed (their
 #: overdraw) for the scan-converting algorithms, polygons x pixels for ray casting.
 MAX_PIXEL_TESTS = MAX_ITEMS
+#: The guard band of the clip (:meth:`goldman_lib.shading.Camera.clip_polygon`): polygons are cut
+#: to the view frustum widened this many times, so screen coordinates stay within a few image sizes.
+GUARD = 4.0
 #: The most pairs of pieces the depth sort may compare (its tests 1-4 on one pair are one).
 MAX_PAIR_TESTS = 400_000
 
@@ -130,13 +139,13 @@ def _camera(camera) -> shading.Camera:
 
 
 def _visible(camera, polys) -> list:
-    """``(index, part)`` of every polygon with a part at or beyond the camera's near plane
-    (:meth:`goldman_lib.shading.Camera.clip_polygon`): the one near-plane clip all six algorithms
-    share, so a polygon reaching behind the eye, or one nearer than the near plane, is the same
-    picture (or none) in each."""
+    """``(index, part)`` of every polygon with a part at or beyond the camera's near plane and
+    within the guard band (:meth:`goldman_lib.shading.Camera.clip_polygon`, ``guard=GUARD``): the
+    one clip all six algorithms share, so a polygon reaching behind the eye, or one nearer than the
+    near plane, is the same picture (or none) in each, and no vertex projects far off the image."""
     out = []
     for k, P in enumerate(polys):
-        C = shading._clip_half_space(P, _view_depth(camera, P) - camera.near)
+        C = camera._clip(P, GUARD)
         if C is not None:
             out.append((k, C))
     return out
@@ -632,7 +641,9 @@ def depth_sort(polygons, camera) -> Rendering:
     all tests fail, Q moves to the front of the list and is tried first; a Q that must move twice is
     in a cycle (or pierces P), and P is split by Q's plane (or Q by P's) and the pieces re-sorted.
     ``order``: the pieces ``(polygon index, vertices)`` in painting order.  (The book's fifth test,
-    whether the projections overlap at all, is left out: it only saves moves.)
+    whether the projections overlap at all, is left out: it only saves moves.)  Coplanar pieces hide
+    nothing of each other and pass without test 4; more than :data:`MAX_PAIR_TESTS` pairs overlapping
+    in depth are refused before sorting.
 
     >>> r = depth_sort(*default_scene()[:1], default_camera(32, 24))
     >>> len(r.order) > 5        # the cycle and the piercing triangles force splits

@@ -634,9 +634,10 @@ class _Watch:
                 rate = (r / back) ** (1.0 / (STALL_ITERATIONS // 2))
                 more = math.log(self.tol / r) / math.log(rate)
                 if k + more > 10 * self.kmax:           # (rates change as light spreads: a wide margin)
-                    raise ValueError(f"rho and F converge too slowly for tol = {self.tol:g}: the {self.solver} residual "
-                                     f"falls by a factor {rate:.9f} per iteration (it is {r:.3g} after {k}); reaching tol "
-                                     f"would take about {k + more:,.0f} iterations, far over the limit of {self.kmax:,}")
+                    raise ValueError(f"rho and F converge too slowly for tol = {self.tol:g}: the {self.solver} "
+                                     f"residual falls by a factor {rate:.9f} per iteration (it is {r:.3g} after {k}); "
+                                     f"reaching tol would take about {k + more:,.0f} iterations, far over the limit "
+                                     f"of {self.kmax:,}")
 
 
 def radiosity_matrix(F, rho) -> np.ndarray:

@@ -270,13 +270,16 @@ class Camera:
         with np.errstate(over="ignore", invalid="ignore"):
             return finite_result((P - E) @ n, "points", why="are too far from the camera")
 
-    def clip_polygon(self, polygon):
+    def clip_polygon(self, polygon, guard=None):
         """The part of a convex polygon at or beyond the near plane ``w = near`` (Sutherland and
         Hodgman's clipping against one plane, Goldman §22.1's near plane): ``(k', 3)`` vertices in
         the polygon's order, or None if nothing of it is that far.  A vertex nearer than ``near``
         (or behind the eye) is replaced by the points where its edges cross the plane, so every
         vertex of the result projects in front of the eye; the one home of the near plane of the
-        hidden-surface algorithms (chapter 22), so that all of them draw the same part.
+        hidden-surface algorithms (chapter 22), so that all of them draw the same part.  guard: if
+        given (>= 1), the polygon is also clipped to the view frustum widened ``guard`` times
+        (guard-band clipping: what is cut away lies far outside the image, and the screen
+        coordinates of what is left stay within ``guard`` image sizes of it).
 
         >>> cam = Camera(eye=(0, 0, 0), target=(0, 1, 0), near=1.0)
         >>> cam.clip_polygon([[0, -1, 0], [1, 3, 0], [-1, 3, 0]]).tolist()
@@ -289,8 +292,26 @@ class Camera:
             raise ValueError(f"polygon must have at least 3 vertices; got {len(P)}")
         E, n, _, _ = self._frame
         with np.errstate(over="ignore", invalid="ignore"):
-            w = finite_result((P - E) @ n - self.near, "polygon", why="is too far from the camera")
-        return _clip_half_space(P, w)
+            finite_result((P - E) @ n, "polygon", why="is too far from the camera")
+        if guard is not None:
+            guard = as_float(guard, "guard")
+            if not 1 <= guard <= 1e6:
+                raise ValueError(f"guard must be in [1, 1e6] (image sizes kept around the image); got {guard}")
+        return self._clip(P, guard)
+
+    def _clip(self, P, guard=None):
+        """:meth:`clip_polygon` without the checks (P: a finite (k, 3) array)."""
+        E, n, right, up = self._frame
+        D = P - E
+        C = _clip_half_space(P, D @ n - self.near)
+        if C is None or guard is None:
+            return C
+        tx, ty = guard * 0.5 * self.width / self.scale, guard * 0.5 * self.height / self.scale
+        for normal in (tx * n - right, tx * n + right, ty * n - up, ty * n + up):
+            C = _clip_half_space(C, (C - E) @ normal)           # |x| <= tx w, |y| <= ty w
+            if C is None:
+                return None
+        return C
 
     def pixel_directions(self, columns, rows) -> np.ndarray:
         """Unit directions from the eye through the centres of pixels ``(rows, columns)`` (arrays of

@@ -89,6 +89,9 @@ SCENES = {
     "a triangle nearer than the near plane": [TOO_NEAR, WALL],
     "a triangle behind the eye": [BEHIND, WALL],
     "a wall crossing the near plane": [[[-0.3, -7.3, -3], [0.6, -5, -3], [0.6, -5, 3], [-0.3, -7.3, 3]], WALL],
+    # projected without the guard band its corners would lie ~1e7 pixels off the image
+    "a huge triangle just beyond the near plane": [WALL, [[-1e5, -6.45, 0.6 - 1e5], [1e5, -6.45, 0.6 + 1e5],
+                                                          [-1e5, -6.45, 0.6 + 1e5]]],
 }
 
 
@@ -169,6 +172,29 @@ def test_clip_polygon_against_sampled_points():
         depth = (X - E) @ view
         clear = np.abs(depth - camera.near) > 1e-6
         assert np.array_equal(inside[clear], depth[clear] >= camera.near)
+
+
+def test_the_guard_band_keeps_screen_coordinates_near_the_image_and_every_pixel_of_it():
+    rng = np.random.default_rng(5)
+    camera = CAMERA
+    rows, cols = np.mgrid[0:camera.height, 0:camera.width]
+    D = camera.pixel_directions(cols, rows).reshape(-1, 3)
+    E = np.array(camera.eye)
+    for _ in range(30):
+        P = E + rng.normal(size=(3, 3)) * [1e4, 5, 1e4] + [0, 3, 0]
+        C = camera.clip_polygon(P, guard=4)
+        full = camera.clip_polygon(P)
+        if full is None:
+            assert C is None
+            continue
+        # the same pixels: every pixel ray meets the plane inside both or neither (reference_ids)
+        assert np.array_equal(reference_ids([full], camera), reference_ids([C] if C is not None else [], camera))
+        if C is not None:
+            S = camera.project(C)
+            assert np.abs(S[:, 0] - camera.width / 2).max() <= 2 * camera.width * (1 + 1e-9)
+            assert np.abs(S[:, 1] - camera.height / 2).max() <= 2 * camera.height * (1 + 1e-9)
+    with pytest.raises(ValueError, match="guard must be in"):
+        camera.clip_polygon(P, guard=0.5)
 
 
 # -- §2 hidden surfaces: the work budget -------------------------------------------------------------------
