@@ -686,8 +686,14 @@ def jacobi(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
         B_i^(k+1) = E_i + rho_i sum_j F_ij B_j^(k),      B^(0) = E,
 
     so ``B^(k)`` holds the light after ``k`` bounces.  Stops when the residual ``max |E + rho F B - B|``
-    is ``<= tol`` or after ``max_iterations`` (default and bound: the work budget, and with a history
-    the memory its iterates take).
+    is ``<= tol`` or after ``max_iterations`` (default and bound: the work budget, ``100 MAX_ITEMS``
+    multiply-adds by default, and with a history the memory its iterates take).
+
+    Before iterating, a system without a solution the iteration reaches (spectral radius of
+    ``rho F`` >= 1: ``rho = 1`` on a closed box) is refused; while iterating, divergence, a stall
+    above ``tol`` (round-off) and, at the default cap, a rate that cannot reach ``tol`` in ten times
+    the cap are ValueErrors saying what was seen.  The same holds for :func:`gauss_seidel` and
+    :func:`progressive_refinement`.
 
     F: ``(n, n)`` form factors (rows summing to at most 1).  rho: ``(n,)`` or ``(n, c)`` reflectances in
     [0, 1].  E: ``(n,)`` or ``(n, c)`` emission (c colour channels).  Returns the radiosities (the shape
@@ -702,6 +708,8 @@ def jacobi(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
     tol = as_tolerance(tol)
     channels = 1 if E.ndim == 1 else E.shape[1]
     kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
+    if max_iterations is None:                 # an iteration is n^2 c work: the default cap counts it
+        kmax = min(kmax, max(1, 100 * MAX_ITEMS // (len(F) ** 2 * channels)))
     _check_solvable(F, rho)
     B = E.copy()
     gathered = rho * (F @ B)
@@ -972,6 +980,8 @@ def cornell_box(n=8, closed=False, blocks=True, light=(0.5, 0.5), light_size=0.2
     with ``blocks`` two white blocks on the floor; a square light of side ``light_size`` at ``light``
     on the ceiling (:func:`light_emission`).  The floor's patches under the blocks see nothing and
     are seen by nothing.  ``n = 8`` gives 446 patches; every wall and block face is a grid (:attr:`Patches.grids`).
+    ``n`` is bounded so that the form factors (patches x patches numbers) fit the work budget
+    (``n <= 21`` with the blocks).
 
     >>> len(cornell_box()), len(cornell_box(4, closed=True, blocks=False))
     (446, 96)
