@@ -20,7 +20,13 @@ it drew it, for the step-through of the views.
   (:func:`bsp_back_to_front`); then paint.
 
 All but the heedless painter produce the same ``ids`` up to pixels on the edges of polygons (and on
-the lines where polygons cross); the painters scan convert with the same rule.  :func:`shade`
+the lines where polygons cross); the painters scan convert with the same rule.  Every algorithm draws
+the same part of each polygon: the part at or beyond the camera's near plane, clipped once for all
+(:meth:`goldman_lib.shading.Camera.clip_polygon`, with a guard band of :data:`GUARD` image sizes), so
+a polygon reaching behind the eye, or one nearer than the near plane, is one picture in all six.
+The work is bounded before any pixel is drawn: the polygons' screen extents summed (their overdraw;
+polygons x pixels for ray casting) by :data:`MAX_PIXEL_TESTS`, the depth sort's pairs of polygons
+overlapping in depth by :data:`MAX_PAIR_TESTS`.  :func:`shade`
 colours an ``ids`` image by uniform shading (one :func:`goldman_lib.lighting.intensity` per polygon).
 
 >>> polygons, colours = default_scene()
@@ -39,8 +45,8 @@ import numpy as np
 
 from goldman_lib import lighting, shading
 from goldman_lib.simple_surfaces import Polygon
-from goldman_lib.validation import (as_float, as_float_array, as_points, check_finite, finite_result,
-                                    within_budget)
+from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_points, check_finite,
+                                    finite_result, within_budget)
 
 __all__ = ["Rendering", "default_scene", "default_camera", "split_polygon", "heedless_painter", "z_buffer",
            "scan_line", "ray_casting", "depth_sort", "BSPNode", "build_bsp", "bsp_back_to_front", "bsp_render",
@@ -48,6 +54,14 @@ __all__ = ["Rendering", "default_scene", "default_camera", "split_polygon", "hee
 
 #: Polygons (pieces included) an algorithm may handle: splitting can multiply them.
 MAX_POLYGONS = 2000
+#: The most pixel candidates one rendering may examine: the polygons' screen extents summed (their
+#: overdraw) for the scan-converting algorithms, polygons x pixels for ray casting.
+MAX_PIXEL_TESTS = MAX_ITEMS
+#: The guard band of the clip (:meth:`goldman_lib.shading.Camera.clip_polygon`): polygons are cut
+#: to the view frustum widened this many times, so screen coordinates stay within a few image sizes.
+GUARD = 4.0
+#: The most pairs of pieces the depth sort may compare (its tests 1-4 on one pair are one).
+MAX_PAIR_TESTS = 400_000
 
 
 class Rendering(NamedTuple):
@@ -124,6 +138,52 @@ def _camera(camera) -> shading.Camera:
     return camera
 
 
+def _visible(camera, polys) -> list:
+    """``(index, part)`` of every polygon with a part at or beyond the camera's near plane and
+    within the guard band (:meth:`goldman_lib.shading.Camera.clip_polygon`, ``guard=GUARD``): the
+    one clip all six algorithms share, so a polygon reaching behind the eye, or one nearer than the
+    near plane, is the same picture (or none) in each, and no vertex projects far off the image."""
+    out = []
+    for k, P in enumerate(polys):
+        C = camera._clip(P, GUARD)
+        if C is not None:
+            out.append((k, C))
+    return out
+
+
+def _screens(camera, polys) -> list:
+    """The screen coordinates ``(k, 4)`` of each polygon's vertices (one projection for all)."""
+    if not polys:
+        return []
+    S = camera.project(np.vstack(polys))
+    return np.split(S, np.cumsum([len(P) for P in polys])[:-1])
+
+
+def _extent_pixels(camera, S) -> int:
+    """The pixels of the image inside the screen extent (bounding box) of a clipped polygon's screen
+    vertices S: what its scan conversion examines."""
+    x0 = min(max(np.ceil(S[:, 0].min() - 0.5), 0), camera.width)
+    x1 = min(max(np.floor(S[:, 0].max() - 0.5), -1), camera.width - 1)
+    y0 = min(max(np.ceil(S[:, 1].min() - 0.5), 0), camera.height)
+    y1 = min(max(np.floor(S[:, 1].max() - 0.5), -1), camera.height - 1)
+    return int(max(x1 - x0 + 1, 0) * max(y1 - y0 + 1, 0))
+
+
+def _check_work(camera, items, ray_cast=False) -> None:
+    """The work budget of a rendering (:data:`MAX_PIXEL_TESTS`), checked before any pixel is drawn:
+    polygons x covered pixels (the overdraw), or polygons x pixels for ray casting."""
+    if ray_cast:
+        cost = len(items) * camera.width * camera.height
+        rule = f"ray casting tests every polygon against every pixel: {len(items)} x {camera.width * camera.height:,}"
+    else:
+        cost = sum(_extent_pixels(camera, S) for S in _screens(camera, [P for _, P in items]))
+        rule = "the polygons' screen extents, summed (each pixel once per polygon that may cover it: the overdraw)"
+    if cost > MAX_PIXEL_TESTS:
+        raise ValueError(f"polygons must cover at most {MAX_PIXEL_TESTS:,} pixels in all at this camera's "
+                         f"{camera.width}x{camera.height} image; {rule} come to {cost:,}: use fewer or smaller "
+                         "polygons, or a smaller image")
+
+
 def _fan(k: int) -> np.ndarray:
     return np.stack([np.zeros(k - 2, np.intp), np.arange(1, k - 1), np.arange(2, k)], 1)
 
@@ -194,22 +254,25 @@ def _plane(P):
 
 # -- painting through the shared scan conversion ----------------------------------------------------
 
-def _cover(camera, P) -> np.ndarray:
-    """The pixels whose centres the projected polygon covers (the rasteriser's rule): (h, w) bool."""
-    S = camera.project(P)
-    if np.any(S[:, 3] <= camera.near):
+def _cover(camera, P, S=None) -> np.ndarray:
+    """The pixels whose centres the projected polygon covers (the rasteriser's rule): (h, w) bool.
+    S: its screen vertices, if already projected."""
+    S = camera.project(P) if S is None else S
+    if np.any(S[:, 3] <= 0):                             # (clipped by _visible before it gets here)
         return np.zeros((camera.height, camera.width), bool)
     S = S[:, :3].copy()
     S[:, 2] = 0.5
-    return shading.rasterise_triangles(S, _fan(len(P)), camera.width, camera.height).triangle >= 0
+    if np.abs(S[:, :2]).max() > 1e9:
+        raise ValueError("polygons must project within 1e9 pixels of the image (move them away from the eye's plane)")
+    return shading._rasterise(S, _fan(len(P)), camera.width, camera.height).triangle >= 0
 
 
 def _paint(camera, pieces, keep_frames=False):
     """Paint (polygon index, vertices) pieces in order, each over the last."""
     ids = np.full((camera.height, camera.width), -1, dtype=np.intp)
     frames = []
-    for k, P in pieces:
-        ids[_cover(camera, P)] = k
+    for (k, P), S in zip(pieces, _screens(camera, [P for _, P in pieces])):
+        ids[_cover(camera, P, S)] = k
         if keep_frames:
             frames.append(ids.copy())
     return ids, frames
@@ -217,9 +280,9 @@ def _paint(camera, pieces, keep_frames=False):
 
 # -- §22.2 the heedless painter ---------------------------------------------------------------------
 
-def _painter_order(polys, camera):
-    far = [float(_view_depth(camera, P).max()) for P in polys]
-    return sorted(range(len(polys)), key=lambda k: -far[k])
+def _painter_order(items, camera):
+    far = {k: float(_view_depth(camera, P).max()) for k, P in items}
+    return sorted(far, key=lambda k: -far[k])
 
 
 def heedless_painter(polygons, camera) -> Rendering:
@@ -233,17 +296,20 @@ def heedless_painter(polygons, camera) -> Rendering:
     [3, 0, 4, 1, 2]
     """
     polys, camera = _polygons(polygons), _camera(camera)
-    order = _painter_order(polys, camera)
-    ids, _ = _paint(camera, [(k, polys[k]) for k in order])
+    items = _visible(camera, polys)
+    _check_work(camera, items)
+    order = _painter_order(items, camera)
+    part = dict(items)
+    ids, _ = _paint(camera, [(k, part[k]) for k in order])
     return Rendering(ids, order)
 
 
 # -- §22.3 the z-buffer ------------------------------------------------------------------------------
 
-def _zbuffer(camera, polys, upto=None):
+def _zbuffer(camera, items, upto=None):
     V, T, owner = [], [], []
     base = 0
-    for k, P in enumerate(polys[:upto]):
+    for k, P in items[:upto]:
         V.append(P)
         T.append(_fan(len(P)) + base)
         owner.append(np.full(len(P) - 2, k))
@@ -267,13 +333,15 @@ def z_buffer(polygons, camera) -> Rendering:
     ([0, 1, 2, 3, 4], True)
     """
     polys, camera = _polygons(polygons), _camera(camera)
-    return Rendering(_zbuffer(camera, polys), list(range(len(polys))))
+    items = _visible(camera, polys)
+    _check_work(camera, items)
+    return Rendering(_zbuffer(camera, items), [k for k, _ in items])
 
 
 # -- §22.4 scan line ----------------------------------------------------------------------------------
 
 def _screen_planes(camera, polys):
-    """Per polygon: screen vertices (k, 3) and the plane z = a x + b y + c in screen space."""
+    """Per (clipped) polygon: screen vertices (k, 3) and the plane z = a x + b y + c in screen space."""
     out = []
     for P in polys:
         S = camera.project(P)[:, :3]
@@ -287,9 +355,10 @@ def _screen_planes(camera, polys):
     return out
 
 
-def _scan_line(camera, polys, keep_frames=False):
+def _scan_line(camera, items, keep_frames=False):
     W, H = camera.width, camera.height
-    planes = _screen_planes(camera, polys)
+    index = np.array([k for k, _ in items] + [-1], dtype=np.intp)      # position -> polygon (-1: none)
+    planes = _screen_planes(camera, [P for _, P in items])
     # the edge table: every non-horizontal edge, bucketed by the first scan line (row) it crosses
     rows_first, edges = [], []
     for k, (S, plane) in enumerate(planes):
@@ -343,7 +412,7 @@ def _scan_line(camera, polys, keep_frames=False):
                 j, k, z = j[keep], k[keep], z[keep]
                 sel = np.lexsort((k, z, j))
                 first = np.r_[True, j[sel][1:] != j[sel][:-1]]
-                ids[row, j[sel][first]] = k[sel][first]
+                ids[row, j[sel][first]] = index[k[sel][first]]
                 line = ids[row]
                 change = np.flatnonzero(np.r_[True, line[1:] != line[:-1]])
                 for a, b in zip(change, np.r_[change[1:], W]):
@@ -370,19 +439,21 @@ def scan_line(polygons, camera) -> Rendering:
     True
     """
     polys, camera = _polygons(polygons), _camera(camera)
-    ids, order, _ = _scan_line(camera, polys)
+    items = _visible(camera, polys)
+    _check_work(camera, items)
+    ids, order, _ = _scan_line(camera, items)
     return Rendering(ids, order)
 
 
 # -- §22.5 ray casting -------------------------------------------------------------------------------
 
-def _ray_casting(camera, polys, keep_frames=False):
+def _ray_casting(camera, items, keep_frames=False):
     o, d = camera.rays()
     D = d.reshape(-1, 3)
     O = np.broadcast_to(o, D.shape)
     best = np.full(len(D), np.inf)
     ids = np.full(len(D), -1, dtype=np.intp)
-    for k, P in enumerate(polys):
+    for k, P in items:
         try:
             surface = Polygon(P)
         except ValueError:
@@ -412,7 +483,9 @@ def ray_casting(polygons, camera) -> Rendering:
     ([0, 1, 2], (24, 32))
     """
     polys, camera = _polygons(polygons), _camera(camera)
-    ids, _ = _ray_casting(camera, polys)
+    items = _visible(camera, polys)
+    _check_work(camera, items, ray_cast=True)
+    ids, _ = _ray_casting(camera, items)
     return Rendering(ids, list(range(camera.height)))
 
 
@@ -425,14 +498,20 @@ class _Piece:
     near: float
     far: float
     box: np.ndarray         # screen x0, x1, y0, y1
+    point: np.ndarray       # its plane: a point and the Newell normal (zero for a degenerate piece)
+    normal: np.ndarray
+    eye_side: float         # the sign of the eye's side of that plane
     moved: bool = False
+    id: int = -1            # its row in the depth sort's table of boxes and planes
 
 
-def _piece(camera, k, P):
+def _piece(camera, k, P, S=None):
     w = _view_depth(camera, P)
-    S = camera.project(P)
+    S = camera.project(P) if S is None else S
+    point, normal = _plane(P)
     return _Piece(k, P, float(w.min()), float(w.max()), np.array([S[:, 0].min(), S[:, 0].max(), S[:, 1].min(),
-                                                                  S[:, 1].max()]))
+                                                                  S[:, 1].max()]),
+                  point, normal, float(np.sign((np.asarray(camera.eye) - point) @ normal)))
 
 
 def _side_of(P, plane, eye, eps):
@@ -447,29 +526,84 @@ def _side_of(P, plane, eye, eps):
     return 0
 
 
-def _depth_sort(camera, polys, eps=1e-9):
+def _pair_tests(near, far, eps) -> int:
+    """The pairs of pieces whose depth ranges overlap (sorted by far depth, each P against the Q after
+    it that reach nearer than P's near end): the pairs the depth sort compares at least once."""
+    order = np.argsort(-far, kind="stable")
+    near, far = near[order], far[order]
+    # far is non-increasing: the Q after P overlapping it in depth are those with far > P.near + eps
+    reach = np.searchsorted(-far, -(near + eps), side="left")
+    return int(np.maximum(reach - np.arange(len(far)) - 1, 0).sum())
+
+
+def _depth_sort(camera, items, eps=1e-9):
     eye = np.asarray(camera.eye)
-    pieces = sorted((_piece(camera, k, P) for k, P in enumerate(polys)), key=lambda p: -p.far)
+    depths = [_view_depth(camera, P) for _, P in items]
+    pairs = _pair_tests(np.array([w.min() for w in depths]), np.array([w.max() for w in depths]), eps)
+    if pairs > MAX_PAIR_TESTS:
+        raise ValueError(f"polygons must overlap in depth in at most {MAX_PAIR_TESTS:,} pairs for the depth sort "
+                         f"(each such pair is compared by the extent and plane tests); these {len(items)} polygons "
+                         f"overlap in depth in {pairs:,} pairs")
+    screens = _screens(camera, [P for _, P in items])
+    pieces = sorted((_piece(camera, k, P, S) for (k, P), S in zip(items, screens)), key=lambda p: -p.far)
+    # a table of every piece's box and plane, so a piece is compared with many at once
+    table = {"box": [], "point": [], "normal": [], "side": []}
+
+    def enter(new):
+        base = len(table["side"])
+        for i, p in enumerate(new):
+            p.id = base + i
+        rows = {"box": [p.box for p in new], "point": [p.point for p in new], "normal": [p.normal for p in new],
+                "side": [p.eye_side for p in new]}
+        for key, value in rows.items():
+            table[key] = np.concatenate([np.asarray(table[key], float).reshape((-1,) + np.shape(value)[1:]),
+                                         np.asarray(value, float)])
+
+    enter(pieces)
     out = []
-    budget = 50 * (len(polys) + 1) ** 2
+    budget = 50 * (len(items) + 1) ** 2
+    pairs = 0
     while pieces:
         budget -= 1
         if budget < 0 or len(pieces) + len(out) > MAX_POLYGONS:
             raise ValueError("polygons need more reordering or splitting than the depth sort's budget allows")
         P = pieces[0]
         blocker = None
+        # the Q after P that overlap it in depth: the list is sorted by far depth (but for the pieces
+        # moved to its front), so they run up to the first Q that lies wholly nearer than P's near end
+        candidates = []
         for idx in range(1, len(pieces)):
-            Q = pieces[idx]
-            if Q.far <= P.near + eps:
-                break                                    # sorted by far depth: no later Q overlaps P in depth
-            if Q.box[0] >= P.box[1] or P.box[0] >= Q.box[1] or Q.box[2] >= P.box[3] or P.box[2] >= Q.box[3]:
-                continue                                 # tests 1-2: the screen extents are disjoint
-            if _side_of(P.P, _plane(Q.P), eye, eps) == -1:
-                continue                                 # test 3: P lies behind Q's plane
-            if _side_of(Q.P, _plane(P.P), eye, eps) == 1:
-                continue                                 # test 4: Q lies in front of P's plane
-            blocker = idx
-            break
+            if pieces[idx].far <= P.near + eps:
+                break
+            candidates.append(idx)
+        pairs += len(candidates)
+        if pairs > MAX_PAIR_TESTS:
+            raise ValueError(f"polygons need more than {MAX_PAIR_TESTS:,} pair tests in the depth sort (pieces "
+                             "overlapping in depth, compared by the extent and plane tests)")
+        if candidates:
+            # tests 1-2, for all candidates at once: the screen extents are disjoint
+            ids = np.array([pieces[i].id for i in candidates])
+            box = table["box"][ids]
+            overlap = ~((box[:, 0] >= P.box[1]) | (P.box[0] >= box[:, 1]) | (box[:, 2] >= P.box[3])
+                        | (P.box[2] >= box[:, 3]))
+            near = [candidates[j] for j in np.flatnonzero(overlap)]
+            ids = ids[overlap]
+        else:
+            near = []
+        if near:
+            # test 3, for all of them at once: P lies behind Q's plane (every vertex on the far side
+            # or on it, seen from the eye); P in Q's plane (coplanar pieces) hides nothing of Q nor
+            # Q of P, so test 4 passes for it without being made
+            point, normal, side = table["point"][ids], table["normal"][ids], table["side"][ids]
+            sv = np.einsum("vqj,qj->vq", P.P[:, None, :] - point[None], normal) * side
+            behind = np.all(sv <= eps, axis=0) & ~np.all(sv >= -eps, axis=0)
+            coplanar = np.all(np.abs(sv) <= eps, axis=0) & np.any(normal != 0, axis=1) & bool(np.any(P.normal))
+            for j in np.flatnonzero(~behind & ~coplanar):
+                Q = pieces[near[j]]
+                if _side_of(Q.P, (P.point, P.normal), eye, eps) == 1:
+                    continue                             # test 4: Q lies in front of P's plane
+                blocker = near[j]
+                break
         if blocker is None:
             out.append(pieces.pop(0))                    # nothing in front of P needs drawing first
             continue
@@ -479,10 +613,10 @@ def _depth_sort(camera, polys, eps=1e-9):
             pieces.insert(0, pieces.pop(blocker))
             continue
         # Q was moved before: a cycle (or interpenetration). Split P by Q's plane.
-        point, normal = _plane(Q.P)
+        point, normal = Q.point, Q.normal
         front, back = _split(P.P, (P.P - point) @ normal, eps)
         if front is None or back is None:                # P does not cross Q's plane: split Q by P's
-            point, normal = _plane(P.P)
+            point, normal = P.point, P.normal
             front, back = _split(Q.P, (Q.P - point) @ normal, eps)
             if front is None or back is None:
                 out.append(pieces.pop(0))                # nothing to split: accept the order (touching)
@@ -493,6 +627,7 @@ def _depth_sort(camera, polys, eps=1e-9):
             pieces.pop(0)
             parent = P.polygon
         new = [_piece(camera, parent, front), _piece(camera, parent, back)]
+        enter(new)
         pieces.extend(new)
         pieces.sort(key=lambda p: -p.far)
     return [(p.polygon, p.P) for p in out]
@@ -506,14 +641,18 @@ def depth_sort(polygons, camera) -> Rendering:
     all tests fail, Q moves to the front of the list and is tried first; a Q that must move twice is
     in a cycle (or pierces P), and P is split by Q's plane (or Q by P's) and the pieces re-sorted.
     ``order``: the pieces ``(polygon index, vertices)`` in painting order.  (The book's fifth test,
-    whether the projections overlap at all, is left out: it only saves moves.)
+    whether the projections overlap at all, is left out: it only saves moves.)  Coplanar pieces hide
+    nothing of each other and pass without test 4; more than :data:`MAX_PAIR_TESTS` pairs overlapping
+    in depth are refused before sorting.
 
     >>> r = depth_sort(*default_scene()[:1], default_camera(32, 24))
     >>> len(r.order) > 5        # the cycle and the piercing triangles force splits
     True
     """
     polys, camera = _polygons(polygons), _camera(camera)
-    order = _depth_sort(camera, polys)
+    items = _visible(camera, polys)
+    _check_work(camera, items)
+    order = _depth_sort(camera, items)
     ids, _ = _paint(camera, order)
     return Rendering(ids, order)
 
@@ -615,7 +754,9 @@ def bsp_render(polygons, camera) -> Rendering:
     [0, 1, 2, 3, 4]
     """
     polys, camera = _polygons(polygons), _camera(camera)
-    order = bsp_back_to_front(build_bsp(polys), camera.eye)
+    items = _visible(camera, polys)
+    _check_work(camera, items)
+    order = bsp_back_to_front(_build(items, 1e-9, [0]), camera.eye)
     ids, _ = _paint(camera, order)
     return Rendering(ids, order)
 
@@ -642,14 +783,22 @@ def frames(algorithm: str, polygons, camera) -> np.ndarray:
         within_budget(camera.height, "camera", cost=lambda h: h * hw, what="the frames", unit="pixels")
     else:
         within_budget(len(polys), "polygons", cost=lambda n: n * hw * 8, what="the frames", unit="pixels")
+    items = _visible(camera, polys)
     if algorithm == "scan line":
-        return np.array(_scan_line(camera, polys, keep_frames=True)[2])
+        _check_work(camera, items)
+        return np.array(_scan_line(camera, items, keep_frames=True)[2])
     if algorithm == "ray casting":
-        return np.array(_ray_casting(camera, polys, keep_frames=True)[1])
+        _check_work(camera, items, ray_cast=True)
+        return np.array(_ray_casting(camera, items, keep_frames=True)[1])
     if algorithm == "z-buffer":
-        return np.array([_zbuffer(camera, polys, upto=k + 1) for k in range(len(polys))])
+        _check_work(camera, items)
+        extent = sum(_extent_pixels(camera, S) for S in _screens(camera, [P for _, P in items]))
+        within_budget(len(items), "polygons", cost=lambda n: n * extent,
+                      what="the z-buffer's frames (each drawn afresh)", unit="pixel tests", limit=MAX_PIXEL_TESTS)
+        return np.array([_zbuffer(camera, items, upto=k + 1) for k in range(len(items))])
     order = ALGORITHMS[algorithm][0](polys, camera).order
-    pieces = [(k, polys[k]) for k in order] if algorithm == "heedless painter" else order
+    part = dict(items)
+    pieces = [(k, part[k]) for k in order] if algorithm == "heedless painter" else order
     return np.array(_paint(camera, pieces, keep_frames=True)[1])
 
 

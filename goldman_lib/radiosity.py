@@ -411,9 +411,17 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1) -> np
     res = _check_resolution(resolution)
     so, su_, sv_, nu, nv, first = _surfaces(patches)
     m = len(so)
+    if n * n > MAX_ITEMS:
+        raise ValueError(f"patches must number at most {math.isqrt(MAX_ITEMS):,}: their form factors are n x n = "
+                         f"{n * n:,} numbers, over the limit of {MAX_ITEMS:,}; got {n:,} patches")
+    one = n * 3 * res * res * m                              # the tests of one hemi-cube per patch
+    if one > MAX_HEMICUBE_TESTS:
+        largest = 2 * math.isqrt(MAX_HEMICUBE_TESTS // (n * 3 * m * 4))
+        raise ValueError(f"resolution must be <= {largest} for {n} patches ({m} rectangles): one hemi-cube per patch at "
+                         f"resolution {res} makes {one:,} ray-rectangle tests, over the limit of {MAX_HEMICUBE_TESTS:,}")
     within_budget(subdivisions, "subdivisions", cost=lambda s: n * s * s * 3 * res * res * m,
                   what=f"the hemi-cubes of {n} patches at resolution {res}", unit="ray-rectangle tests",
-                  limit=MAX_HEMICUBE_TESTS)
+                  limit=MAX_HEMICUBE_TESTS, minimum=1)
     directions, _ = hemicube_cells(res)
     delta = hemicube_delta_form_factors(res)
     R = len(directions)
@@ -559,6 +567,79 @@ def _check_iterations(value, name, n, channels, keep):
     return k
 
 
+#: Iterations without a new smallest residual after which a solver calls its iteration stalled.
+STALL_ITERATIONS = 1000
+
+
+def _check_solvable(F, rho) -> None:
+    """Refuse, before iterating, a radiosity system ``B = E + rho F B`` that has no solution the
+    iterations can reach (Goldman §23.5).  With ``M = diag(rho) F`` nonnegative, the Jacobi,
+    Gauss-Seidel and shooting iterations converge for every ``E`` exactly when the spectral radius of
+    ``M`` is < 1 (Perron-Frobenius; Stein-Rosenberg for Gauss-Seidel; shooting solves the equation
+    of ``diag(rho) A^-1 F^T A``, whose spectral radius is the same); otherwise light is never lost
+    and no nonnegative ``B`` solves the equation for a positive ``E``.  The spectral radius is < 1
+    when every row of ``M`` sums to less than 1 (``rho < 1``, or rows of ``F`` summing to less than
+    1: a contraction in the max norm, the usual case, checked first); else exactly when ``(I - M) y
+    = 1`` has a solution ``y >= 1`` (then ``M y = y - 1 < y``, so ``max (M y)_i / y_i < 1``; and
+    conversely ``y = sum M^k 1``), solved once per channel.  ``y`` beyond 1e12 is singular to
+    working precision (the iterations would need more than 1e12 steps)."""
+    rows = F.sum(axis=1)
+    M_rows = rho * (rows if rho.ndim == 1 else rows[:, None])
+    if float(M_rows.max()) < 1.0:
+        return
+    R = rho if rho.ndim == 2 else rho[:, None]
+    n = len(F)
+    for c in range(R.shape[1]):
+        if c and np.array_equal(R[:, c], R[:, c - 1]):
+            continue
+        within_budget(n, "F", cost=lambda m: m ** 3 // 3, what="the solvability check (one LU factorisation)",
+                      unit="operations", limit=100 * MAX_ITEMS)
+        with np.errstate(all="ignore"):
+            try:
+                y = np.linalg.solve(np.eye(n) - R[:, c, None] * F, np.ones(n))
+            except np.linalg.LinAlgError:
+                y = None
+        if y is None or not np.all(np.isfinite(y)) or y.min() < 1 - 1e-9 or y.max() > 1e12:
+            where = "" if R.shape[1] == 1 else f" (channel {c})"
+            raise ValueError(f"rho and F must let light escape: B = E + rho F B has a solution the iterations reach "
+                             f"only when the spectral radius of rho F is < 1, and here it is >= 1{where} -- the "
+                             f"patches keep all the light they receive (rho = 1 where F's rows sum to 1, as in a "
+                             f"closed box of perfect reflectors: light bounces forever and grows without bound)")
+
+
+class _Watch:
+    """What a solver's residuals show: divergence (a residual not finite, or grown a millionfold),
+    a stall (no new smallest residual in :data:`STALL_ITERATIONS` iterations: ``tol`` is below the
+    round-off of these radiosities) or, when the solver runs to the default cap, a rate of decrease
+    (measured over the last 500 iterations, every 1000) that would need more than ten times the cap
+    to reach ``tol``.  Raises ValueError saying what was seen."""
+
+    def __init__(self, solver, r0, tol, kmax, default_cap):
+        self.solver, self.tol, self.kmax, self.default_cap = solver, tol, kmax, default_cap
+        self.first, self.best, self.at = r0, r0, 0
+
+    def __call__(self, k, r, residuals):
+        if not math.isfinite(r) or r > 1e6 * max(self.first, 1e-300) + 1e-300:
+            raise ValueError(f"rho, F and E gave a diverging {self.solver} iteration: the residual grew from "
+                             f"{self.first:.3g} to {r:.3g} in {k} iterations")
+        if r < self.best:
+            self.best, self.at = r, k
+        elif k - self.at >= STALL_ITERATIONS:
+            raise ValueError(f"tol must be reachable: the {self.solver} iteration stalled at residual {self.best:.3g} "
+                             f"(no smaller residual in {STALL_ITERATIONS} iterations, after {k} in all), above "
+                             f"tol = {self.tol:g}; round-off allows no better")
+        if self.default_cap and k % STALL_ITERATIONS == 0 and k >= STALL_ITERATIONS and r > self.tol:
+            back = residuals[-1 - STALL_ITERATIONS // 2] if len(residuals) > STALL_ITERATIONS // 2 else None
+            if back and back > r > 0:
+                rate = (r / back) ** (1.0 / (STALL_ITERATIONS // 2))
+                more = math.log(self.tol / r) / math.log(rate)
+                if k + more > 10 * self.kmax:           # (rates change as light spreads: a wide margin)
+                    raise ValueError(f"rho and F converge too slowly for tol = {self.tol:g}: the {self.solver} "
+                                     f"residual falls by a factor {rate:.9f} per iteration (it is {r:.3g} after {k}); "
+                                     f"reaching tol would take about {k + more:,.0f} iterations, far over the limit "
+                                     f"of {self.kmax:,}")
+
+
 def radiosity_matrix(F, rho) -> np.ndarray:
     """The matrix ``I - diag(rho) F`` of the radiosity equation ``(I - diag(rho) F) B = E`` (Goldman
     §23.2) for one channel (``rho`` of shape ``(n,)``).
@@ -605,8 +686,14 @@ def jacobi(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
         B_i^(k+1) = E_i + rho_i sum_j F_ij B_j^(k),      B^(0) = E,
 
     so ``B^(k)`` holds the light after ``k`` bounces.  Stops when the residual ``max |E + rho F B - B|``
-    is ``<= tol`` or after ``max_iterations`` (default and bound: the work budget, and with a history
-    the memory its iterates take).
+    is ``<= tol`` or after ``max_iterations`` (default and bound: the work budget, ``100 MAX_ITEMS``
+    multiply-adds by default, and with a history the memory its iterates take).
+
+    Before iterating, a system without a solution the iteration reaches (spectral radius of
+    ``rho F`` >= 1: ``rho = 1`` on a closed box) is refused; while iterating, divergence, a stall
+    above ``tol`` (round-off) and, at the default cap, a rate that cannot reach ``tol`` in ten times
+    the cap are ValueErrors saying what was seen.  The same holds for :func:`gauss_seidel` and
+    :func:`progressive_refinement`.
 
     F: ``(n, n)`` form factors (rows summing to at most 1).  rho: ``(n,)`` or ``(n, c)`` reflectances in
     [0, 1].  E: ``(n,)`` or ``(n, c)`` emission (c colour channels).  Returns the radiosities (the shape
@@ -621,15 +708,20 @@ def jacobi(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
     tol = as_tolerance(tol)
     channels = 1 if E.ndim == 1 else E.shape[1]
     kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
+    if max_iterations is None:                 # an iteration is n^2 c work: the default cap counts it
+        kmax = min(kmax, max(1, 100 * MAX_ITEMS // (len(F) ** 2 * channels)))
+    _check_solvable(F, rho)
     B = E.copy()
     gathered = rho * (F @ B)
     residuals = [float(np.abs(E + gathered - B).max())]
+    watch = _Watch("Jacobi", residuals[0], tol, kmax, max_iterations is None)
     iterates = [B]
     while residuals[-1] > tol and len(residuals) <= kmax:
         B = E + gathered
         gathered = rho * (F @ B)
         residuals.append(float(np.abs(E + gathered - B).max()))
         iterates.append(B) if return_history else iterates.__setitem__(0, B)
+        watch(len(residuals) - 1, residuals[-1], residuals)
     return _history(iterates, residuals, tol, return_history)
 
 
@@ -650,14 +742,19 @@ def gauss_seidel(F, rho, E, tol=1e-6, max_iterations=None, return_history=False)
     tol = as_tolerance(tol)
     channels = 1 if E.ndim == 1 else E.shape[1]
     kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
+    if max_iterations is None:                 # a sweep is n steps of Python: the default cap counts steps
+        kmax = min(kmax, max(1, MAX_ITERATIONS // len(F)))
+    _check_solvable(F, rho)
     B = E.copy()
     residuals = [float(np.abs(E + rho * (F @ B) - B).max())]
+    watch = _Watch("Gauss-Seidel", residuals[0], tol, kmax, max_iterations is None)
     iterates = [B.copy()]
     while residuals[-1] > tol and len(residuals) <= kmax:
         for i in range(len(F)):
             B[i] = E[i] + rho[i] * (F[i] @ B)
         residuals.append(float(np.abs(E + rho * (F @ B) - B).max()))
         iterates.append(B.copy()) if return_history else iterates.__setitem__(0, B.copy())
+        watch(len(residuals) - 1, residuals[-1], residuals)
     return _history(iterates, residuals, tol, return_history)
 
 
@@ -759,6 +856,7 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
     tol = as_tolerance(tol)
     channels = 1 if E.ndim == 1 else E.shape[1]
     kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
+    _check_solvable(F, rho)
     if operators is None and len(F) <= 600 and kmax > 2 * len(F):
         # The residual after a shot follows from the one before in O(n) (ShootingOperators.change),
         # formed once (n^3) when up to 600 patches may shoot more than 2n times; otherwise each shot
@@ -780,6 +878,7 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
     power_weight = A if E.ndim == 1 else A[:, None]
     r = rho * (received_by @ dB)                          # the residual vector rho F dB
     residuals = [float(np.abs(r).max())]
+    watch = _Watch("progressive refinement", residuals[0], tol, kmax, max_iterations is None)
     iterates = [B.copy()]
     shooters = []
     while residuals[-1] > tol and len(residuals) <= kmax:
@@ -802,6 +901,7 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
         residuals.append(value)
         if return_history:
             iterates.append(B.copy())
+        watch(len(residuals) - 1, value, residuals)
     if not return_history:
         return B
     return SolverHistory(B, np.array(residuals), np.array(iterates), bool(residuals[-1] <= tol),
@@ -880,12 +980,26 @@ def cornell_box(n=8, closed=False, blocks=True, light=(0.5, 0.5), light_size=0.2
     with ``blocks`` two white blocks on the floor; a square light of side ``light_size`` at ``light``
     on the ceiling (:func:`light_emission`).  The floor's patches under the blocks see nothing and
     are seen by nothing.  ``n = 8`` gives 446 patches; every wall and block face is a grid (:attr:`Patches.grids`).
+    ``n`` is bounded so that the form factors (patches x patches numbers) fit the work budget
+    (``n <= 21`` with the blocks).
 
     >>> len(cornell_box()), len(cornell_box(4, closed=True, blocks=False))
     (446, 96)
     """
     n = as_int(n, "n", minimum=1)
-    n = within_budget(n, "n", cost=lambda m: 7 * m * m, what="the Cornell box", unit="patches", limit=20_000)
+    walls = 6 if closed else 5
+    blocks_on = bool(blocks)
+
+    def patches(m):
+        count = walls * m * m
+        if blocks_on:
+            for lo, hi in (b[1:] for b in _BLOCKS):
+                count += sum(nu * nv for *_, nu, nv in _block(lo, hi, m))
+        return count
+
+    # the form factors of p patches are p x p numbers: the box must leave room for them
+    n = within_budget(n, "n", cost=lambda m: patches(m) ** 2, what="the Cornell box's form factors (patches x patches)",
+                      unit="numbers", minimum=1)
     lx, ly = (as_float(v, "light") for v in as_points(light, "light", ndim=1, dim=2))
     light_size = as_float(light_size, "light_size")
     if not 0 < light_size <= 1:

@@ -418,6 +418,17 @@ def in_shadow(scene: Scene, points, normals) -> np.ndarray:
                         scene.lights)
 
 
+def _check_lights(scene, rays: int) -> None:
+    """Every ray that hits casts a shadow ray to every light: ``rays x (1 + lights)`` rays in all,
+    within :data:`goldman_lib.validation.MAX_ITEMS` (checked before any is traced)."""
+    lights = len(scene.lights)
+    if rays * (1 + lights) > MAX_ITEMS:
+        most = max(MAX_ITEMS // max(rays, 1) - 1, 0)
+        raise ValueError(f"scene.lights must number at most {most:,} for {rays:,} traced rays (each casts a shadow ray "
+                         f"to every light: rays x (1 + lights) = {rays * (1 + lights):,}, over the limit of "
+                         f"{MAX_ITEMS:,}); got {lights:,} lights: use fewer lights, a smaller image or a lower depth")
+
+
 def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | None = None,
           miss_length: float = 3.0, counts: dict | None = None) -> np.ndarray:
     """The colour each ray brings back, traced recursively to ``depth`` (Goldman §17.2-17.5):
@@ -443,6 +454,7 @@ def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | N
     depth = as_int(depth, "depth", minimum=0, maximum=MAX_DEPTH)
     within_budget(depth, "depth", cost=lambda k: len(o) * (2 ** (k + 1) - 1), what=f"the ray trees of {len(o)} rays",
                   unit="rays")
+    _check_lights(scene, len(o) * (2 ** (depth + 1) - 1))
     miss_length = as_float(miss_length, "miss_length", positive=True)
     if counts is not None and not isinstance(counts, dict):
         raise TypeError(f"counts must be a dict (to receive the ray counts) or None; got {type(counts).__name__}")

@@ -259,6 +259,60 @@ class Camera:
         out[bad, :3] = [0.0, 0.0, -1.0]                    # behind the eye: clipped by the rasteriser
         return finite_result(out, "points", why="are too far from the camera")
 
+    def view_depth(self, points) -> np.ndarray:
+        """The distance ``w`` of points along the view direction (negative behind the eye): ``(n,)``.
+
+        >>> Camera(eye=(0, -5, 0), target=(0, 0, 0)).view_depth([[0, 0, 0], [3, -6, 1]]).tolist()
+        [5.0, -1.0]
+        """
+        P = as_points(points, "points", dim=3)
+        E, n, _, _ = self._frame
+        with np.errstate(over="ignore", invalid="ignore"):
+            return finite_result((P - E) @ n, "points", why="are too far from the camera")
+
+    def clip_polygon(self, polygon, guard=None):
+        """The part of a convex polygon at or beyond the near plane ``w = near`` (Sutherland and
+        Hodgman's clipping against one plane, Goldman §22.1's near plane): ``(k', 3)`` vertices in
+        the polygon's order, or None if nothing of it is that far.  A vertex nearer than ``near``
+        (or behind the eye) is replaced by the points where its edges cross the plane, so every
+        vertex of the result projects in front of the eye; the one home of the near plane of the
+        hidden-surface algorithms (chapter 22), so that all of them draw the same part.  guard: if
+        given (>= 1), the polygon is also clipped to the view frustum widened ``guard`` times
+        (guard-band clipping: what is cut away lies far outside the image, and the screen
+        coordinates of what is left stay within ``guard`` image sizes of it).
+
+        >>> cam = Camera(eye=(0, 0, 0), target=(0, 1, 0), near=1.0)
+        >>> cam.clip_polygon([[0, -1, 0], [1, 3, 0], [-1, 3, 0]]).tolist()
+        [[0.5, 1.0, 0.0], [1.0, 3.0, 0.0], [-1.0, 3.0, 0.0], [-0.5, 1.0, 0.0]]
+        >>> cam.clip_polygon([[0, -1, 0], [1, 0.5, 0], [-1, 0.5, 0]]) is None
+        True
+        """
+        P = as_points(polygon, "polygon", dim=3, min_count=3)
+        if len(P) < 3:
+            raise ValueError(f"polygon must have at least 3 vertices; got {len(P)}")
+        E, n, _, _ = self._frame
+        with np.errstate(over="ignore", invalid="ignore"):
+            finite_result((P - E) @ n, "polygon", why="is too far from the camera")
+        if guard is not None:
+            guard = as_float(guard, "guard")
+            if not 1 <= guard <= 1e6:
+                raise ValueError(f"guard must be in [1, 1e6] (image sizes kept around the image); got {guard}")
+        return self._clip(P, guard)
+
+    def _clip(self, P, guard=None):
+        """:meth:`clip_polygon` without the checks (P: a finite (k, 3) array)."""
+        E, n, right, up = self._frame
+        D = P - E
+        C = _clip_half_space(P, D @ n - self.near)
+        if C is None or guard is None:
+            return C
+        tx, ty = guard * 0.5 * self.width / self.scale, guard * 0.5 * self.height / self.scale
+        for normal in (tx * n - right, tx * n + right, ty * n - up, ty * n + up):
+            C = _clip_half_space(C, (C - E) @ normal)           # |x| <= tx w, |y| <= ty w
+            if C is None:
+                return None
+        return C
+
     def pixel_directions(self, columns, rows) -> np.ndarray:
         """Unit directions from the eye through the centres of pixels ``(rows, columns)`` (arrays of
         one shape; column from the left, row from the top): shape ``columns.shape + (3,)``.  The
@@ -282,6 +336,27 @@ class Camera:
         ``(origin (3,), directions (height, width, 3))`` with unit directions."""
         rows, columns = np.mgrid[0:self.height, 0:self.width]
         return np.array(self._frame[0]), self.pixel_directions(columns, rows)
+
+
+def _clip_half_space(P: np.ndarray, s: np.ndarray):
+    """Sutherland-Hodgman with one plane: the part of polygon P (k, 3) where the signed distance s
+    (k,) is >= 0, or None if it has no area.  A polygon wholly on the kept side is returned as is
+    (the same array), so a scene the plane does not cut is drawn bit for bit as before."""
+    if np.all(s >= 0):
+        return P
+    if not np.any(s > 0):
+        return None
+    out = []
+    k = len(P)
+    for i in range(k):
+        a, b, sa, sb = P[i], P[(i + 1) % k], s[i], s[(i + 1) % k]
+        if sa >= 0:
+            out.append(a)
+        if (sa > 0 and sb < 0) or (sa < 0 and sb > 0):
+            out.append(a + (sa / (sa - sb)) * (b - a))
+    if len(out) < 3:
+        return None
+    return np.array(out)
 
 
 # -- the scan conversion: one home for chapters 21 and 22 ------------------------------------------

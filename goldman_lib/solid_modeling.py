@@ -42,7 +42,7 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_int, as_points, as_t
 
 __all__ = ["euler_characteristic", "genus", "BRep", "cube", "tetrahedron", "torus_mesh", "frame",
            "Octree", "EMPTY", "FULL", "PARTIAL", "OPERATIONS", "intervals", "combine_intervals",
-           "CSG", "Union", "Intersection", "Difference"]
+           "CSG", "Union", "Intersection", "Difference", "MAX_CSG_DEPTH", "MAX_INTERVALS"]
 
 
 # ==================================================================================================
@@ -781,8 +781,22 @@ def _combine_raw(a, b, op, la=None, lb=None, operation="union"):
         width = max(min(breaks.shape[1], used + 1), 2)
         breaks, order = breaks[:, :width], order[:, :width]
         lo, hi = breaks[:, :-1], breaks[:, 1:]
-        ina = ((A[:, None, :, 0] <= lo[..., None]) & (hi[..., None] <= A[:, None, :, 1])).any(axis=2)
-        inb = ((B[:, None, :, 0] <= lo[..., None]) & (hi[..., None] <= B[:, None, :, 1])).any(axis=2)
+        # an interval covers the piece (lo, hi) iff it starts at or before lo and ends after it (no
+        # end lies strictly between lo and hi); those ending at or before lo started there too, so
+        # the count #(starts <= lo) - #(ends <= lo) of the sorted ends decides: O(M log M) per ray
+        src = order[:, :-1]
+        Ka = A.shape[1] * 2
+        kinds = [(src < Ka) & (src % 2 == 0), (src < Ka) & (src % 2 == 1),
+                 (src >= Ka) & ((src - Ka) % 2 == 0), (src >= Ka) & ((src - Ka) % 2 == 1)]
+        W0 = lo.shape[1]
+        last = np.ones(lo.shape, bool)                   # the last of each run of equal ends
+        last[:, :-1] = lo[:, 1:] != lo[:, :-1]
+        idx = np.where(last, np.arange(W0), W0 - 1)
+        g = np.minimum.accumulate(idx[:, ::-1], axis=1)[:, ::-1]
+        rows_ = np.arange(n)[:, None]
+        c = [np.cumsum(k, axis=1)[rows_, g] for k in kinds]
+        ina = c[0] - c[1] > 0
+        inb = c[2] - c[3] > 0
         keep = op(ina, inb) & (hi > lo)
         W = lo.shape[1]
     Ma, Mb = a.shape[1], b.shape[1]
@@ -828,6 +842,11 @@ def _interval_list(x, name: str) -> np.ndarray:
     return arr
 
 
+#: The most intervals (both lists, all rays) one :func:`combine_intervals` may combine: a second or
+#: two of sorting and sweeping their ends.
+MAX_INTERVALS = MAX_ITEMS // 4
+
+
 def combine_intervals(first, second, operation: str) -> np.ndarray:
     """Combine two lists of closed parameter intervals by a boolean operation (Goldman §20.2): the
     step of ray classification that turns the intervals where a ray is inside ``A`` and inside
@@ -856,6 +875,9 @@ def combine_intervals(first, second, operation: str) -> np.ndarray:
         a, b = a[None], b[None]
     if a.shape[0] != b.shape[0]:
         raise ValueError(f"first and second must hold as many rays; got {a.shape[0]} and {b.shape[0]}")
+    if a[..., 0].size + b[..., 0].size > MAX_INTERVALS:
+        raise ValueError(f"first and second must hold at most {MAX_INTERVALS:,} intervals together (their ends are "
+                         f"sorted and swept, a few arrays of them); got {a[..., 0].size:,} and {b[..., 0].size:,}")
     a = a.reshape(a.shape[0], -1, 2) if a.shape[1] else np.full((a.shape[0], 1, 2), np.inf)
     b = b.reshape(b.shape[0], -1, 2) if b.shape[1] else np.full((b.shape[0], 1, 2), np.inf)
     out = _merge(_combine_raw(a, b, OPERATIONS[operation], operation=operation)[0])
@@ -909,6 +931,11 @@ def intervals(solid, origins, directions) -> np.ndarray:
     return _merge(_primitive_segments(s, np.ascontiguousarray(o), np.ascontiguousarray(d), 1)[0])
 
 
+#: The deepest CSG tree (levels from the root to the deepest leaf): every ray classification,
+#: ``contains`` and bounding sphere recurses once per level.
+MAX_CSG_DEPTH = 200
+
+
 class CSG(Surface):
     """A node of a CSG tree (Goldman §20.2): the boolean ``operation`` of two solids ``a`` and ``b``
     (simple surfaces that bound solids, or CSG nodes).  Use :class:`Union`, :class:`Intersection`,
@@ -926,6 +953,12 @@ class CSG(Surface):
 
     def __init__(self, a, b, material: Material | None = None):
         self.a, self.b = _solid(a, "a"), _solid(b, "b")
+        self.depth = 1 + max(getattr(child, "depth", 0) if isinstance(child, CSG) else 0 for child in (self.a, self.b))
+        if self.depth > MAX_CSG_DEPTH:
+            deeper = "a" if getattr(self.a, "depth", 0) >= getattr(self.b, "depth", 0) else "b"
+            raise ValueError(f"{deeper} must be a CSG tree at most {MAX_CSG_DEPTH - 1} deep: ray classification "
+                             f"recurses once per level, and this node would be {self.depth} deep (over the limit of "
+                             f"{MAX_CSG_DEPTH}); build a long chain of unions as a balanced tree (pairs of pairs)")
         self._set_material(material if material is not None else self.a.material)
         # leaf occurrences, each with its sign (+1, or -1 where it is subtracted an odd number of times)
         self.leaves: list = []

@@ -491,6 +491,54 @@ def _probe_cases():
         ("codo.run('REPEAT 20000 [ REPEAT 20000 [ ] ]')",
          lambda: codo.run("REPEAT 20000 [ REPEAT 20000 [ ] ]"), None),
         ("turtle.circle(1e308)", lambda: turtle.circle(1e308), "radius"),
+    ] + _part3_probes()
+
+
+def _part3_probes():
+    """Issue 20, sections 2-3: many polygons, lights, patches and intervals, deep CSG trees,
+    singular radiosity systems and geometry behind the eye (``param`` None: an answer, not a refusal,
+    is expected)."""
+    from goldman_lib import hidden_surfaces as hs, lighting, radiosity as rd, ray_tracing as rt, shading
+    from goldman_lib import simple_surfaces as ss, solid_modeling as sm
+
+    big = shading.Camera((0, -7, 0.6), (0, 0, 0.1), (0, 0, 1), 36, 1000, 1000)
+    filling = [[[-50, k * 0.01, -50], [50, k * 0.01, -50], [50, k * 0.01, 50], [-50, k * 0.01, 50]] for k in range(200)]
+    square = [[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]]
+    floor = [[-3, -20, -1], [3, -20, -1], [3, 5, -1], [-3, 5, -1]]
+    too_near = [[-0.1, -6.95, 0.5], [0.1, -6.95, 0.5], [0, -6.95, 0.7]]
+    closed = (np.ones((50, 50)) - np.eye(50)) / 49
+    many = np.stack([np.arange(3e6), np.arange(3e6) + 0.5], 1)
+
+    def nested(count):
+        solid = ss.Sphere((0, 0, 0), 1)
+        for k in range(count):
+            solid = sm.Union(solid, ss.Sphere((k * 0.01, 0, 0), 1))
+        return solid
+
+    probes = [(f"hidden_surfaces.{f.__name__}(200 screen-filling polygons, 1000x1000)",
+               functools.partial(f, filling, big), "polygons") for f, _ in hs.ALGORITHMS.values()]
+    probes += [(f"hidden_surfaces.{f.__name__}(a floor behind the eye, a triangle nearer than near)",
+                functools.partial(f, [floor, too_near], hs.default_camera(40, 30)), None)
+               for f, _ in hs.ALGORITHMS.values()]
+    return probes + [
+        ("hidden_surfaces.depth_sort(2000 coincident squares)",
+         lambda: hs.depth_sort([square] * 2000, hs.default_camera(40, 30)), "polygons"),
+        ("radiosity.jacobi(closed white box, rho = 1)", lambda: rd.jacobi([[0, 1.0], [1.0, 0]], [1, 1], [1, 1]), "rho"),
+        ("radiosity.gauss_seidel(closed 50-patch box, rho = 1)",
+         lambda: rd.gauss_seidel(closed, np.ones(50), np.ones(50)), "rho"),
+        ("radiosity.progressive_refinement(closed 50-patch box, rho = 1)",
+         lambda: rd.progressive_refinement(closed, np.ones(50), np.ones(50), np.ones(50)), "rho"),
+        ("radiosity.jacobi(rho = 1 - 1e-7: hopelessly slow)",
+         lambda: rd.jacobi([[0, 1.0], [1.0, 0]], [1, 0.9999999], [1, 1]), "rho"),
+        ("radiosity.cornell_box(50)", lambda: rd.cornell_box(50), "n"),
+        ("radiosity.hemicube_form_factors(cornell_box(), resolution=400)",
+         lambda: rd.hemicube_form_factors(rd.cornell_box(), resolution=400), "resolution"),
+        ("ray_tracing.render(3000 lights)",
+         lambda: rt.render(rt.default_scene(lights=[lighting.Light((0, 0, 5 + k * 1e-3)) for k in range(3000)]),
+                           rt.default_camera()), "scene"),
+        ("solid_modeling.combine_intervals(3M intervals each)", lambda: sm.combine_intervals(many, many, "union"),
+         "first"),
+        ("solid_modeling.Union nested 1000 deep", lambda: nested(1000), "a"),
     ]
 
 
