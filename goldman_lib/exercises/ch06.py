@@ -343,6 +343,12 @@ def _compare_ifs(got, expected, case) -> str | None:
     if hausdorff_distance(mine, about_origin) <= tol:
         return ("its attractor sits on the square with corner (0, 0): the maps must scale about the square's corner "
                 f"{fmt(corner)} (or translate by the corner's share, corner * 2/3, too)")
+    full_corner = ifs.deterministic(ifs.IFS([affine.scaling(1.0 / 3.0) @ affine.translation(
+        np.asarray(corner, float) + np.array([i, j]) * side / 3.0) for i, j in cells]), level)
+    if hausdorff_distance(mine, full_corner) <= tol:
+        return ("its maps scale about (0, 0) and then translate by the whole corner: the scaling has moved the "
+                "corner to corner/3 already, so the translation is corner * 2/3 + (i, j) * side/3 (or scale about "
+                "the corner itself)")
     shrink = affine.scaling(1.0 / 3.0, center=corner)
     translate_first = ifs.deterministic(ifs.IFS([affine.translation(np.array([i, j]) * side / 3.0) @ shrink
                                                  for i, j in cells]), level)
