@@ -383,6 +383,10 @@ def _compare_quadric(got, expected, case) -> str | None:
             return f"{ray}: you returned {fmt(g)}, a root behind the origin (or at t = 0); the first hit in front is {fmt(e)}"
         if np.any(np.abs(h - g) <= 1e-6 * (1 + np.abs(g))):
             return f"{ray}: you returned {fmt(g)}, the far root; the first hit in front of the origin is {fmt(e)}"
+        length = float(np.linalg.norm(d[k]))
+        if abs(length - 1) > 1e-6 and abs(g - e * length) <= 1e-6 * (1 + abs(e * length)):
+            return (f"{ray}: you returned {fmt(g)}, the distance along the unit direction; t is the parameter of "
+                    f"the direction as given (P0 + t d with d not normalised), here {fmt(e)}")
         return f"{ray}: you returned {fmt(g)}, expected {fmt(e)}"
     return None
 
