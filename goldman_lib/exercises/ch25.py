@@ -422,6 +422,10 @@ def _compare_split(got, expected, case) -> str | None:
     if np.allclose(gl, other[0], atol=tol) and np.allclose(gr, other[1], atol=tol):
         return (f"these are the polygons of the split at 1 - t = {fmt(1 - t)}: each level should take "
                 f"(1 - t) P_j + t P_(j+1), a fraction t of the way from P_j to P_(j+1)")
+    half = bezier.subdivide(P, 0.5)
+    if abs(t - 0.5) > 1e-9 and np.allclose(gl, half[0], atol=tol) and np.allclose(gr, half[1], atol=tol):
+        return (f"these are the polygons of the split at t = 1/2 (midpoints at every level); split at the t given, "
+                f"t = {fmt(t)}")
     for name, g, e in (("left", gl, left), ("right", gr, right)):
         err = np.linalg.norm(g - e, axis=1)
         bad = np.flatnonzero(err > tol)
