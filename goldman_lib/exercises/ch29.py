@@ -430,6 +430,17 @@ def _compare_matrices(got, expected, case):
         which = "L" if ok(L, EL.T) else "R"
         return (f"{which} is transposed: with control points as rows, each new control point is a row of {which} "
                 f"times P, so the rows (not the columns) sum to 1")
+    if ok(L, EL) and ok(R, ER[::-1]):
+        return ("the rows of R are in reverse order: R @ P controls the piece over [t, 1], which starts at C(t) "
+                "(the apex of the triangle) and ends at the last control point")
+    n, t = len(EL) - 1, float(case.kwargs.get("t", 0.5))
+    for s_, why in ((1.0 - t, f"these are the matrices of the split at 1 - t = {fmt(1 - t)}: each step of the "
+                              f"triangle is (1 - t) P_j + t P_(j+1)"),
+                    (0.5, "these are the matrices of the split at t = 1/2: use the t given")):
+        if abs(s_ - t) > 1e-12:
+            AL, AR = sm.bezier_subdivision_matrices(n, s_)
+            if ok(L, AL) and ok(R, AR):
+                return why
     for name, M, E in (("L", L, EL), ("R", R, ER)):
         bad = np.argwhere(np.abs(M - E) > 1e-9)
         if bad.size:
