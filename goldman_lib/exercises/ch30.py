@@ -441,7 +441,19 @@ def _compare_ring(got, expected, case):
             return ("the edge points are shifted by one place: row 1 + i should be the edge point of the edge "
                     "(v, ring[i]), whose opposite vertices are ring[i - 1] and ring[i + 1]")
     k = int(bad[0])
+    v, ring = (np.asarray(a, dtype=float) for a in case.args)
+    if np.allclose(arr[1:], (v + ring) / 2, atol=1e-9) and not np.allclose(exp[1:], (v + ring) / 2, atol=1e-9):
+        return ("the edge points are the midpoints of the edges: the edge stencil is 3/8 (v + ring[i]) + 1/8 "
+                "(ring[i - 1] + ring[i + 1]), the two opposite vertices included")
     if k == 0:
+        beta_loop = (5 / 8 - (3 / 8 + np.cos(2 * np.pi / n) / 4) ** 2) / n
+        beta_warren = 3 / 16 if n == 3 else 3 / (8 * n)
+        names = [name for beta, name in ((beta_loop, "Loop's vertex rule (beta from the cosine formula)"),
+                                         (beta_warren, "Warren's vertex rule (3/16 at valence 3)"))
+                 if np.allclose(arr[0], (1 - n * beta) * v + beta * ring.sum(axis=0), atol=1e-9)]
+        if names:
+            return (f"the vertex point (row 0) follows {' and '.join(names)}; this chapter's centroid rule is "
+                    f"5/8 v + 3/(8n) times the sum of the ring, at every valence")
         return f"the vertex point (row 0) is {fmt(err[0], 2)} from where it should be, expected {fmt(exp[0])}"
     return (f"the edge point of the edge (v, ring[{k - 1}]) (row {k}) is {fmt(err[k], 2)} from where it should be, "
             f"expected {fmt(exp[k])}")
