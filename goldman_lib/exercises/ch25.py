@@ -443,8 +443,11 @@ def check_subdivision_project(function) -> Result:
     Says which case fails first and how: polygons of the wrong shape, the right polygon reversed,
     the two exchanged, t and 1 - t exchanged, or the first point that is off and by how much.
 
-    >>> check_subdivision_project(bezier.subdivide)
-    Correct: de Casteljau subdivision passes all 15 cases, including a repeated control point, all control points equal, collinear points, random 2D, random 3D, t = 0, t = 1.
+    >>> def exchanged(ctrl, t):
+    ...     left, right = bezier.subdivide(ctrl, t)
+    ...     return right, left
+    >>> print(check_subdivision_project(exchanged).message)   # doctest: +ELLIPSIS
+    case 1 of 15 (...): ...; the two polygons are exchanged: ... Hint: ...
     """
     return check_project(function, subdivision_project_cases(), reference=bezier.subdivide, compare=_compare_split,
                          what="de Casteljau subdivision",

@@ -432,8 +432,10 @@ def check_boehm_project(function) -> Result:
     generated cases of :func:`boehm_project_cases` against :func:`goldman_lib.knot_insertion.boehm_insert`
     (Goldman §28.3.1).
 
-    >>> check_boehm_project(lambda ctrl, knots, degree, u: _boehm_variant(ctrl, knots, degree, u))  # doctest: +ELLIPSIS
-    Correct: Boehm's knot insertion passes all 41 cases, including degenerate: u already of multiplicity p, ...
+    >>> def swapped(ctrl, knots, degree, u):
+    ...     return _boehm_variant(ctrl, knots, degree, u, swap=True)
+    >>> print(check_boehm_project(swapped).message)   # doctest: +ELLIPSIS
+    case ...: ...; the weights are swapped: ... Hint: ...
     """
     return check_project(function, boehm_project_cases(), reference=_boehm_reference, compare=_boehm_compare,
                          what="Boehm's knot insertion",

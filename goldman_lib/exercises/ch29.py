@@ -455,9 +455,11 @@ def check_subdivision_matrices_project(function) -> Result:
     :func:`goldman_lib.subdivision_matrices.bezier_subdivision_matrices` for degrees 1 to 6 at t = 1/2,
     at random t (fixed seed) and at the degenerate t = 0 and t = 1 (Goldman §29.2, programming project).
 
-    >>> from goldman_lib import subdivision_matrices as sm
-    >>> check_subdivision_matrices_project(sm.bezier_subdivision_matrices)
-    Correct: subdivision_matrices(n, t) passes all 12 cases, including degenerate t = 0 and t = 1, degree 1 (a segment), degrees 2-6 at t = 1/2, random t.
+    >>> def swapped(n, t=0.5):
+    ...     L, R = sm.bezier_subdivision_matrices(n, t)
+    ...     return R, L
+    >>> print(check_subdivision_matrices_project(swapped).message)   # doctest: +ELLIPSIS
+    case 1 of 12 (...): ...; L and R are swapped: ... Hint: ...
     """
     learner = _Learner(function) if callable(function) else function
     return check_project(learner, _project_cases(), reference=sm.bezier_subdivision_matrices,
