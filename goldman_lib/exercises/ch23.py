@@ -4,8 +4,8 @@ Each exercise's data are module constants, so the notebook prints the problem fr
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers each checker recognises.  ``None`` or ``...`` means "not answered yet".
 The data differ from the chapter's worked examples.  The programming project,
-:func:`check_progressive_refinement_project`, runs the learner's shooting solver against
-:func:`goldman_lib.radiosity.progressive_refinement` on generated scenes.
+:func:`check_progressive_refinement_project`, runs the learner's shooting solver on generated scenes
+with reciprocal form factors and compares with the exact solution of B = E + rho F B.
 
 >>> print(check_reciprocity(0.12).message)
 that is F_ij itself: form factors are not symmetric; A_i F_ij = A_j F_ji, so F_ji = A_i F_ij / A_j.
