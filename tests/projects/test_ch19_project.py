@@ -127,7 +127,7 @@ REJECTED = [
     (far_root, "the far root"),
     (zero_counts, "the root t = 0 is not a hit"),
     (no_linear_case, "when a = d Q d^T is 0 the equation is linear"),
-    (tangent_misses, "a tangent ray has a double root"),
+    (tangent_misses, "this ray is tangent: the discriminant is 0"),
     (unit_directions, "the distance along the unit direction"),
 ]
 
