@@ -88,74 +88,24 @@ def test_perspective_and_vector_slips():
     assert "column convention" in v([[4, -2, 6], [2, -1, 3]])
 
 
-# -- the programming project --------------------------------------------------------------------------
-
-def hand_perspective(eye, plane_point, normal):
-    """The matrix of §13.5 written out by hand: [[c I + NᵀE, Nᵀ], [-(Q·N) E, -E·N]], c = (Q - E)·N."""
-    E, Q, N = (np.asarray(x, dtype=float) for x in (eye, plane_point, normal))
-    c = (Q - E) @ N
-    M = np.zeros((4, 4))
-    M[:3, :3] = c * np.eye(3) + np.outer(N, E)
-    M[:3, 3] = N
-    M[3, :3] = -(Q @ N) * E
-    M[3, 3] = -(E @ N)
-    return M
-
-
-def test_project_accepts_a_correct_function_and_any_nonzero_multiple():
-    r = ch13.check_perspective_matrix_project(hand_perspective)
-    assert r.correct, r
-    assert "an unnormalised normal" in r.message and "the eye far away" in r.message
-    assert ch13.check_perspective_matrix_project(lambda e, q, n: -2.5 * hand_perspective(e, q, n)).correct
-
-
-def test_project_names_a_transposed_matrix():
-    r = ch13.check_perspective_matrix_project(lambda e, q, n: hand_perspective(e, q, n).T)
-    assert not r.correct and r.answered
-    assert r.message.startswith("case 1 of 9 (eye ")
-    assert "goes to" in r.message and "expected" in r.message and "transposed (the column convention)" in r.message
-
-
-def test_project_names_the_unnormalised_normal_case():
-    def mixed(eye, plane_point, normal):
-        E, Q, N = (np.asarray(x, dtype=float) for x in (eye, plane_point, normal))
-        n = N / np.linalg.norm(N)
-        M = hand_perspective(E, Q, n)
-        M[:3, :3] = ((Q - E) @ N) * np.eye(3) + np.outer(n, E)   # c with the raw N, the rest with the unit n
-        return M
-
-    r = ch13.check_perspective_matrix_project(mixed)
-    assert not r.correct and r.message.startswith("case 5 of 9 (eye (1, -2, 6), plane through (0.5, 0, 1) with "
-                                                  "normal (0, 0, 3.7))")
-    assert "not a unit vector" in r.message
-
-
-def test_project_names_an_affine_matrix():
-    def affine(eye, plane_point, normal):
-        M = hand_perspective(eye, plane_point, normal)
-        M[:, 3] = [0, 0, 0, 1]
-        return M
-
-    r = ch13.check_perspective_matrix_project(affine)
-    assert not r.correct and "last column is (0, 0, 0, w)" in r.message
-
+# -- the programming project (its corpus of right and wrong solutions: tests/projects/test_ch13_project.py) --
 
 def test_project_reports_a_crash_with_the_learners_line():
-    def broken(eye, plane_point, normal):
+    def broken(sources, images):
         M = np.zeros((4, 4))
-        M[:3, 3] = np.append(normal, 1.0)
+        M[:3, 3] = np.append(sources[0], 1.0)
         return M
 
-    r = ch13.check_perspective_matrix_project(broken)
+    r = ch13.check_projective_map_project(broken)
     assert not r.correct and "your function raised ValueError" in r.message
-    assert "M[:3, 3] = np.append(normal, 1.0)" in r.message
+    assert "M[:3, 3] = np.append(sources[0], 1.0)" in r.message
 
 
 def test_project_unanswered_and_wrong_shape():
-    def starter(eye, plane_point, normal):
+    def starter(sources, images):
         """Return the matrix."""
         ...
 
-    assert not ch13.check_perspective_matrix_project(starter).answered
-    r = ch13.check_perspective_matrix_project(lambda e, q, n: np.eye(3))
+    assert not ch13.check_projective_map_project(starter).answered
+    r = ch13.check_projective_map_project(lambda p, q: np.eye(3))
     assert not r.correct and "a 4x4 matrix is expected" in r.message

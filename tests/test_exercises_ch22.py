@@ -91,7 +91,7 @@ def test_project_accepts_a_correct_traversal():
 
 def test_project_names_the_first_misplaced_piece():
     r = ch22.check_bsp_project(wrong_sign)
-    assert not r.correct and "case 1 of 11" in r.message and "piece" in r.message and "expected polygon" in r.message
+    assert not r.correct and "case 1 of 11" in r.message and "breaks the rule at some node" in r.message
 
 
 def test_project_reports_front_to_back():

@@ -469,6 +469,17 @@ def _compare_gauss_seidel(got, expected, case) -> str | None:
         return f"{head} -- it matches the iterate after {sweeps + 1} sweep{'s' if sweeps + 1 != 1 else ''}: one sweep too many"
     if sweeps >= 1 and np.allclose(arr, _backward_gauss_seidel(A, b, x0, sweeps), rtol=0, atol=tol):
         return f"{head} -- it matches sweeps from the last unknown to the first: update x[0] first, then x[1] and so on"
+    A_, b_ = np.asarray(A, dtype=float), np.asarray(b, dtype=float)
+    with_diagonal = np.array(x0, dtype=float)
+    for _ in range(sweeps):
+        for i in range(n):
+            with_diagonal[i] = (b_[i] - A_[i] @ with_diagonal) / A_[i, i]
+    if sweeps >= 1 and np.all(np.isfinite(with_diagonal)) and np.allclose(arr, with_diagonal, rtol=0, atol=tol):
+        return f"{head} -- your sum includes the diagonal term a_ii x_i: the sum is over j != i only"
+    exact = np.linalg.solve(A_, b_)
+    if sweeps < 25 and np.allclose(arr, exact, rtol=0, atol=tol):
+        return (f"{head} -- it is the exact solution of A x = b: return the iterate after exactly {sweeps} "
+                f"sweep{'s' if sweeps != 1 else ''}, not the limit")
     k = int(np.argmax(np.abs(arr - expected) > tol))
     return (f"{head}; the first wrong component is x[{k}], expected {fmt(expected, 6)}; "
             f"x[i] = (b[i] - sum of A[i, j] x[j] over j != i) / A[i, i]")

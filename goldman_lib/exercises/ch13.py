@@ -1,6 +1,6 @@
 """Exercise checkers for chapter 13, the 4x4 matrices of the transformations of chapter 12 in the
 row convention ``[P 1] @ M`` (Goldman §13.1-13.6), and the checker of the chapter's programming
-project (a perspective matrix).
+project (the projective map through five points).
 
 Each exercise's data are module constants, so the notebook prints the problem from here and the
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
@@ -23,7 +23,7 @@ __all__ = ["PROBLEMS", "SLIPS", "ROT_AXIS", "ROT_ANGLE", "ROT_POINT", "MIRROR_PL
            "COMPOSE_SHIFT", "COMPOSE_ANGLE", "PERSP_EYE", "PERSP_PLANE_POINT", "PERSP_NORMAL", "PERSP_POINT",
            "AFFINE_MATRIX", "AFFINE_COORDS", "check_rotation_block", "check_translation_row", "check_mirror_matrix",
            "check_composite_matrix", "check_perspective_image", "check_point_and_vector",
-           "check_perspective_matrix_project"]
+           "check_projective_map_project"]
 
 #: Exercises 1 and 2: the rotation by 90 degrees about the y direction (through the origin, then through Q).
 ROT_AXIS = np.array([0.0, 1.0, 0.0])
@@ -364,111 +364,181 @@ SLIPS = {
 
 # -- the programming project ------------------------------------------------------------------------
 
+#: The project's tolerance: each image within PROJECT_TOL * max(1, |expected image|) of where it belongs.
+PROJECT_TOL = 1e-6
+
+
+def _homogeneous(points) -> np.ndarray:
+    P = np.asarray(points, dtype=float)
+    return np.c_[P, np.ones(len(P))]
+
+
+def _frame_matrix(points) -> np.ndarray:
+    """The 4x4 matrix whose rows are a_i [P_i 1], i < 4, with weights a_i making their sum [P_4 1]:
+    it sends the standard frame (e_1, ..., e_4 and (1, 1, 1, 1)) to the five points."""
+    H = _homogeneous(points)
+    a = np.linalg.solve(H[:4].T, H[4])
+    return a[:, None] * H[:4]
+
+
+def _projective_reference(sources, images) -> np.ndarray:
+    """The matrix of the projective map sending sources[i] to images[i] (row convention)."""
+    return np.linalg.solve(_frame_matrix(sources), _frame_matrix(images))
+
+
+def _general_position(points) -> bool:
+    """No four of the five points (nearly) coplanar: every tetrahedron of four has a volume of at
+    least 1% of the cube of its longest edge."""
+    P = np.asarray(points, dtype=float)
+    for skip in range(5):
+        Q = np.delete(P, skip, axis=0)
+        edges = Q[1:] - Q[0]
+        size = max(np.linalg.norm(a - b) for a in Q for b in Q)
+        if abs(np.linalg.det(edges)) < 0.06 * size ** 3:
+            return False
+    return True
+
+
 class _Expected:
-    """What a case expects: the test points and their images by :func:`transforms.project_perspective`."""
+    """What a case expects: the test points (the five sources, then three more) and their images."""
 
-    def __init__(self, eye, plane_point, normal, points):
+    def __init__(self, points, images):
         self.points = points
-        self.images = transforms.project_perspective(points, eye, plane_point, normal)
-
-
-def _case_points(rng, eye, plane_point, normal, count=6):
-    """Points on both sides of the screen, none near the plane through the eye parallel to it."""
-    n = normal / np.linalg.norm(normal)
-    depth = float((plane_point - eye) @ n)
-    pts = []
-    while len(pts) < count:
-        p = plane_point + rng.uniform(-3, 3, 3)
-        if abs(float((p - eye) @ n)) > 0.2 * max(1.0, abs(depth)) and abs(float((p - eye) @ n)) > 0.3:
-            pts.append(p)
-    return np.round(np.array(pts), 2)
+        self.images = images
 
 
 def _project_cases():
+    """Seeded cases: (sources, images) in general position (no four of either coplanar), with three
+    extra test points whose images are finite.  Kinds: random projective maps, an affine map, the
+    identity, a map permuting five points, the standard frame as sources, large coordinates."""
     rng = np.random.default_rng(1313)
     specs = []
-    # unit normals with rational coordinates (a, b, c)/d, a² + b² + c² = d², in random order and signs
-    quadruples = np.array([[1, 2, 2, 3], [2, 3, 6, 7], [1, 4, 8, 9], [2, 6, 9, 11]], dtype=float)
-    for a, b, c, d in quadruples:
-        n = rng.permutation([a, b, c]) * rng.choice([-1.0, 1.0], size=3) / d
-        Q = np.round(rng.uniform(-2, 2, 3), 2)
-        E = np.round(Q + rng.uniform(2, 5) * n + rng.uniform(-1, 1, 3), 2)
-        specs.append((E, Q, n, "random eyes and planes"))
-    specs.append((np.array([1.0, -2.0, 6.0]), np.array([0.5, 0.0, 1.0]), np.array([0.0, 0.0, 3.7]),
-                  "an unnormalised normal"))
-    specs.append((np.array([0.0, 0.0, 1000.0]), np.array([0.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0]),
-                  "the eye far away"))
-    specs.append((np.array([2.0, 1.0, -3.0]), np.array([0.0, 0.0, 0.0]), np.array([0.6, 0.0, 0.8]),
-                  "a plane through the origin"))
-    specs.append((np.array([-1.0, 0.5, 0.0]), np.array([1.0, 1.0, 1.0]), np.array([2.0, 3.0, 6.0]) / 7,
-                  "a plane not perpendicular to an axis"))
-    specs.append((np.array([0.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0]), np.array([0.0, 0.0, 1.0]),
-                  "the eye at the origin, the plane z = 1"))
-    cases, points = [], {}
-    for E, Q, N, kind in specs:
-        label = f"eye {fmt(E)}, plane through {fmt(Q)} with normal {fmt(N)}"
-        points[label] = _case_points(rng, E, Q, N)
-        cases.append(Case(label, (E, Q, N), kind=kind))
-    return cases, points
+
+    def five(scale=2.0, shift=0.0):
+        while True:
+            P = np.round(rng.uniform(-scale, scale, (5, 3)) + shift, 1)
+            if _general_position(P):
+                return P
+
+    def image_of(P, M):
+        h = _homogeneous(P) @ M
+        return h[:, :3] / h[:, 3:]
+
+    def other_five(P, scale=2.0, shift=0.0):
+        """Images in general position for which the map is not affine (five points in general position
+        and any five images in general position determine one projective map)."""
+        while True:
+            R = five(scale, shift)
+            if not np.allclose(_projective_reference(P, R)[:3, 3], 0, atol=1e-3):
+                return R
+
+    for _ in range(3):
+        P = five()
+        specs.append((P, other_five(P), "random projective maps"))
+    P = five()
+    A = np.eye(4)
+    A[:3, :3] = np.round(rng.uniform(-2, 2, (3, 3)), 1)
+    A[3, :3] = np.round(rng.uniform(-2, 2, 3), 1)
+    specs.append((P, np.round(image_of(P, A), 6), "an affine map"))
+    P = five()
+    specs.append((P, P.copy(), "the identity"))
+    P = five()
+    specs.append((P, P[[1, 2, 3, 4, 0]], "a map permuting five points"))
+    frame = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 1]], dtype=float)
+    specs.append((frame, other_five(frame), "the unit frame as sources"))
+    P = five(scale=40.0, shift=100.0)
+    specs.append((P, other_five(P, scale=30.0, shift=-60.0), "large coordinates"))
+
+    cases, expected = [], {}
+    for P, R, kind in specs:
+        M = _projective_reference(P, R)
+        extra = []
+        while len(extra) < 3:
+            X = np.round(rng.uniform(-1, 1, 3) * np.ptp(P, axis=0) + P.mean(axis=0), 1)
+            h = np.r_[X, 1.0] @ M
+            if np.linalg.norm(h[:3] / h[3] - R.mean(axis=0)) < 3 * np.ptp(R, axis=0).max():
+                extra.append(X)
+        pts = np.r_[P, np.array(extra)]
+        h = _homogeneous(pts) @ M
+        label = ("sources " + ", ".join(fmt(p) for p in P) + "; images " + ", ".join(fmt(r) for r in R))
+        expected[label] = _Expected(pts, h[:, :3] / h[:, 3:])
+        cases.append(Case(label, (P, R), kind=kind))
+    return cases, expected
 
 
-def _compare_matrix(points):
-    def compare(got, expected, case):
-        M = np.asarray(got, dtype=float)
-        if M.shape != (4, 4):
-            return f"it has shape {M.shape}; a 4x4 matrix is expected"
-        if not np.all(np.isfinite(M)):
-            return "it contains NaN or infinite entries"
-        P = expected.points
-        h = np.c_[P, np.ones(len(P))] @ M
-        w = h[:, 3]
-        tiny = np.abs(w) <= 1e-12 * np.maximum(1.0, np.abs(h[:, :3]).max(axis=1))
-        if np.any(tiny):
-            k = int(np.flatnonzero(tiny)[0])
-            why = (" Your last column is (0, 0, 0, 0): it must hold the normal and -E·N so that w = (P - E)·N."
-                   if np.allclose(M[:, 3], 0) else "")
-            return (f"the point {fmt(P[k])} gets the homogeneous coordinate w = 0 with your matrix (sent to "
-                    f"infinity), but its line of sight does meet the plane.{why}")
-        images = h[:, :3] / w[:, None]
-        exp = expected.images
-        err = np.linalg.norm(images - exp, axis=1)
-        bad = np.flatnonzero(err > 1e-6 * np.maximum(1.0, np.abs(exp).max(axis=1)))
-        if bad.size == 0:
-            return None
-        k = int(bad[0])
-        msg = (f"the point {fmt(P[k])} goes to {fmt(images[k])} with your matrix (after the divide by "
-               f"w = {fmt(w[k])}), expected {fmt(exp[k])}")
-        ht = np.c_[P, np.ones(len(P))] @ M.T
-        if np.all(np.abs(ht[:, 3]) > 1e-12) and np.allclose(ht[:, :3] / ht[:, 3:], exp, rtol=1e-6, atol=1e-6):
-            return msg + (" -- is the matrix transposed (the column convention)? With [P 1] M the normal N goes in "
-                          "the last column and -(Q·N) E in the last row")
-        if np.allclose(M[:3, 3], 0):
-            return msg + (" -- your last column is (0, 0, 0, w): that matrix is affine, and the homogeneous divide "
-                          "then divides by a constant; a perspective matrix puts N in the last column so that "
-                          "w = (P - E)·N")
-        if not np.isclose(np.linalg.norm(case.args[2]), 1.0):
-            return msg + (" -- the normal is not a unit vector here: use the same N in every entry (normalise it "
-                          "first, or nowhere)")
-        return msg + (" -- did you divide by the homogeneous coordinate? Compare your entries with "
-                      "[[c I + Nᵀ E, Nᵀ], [-(Q·N) E, -E·N]], c = (Q - E)·N")
-
-    return compare
+def _apply(M, pts):
+    h = _homogeneous(pts) @ M
+    return h, h[:, 3]
 
 
-def check_perspective_matrix_project(function) -> Result:
-    """Run the learner's ``perspective_matrix(eye, plane_point, normal)`` on seeded cases (random
-    eyes and planes, an unnormalised normal, a far eye, a plane through the origin, a plane not
-    perpendicular to an axis, the classic eye at the origin): each matrix is applied with the
-    homogeneous divide to six points and compared with :func:`goldman_lib.transforms.project_perspective`.
-    Matrices that differ by a nonzero factor give the same images and pass.
+def _maps(M, pts, targets) -> np.ndarray:
+    """Which of pts M sends (with the homogeneous divide) to targets, to the project's tolerance."""
+    h, w = _apply(M, pts)
+    ok = np.abs(w) > 1e-12 * np.maximum(1.0, np.abs(h[:, :3]).max(axis=1))
+    out = np.zeros(len(pts), dtype=bool)
+    img = h[ok, :3] / w[ok, None]
+    tgt = np.asarray(targets, float)[ok]
+    out[ok] = np.linalg.norm(img - tgt, axis=1) <= PROJECT_TOL * np.maximum(1.0, np.abs(tgt).max(axis=1))
+    return out
+
+
+def _compare_projective(got, expected, case):
+    M = np.asarray(got, dtype=float)
+    if M.shape != (4, 4):
+        return f"it has shape {M.shape}; a 4x4 matrix is expected"
+    if not np.all(np.isfinite(M)):
+        return "it contains NaN or infinite entries"
+    P, R = (np.asarray(a, float) for a in case.args)
+    pts, exp = expected.points, expected.images
+    good = _maps(M, pts, exp)
+    if good.all():
+        return None
+    k = int(np.flatnonzero(~good)[0])
+    which = f"source {k}" if k < 5 else f"the test point {fmt(pts[k])}"
+    h, w = _apply(M, pts)
+    if abs(w[k]) <= 1e-12 * max(1.0, np.abs(h[k, :3]).max()):
+        msg = f"{which}, {fmt(pts[k])}, gets the homogeneous coordinate w = 0 (sent to infinity)"
+    else:
+        msg = f"{which}, {fmt(pts[k])}, goes to {fmt(h[k, :3] / w[k])} (after the divide by w)"
+        msg += f"; it belongs at {fmt(exp[k])}" if k < 5 else "; it lies elsewhere under the map the five pairs fix"
+    if np.all(_maps(M.T, pts, exp)):
+        return msg + (" -- your matrix is transposed (the column convention): in the row convention the image of "
+                      "P is the row [P 1] M, so row i of M is where the i-th coordinate goes")
+    if np.all(_maps(M, R, P)):
+        return msg + (" -- your matrix maps the images back to the sources: it is the inverse of the map asked for "
+                      "(the rows built from the sources come first, on the left)")
+    affine = np.allclose(M[:3, 3], 0, atol=1e-12 * np.abs(M).max()) and abs(M[3, 3]) > 0
+    first_four = bool(_maps(M, P[:4], R[:4]).all())
+    if affine and first_four:
+        return msg + (" -- that is the affine map through the first four pairs (last column (0, 0, 0, 1)): it "
+                      "ignores the fifth pair. A projective map sends [P_i 1] only to a multiple λ_i [R_i 1]; "
+                      "the fifth pair is what fixes the four factors")
+    if affine:
+        return msg + (" -- your matrix is affine (last column (0, 0, 0, 1)), and no affine map sends these five "
+                      "points to those five: a projective map needs a last column that makes w vary")
+    if first_four:
+        return msg + (" -- the first four sources go to the right images, the fifth does not: the factors of the "
+                      "four rows are off. Write [P_4 1] as a combination of the first four rows [P_i 1], and "
+                      "[R_4 1] as a combination of the [R_i 1], and use both sets of coefficients (solving "
+                      "a H = [P_4 1] with the points as the rows of H is a solve with the transpose of H)")
+    return msg
+
+
+def check_projective_map_project(function) -> Result:
+    """Run the learner's ``projective_map(sources, images)`` on seeded cases (random projective maps,
+    an affine map, the identity, a map permuting five points, the unit frame as sources, large
+    coordinates): the 4x4 matrix is applied in the row convention, with the homogeneous divide, to
+    the five sources and three more points, and the images are compared with those of the one
+    projective map the five pairs determine (to 1e-6 relative).  Any nonzero multiple of the right
+    matrix passes; a list of lists is accepted as well as an array (our project, on §13.6.1).
     """
-    cases, points = _project_cases()
+    cases, expected = _project_cases()
 
-    def reference(eye, plane_point, normal):
-        return _Expected(eye, plane_point, normal, points[f"eye {fmt(eye)}, plane through {fmt(plane_point)} "
-                                                          f"with normal {fmt(normal)}"])
+    def reference(sources, images):
+        label = ("sources " + ", ".join(fmt(p) for p in sources) + "; images " + ", ".join(fmt(r) for r in images))
+        return expected[label]
 
-    return check_project(function, cases, reference=reference, compare=_compare_matrix(points),
-                         what="perspective_matrix",
-                         hint="the image of P is E + [(Q - E)·N / (P - E)·N] (P - E); multiply through by "
-                              "(P - E)·N, the homogeneous coordinate")
+    return check_project(function, cases, reference=reference, compare=_compare_projective,
+                         what="projective_map",
+                         hint="the rows [P_i 1] of the first four sources, each scaled by a factor, must go to "
+                              "the rows [R_i 1], each scaled by its factor; the fifth pair fixes the factors")

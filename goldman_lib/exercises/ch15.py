@@ -378,13 +378,15 @@ def _unit(v) -> np.ndarray:
 def slerp_project_cases(seed: int = 15, vectorised: bool = False) -> list[Case]:
     """The cases of :func:`check_slerp_project`, generated from a fixed seed: random pairs on the
     shorter side, t = 0 and t = 1, pairs with q0·q1 < 0 (the shorter arc needs -q1), q1 = -q0,
-    identical and nearly identical quaternions (θ ≈ 0), and quaternions half a turn apart (q0·q1 = 0).
+    identical and nearly identical quaternions (θ ≈ 0), close pairs (q0·q1 = 0.8 to 0.998) asked at t = 0.1,
+    0.25, 0.3 and 0.75 (where normalised lerp is not slerp), and quaternions half a turn apart (q0·q1 = 0:
+    both arcs are equally short, either one is accepted).
     With ``vectorised=True`` three more cases pass ``t`` as an array (the result is then one
     quaternion per t, shape (len(t), 4)).
 
     >>> cases = slerp_project_cases()
     >>> len(cases), cases[0].kind, cases[-1].kind
-    (16, 'random pair', 'q0·q1 < 0 (the shorter arc)')
+    (21, 'random pair', 'q0·q1 < 0 (the shorter arc)')
     """
     rng = np.random.default_rng(seed)
     cases: list[Case] = []
@@ -416,7 +418,14 @@ def slerp_project_cases(seed: int = 15, vectorised: bool = False) -> list[Case]:
     cases.append(Case(f"q0 = {fmt(b)}, q1 = q0 + 1e-9 noise, t = 0.5", (b, _unit(b + 1e-9 * rng.normal(size=4)), 0.5),
                       kind="nearly equal (θ ≈ 1e-9)"))
     add([1, 0, 0, 0], qt.from_axis_angle([0, 0, 1], 90), 0.5, "a quarter turn about z")
-    add([0, 1, 0, 0], [0, 0, 1, 0], 0.25, "half a turn apart (q0·q1 = 0)")
+    # close pairs away from t = 0, 1/2, 1, where normalised lerp is not slerp (it does not keep a constant speed)
+    for d, t in ((0.8, 0.25), (0.9, 0.75), (0.99, 0.25), (0.998, 0.3), (-0.95, 0.1)):
+        a = _unit(rng.normal(size=4))
+        u = rng.normal(size=4)
+        u = _unit(u - (u @ a) * a)
+        add(a, d * a + math.sqrt(1 - d * d) * u, t,
+            "close pairs (q0·q1 < 0, the shorter arc)" if d < 0 else "close pairs (q0·q1 near 1)")
+    add([0, 1, 0, 0], [0, 0, 1, 0], 0.25, "half a turn apart (q0·q1 = 0: either arc)")
     add([0.6, 0, 0.8, 0], [0.6, 0, 0.8, 1e-7], 0.5, "nearly equal (θ ≈ 1e-7)",
         label="q0 = (0.6, 0, 0.8, 0), q1 = (0.6, 0, 0.8, 1e-7) normalised, t = 0.5")
     add(qt.from_axis_angle([1, 2, 2], 170), qt.from_axis_angle([1, 2, 2], -170), 0.5, "q0·q1 < 0 (the shorter arc)")
@@ -426,6 +435,10 @@ def slerp_project_cases(seed: int = 15, vectorised: bool = False) -> list[Case]:
             cases.append(Case(f"q0 = {fmt(a)}, q1 = {fmt(b)}, t = np.array({ts})", (a, b, np.array(ts)),
                               kind="an array of t"))
     return cases
+
+
+#: The project's tolerance: the distance (up to sign) between a learner's quaternion and slerp's.
+SLERP_TOL = 1e-6
 
 
 def _longer_arc(q0, q1, t):
@@ -455,11 +468,16 @@ def _compare_slerp(got, expected, case) -> str | None:
                 "may round to just above 1 (arccos is then NaN): clip q0·q1 to [-1, 1] and fall back to linear "
                 "interpolation when sin θ is tiny")
     err = float(min(np.linalg.norm(arr - exp), np.linalg.norm(arr + exp)))
-    if err <= 1e-6:
+    if err <= SLERP_TOL:
         return None
     q0, q1, t = case.args
     q0, q1 = np.asarray(q0, float), np.asarray(q1, float)
-    near = lambda x: x is not None and min(np.linalg.norm(arr - x), np.linalg.norm(arr + x)) <= 1e-6  # noqa: E731
+    if abs(float(q0 @ q1)) <= 1e-12:
+        # a tie: q1 and -q1 are equally near (both arcs are a quarter of the great circle): either is right
+        other = qt.slerp(q0, -q1, t)
+        if min(np.linalg.norm(arr - other), np.linalg.norm(arr + other)) <= SLERP_TOL:
+            return None
+    near = lambda x: x is not None and min(np.linalg.norm(arr - x), np.linalg.norm(arr + x)) <= SLERP_TOL  # noqa: E731
     head = f"it is {fmt(err, 2)} from slerp's result {fmt(exp)} (q and -q count as the same)"
     length = float(np.linalg.norm(arr))
     if q0 @ q1 < 0 and near(_longer_arc(q0, q1, t)):
@@ -474,7 +492,7 @@ def _compare_slerp(got, expected, case) -> str | None:
                            "(use the weights sin((1 - t)θ)/sin θ and sin(tθ)/sin θ)")
     if near(qt.slerp(q0, q1, 1 - t)):
         return head + "; q0 and q1 have swapped weights: at t = 0 slerp gives q0"
-    if abs(length - 1) > 1e-6:
+    if abs(length - 1) > SLERP_TOL:
         return head + f"; it has length {fmt(length, 4)}, but a rotation is a unit quaternion"
     return head
 
@@ -488,7 +506,7 @@ def check_slerp_project(function, vectorised: bool = False) -> Result:
     >>> def lerp(q0, q1, t):
     ...     return (1 - t) * np.asarray(q0) + t * np.asarray(q1)
     >>> print(check_slerp_project(lerp).message)   # doctest: +ELLIPSIS
-    case 1 of 16 (q0 = ..., t = 0.3): your function returned ...; it is ... from slerp's result ... it is the linear interpolation (1 - t) q0 + t q1, of length ...
+    case 1 of 21 (q0 = ..., t = 0.3): your function returned ...; it is ... from slerp's result ... it is the linear interpolation (1 - t) q0 + t q1, of length ...
     """
     return check_project(function, slerp_project_cases(vectorised=bool(vectorised)), reference=qt.slerp,
                          compare=_compare_slerp,

@@ -373,8 +373,16 @@ def _compare_quadric(got, expected, case) -> str | None:
             why = "; a root at t <= 1e-9 (behind the origin, or where it starts) is not a hit" if g <= 1e-6 else ""
             return f"{ray}: you returned {fmt(g)}, but this ray misses the quadric in front of its origin{why}"
         if not np.isfinite(g):
-            return (f"{ray}: you returned {fmt(g)}, but it hits at t = {fmt(e)}; if a = 0 the equation is linear, "
-                    f"and a tangent ray has a double root (discriminant 0)")
+            H, D = np.r_[o[k], 1.0], np.r_[d[k], 0.0]
+            a, b, c = D @ Q @ D, 2 * H @ Q @ D, H @ Q @ H
+            scale = max(abs(b) ** 2, abs(4 * a * c), 1e-300)
+            if abs(a) <= 1e-12 * max(1.0, abs(b), abs(c)):
+                why = "here a = 0 the equation is linear, b t + c = 0, with the root t = -c/b"
+            elif abs(b * b - 4 * a * c) <= 1e-9 * scale:
+                why = "this ray is tangent: the discriminant is 0 and the double root t = -b/(2a) is a hit"
+            else:
+                why = "if a = 0 the equation is linear, and a tangent ray has a double root (discriminant 0)"
+            return f"{ray}: you returned {fmt(g)}, but it hits at t = {fmt(e)}; {why}"
         if abs(g) <= 1e-9:
             return (f"{ray}: you returned {fmt(g)}: the ray starts on the surface, and the root t = 0 is not a hit "
                     f"(keep only t > 1e-9); the first hit in front is {fmt(e)}")
@@ -383,6 +391,10 @@ def _compare_quadric(got, expected, case) -> str | None:
             return f"{ray}: you returned {fmt(g)}, a root behind the origin (or at t = 0); the first hit in front is {fmt(e)}"
         if np.any(np.abs(h - g) <= 1e-6 * (1 + np.abs(g))):
             return f"{ray}: you returned {fmt(g)}, the far root; the first hit in front of the origin is {fmt(e)}"
+        length = float(np.linalg.norm(d[k]))
+        if abs(length - 1) > 1e-6 and abs(g - e * length) <= 1e-6 * (1 + abs(e * length)):
+            return (f"{ray}: you returned {fmt(g)}, the distance along the unit direction; t is the parameter of "
+                    f"the direction as given (P0 + t d with d not normalised), here {fmt(e)}")
         return f"{ray}: you returned {fmt(g)}, expected {fmt(e)}"
     return None
 

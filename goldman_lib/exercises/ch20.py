@@ -398,6 +398,11 @@ def _compare(got, expected, case) -> str | None:
         return "it contains NaN"
     op = case.args[2]
     if len(arr) != len(exp):
+        if op == "difference":
+            other = np.asarray(_reference(case.args[1], case.args[0], op), dtype=float).reshape(-1, 2)
+            if other.shape == arr.shape and np.allclose(arr, other, atol=1e-9, rtol=0):
+                return ("that is second minus first; the difference is first minus second (the part of first "
+                        "outside second)")
         why = ""
         if len(arr) > len(exp):
             touching = np.any(arr[1:, 0] <= arr[:-1, 1]) if len(arr) > 1 else False
@@ -410,6 +415,10 @@ def _compare(got, expected, case) -> str | None:
     if len(arr) and np.any(arr[1:, 0] < arr[:-1, 0]):
         return "its intervals are not sorted by their start"
     if not np.allclose(arr, exp, atol=1e-9, rtol=0):
+        if op == "difference":
+            other = np.asarray(_reference(case.args[1], case.args[0], op), dtype=float).reshape(-1, 2)
+            if other.shape == arr.shape and np.allclose(arr, other, atol=1e-9, rtol=0):
+                return "that is second minus first; the difference is first minus second (the part of first outside second)"
         k = int(np.flatnonzero(~np.all(np.isclose(arr, exp, atol=1e-9, rtol=0), axis=1))[0])
         return f"interval {k} is {arr[k].tolist()}; expected {exp[k].tolist()}"
     return None

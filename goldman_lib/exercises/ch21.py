@@ -405,6 +405,17 @@ def _compare_gouraud(got, expected, case) -> str | None:
         return None
     i, j = map(int, np.argwhere(bad)[0])
     where = f"pixel (row {i}, column {j}), centre ({fmt(j + 0.5)}, {fmt(i + 0.5)})"
+    if lam is not None:
+        P = np.asarray(tri, float)
+        signed = (P[1, 0] - P[0, 0]) * (P[2, 1] - P[0, 1]) - (P[1, 1] - P[0, 1]) * (P[2, 0] - P[0, 0])
+        if signed < 0 and not np.any(arr) and np.any(expected):
+            return (f"{where} is 0, and your image is empty: this triangle has the other orientation (negative "
+                    f"signed area), so all three barycentric coordinates come out with the other sign unless you "
+                    f"divide by the signed area")
+        corners = shading.gouraud_triangle(P + 0.5, c, W, H)    # sampling at (j, i) = the centres of the shifted image
+        if np.allclose(arr, corners, atol=1e-6) and not np.allclose(corners, expected, atol=1e-6):
+            return (f"{where} is {fmt(arr[i, j])}: you sampled the pixel at its corner (j, i), not at its centre "
+                    f"(j + 0.5, i + 0.5)")
     inside = lam is not None and lam[i, j].min() >= 0
     if lam is None:
         return f"{where} is {fmt(arr[i, j])}, but the triangle has zero area and covers no pixel"

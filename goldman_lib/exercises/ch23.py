@@ -4,8 +4,8 @@ Each exercise's data are module constants, so the notebook prints the problem fr
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers each checker recognises.  ``None`` or ``...`` means "not answered yet".
 The data differ from the chapter's worked examples.  The programming project,
-:func:`check_progressive_refinement_project`, runs the learner's shooting solver against
-:func:`goldman_lib.radiosity.progressive_refinement` on generated scenes.
+:func:`check_progressive_refinement_project`, runs the learner's shooting solver on generated scenes
+with reciprocal form factors and compares with the exact solution of B = E + rho F B.
 
 >>> print(check_reciprocity(0.12).message)
 that is F_ij itself: form factors are not symmetric; A_i F_ij = A_j F_ji, so F_ji = A_i F_ij / A_j.
@@ -237,18 +237,34 @@ def _random_scene(rng, n):
     return F, rho, E, area
 
 
+def _closed_reciprocal(F, area, sweeps: int = 200) -> np.ndarray:
+    """Form factors with both closure and reciprocity exact: symmetrise A F into S, then scale S
+    symmetrically (S -> D S D, Sinkhorn's balancing) until row i of S sums to A_i.  Then F = S / A
+    has rows summing to 1 and A F = S symmetric, so shooting (which reads only row i of F and
+    F_ji = A_i F_ij / A_j) and gathering (B = E + rho F B) solve one and the same equation."""
+    S = area[:, None] * F
+    S = (S + S.T) / 2
+    x = np.ones(len(area))
+    for _ in range(sweeps):
+        x = np.sqrt(x * area / (S @ x))
+    S = x[:, None] * S * x[None, :]
+    S = (S + S.T) / 2
+    return S / area[:, None]
+
+
 def project_cases(seed: int = 23) -> list[Case]:
     """The cases of :func:`check_progressive_refinement_project`, from a fixed seed: random scenes with
-    unequal areas (reciprocal form factors), a closed box (rows of F summing to 1), a scene that emits
-    nothing, one with a black patch, and a single patch."""
+    unequal areas (reciprocal form factors), a closed box (rows of F summing to 1, and reciprocal),
+    a scene that emits nothing, one with a black patch, and a single patch.  In every case A_i F_ij =
+    A_j F_ji holds to rounding, so the radiosities B = E + rho F B are the same whether a shooter
+    computes F_ji = A_i F_ij / A_j or reads F[j, i]."""
     rng = np.random.default_rng(seed)
     cases = []
     for n in (4, 9):
         F, rho, E, area = _random_scene(rng, n)
         cases.append(Case(f"a random scene of {n} patches with unequal areas", (F, rho, E, area), kind="random scene"))
     box = rd.cornell_box(2, closed=True, blocks=False)
-    F = rd.enforce_reciprocity(rd.hemicube_form_factors(box, 16), box.areas)
-    F = F / F.sum(axis=1, keepdims=True)
+    F = _closed_reciprocal(rd.hemicube_form_factors(box, 16), box.areas)
     cases.append(Case(f"a closed box of {len(box)} patches (rows of F sum to 1), lit from the ceiling",
                       (F, box.reflectance[:, 0].copy(), box.emission[:, 0].copy(), box.areas), kind="closed box"))
     F, rho, E, area = _random_scene(rng, 5)
@@ -263,8 +279,19 @@ def project_cases(seed: int = 23) -> list[Case]:
     return cases
 
 
+def _solve(G, rho, E):
+    """The B with B = E + rho (G B), by a direct solve."""
+    n = len(E)
+    return np.linalg.solve(np.eye(n) - np.asarray(rho, float)[:, None] * G, np.asarray(E, float))
+
+
 def _reference(F, rho, E, area):
-    return rd.progressive_refinement(F, rho, E, area, tol=1e-12)
+    """The radiosities: the exact solution of B = E + rho F B (what the starter cell promises)."""
+    return _solve(np.asarray(F, float), rho, E)
+
+
+#: The project's tolerance: each B_i within PROJECT_TOL * max(1, max |B|) of the solution.
+PROJECT_TOL = 1e-6
 
 
 def _compare(got, expected, case):
@@ -274,23 +301,49 @@ def _compare(got, expected, case):
         return f"it has shape {arr.shape}; the radiosities have shape {exp.shape} (one per patch)"
     if not np.all(np.isfinite(arr)):
         return "it contains NaN or infinite values"
+    scale = PROJECT_TOL * max(1.0, np.abs(exp).max())
     err = np.abs(arr - exp)
-    if err.max() <= 1e-6 * max(1.0, np.abs(exp).max()):
+    if err.max() <= scale:
         return None
+    F, rho, E, area = (np.asarray(a, float) for a in case.args)
     k = int(np.argmax(err))
-    return (f"patch {k} has radiosity {fmt(arr[k])}, expected {fmt(exp[k])} ({int((err > 1e-6).sum())} of "
-            f"{len(exp)} patches off){'; did you shoot until the unshot radiosity is negligible?' if np.all(arr <= exp + 1e-9) else ''}")
+    head = f"patch {k} has radiosity {fmt(arr[k])}, expected {fmt(exp[k])} ({int((err > scale).sum())} of {len(exp)} patches off)"
+    near = lambda B: B is not None and np.all(np.isfinite(B)) and np.abs(arr - B).max() <= scale  # noqa: E731
+    ratio = area[:, None] / area[None, :]
+    slips = [
+        (lambda: E + rho * (F @ E), "that is one gathering step, E + rho F E (light that bounced once): shoot until "
+                                    "the unshot radiosity is negligible"),
+        (lambda: _solve(F.T, rho, E), "patch j received rho_j F_ij dB_i: the form factor from i to j read as F_ji; "
+                                      "by reciprocity F_ji = A_i F_ij / A_j"),
+        (lambda: _solve((F * ratio.T).T, rho, E), "patch j received rho_j (A_j F_ij / A_i) dB_i: the area ratio is "
+                                                  "upside down; F_ji = A_i F_ij / A_j"),
+        (lambda: _solve(F * rho[None, :], np.ones_like(rho), E), "patch j received rho_i F_ji dB_i: the shooter's "
+                                                                  "reflectance; it is the receiver's, rho_j"),
+        (lambda: _solve(F, np.ones_like(rho), E) if np.all(np.abs(np.linalg.eigvals(F)) < 1 - 1e-9) else None,
+         "the reflectance rho_j is missing from what patch j receives"),
+    ]
+    for make, why in slips:
+        try:
+            B = make()
+        except np.linalg.LinAlgError:
+            continue
+        if near(B) and not near(exp):
+            return head + "; " + why
+    if np.all(arr <= exp + scale):
+        return head + "; every patch is at or below the solution: did you shoot until the unshot radiosity is negligible?"
+    return head
 
 
 def check_progressive_refinement_project(function) -> Result:
     """Check the learner's ``progressive_refinement(F, rho, E, area)`` (one channel: ``F`` ``(n, n)``,
-    ``rho``, ``E``, ``area`` ``(n,)``; returns the radiosities ``(n,)`` converged to about 1e-9) against
-    :func:`goldman_lib.radiosity.progressive_refinement` on :func:`project_cases` (Goldman §23.5).
+    ``rho``, ``E``, ``area`` ``(n,)``; returns the radiosities ``(n,)``) on :func:`project_cases`:
+    each B_i must be within 1e-6 * max(1, max B) of the exact solution of B = E + rho F B (the form
+    factors of every case are reciprocal, so shooting and a direct solve agree) (Goldman §23.5).
 
     >>> def gather_once(F, rho, E, area):
     ...     return E + rho * (F @ E)
     >>> print(check_progressive_refinement_project(gather_once).message)   # doctest: +ELLIPSIS
-    case 1 of 6 (a random scene of 4 patches with unequal areas): ... patches off); did you shoot until ...
+    case 1 of 6 (a random scene of 4 patches with unequal areas): ... that is one gathering step, ...
     """
     return check_project(function, project_cases(), reference=_reference, compare=_compare,
                          what="progressive refinement",

@@ -422,6 +422,10 @@ def _compare_split(got, expected, case) -> str | None:
     if np.allclose(gl, other[0], atol=tol) and np.allclose(gr, other[1], atol=tol):
         return (f"these are the polygons of the split at 1 - t = {fmt(1 - t)}: each level should take "
                 f"(1 - t) P_j + t P_(j+1), a fraction t of the way from P_j to P_(j+1)")
+    half = bezier.subdivide(P, 0.5)
+    if abs(t - 0.5) > 1e-9 and np.allclose(gl, half[0], atol=tol) and np.allclose(gr, half[1], atol=tol):
+        return (f"these are the polygons of the split at t = 1/2 (midpoints at every level); split at the t given, "
+                f"t = {fmt(t)}")
     for name, g, e in (("left", gl, left), ("right", gr, right)):
         err = np.linalg.norm(g - e, axis=1)
         bad = np.flatnonzero(err > tol)
@@ -439,8 +443,11 @@ def check_subdivision_project(function) -> Result:
     Says which case fails first and how: polygons of the wrong shape, the right polygon reversed,
     the two exchanged, t and 1 - t exchanged, or the first point that is off and by how much.
 
-    >>> check_subdivision_project(bezier.subdivide)
-    Correct: de Casteljau subdivision passes all 15 cases, including a repeated control point, all control points equal, collinear points, random 2D, random 3D, t = 0, t = 1.
+    >>> def exchanged(ctrl, t):
+    ...     left, right = bezier.subdivide(ctrl, t)
+    ...     return right, left
+    >>> print(check_subdivision_project(exchanged).message)   # doctest: +ELLIPSIS
+    case 1 of 15 (...): ...; the two polygons are exchanged: ... Hint: ...
     """
     return check_project(function, subdivision_project_cases(), reference=bezier.subdivide, compare=_compare_split,
                          what="de Casteljau subdivision",

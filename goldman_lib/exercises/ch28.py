@@ -404,7 +404,27 @@ def _boehm_compare(got, expected, case):
     if arr.shape == (expected.shape[0] - 1, expected.shape[1]):
         return (f"it has {arr.shape[0]} points, as many as before: inserting one knot adds one control point "
                 f"(expected {expected.shape[0]})")
-    return compare_points(tol=1e-8, what="your new control point")(got, expected, case)
+    problem = compare_points(tol=1e-8, what="your new control point")(got, expected, case)
+    if problem is None or arr.shape != expected.shape:
+        return problem
+    slips = [
+        (dict(swap=True), "the weights are swapped: Q_i = (1 - a_i) P_(i-1) + a_i P_i, so a_i = 1 keeps P_i"),
+        (dict(alpha_knot=1), "a_i divides by the wrong knot gap: a_i = (u - t_i) / (t_(i+p) - t_i), with t_(i+p), "
+                             "not t_(i+p+1)"),
+        (dict(shift=1), "the new points sit one index too late: the span k has t_k <= u < t_(k+1), and the "
+                        "new points are Q_(k-p+1) .. Q_k"),
+        (dict(shift=-1), "the new points sit one index too early: the span k has t_k <= u < t_(k+1), and the "
+                         "new points are Q_(k-p+1) .. Q_k"),
+    ]
+    for kwargs, why in slips:
+        try:
+            alt = _boehm_variant(*case.args, **kwargs)
+        except (ValueError, IndexError):
+            continue
+        if alt.shape == arr.shape and np.all(np.isfinite(alt)) and np.allclose(arr, alt, atol=1e-8) \
+                and not np.allclose(alt, expected, atol=1e-8):
+            return problem + "; " + why
+    return problem
 
 
 def check_boehm_project(function) -> Result:
@@ -412,8 +432,10 @@ def check_boehm_project(function) -> Result:
     generated cases of :func:`boehm_project_cases` against :func:`goldman_lib.knot_insertion.boehm_insert`
     (Goldman §28.3.1).
 
-    >>> check_boehm_project(lambda ctrl, knots, degree, u: _boehm_variant(ctrl, knots, degree, u))  # doctest: +ELLIPSIS
-    Correct: Boehm's knot insertion passes all 41 cases, including degenerate: u already of multiplicity p, ...
+    >>> def swapped(ctrl, knots, degree, u):
+    ...     return _boehm_variant(ctrl, knots, degree, u, swap=True)
+    >>> print(check_boehm_project(swapped).message)   # doctest: +ELLIPSIS
+    case ...: ...; the weights are swapped: ... Hint: ...
     """
     return check_project(function, boehm_project_cases(), reference=_boehm_reference, compare=_boehm_compare,
                          what="Boehm's knot insertion",

@@ -430,6 +430,17 @@ def _compare_matrices(got, expected, case):
         which = "L" if ok(L, EL.T) else "R"
         return (f"{which} is transposed: with control points as rows, each new control point is a row of {which} "
                 f"times P, so the rows (not the columns) sum to 1")
+    if ok(L, EL) and ok(R, ER[::-1]):
+        return ("the rows of R are in reverse order: R @ P controls the piece over [t, 1], which starts at C(t) "
+                "(the apex of the triangle) and ends at the last control point")
+    n, t = len(EL) - 1, float(case.kwargs.get("t", 0.5))
+    for s_, why in ((1.0 - t, f"these are the matrices of the split at 1 - t = {fmt(1 - t)}: each step of the "
+                              f"triangle is (1 - t) P_j + t P_(j+1)"),
+                    (0.5, "these are the matrices of the split at t = 1/2: use the t given")):
+        if abs(s_ - t) > 1e-12:
+            AL, AR = sm.bezier_subdivision_matrices(n, s_)
+            if ok(L, AL) and ok(R, AR):
+                return why
     for name, M, E in (("L", L, EL), ("R", R, ER)):
         bad = np.argwhere(np.abs(M - E) > 1e-9)
         if bad.size:
@@ -444,9 +455,11 @@ def check_subdivision_matrices_project(function) -> Result:
     :func:`goldman_lib.subdivision_matrices.bezier_subdivision_matrices` for degrees 1 to 6 at t = 1/2,
     at random t (fixed seed) and at the degenerate t = 0 and t = 1 (Goldman §29.2, programming project).
 
-    >>> from goldman_lib import subdivision_matrices as sm
-    >>> check_subdivision_matrices_project(sm.bezier_subdivision_matrices)
-    Correct: subdivision_matrices(n, t) passes all 12 cases, including degenerate t = 0 and t = 1, degree 1 (a segment), degrees 2-6 at t = 1/2, random t.
+    >>> def swapped(n, t=0.5):
+    ...     L, R = sm.bezier_subdivision_matrices(n, t)
+    ...     return R, L
+    >>> print(check_subdivision_matrices_project(swapped).message)   # doctest: +ELLIPSIS
+    case 1 of 12 (...): ...; L and R are swapped: ... Hint: ...
     """
     learner = _Learner(function) if callable(function) else function
     return check_project(learner, _project_cases(), reference=sm.bezier_subdivision_matrices,

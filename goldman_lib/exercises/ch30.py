@@ -441,7 +441,19 @@ def _compare_ring(got, expected, case):
             return ("the edge points are shifted by one place: row 1 + i should be the edge point of the edge "
                     "(v, ring[i]), whose opposite vertices are ring[i - 1] and ring[i + 1]")
     k = int(bad[0])
+    v, ring = (np.asarray(a, dtype=float) for a in case.args)
+    if np.allclose(arr[1:], (v + ring) / 2, atol=1e-9) and not np.allclose(exp[1:], (v + ring) / 2, atol=1e-9):
+        return ("the edge points are the midpoints of the edges: the edge stencil is 3/8 (v + ring[i]) + 1/8 "
+                "(ring[i - 1] + ring[i + 1]), the two opposite vertices included")
     if k == 0:
+        beta_loop = (5 / 8 - (3 / 8 + np.cos(2 * np.pi / n) / 4) ** 2) / n
+        beta_warren = 3 / 16 if n == 3 else 3 / (8 * n)
+        names = [name for beta, name in ((beta_loop, "Loop's vertex rule (beta from the cosine formula)"),
+                                         (beta_warren, "Warren's vertex rule (3/16 at valence 3)"))
+                 if np.allclose(arr[0], (1 - n * beta) * v + beta * ring.sum(axis=0), atol=1e-9)]
+        if names:
+            return (f"the vertex point (row 0) follows {' and '.join(names)}; this chapter's centroid rule is "
+                    f"5/8 v + 3/(8n) times the sum of the ring, at every valence")
         return f"the vertex point (row 0) is {fmt(err[0], 2)} from where it should be, expected {fmt(exp[0])}"
     return (f"the edge point of the edge (v, ring[{k - 1}]) (row {k}) is {fmt(err[k], 2)} from where it should be, "
             f"expected {fmt(exp[k])}")
@@ -454,10 +466,10 @@ def check_ring_step_project(function) -> Result:
     the regular valence 6, valence 3, valences 4, 5 and 7, the high valences 12 and 20, and a
     degenerate ring whose points all coincide (Goldman §30.4, programming project).
 
-    >>> def reference(v, ring):
-    ...     return ss.local_subdivision_matrix(len(ring)) @ np.vstack([v, ring])
-    >>> check_ring_step_project(reference)
-    Correct: ring_step(v, ring) passes all 9 cases, including degenerate: all points equal, high valence (12, 20), regular (valence 6), valence 3, valences 4, 5, 7.
+    >>> def midpoints(v, ring):
+    ...     return np.vstack([v, (np.asarray(v) + np.asarray(ring)) / 2])
+    >>> print(check_ring_step_project(midpoints).message)   # doctest: +ELLIPSIS
+    case 2 of 9 (...): ...; the edge points are the midpoints of the edges: ... Hint: ...
     """
     return check_project(function, _project_cases(), reference=_ring_reference, compare=_compare_ring,
                          what="ring_step(v, ring)",
