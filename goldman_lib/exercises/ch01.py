@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals, turtle
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, read_points, unanswered, wrong
 from goldman_lib.fixed_point import hausdorff_distance
 
@@ -408,3 +409,7 @@ SLIPS = {
                               "REPEAT 8 [REPEAT 4 [FORWARD 1 TURN 90] TURN 40]",
                               "REPEAT 8 [REPEAT 4 [FORWARD 1 TURN 90] TURN 45"],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -19,6 +19,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals, turtle
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -115,6 +116,9 @@ def check_star_angle(answer) -> Result:
     a, problem = read_number(answer, what, "number of degrees")
     if problem is not None:
         return problem
+    if abs(a) > 1e6:
+        return wrong(f"{fmt(a)} degrees turns the turtle round thousands of times in one TURN; give an angle "
+                     f"between -360 and 360.")
     n = STAR_PASSES
     near = round(n * a / 360)
     if abs(a - 360 * near / n) <= 0.01:
@@ -390,3 +394,7 @@ SLIPS = {
                            0.3],
     "check_c_curve_commands": [64, 315, 187, 763, 31, 400],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -16,6 +16,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "EQUAL_COPIES", "EQUAL_SCALE", "TENT_PROGRAM", "CHORD_LEVEL", "BOUND_START",
@@ -284,3 +285,7 @@ SLIPS = {
                                 [("FORWARD", 2)], [("MOVE", 1)], [("FORWARD", 1)], [("JUMP", 1)]],
     "check_attraction_bound": [0.3 / 3 ** 6, 0.3 / 2 ** 6, 0.3 * 0.5 ** 2.5, 0.3 * 0.5 ** 3.5, 2.4, 0.3, 0.05],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -19,6 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import affine
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_P", "ROTATE_Q", "ROTATE_ANGLE", "COMPOSE_ANGLE", "COMPOSE_SCALE",
@@ -402,3 +403,7 @@ SLIPS = {
     "check_directional_scaling": [v.tolist() for v in _dir_answers()[1].values()],
     "check_three_points_map": [v.tolist() for v in _three_answers()[1].values()],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

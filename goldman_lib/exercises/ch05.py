@@ -20,6 +20,7 @@ import math
 import numpy as np
 
 from goldman_lib import codo
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, correct, fmt, is_unanswered, off_by, read_number, read_points,
                                    unanswered, wrong)
 
@@ -447,3 +448,7 @@ SLIPS = {
     "check_turtle_through_dots": [[36.87, 5, 126.87, 4], [-36.87, 5, 126.87, 4], [143.13, 7, 126.87, 4],
                                   [143.13, 5, 270, 4], [143.13, 5, -126.87, 4], [143.13, 25, 126.87, 4]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -19,6 +19,7 @@ import math
 import numpy as np
 
 from goldman_lib import affine, ifs
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 from goldman_lib.fixed_point import hausdorff_distance
@@ -388,3 +389,7 @@ SLIPS = {
     "check_chaos_game_steps": [v.tolist() for v in _chaos_answers()[1].values()],
     "check_tree_branches": [81, 243, 40, 364, 31],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

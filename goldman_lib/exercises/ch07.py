@@ -19,6 +19,7 @@ import math
 import numpy as np
 
 from goldman_lib import fixed_point as fp
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, check_number, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -371,6 +372,8 @@ def check_levels_needed(answer) -> Result:
         return wrong(f"n counts levels, a whole number; you gave {fmt(value)}. Round up the n that solves "
                      f"s^n h(A0, A) = {fmt(LEVEL_TOL)}.")
     v = int(value)
+    if v < 0:
+        return wrong(f"n counts levels, a whole number 0 or more; you gave {fmt(value)}.")
     s, h0 = max(LEVEL_FACTORS), LEVEL_START_DISTANCE
     n = _levels(s, h0, LEVEL_TOL)
     if v == n:
@@ -498,3 +501,7 @@ SLIPS = {
     "check_contraction_factor": [0.45, 0.5, 0.15, math.sqrt(0.5), math.hypot(0.4, 0.5)],
     "check_levels_needed": [9, 13, 17, 20, 22],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

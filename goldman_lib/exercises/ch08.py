@@ -23,6 +23,7 @@ import numpy as np
 
 from goldman_lib import affine, fractals
 from goldman_lib import conformal_ifs as cf
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 from goldman_lib.exercises.projects import Case, check_project, describe
 from goldman_lib.turtle import Turtle
@@ -558,3 +559,7 @@ SLIPS = {
         [[0, 0], [0.3, 0.4], [-0.3, 0.4], [0.4, 0]],
     ],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -20,6 +20,7 @@ import math
 import numpy as np
 
 from goldman_lib import vectors
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, is_unanswered, off_by,
                                    read_number, read_points, unanswered, wrong)
 
@@ -380,3 +381,7 @@ SLIPS = {
     "check_orientation": [[5, 5, 10, 0], [-5, -5, -10, 0], [-5, 5, -5, 0], [-5, 5, -10, 5]],
     "check_associator": [[0, 0, 0], [-2, -3, -7], [-3, -2, -8], [3, 2, 8]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

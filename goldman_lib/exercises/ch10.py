@@ -20,6 +20,7 @@ import math
 import numpy as np
 
 from goldman_lib import vectors
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, off_by, read_number, read_points, wrong)
 
 __all__ = ["PROBLEMS", "SLIPS", "DOT_U", "DOT_V", "CROSS_U", "CROSS_V", "DET_ROWS", "ANGLE_U", "ANGLE_V",
@@ -303,3 +304,7 @@ SLIPS = {
     "check_parallelogram_area": [3.3541, 45, 3, 11, 10.8167],
     "check_coplanar_k": [24, 0, -4],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -16,6 +16,7 @@ import numpy as np
 
 from goldman_lib import vector_geometry as vg
 from goldman_lib import vectors
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_number, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "TRIANGLE", "PLANE_POINT", "PLANE_NORMAL", "QUERY_POINT", "LINE1", "LINE2",
@@ -348,3 +349,7 @@ SLIPS = {
                     [2 / np.sqrt(5), 1 / np.sqrt(10), 1 / np.sqrt(10)],
                     [0.5, np.sqrt(3) / (2 * np.sqrt(2)), np.sqrt(3) / (2 * np.sqrt(2))]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

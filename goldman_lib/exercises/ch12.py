@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import transforms
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_POINT", "ROTATE_AXIS", "ROTATE_THROUGH", "ROTATE_ANGLE", "MIRROR_POINT",
@@ -310,3 +311,7 @@ SLIPS = {
         [2, 2 / 3, 2],        # t P
     ],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import transforms
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -472,3 +473,7 @@ def check_perspective_matrix_project(function) -> Result:
                          what="perspective_matrix",
                          hint="the image of P is E + [(Q - E)·N / (P - E)·N] (P - E); multiply through by "
                               "(P - E)·N, the homogeneous coordinate")
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import mass_points as mp
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, unanswered, is_unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "LEVER_POINTS", "LEVER_MASSES", "COMBO_MASSES", "COMBINATIONS", "TUPLE_PAIRS",
@@ -483,3 +484,7 @@ SLIPS = {
     "check_pseudodepth": [[0.5, 0.25, 0.8], [4 / 7, 0.8, 0.25], [2, 4, 1.25], [8, 16, 5], [-1, -3, -0.25]],
     "check_depth_order": ["CDAB", "BDAC", "DBCA", "ABCD"],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

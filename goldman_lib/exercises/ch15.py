@@ -23,6 +23,7 @@ import math
 import numpy as np
 
 from goldman_lib import quaternions as qt
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.exercises.projects import Case, check_project, describe
@@ -111,6 +112,8 @@ def check_complex_factor(answer) -> Result:
     >>> check_complex_factor([-5, 5])
     Not yet: that is (2 + i)(-1 + 3i), the product; z is the quotient (-1 + 3i) / (2 + i): multiply top and bottom by the conjugate 2 - i.
     """
+    if isinstance(answer, (complex, np.complexfloating)):
+        answer = [answer.real, answer.imag]   # the chapter computes with Python complex numbers too
     got, err = _read_vector(answer, "your z", 2, "z as [Re z, Im z]")
     if err is not None:
         return err
@@ -511,3 +514,7 @@ SLIPS = {
     "check_slerp_angle": [118.0, 5.0, -30.0, 11.13],
     "check_lerp_distortion": [0.0, math.sqrt(7) / 4, 0.5625, 0.5],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals(), complex_ok=("check_complex_factor",))

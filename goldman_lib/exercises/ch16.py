@@ -21,6 +21,7 @@ import math
 import numpy as np
 
 from goldman_lib import lighting
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.lighting import Light, Material
@@ -337,3 +338,7 @@ SLIPS = {
     "check_total_intensity": [[1.34816, 0.70968, 0.43008], [1.0, 0.64968, 0.40608], [0.8168, 0.5448, 0.3408],
                               [0.6394, 0.2249, 0.1133], [1.0, 0.5878, 0.2351], [1.0, 0.8746, 0.5194]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -20,6 +20,7 @@ import numpy as np
 
 from goldman_lib import lighting
 from goldman_lib import ray_tracing as rt
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, unanswered, wrong, is_unanswered
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.lighting import Light, Material
@@ -324,3 +325,7 @@ SLIPS = {
     "check_ray_tree_size": [31, 93, 60, 252, 16],
     "check_ray_tree_colour": [[0.58, 0.22, 0.22], [0.68, 0.42, 0.72], [1.1, 0.7, 1.3]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

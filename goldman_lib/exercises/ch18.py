@@ -18,6 +18,7 @@ import math
 import numpy as np
 
 from goldman_lib import surfaces as sf
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 __all__ = ["PROBLEMS", "SLIPS", "IMPLICIT_POINT", "GRAPH_UV", "DEFORM_NORMAL", "NEWTON_START", "NEWTON_ORIGIN",
@@ -290,3 +291,7 @@ SLIPS = {
     "check_cylinder_curvature": [[0.16, 0.4], [0, 0.4], [0.16, 0.2]],
     "check_torus_curvature": [0.2, -0.125, 0.2135],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

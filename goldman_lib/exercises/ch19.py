@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import simple_surfaces as S
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector  # shared readers
 from goldman_lib.exercises.projects import Case, check_project, describe
@@ -415,3 +416,7 @@ SLIPS = {
     "check_torus_bound": [[True, False, False, False, True], [True, False, True, True, True],
                           [False, True, True, False, False]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

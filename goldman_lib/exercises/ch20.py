@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import solid_modeling as sm
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, read_points, unanswered, wrong
 from goldman_lib.exercises.projects import Case, check_project, describe
 from goldman_lib.simple_surfaces import Sphere
@@ -442,3 +443,7 @@ SLIPS = {
     "check_flipped_face": [2, 4, 0],
     "check_octree_counts": [[48, 16, 0], [4, 4, 0], [16, 16, 0], [20, 0, 16]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -25,6 +25,7 @@ import numpy as np
 
 from goldman_lib import shading
 from goldman_lib import vector_geometry as vg
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.exercises.projects import Case, check_project
@@ -445,3 +446,7 @@ SLIPS = {
     "check_forward_differences": [[0.876, 0.05, 0.004], [0.876, 0.046, 0.008], [0.876, 0.042, 0.008]],
     "check_lerp_angle": [30.0, 90.0, 100.89],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import hidden_surfaces as hs
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_list  # the shared reader
 from goldman_lib.exercises.projects import Case, check_project
@@ -342,3 +343,7 @@ SLIPS = {
     "check_split_points": [[[3, 0, 0], [0, 2, 0]]],
     "check_bsp_order": [[3, 1, 2, 0, 4], [4, 0, 3, 1, 2]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import radiosity as rd
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _pair  # the shared reader
 from goldman_lib.exercises.projects import Case, check_project, describe
@@ -305,3 +306,7 @@ SLIPS = {
     "check_parallel_form_factor": [0.0686, 1.2732, 0.1998],
     "check_shot": [[0, 1.225, 2.12], [1.5, 1.45, 2.48], [0, 1.9, 2.6]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

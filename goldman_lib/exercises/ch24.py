@@ -20,6 +20,7 @@ import math
 import numpy as np
 
 from goldman_lib import bezier
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, is_unanswered, off_by,
                                    read_points, unanswered, wrong)
 
@@ -397,3 +398,7 @@ SLIPS = {
     "check_patch_point": [[2, 1, 1.8125], [1, 2, 0.5], [2, 2, 16 / 9]],
     "check_neville_point": [[2, 1.5], [2, 2], [2, 6], [4, 4], [2, 1]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

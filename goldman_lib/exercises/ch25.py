@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bezier
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, off_by, read_number, read_points,
                                    wrong)
 from goldman_lib.exercises.projects import Case, check_project
@@ -446,3 +447,7 @@ def check_subdivision_project(function) -> Result:
                          what="de Casteljau subdivision",
                          hint="the left polygon is the first point of every level of the pyramid, the right polygon "
                               "the last point of every level, from the apex to P_n")
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

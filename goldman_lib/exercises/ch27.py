@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bspline
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS",
@@ -419,3 +420,7 @@ SLIPS = {
     "check_nurbs_point": [[3.0, 1.5], [5.125, 1.75], [5.125 / 7, 0.25], [2.9459, 1.7838], [3.0, 1.0]],
     "check_pyramid_node_interval": [[1.0, 5.0], [1.0, 2.0], [0.0, 2.0], [2.0, 5.0], [0.0, 1.0]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

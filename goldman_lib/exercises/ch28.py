@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import knot_insertion as ki
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, read_number,
                                    read_points, wrong)
 from goldman_lib.exercises.projects import Case, check_project, compare_points
@@ -419,3 +420,7 @@ def check_boehm_project(function) -> Result:
                          what="Boehm's knot insertion",
                          hint=("with t_k <= u < t_(k+1), keep P_0..P_(k-p) and P_k..P_n; for k-p+1 <= i <= k put "
                                "Q_i = (1 - a_i) P_(i-1) + a_i P_i with a_i = (u - t_i)/(t_(i+p) - t_i)"))
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -17,6 +17,7 @@ import numpy as np
 
 from goldman_lib import affine
 from goldman_lib import subdivision_matrices as sm
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -453,3 +454,7 @@ def check_subdivision_matrices_project(function) -> Result:
                          compare=_compare_matrices, what="subdivision_matrices(n, t)",
                          hint="L[i, j] = B_j^i(t) (the left edge of the de Casteljau triangle) and "
                               "R[i, j] = B_{j-i}^{n-i}(t) (its right edge)")
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import subdivision_surfaces as ss
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -463,3 +464,7 @@ def check_ring_step_project(function) -> Result:
                          what="ring_step(v, ring)",
                          hint="the chapter's vertex rule 5/8, 3/(8n) holds at every valence, n = 3 included, and the "
                               "edge (v, ring[i]) has the opposite vertices ring[i - 1] and ring[i + 1], indices mod n")
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())
