@@ -220,10 +220,10 @@ class Unreadable(Exception):
     """An answer that cannot be read: the reason, in words."""
 
 
-def plain(answer, *, complex_ok: bool = False):
+def plain(answer, *, complex_ok: bool = False, max_items: int = MAX_ITEMS, max_text: int = MAX_TEXT):
     """The answer as plain data -- ``None``, ``...``, bool, int, float, complex (only if
     ``complex_ok``), str, list, tuple, dict, set and numpy arrays of numbers or text -- copied, so a
-    checker cannot change the learner's objects, and bounded: at most ``MAX_ITEMS`` entries,
+    checker cannot change the learner's objects, and bounded: at most ``max_items`` entries,
     ``MAX_DEPTH`` levels and texts of ``MAX_TEXT`` characters.  A complex number whose imaginary
     part is 0 is read as its real part.  Other objects are read through ``__array__``, ``__float__``,
     ``__index__`` or ``__iter__``, each guarded.  Raises :class:`Unreadable` saying why it cannot.
@@ -239,8 +239,8 @@ def plain(answer, *, complex_ok: bool = False):
 
     def tick(n: int = 1) -> None:
         count[0] += n
-        if count[0] > MAX_ITEMS:
-            raise Unreadable(f"it has more than {MAX_ITEMS:,} entries; the answer is much smaller")
+        if count[0] > max_items:
+            raise Unreadable(f"it has more than {max_items:,} entries; the answer is much smaller")
 
     def number(v):
         if isinstance(v, complex):
@@ -256,7 +256,7 @@ def plain(answer, *, complex_ok: bool = False):
             raise Unreadable(f"it is nested more than {MAX_DEPTH} levels deep")
         tick()
         if v is None or v is Ellipsis or type(v) in (bool, float, str):
-            if type(v) is str and len(v) > MAX_TEXT:
+            if type(v) is str and len(v) > max_text:
                 raise Unreadable(f"it is a text of {len(v):,} characters; the answer is far shorter")
             return v
         if isinstance(v, (bool, np.bool_)):
@@ -298,7 +298,7 @@ def plain(answer, *, complex_ok: bool = False):
         return k
 
     def array(a: np.ndarray, depth: int):
-        if a.size > MAX_ITEMS:
+        if a.size > max_items:
             raise Unreadable(f"it is an array of {a.size:,} entries; the answer is much smaller")
         tick(a.size)
         kind = a.dtype.kind
@@ -312,7 +312,7 @@ def plain(answer, *, complex_ok: bool = False):
             first = a.ravel()[np.flatnonzero(a.ravel().imag != 0)[0]]
             raise Unreadable(f"it should be real numbers; {quote(complex(first))} has an imaginary part")
         if kind in "US":
-            if a.dtype.itemsize * a.size > 4 * MAX_TEXT * 10:
+            if a.dtype.itemsize * a.size > 40 * max_text:
                 raise Unreadable("its texts are far longer than the answer")
             return np.array(a, copy=True)
         if kind == "O":
