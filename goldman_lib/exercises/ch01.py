@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals, turtle
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, read_points, unanswered, wrong
 from goldman_lib.fixed_point import hausdorff_distance
 
@@ -188,7 +188,7 @@ def check_final_state(answer) -> Result:
         if np.all(np.abs(got - np.array([sp, sw])) <= 1e-6):
             return wrong(f"that is the state of {name}: {why}.")
     if np.all(np.abs(got[1] - w) <= 1e-6):
-        return wrong(f"w is right, but P is {off_by(0, np.hypot(*(got[0] - p)))} in distance; follow P command by "
+        return wrong(f"w is right, but P is {far_off(got[0], p)}; follow P command by "
                      f"command: FORWARD and MOVE add d*w to P.")
     if np.all(np.abs(got[0] - p) <= 1e-6):
         return wrong("P is right, but w is not: TURN rotates w, RESIZE scales it, and FORWARD and MOVE leave it "

@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals, turtle
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -177,7 +177,7 @@ def check_loop_centre(answer) -> Result:
     for value, why in slips:
         if np.all(np.abs(got - np.asarray(value)) <= 1e-4):
             return wrong(f"{why}.")
-    return wrong(f"your point is {off_by(0, np.hypot(*(got - c)))} (its distance from the centre). Hint: with points "
+    return wrong(f"your point is {far_off(got, c)} from the centre. Hint: with points "
                  f"as complex numbers, find d and T of one pass and solve c = d + e^(iT) c.")
 
 

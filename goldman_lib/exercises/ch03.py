@@ -189,8 +189,9 @@ def check_c_curve_chord(answer) -> Result:
     if same(r, 0):
         return wrong("the chord along the x-axis is what the Koch curve gives at h = 4^-j; the C-curve's first half is "
                      "turned 45 degrees, so its chords turn with every halving.")
-    return wrong(f"{what} is {off_by(min(abs(r - _angle_mod(expected)), 360 - abs(r - _angle_mod(expected))), 0)} "
-                 f"degrees (mod 360). Hint: C(2^-j) is the end of the first half of the first half of ... (j times), "
+    e = _angle_mod(expected)
+    return wrong(f"{what} is {off_by(e + (r - e + 180) % 360 - 180, e)} "
+                 f"(mod 360). Hint: C(2^-j) is the end of the first half of the first half of ... (j times), "
                  f"and each first half is turned 45 degrees.")
 
 

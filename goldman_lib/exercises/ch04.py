@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import affine
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_P", "ROTATE_Q", "ROTATE_ANGLE", "COMPOSE_ANGLE", "COMPOSE_SCALE",
@@ -227,7 +227,7 @@ def _check_point(answer, what, ask, right, slips) -> Result:
     for why, value in slips.items():
         if _close(got, value):
             return wrong(f"{fmt(got)} {why}")
-    return wrong(f"{what} is {off_by(0, np.linalg.norm(got - right))} (distance); check each step: "
+    return wrong(f"{what} is {far_off(got, right)}; check each step: "
                  f"P - Q, the rotation (x, y) -> (-y, x), then add Q back.")
 
 
@@ -254,8 +254,8 @@ def _check_matrix(answer, what, right, slips, hint) -> Result:
     k = bad[0]
     part = "the translation (the image of the origin)" if k == 2 else f"the image of the vector e{k + 1}"
     also = f" (also off: {', '.join('row ' + str(j + 1) for j in bad[1:])})" if len(bad) > 1 else ""
-    return wrong(f"the {_ROWS[k]} row of your matrix, {part}, is {off_by(0, np.linalg.norm(got[k] - right[k]))} "
-                 f"(distance){also}. Hint: {hint}.")
+    return wrong(f"the {_ROWS[k]} row of your matrix, {part}, is {far_off(got[k], right[k])}"
+                 f"{also}. Hint: {hint}.")
 
 
 # -- the checkers -------------------------------------------------------------------------------
@@ -345,7 +345,7 @@ def check_point_and_vector_image(answer) -> Result:
     k = 0 if not _close(got[0], right[0]) else 1
     name = ("the image of the point P: (x, y, 1) M, translation included" if k == 0
             else "the image of the vector v: (x, y, 0) M, no translation")
-    return wrong(f"{name}, is {off_by(0, np.linalg.norm(got[k] - right[k]))} (distance); multiply the row of "
+    return wrong(f"{name}, is {far_off(got[k], right[k])}; multiply the row of "
                  f"affine coordinates by M, column by column.")
 
 

@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from goldman_lib import codo
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import (Result, correct, fmt, is_unanswered, off_by, read_number, read_points,
                                    unanswered, wrong)
 
@@ -149,7 +149,7 @@ def _compare(polylines, expected: list[np.ndarray], name: str, hint: str) -> Res
         near = min(_gap(d, e) for e in expected)
         if near <= 0.05:
             return wrong(f"your segment from {_show(d[0])} to {_show(d[1])} is nearly a side of {name} but "
-                         f"{off_by(0, near)}: type more decimals (four places) or exact values such as sqrt(3)/2.")
+                         f"slightly off: type more decimals (four places) or exact values such as sqrt(3)/2.")
         if not any(_gap(d, e) <= SEGMENT_TOL for d in drawn for e in expected):
             return wrong(f"none of your {len(drawn)} segments is a side of {name} (e.g. {_show(d[0])} to {_show(d[1])}): "
                          f"{hint}.")
@@ -233,7 +233,7 @@ def check_parallelogram_vertex(answer) -> Result:
         if k == 1:
             return wrong(f"{expr} gives D for the first triple A, B, C = {_pts(PARALLELOGRAM_TRIPLES[0])} but not "
                          f"for A, B, C = {_pts((A, B, C))}: write it in terms of A, B and C, not numbers.")
-        return wrong(f"for A, B, C = {_pts((A, B, C))}, {expr} is {off_by(0, np.linalg.norm(got - want))} from D. "
+        return wrong(f"for A, B, C = {_pts((A, B, C))}, {expr} is {far_off(got, want)} from D. "
                      f"Hint: opposite sides of a parallelogram are the same vector, D - A = C - B.")
     return correct(f"{expr} is the fourth vertex D of the parallelogram ABCD, for every A, B, C.")
 
@@ -349,7 +349,7 @@ def check_sheared_turn(answer) -> Result:
         return wrong("a negative TURN turns clockwise; the parallelogram is drawn counterclockwise, like the square.")
     if abs(a - math.radians(right)) <= 1e-3:
         return wrong(f"{fmt(a)} looks like radians; TURN takes degrees.")
-    return wrong(f"{what} is {off_by(r if r <= 180 else r - 360, right)} degrees. Hint: the turtle arrives heading "
+    return wrong(f"{what} is {off_by(r if r <= 180 else r - 360, right)}. Hint: the turtle arrives heading "
                  f"along (1, 0); it must turn to the direction of the side from (1, 0) to (2, 1).")
 
 
@@ -411,7 +411,7 @@ def check_turtle_through_dots(answer) -> Result:
                          "atan2(dy, dx).")
         if abs(got[0] - math.radians(right[0])) <= 1e-3:
             return wrong("turn 1 looks like radians; TURN takes degrees.")
-        return wrong(f"turn 1 is {off_by(0, min((got[0] - right[0]) % 360, (right[0] - got[0]) % 360))} degrees: the "
+        return wrong(f"turn 1 is {off_by(right[0] + (got[0] - right[0] + 180) % 360 - 180, right[0])}: the "
                      f"turtle heads along (1, 0) and must turn to the direction of the first segment.")
     if angle_ok(got[2], headings[1]):
         return wrong("turn 2 is the heading of the second segment; TURN is relative: subtract the heading the turtle "
@@ -419,7 +419,7 @@ def check_turtle_through_dots(answer) -> Result:
     if angle_ok(got[2], -right[2]):
         return wrong("turn 2 goes the wrong way: a positive TURN is counterclockwise; the polyline bends to the left "
                      "at the second dot.")
-    return wrong(f"turn 2 is {off_by(0, min((got[2] - right[2]) % 360, (right[2] - got[2]) % 360))} degrees: it is "
+    return wrong(f"turn 2 is {off_by(right[2] + (got[2] - right[2] + 180) % 360 - 180, right[2])}: it is "
                  f"the change of heading at the second dot, from the first segment's direction to the second's.")
 
 

@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 from goldman_lib import affine, ifs
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 from goldman_lib.fixed_point import hausdorff_distance
@@ -145,7 +145,7 @@ def _check_point(answer, what, right, slips, hint) -> Result:
     for why, value in slips.items():
         if np.allclose(got, value, atol=1e-6, rtol=1e-4):
             return wrong(f"your point {why}")
-    return wrong(f"{what} is {off_by(0, np.linalg.norm(got - right))} (distance). Hint: {hint}.")
+    return wrong(f"{what} is {far_off(got, right)}. Hint: {hint}.")
 
 
 def check_iterate_map(answer) -> Result:

@@ -23,7 +23,7 @@ import numpy as np
 
 from goldman_lib import affine, fractals
 from goldman_lib import conformal_ifs as cf
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 from goldman_lib.exercises.projects import Case, check_project, describe
 from goldman_lib.turtle import Turtle
@@ -205,7 +205,7 @@ def check_moved_point(answer) -> Result:
     unscaled = affine.apply(q[None], affine.rotation(45) @ affine.translation(P))[0]
     if np.linalg.norm(got - unscaled) <= tol:
         return wrong("you turned by 45 degrees but kept the size: the step |w| = sqrt(2) scales the whole drawing.")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from where "
+    return wrong(f"your point is {far_off(got, expected)} from where "
                  f"it is drawn; send (0, 0) to P and (1, 0) to P + w, and (0, 1) to P plus w turned 90 degrees "
                  f"counterclockwise.")
 
@@ -248,7 +248,7 @@ def check_level_end(answer) -> Result:
     _, (cw, _) = call_states(body, turn_sign=-1.0)
     if np.linalg.norm(got - cw) <= tol:
         return wrong("you turned clockwise: TURN 90 turns the heading counterclockwise, from (1, 0) towards (0, 1).")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from the end "
+    return wrong(f"your point is {far_off(got, expected)} from the end "
                  f"of level 1; follow the body command by command, each RECURSE acting like FORWARD 1.")
 
 
@@ -306,9 +306,9 @@ def check_ron_map(answer) -> Result:
     bad_w = np.linalg.norm(got[0, :2] - expected[0, :2]) > tol
     parts = []
     if bad_p:
-        parts.append(f"the point P (last row) is {off_by(np.linalg.norm(got[2, :2] - expected[2, :2]), 0.0)}")
+        parts.append(f"the point P (last row) is {far_off(got[2, :2], expected[2, :2])}")
     if bad_w:
-        parts.append(f"the direction w (first row) is {off_by(np.linalg.norm(got[0, :2] - expected[0, :2]), 0.0)}")
+        parts.append(f"the direction w (first row) is {far_off(got[0, :2], expected[0, :2])}")
     if not parts:
         parts.append("the second row should be w turned 90 degrees counterclockwise")
     return wrong("; ".join(parts) + f". Follow the body to call {RON_CALL}, each RECURSE acting like FORWARD 1.")
@@ -416,7 +416,7 @@ def check_bump_from_ifs(answer) -> Result:
                      "last row plus the first.")
     bad = [k for k in range(n) if np.linalg.norm(got[k] - expected[k]) > tol]
     k = bad[0]
-    return wrong(f"point {k} of your bump is {fmt(np.linalg.norm(got[k] - expected[k]), 2)} away from where it "
+    return wrong(f"point {k} of your bump is {far_off(got[k], expected[k])} from where it "
                  f"should be ({len(bad)} of {n} points are off). Each map sends (0, 0) to its last row P and "
                  f"(1, 0) to P + w; one of them runs backwards.")
 

@@ -216,7 +216,7 @@ def check_angle(answer) -> Result:
         return wrong("you divided by |u|² |v|², the squared lengths: |u| = sqrt(u · u), so take the square roots.")
     if abs(value - (180 - expected)) <= 0.01:
         return wrong("that is the supplementary angle: u · v is positive here, so θ is acute.")
-    return wrong(f"the angle is {off_by(value, expected)} degrees. Hint: cos θ = u · v / (|u| |v|).")
+    return wrong(f"the angle is {off_by(value, expected)}. Hint: cos θ = u · v / (|u| |v|).")
 
 
 # -- exercise 5 ---------------------------------------------------------------------------------

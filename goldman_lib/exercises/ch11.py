@@ -16,7 +16,7 @@ import numpy as np
 
 from goldman_lib import vector_geometry as vg
 from goldman_lib import vectors
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_number, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "TRIANGLE", "PLANE_POINT", "PLANE_NORMAL", "QUERY_POINT", "LINE1", "LINE2",
@@ -268,7 +268,7 @@ def check_three_planes(answer) -> Result:
         return wrong(f"your point lies on {['no', 'one', 'two'][len(PLANES) - len(misses)]} of the planes but not on the "
                      f"{' and '.join(misses)} ({', '.join(_plane_text(*PLANES[names.index(m)]) for m in misses)}); "
                      f"it must satisfy all three equations.")
-    return wrong(f"your point is {fmt(float(np.linalg.norm(got - expected)), 2)} from the common point and lies on "
+    return wrong(f"your point is {far_off(got, expected)} from the common point and lies on "
                  "none of the planes. Check the cross products N2 × N3, N3 × N1, N1 × N2 and det(N1, N2, N3).")
 
 
@@ -299,7 +299,7 @@ def check_slerp(answer) -> Result:
                      "closer to v0.")
     length = float(np.linalg.norm(got))
     hint = "" if abs(length - 1) < 1e-2 else " Slerp of unit vectors is a unit vector; yours is not."
-    return wrong(f"{what} is {fmt(float(np.linalg.norm(got - expected)), 2)} away from your vector.{hint} "
+    return wrong(f"{what} is {far_off(got, expected)} from your vector.{hint} "
                  "Find θ from v0·v1, then the weights sin((1 - t)θ)/sin θ and sin(tθ)/sin θ.")
 
 

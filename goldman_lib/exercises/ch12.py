@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import transforms
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_POINT", "ROTATE_AXIS", "ROTATE_THROUGH", "ROTATE_ANGLE", "MIRROR_POINT",
@@ -99,9 +99,8 @@ def _close(got, expected) -> bool:
 
 
 def _far(got, expected, hint) -> Result:
-    dist = float(np.linalg.norm(got - np.asarray(expected, dtype=float)))
     hint = hint.rstrip(".")
-    return wrong(f"your point is {fmt(dist, 2)} away from the image; {hint}.")
+    return wrong(f"your point is {far_off(got, expected)} from the image; {hint}.")
 
 
 def _unit(v):

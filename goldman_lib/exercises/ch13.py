@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import transforms
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -101,12 +101,12 @@ def _close(got, expected) -> bool:
 def _entry(got, expected, name, hint) -> Result:
     bad = np.argwhere(np.abs(got - expected) > REL_TOL * np.maximum(1.0, np.abs(expected)))
     i, j = (int(x) for x in bad[0])
-    return wrong(f"the entry in row {i}, column {j} of {name} is off by {fmt(abs(got[i, j] - expected[i, j]), 2)} "
+    return wrong(f"the entry in row {i}, column {j} of {name} is {off_by(got[i, j], expected[i, j])} "
                  f"({len(bad)} entries are off); {hint}.")
 
 
 def _far(got, expected, what, hint) -> Result:
-    return wrong(f"{what} is {fmt(float(np.linalg.norm(got - expected)), 2)} away from where it should be; {hint}.")
+    return wrong(f"{what} is {far_off(got, expected)} from where it should be; {hint}.")
 
 
 # -- §13.3 rotation -------------------------------------------------------------------------------------------

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import mass_points as mp
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, unanswered, is_unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "LEVER_POINTS", "LEVER_MASSES", "COMBO_MASSES", "COMBINATIONS", "TUPLE_PAIRS",
@@ -170,8 +170,8 @@ def check_center_of_mass(answer) -> Result:
     if not np.isclose(got[2], right[2], atol=1e-6):
         return wrong(f"the total mass M is {off_by(got[2], right[2])}. Hint: M is the sum of the masses, with "
                      f"their signs.")
-    return wrong(f"the mass is right; your centre of mass is {off_by(0, np.linalg.norm(got[:2] - right[:2]))} "
-                 f"(distance). Hint: add the mass-points (m P, m) coordinate by coordinate, then divide by the "
+    return wrong(f"the mass is right; your centre of mass is {far_off(got[:2], right[:2])}"
+                 f". Hint: add the mass-points (m P, m) coordinate by coordinate, then divide by the "
                  f"total mass.")
 
 
@@ -370,7 +370,7 @@ def check_perspective_by_lever(answer) -> Result:
     (Q, N) = PERSPECTIVE_PLANE
     off_plane = abs(float((got - np.array(Q)) @ np.array(N)))
     where = "it is not on the plane of projection" if off_plane > 1e-6 else "it is on the plane, but not on the line EP"
-    return wrong(f"your point is {off_by(0, np.linalg.norm(got - right))} (distance); {where}. Hint: compute c and s "
+    return wrong(f"your point is {far_off(got, right)}; {where}. Hint: compute c and s "
                  f"first, then (c P + (s - c) E) / s.")
 
 

@@ -135,7 +135,7 @@ def check_complex_factor(answer) -> Result:
     if _close(got, (b.real / a.real, b.imag / a.imag), tol):
         return wrong("you divided the coordinates one by one; complex division is not coordinatewise "
                      "(i^2 = -1 mixes them): multiply top and bottom by the conjugate 2 - i.")
-    return wrong(f"your z is {_dist(got, pair(z))} away from the right one; check that z (2 + i) "
+    return wrong(f"your z is {_dist(got, pair(z))} from the right one; check that z (2 + i) "
                  f"gives -1 + 3i, using i^2 = -1.")
 
 
@@ -170,7 +170,7 @@ def check_quaternion_product(answer) -> Result:
     if _close(got, p * q, tol):
         return wrong("you multiplied coordinate by coordinate; expand (a + u)(b + v) with the rules i^2 = -1, "
                      "i j = k = -j i, and so on.")
-    return wrong(f"your product is {_dist(got, expected)} away from p q; use (a, u)(b, v) = "
+    return wrong(f"your product is {_dist(got, expected)} from p q; use (a, u)(b, v) = "
                  f"(ab - u·v, a v + b u + u × v) with a = 1, u = (2, 0, -1), b = 2, v = (-1, 1, 3).")
 
 
@@ -212,7 +212,7 @@ def check_rotated_vector(answer) -> Result:
     if _close(got, _sandwich(raw, v, qt.conjugate(raw)), tol):
         return wrong("your q is not a unit quaternion: the axis (1, 0, 1) has length √2, so normalise it to "
                      "u = (1, 0, 1)/√2 before forming (cos(θ/2), sin(θ/2) u); otherwise q v q* also scales by |q|^2.")
-    return wrong(f"your image is {_dist(got, expected)} away from q v q*; its length should stay "
+    return wrong(f"your image is {_dist(got, expected)} from q v q*; its length should stay "
                  f"|v| = {fmt(np.linalg.norm(v), 4)} (yours is {fmt(np.linalg.norm(got), 4)}). Split v into its part "
                  f"along u and the rest, or multiply out q v q* with q = (cos 45°, sin 45° u).")
 
@@ -243,7 +243,7 @@ def check_conformal_image(answer) -> Result:
         return wrong("that is q* v q: it turns the other way. Multiply q v first, then by q* on the right.")
     if _close(got, _sandwich(q, v, q), tol):
         return wrong("that is (the vector part of) q v q: the right factor is the conjugate q* = (1, -2, 0, -2).")
-    return wrong(f"your image is {_dist(got, expected)} away from q v q*; its length should be "
+    return wrong(f"your image is {_dist(got, expected)} from q v q*; its length should be "
                  f"|q|^2 |v| (yours is {fmt(np.linalg.norm(got), 4)}). Multiply (0, v) by q on the left, then by "
                  f"q* on the right.")
 
@@ -287,8 +287,8 @@ def check_rotation_matrix(answer) -> Result:
                      "1 - 2(x^2 + y^2).")
     bad = np.argwhere(np.abs(got - expected) > tol)
     i, j = (int(k) for k in bad[0])
-    return wrong(f"{len(bad)} of the 9 entries are off, the first M[{i}][{j}] by "
-                 f"{fmt(abs(got[i, j] - expected[i, j]), 2)}; check it against (1, 0, 0), (0, 1, 0), (0, 0, 1) "
+    return wrong(f"{len(bad)} of the 9 entries are off, the first, M[{i}][{j}], is "
+                 f"{off_by(got[i, j], expected[i, j])}; check it against (1, 0, 0), (0, 1, 0), (0, 0, 1) "
                  f"rotated by q v q*: those images are the rows of M.")
 
 
@@ -335,7 +335,7 @@ def check_slerp_angle(answer) -> Result:
     if abs(value - _z_angle(nlerp)) <= tol:
         return wrong("that is normalised linear interpolation: the right arc, but not at constant speed; slerp "
                      "weights q0 and -q1 by sin((1 - t)θ)/sin θ and sin(tθ)/sin θ, θ the angle between them.")
-    return wrong(f"your angle is {off_by(value, expected)} degrees; read the angles of q0 and q1 from "
+    return wrong(f"your angle is {off_by(value, expected)}; read the angles of q0 and q1 from "
                  f"w = cos(θ/2), z = sin(θ/2), check the sign of q0·q1, then interpolate.")
 
 

@@ -138,7 +138,7 @@ def check_reflected_colour(answer) -> Result:
     if _close(got, incoming + C, tol) or _close(got, np.clip(incoming + C, 0, 1), tol):
         return wrong("you added the surface colour; a surface filters light: multiply each channel of the light "
                      "by the surface's fraction C of that channel.")
-    return wrong(f"your colour is {_dist(got, expected)} away; add the two lights channel by channel (colour "
+    return wrong(f"your colour is {_dist(got, expected)}; add the two lights channel by channel (colour "
                  f"times intensity), then multiply channel by channel by C.")
 
 
@@ -207,7 +207,7 @@ def check_mirror_direction(answer) -> Result:
     if _close(got, (L @ n) * n - L, tol):
         return wrong("you lack the factor 2: (L·N) N - L goes from L to the normal; R goes as far again, "
                      "R = 2 (L·N) N - L.")
-    return wrong(f"your R is {_dist(got, expected)} away; it should be a unit vector (yours has length "
+    return wrong(f"your R is {_dist(got, expected)}; it should be a unit vector (yours has length "
                  f"{fmt(np.linalg.norm(got), 4)}). Normalise N, then R = 2 (L·N) N - L.")
 
 
@@ -325,7 +325,7 @@ def check_total_intensity(answer) -> Result:
     for value, message in slips:
         if _close(got, value, tol) or _close(got, lighting.to_image(value), tol):
             return wrong(message)
-    return wrong(f"your colour is {_dist(got, expected)} away from the displayed one; work out L·N and R·V for each "
+    return wrong(f"your colour is {_dist(got, expected)} from the displayed one; work out L·N and R·V for each "
                  f"light (V = (0, 0, 1)), add the ambient term and both lights' terms, then clip.")
 
 

@@ -129,7 +129,7 @@ def check_reflected_direction(answer) -> Result:
                      "divide it by its length 5 first.")
     if _close(got, d, tol):
         return wrong("that is the incoming direction: a mirror turns the ray around its normal component.")
-    return wrong(f"your direction is {_dist(got, expected)} away from the reflected one; check that it has length 1, "
+    return wrong(f"your direction is {_dist(got, expected)} from the reflected one; check that it has length 1, "
                  f"that the angle to N equals the angle between -d and N, and use R = d - 2 (d . N) N with a unit N.")
 
 
@@ -174,7 +174,7 @@ def check_refracted_direction(answer) -> Result:
     if _close(got, lighting.reflect(-d[None], N[None])[0], tol):
         return wrong("that is the reflected ray (it leaves the surface); the refracted ray goes on through it, "
                      "into the plastic.")
-    return wrong(f"your direction is {_dist(got, expected)} away from the refracted one; check that it is a unit "
+    return wrong(f"your direction is {_dist(got, expected)} from the refracted one; check that it is a unit "
                  f"vector going into the surface (z < 0) and that sin of its angle to the normal is "
                  f"(n1 / n2) sin(theta1).")
 
@@ -204,7 +204,7 @@ def check_critical_angle(answer) -> Result:
         return wrong("that is in radians; give degrees.")
     if abs(value - CRITICAL_N2 / CRITICAL_N1) <= 1e-3:
         return wrong("that is sin(theta_c), the ratio n2 / n1; the angle is its arcsin, in degrees.")
-    return wrong(f"your angle is {off_by(value, expected)} degrees. At the critical angle the refracted ray grazes "
+    return wrong(f"your angle is {off_by(value, expected)}. At the critical angle the refracted ray grazes "
                  f"the surface (theta2 = 90 degrees): n1 sin(theta_c) = n2 sin 90.")
 
 
@@ -311,7 +311,7 @@ def check_ray_tree_colour(answer) -> Result:
     if _close(got, c["floor_local"] + c["sphere_local"] + c["background"], tol):
         return wrong("you added the colours without the reflection coefficients: I = I_local + k_r I_reflected at "
                      "every hit.")
-    return wrong(f"your colour is {_dist(got, expected)} away; apply I = I_local + k_r I_reflected from the deepest "
+    return wrong(f"your colour is {_dist(got, expected)}; apply I = I_local + k_r I_reflected from the deepest "
                  f"hit upwards: first the sphere's colour, then the floor's.")
 
 

@@ -118,7 +118,7 @@ def check_implicit_normal(answer) -> Result:
                      "F > 0.")
     if _close(got, _unit(g * [1, 1, -1]), tol):
         return wrong("check the sign of the z-component: the derivative of -z^2 is -2z.")
-    return wrong(f"your normal is {_dist(got, expected)} away; differentiate F in x, y and z, evaluate at P, and "
+    return wrong(f"your normal is {_dist(got, expected)}; differentiate F in x, y and z, evaluate at P, and "
                  f"divide by the length (your vector has length {fmt(np.linalg.norm(got), 4)}).")
 
 
@@ -147,7 +147,7 @@ def check_parametric_normal(answer) -> Result:
         return wrong("that is X_u × X_v itself; divide it by its length to get the unit normal.")
     if _close(got, _unit(cross * [1, -1, 1]), tol):
         return wrong("check the middle component of the cross product: (a × b)_y = a_z b_x - a_x b_z.")
-    return wrong(f"your normal is {_dist(got, expected)} away; X_u = (1, 0, 2uv) and X_v = (0, 1, u^2) at the given "
+    return wrong(f"your normal is {_dist(got, expected)}; X_u = (1, 0, 2uv) and X_v = (0, 1, u^2) at the given "
                  f"(u, v), then their cross product, normalised.")
 
 
@@ -180,7 +180,7 @@ def check_deformed_normal(answer) -> Result:
         return wrong("that is J^T n: the transpose, but not inverted; normals map by J^(-T) = (J^T)^(-1).")
     if _close(got, np.linalg.solve(M.T, n[0]), tol) or _close(got, np.linalg.solve(M.T, [1, 1, 1]), tol):
         return wrong("that is J^(-T) n before normalising: divide it by its length.")
-    return wrong(f"your normal is {_dist(got, expected)} away; the Jacobian of A is [[1, 0, 2], [0, 3, 0], [0, 0, 1]]; "
+    return wrong(f"your normal is {_dist(got, expected)}; the Jacobian of A is [[1, 0, 2], [0, 3, 0], [0, 0, 1]]; "
                  f"solve J^T m = n for m and normalise it.")
 
 
@@ -219,7 +219,7 @@ def check_newton_step(answer) -> Result:
         return wrong("you added the step: Newton's update is (t, u, v) - J^(-1) G.")
     if _close(got, _newton(NEWTON_START, sign_xu=1.0), tol):
         return wrong("the Jacobian of G = O + t d - X(u, v) has the columns d, -X_u and -X_v (the minus from -X).")
-    return wrong(f"your point is {_dist(got, expected)} away; evaluate G and its Jacobian [d, -X_u, -X_v] at the start, "
+    return wrong(f"your point is {_dist(got, expected)}; evaluate G and its Jacobian [d, -X_u, -X_v] at the start, "
                  f"solve J s = G and subtract s.")
 
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import simple_surfaces as S
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector  # shared readers
 from goldman_lib.exercises.projects import Case, check_project, describe
@@ -253,7 +253,7 @@ def check_torus_normal(answer) -> Result:
     if np.abs(got - P / np.linalg.norm(P)).max() <= tol:
         return wrong("that is P / |P|, a sphere's normal about the center; a torus's normal points from the core "
                      "circle (radius R in the plane z = 0), not from the center.")
-    return wrong(f"your normal is {fmt(np.linalg.norm(got - n), 2)} from the right one; differentiate "
+    return wrong(f"your normal is {far_off(got, n)} from the right one; differentiate "
                  f"(x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + y^2) and normalise.")
 
 

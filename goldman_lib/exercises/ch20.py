@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import solid_modeling as sm
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, read_points, unanswered, wrong
 from goldman_lib.exercises.projects import Case, check_project, describe
 from goldman_lib.simple_surfaces import Sphere
@@ -156,7 +156,7 @@ def check_csg_difference(answer) -> Result:
         return wrong(f"you gave {len(got)} interval(s); A − B along this ray is a different number. Find where the "
                      "ray enters and leaves each ball (solve |P(t) - C|^2 = r^2), then keep what is in A and not in B.")
     k = int(np.argmax(np.abs(got - expected).max(axis=1)))
-    return wrong(f"interval {k} is {off_by(0, float(np.abs(got - expected)[k].max()))} at one end. Solve "
+    return wrong(f"interval {k} is {far_off(got[k], expected[k])} at one end. Solve "
                  "|P(t) - C|^2 = r^2 for each ball and combine the two intervals.")
 
 

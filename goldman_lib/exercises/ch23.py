@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import radiosity as rd
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _pair  # the shared reader
 from goldman_lib.exercises.projects import Case, check_project, describe
@@ -80,7 +80,7 @@ def _close(a, b, tol=1e-4) -> bool:
 
 
 def _dist(a, b) -> str:
-    return off_by(float(np.linalg.norm(np.asarray(a, float) - np.asarray(b, float))), 0.0)
+    return far_off(a, b)
 
 
 def _jacobi(F, rho, E):

@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from goldman_lib import bezier
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, is_unanswered, off_by,
                                    read_points, unanswered, wrong)
 
@@ -130,7 +130,7 @@ def check_de_casteljau_point(answer) -> Result:
     if np.linalg.norm(got - DE_CASTELJAU_CTRL.mean(axis=0)) <= 1e-4:
         return wrong(f"your point is the average of the control points; the curve weights them by the "
                      f"Bernstein values at t, which are not equal.")
-    return wrong(f"your point is {fmt(dist, 2)} from the curve at t={fmt(t)}; the curve point is a repeated "
+    return wrong(f"your point is {far_off(got, expected)} from the curve at t={fmt(t)}; the curve point is a repeated "
                  f"affine combination (1-t) P_j + t P_(j+1), three levels deep for a cubic.")
 
 
@@ -304,7 +304,7 @@ def check_c1_join_unequal(answer) -> Result:
     if collinear and leg @ lead > 0:
         return wrong("the tangent direction is right (G1), but the length of Q1 - Q0 is not: Q1 - Q0 must be "
                      "P3 - P2 times the ratio of the parameter intervals (Q's over P's).")
-    return wrong(f"Q1 is {fmt(float(np.linalg.norm(got[1] - expected[1])), 2)} from where it should be: Q1 - Q0 "
+    return wrong(f"Q1 is {far_off(got[1], expected[1])} from where it should be: Q1 - Q0 "
                  f"must be parallel to P3 - P2 and scaled by the ratio of the parameter intervals.")
 
 
@@ -341,7 +341,7 @@ def check_patch_point(answer) -> Result:
     if np.linalg.norm(got - net.reshape(-1, 3).mean(axis=0)) <= 1e-4:
         return wrong("that is the plain average of the nine control points; the patch weights P_ij by the "
                      "products of the Bernstein values in u and in v, which are not equal.")
-    return wrong(f"your point is {fmt(float(np.linalg.norm(got - expected)), 2)} from the patch point; run de "
+    return wrong(f"your point is {far_off(got, expected)} from the patch point; run de "
                  f"Casteljau on each row at v, then on the three results at u.")
 
 
@@ -380,7 +380,7 @@ def check_neville_point(answer) -> Result:
     if np.any(np.linalg.norm(NEVILLE_POINTS - got, axis=1) <= 1e-4):
         return wrong(f"that is one of the data points; the curve passes through them at their nodes, and {fmt(t)} is "
                      "not one of the nodes.")
-    return wrong(f"your point is {fmt(dist, 2)} from {what}; each level of Neville's pyramid is an affine combination "
+    return wrong(f"your point is {far_off(got, expected)} from {what}; each level of Neville's pyramid is an affine combination "
                  "weighted by distances to the nodes, and extrapolation (a weight below 0) is allowed.")
 
 

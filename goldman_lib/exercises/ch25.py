@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bezier
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, off_by, read_number, read_points,
                                    wrong)
 from goldman_lib.exercises.projects import Case, check_project
@@ -231,7 +231,7 @@ def check_patch_split(answer) -> Result:
     k = int(bad[0])
     i, j = divmod(k, 3)
     dist = float(np.linalg.norm(got[i, j] - expected[i, j]))
-    return wrong(f"point [{i}][{j}] of {what} is {fmt(dist, 2)} from where it should be ({bad.size} of 6 points are "
+    return wrong(f"point [{i}][{j}] of {what} is {far_off(got[i, j], expected[i, j])} from where it should be ({bad.size} of 6 points are "
                  f"off). Hint: run de Casteljau at v on each row and keep the first point of every level.")
 
 

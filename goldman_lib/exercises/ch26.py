@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 from goldman_lib import blossom as bl
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, off_by, read_number, read_points,
                                    wrong)
 
@@ -164,7 +164,7 @@ def check_blossom_value(answer) -> Result:
     if np.any(np.linalg.norm(two - got, axis=1) <= 1e-6):
         return wrong("that is a point of level 2 of the pyramid; a cubic's blossom has three arguments and three "
                      "levels.")
-    return wrong(f"your point is {fmt(float(np.linalg.norm(got - expected)), 2)} from p{_args_text(u)}; run the three "
+    return wrong(f"your point is {far_off(got, expected)} from p{_args_text(u)}; run the three "
                  f"levels with u1, u2, u3 (the argument outside [0, 1] extrapolates).")
 
 
@@ -230,7 +230,7 @@ def check_second_derivative(answer) -> Result:
     if np.linalg.norm(got - bl.blossom(P, [t] * n)) <= 1e-6:
         return wrong("that is the point P(t) = p((t,1), (t,1), (t,1)); the second derivative puts delta = (1, 0) into "
                      "two slots.")
-    return wrong(f"your vector is {fmt(float(np.linalg.norm(got - expected)), 2)} from P''(t). With delta at two "
+    return wrong(f"your vector is {far_off(got, expected)} from P''(t). With delta at two "
                  f"levels, take second differences of the control points, then one level at t, then the factor n(n-1).")
 
 

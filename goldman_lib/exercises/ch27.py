@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bspline
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS",
@@ -168,7 +168,7 @@ def check_local_de_boor(answer) -> Result:
         if p <= other <= len(CURVE_CTRL) - 1 and _near(got, _span_curve(other, u), 1e-6):
             return wrong(f"you ran the pyramid on P{other - p}..P{other}, the points of another span; u = {fmt(u)} "
                          f"lies in [t{k}, t{k + 1}) = [{fmt(t[k])}, {fmt(t[k + 1])}), so P_(k-p)..P_k act.")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from {what}. Find the span "
+    return wrong(f"your point is {far_off(got, expected)} from {what}. Find the span "
                  f"t_k <= u < t_(k+1) first; on level r the weight of node i is (u - t_i)/(t_(i+p+1-r) - t_i).")
 
 
@@ -329,7 +329,7 @@ def check_surface_point(answer) -> Result:
     if _near(got[:2], expected[:2], 1e-6):
         return wrong(f"x and y are right, the height is {off_by(got[2], expected[2])}; run the v direction on the "
                      f"heights of each active row, then combine the rows in u.")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from {what}. Find u's span in the "
+    return wrong(f"your point is {far_off(got, expected)} from {what}. Find u's span in the "
                  f"u knots and v's in the v knots; S = sum_i sum_j N_i,1(u) N_j,2(v) P_ij.")
 
 
@@ -366,7 +366,7 @@ def check_nurbs_point(answer) -> Result:
     if _near(got, bspline.nurbs_curve(P, 1 / w, t, 2, u), 1e-3):
         return wrong("you divided by the weights instead of multiplying: a larger weight pulls the curve towards "
                      "its control point, so w_k multiplies N_k,2(u).")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from {what}. Compute N_1,2, "
+    return wrong(f"your point is {far_off(got, expected)} from {what}. Compute N_1,2, "
                  f"N_2,2, N_3,2 at u = {fmt(u)}, then C = sum w_k N_k P_k / sum w_k N_k.")
 
 

@@ -17,7 +17,7 @@ import numpy as np
 
 from goldman_lib import affine
 from goldman_lib import subdivision_matrices as sm
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -95,12 +95,12 @@ def _far(got, expected, what, hint) -> Result:
         if exp.size <= 4 and got.size == exp.size and exp.ndim == 1 and exp.size != 2:
             k = int(np.argmax(np.abs(got - exp)))
             return wrong(f"coordinate x{k + 1} of {what} is {off_by(got[k], exp[k])}; {hint}.")
-        return wrong(f"{what} is {fmt(np.linalg.norm(got - exp), 2)} away from where it should be; {hint}.")
+        return wrong(f"{what} is {far_off(got, exp)} from where it should be; {hint}.")
     err = np.linalg.norm((got - exp).reshape(len(exp), -1), axis=1)
     bad = np.flatnonzero(err > REL_TOL * np.maximum(1.0, np.abs(exp).reshape(len(exp), -1).max(axis=1)))
     k = int(bad[0])
     others = "the only point that is off" if bad.size == 1 else f"one of {bad.size} points off"
-    return wrong(f"point {k} of {what} is {fmt(err[k], 2)} away from where it should be ({others}); {hint}.")
+    return wrong(f"point {k} of {what} is {far_off(got[k], exp[k])} from where it should be ({others}); {hint}.")
 
 
 def _matrix_entry(got, expected, name, hint) -> Result:

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import subdivision_surfaces as ss
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -99,7 +99,7 @@ def _point(answer, what, ask):
 
 
 def _far(got, expected, what, hint) -> Result:
-    return wrong(f"{what} is {fmt(np.linalg.norm(got - np.asarray(expected)), 2)} away from where it should be; "
+    return wrong(f"{what} is {far_off(got, np.asarray(expected))} from where it should be; "
                  f"{hint}.")
 
 
