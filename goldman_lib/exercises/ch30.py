@@ -144,7 +144,8 @@ def check_box_spline_mask(answer) -> Result:
     total = got.sum()
     if abs(total - 32) > 1e-6:
         return wrong(f"the entries of the mask times 8 should total 32 (four kinds of new points, each an affine "
-                     f"combination); yours total {fmt(total)}. Multiply (1 + x)^2 (1 + y)^2 by (1 + xy).")
+                     f"combination); yours {'total ' + fmt(total) if abs(total - 32) >= 0.5 else 'miss that total by a little (an entry rounded?)'}"
+                     f". Multiply (1 + x)^2 (1 + y)^2 by (1 + xy).")
     bad = np.argwhere(np.abs(got - expected) > 1e-6)
     i, j = (int(x) for x in bad[0])
     return wrong(f"the entry in row {i}, column {j} is {off_by(got[i, j], expected[i, j])}; the mask is the "

@@ -91,7 +91,7 @@ def describe(value, limit: int = 6) -> str:
             raise TypeError
         arr = np.asarray(value, dtype=float)
     except Exception:  # noqa: BLE001 - anything the learner returned
-        return quote(value, 80) + f" (a {type(value).__name__})"
+        return _short_repr(value) + f" (a {type(value).__name__})"
     if arr.ndim == 0:
         return fmt(arr)
     if arr.ndim == 1 and arr.size <= limit:
@@ -100,6 +100,21 @@ def describe(value, limit: int = 6) -> str:
         return ", ".join(fmt(p) for p in arr)
     head = ", ".join(fmt(p) for p in arr.reshape(arr.shape[0], -1)[:3]) if arr.ndim >= 1 else ""
     return f"an array of shape {arr.shape} starting {head}"
+
+
+def _short_repr(value, limit: int = 80) -> str:
+    """``repr`` cut to ``limit`` characters: built-in data through the bounded
+    :func:`~goldman_lib.exercises.quote` (never deep, never long), an object of a class of its own
+    by its ``repr`` (a chapter may wrap results to describe them), guarded against one that raises."""
+    if isinstance(value, (str, bytes, int, float, complex, list, tuple, dict, set, frozenset, np.ndarray, np.generic)):
+        return quote(value, limit)
+    try:
+        text = repr(value)
+    except Exception:  # noqa: BLE001 - the learner's __repr__
+        return quote(value, limit)
+    if not isinstance(text, str):
+        return quote(value, limit)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def compare_numbers(tol: float = 1e-6) -> Callable[[Any, Any, Case], str | None]:
