@@ -60,7 +60,7 @@ def test_box_mask_messages():
     assert "should total 32" in r.message and "yours miss that total by a little" in r.message
     assert "yours total 32" not in r.message
     r = ch30.check_box_spline_mask([[1, 2, 1, 0], [2, 4, 5, 1], [1, 4, 5, 2], [0, 1, 2, 1]])
-    assert "row 1, column 1" in r.message and "too large" in r.message
+    assert "row 1, column 1" in r.message and "too small" in r.message
     assert "four by four" in ch30.check_box_spline_mask([[1, 2], [2, 1]]).message
 
 
