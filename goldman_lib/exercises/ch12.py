@@ -111,7 +111,7 @@ def _on_plane_check(got, Q, N):
     """A note for a point off the plane of a projection: how far off (the image must lie on the plane)."""
     d = abs(float((got - Q) @ _unit(N)))
     if d > REL_TOL * max(1.0, float(np.abs(got).max())):
-        return f". Your point is not on the plane ({fmt(d, 2)} from it), and a projection's image lies on it"
+        return ". Your point is not on the plane, and a projection's image lies on it"
     return ""
 
 

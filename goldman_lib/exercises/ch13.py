@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import transforms
-from goldman_lib.exercises import far_off, guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers, off_by
 from goldman_lib.exercises import Result, correct, fmt, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
