@@ -107,8 +107,6 @@ def check_star_angle(answer) -> Result:
     passes and draws a star (Goldman §2.2).  Right answers: ``360 p / 9`` with ``gcd(p, 9) = 1`` and
     ``p`` not 1 or 8 (80, 160, 200, 280), within 0.01 degrees.
 
-    >>> check_star_angle(160)
-    Correct: 9 * 160 = 1440 = 4 * 360 and no fewer passes close: the turtle draws the {9/4} star.
     >>> check_star_angle(120)
     Not yet: 120 degrees closes after only 3 passes (3 * 120 = 360): the 9 passes would draw the same triangle 3 times.
     """

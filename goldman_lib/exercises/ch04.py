@@ -274,9 +274,6 @@ def check_rotate_about_point(answer) -> Result:
 def check_composite_matrix(answer) -> Result:
     """Exercise 4.2: the matrix of "rotate by ``COMPOSE_ANGLE`` about the origin, then scale by
     ``COMPOSE_SCALE`` about ``COMPOSE_CENTER``" (Goldman §4.3, §4.5).  answer: 3x3 rows.
-
-    >>> check_composite_matrix([[0, 3, 0], [-3, 0, 0], [-2, 0, 1]])
-    Correct: the composite matrix is (0, 3, 0), (-3, 0, 0), (-2, 0, 1) (rows).
     """
     right, slips = _composite_answers()
     return _check_matrix(answer, "the composite matrix", right, slips,
@@ -287,9 +284,6 @@ def check_composite_matrix(answer) -> Result:
 def check_commuting_pairs(answer) -> Result:
     """Exercise 4.3: which pairs of :data:`COMMUTE_PAIRS` commute (Goldman §4.3, §4.4).  answer: a
     dict ``{label: bool}`` (also ``"yes"``/``"no"``).
-
-    >>> check_commuting_pairs({"a": False, "b": True, "c": False, "d": True, "e": False})
-    Correct: all 5 answers are right: maps commute when they fix the same point and their linear parts commute (or both are translations).
     """
     if is_unanswered(answer):
         return unanswered("a dict {label: True or False} for the pairs a to e")
@@ -352,9 +346,6 @@ def check_point_and_vector_image(answer) -> Result:
 def check_point_and_vectors_map(answer) -> Result:
     """Exercise 4.5: the matrix of the map sending a point and two vectors to their images
     (Goldman §4.7.1): ``L = V^-1 W``, translation ``Q - P L``.  answer: 3x3 rows.
-
-    >>> check_point_and_vectors_map([[0, 2, 0], [1, -1, 0], [1, 2, 1]])
-    Correct: the matrix of the map is (0, 2, 0), (1, -1, 0), (1, 2, 1) (rows).
     """
     right, slips = _pv_answers()
     return _check_matrix(answer, "the matrix of the map", right, slips,
@@ -366,9 +357,6 @@ def check_directional_scaling(answer) -> Result:
     """Exercise 4.6: the matrix of the scaling by ``DIR_FACTOR`` along ``DIR_DIRECTION`` about
     ``DIR_CENTER`` (Goldman §4.7.2): ``L = I + (s - 1) w^T w`` with ``w`` the unit vector, translation
     ``C - C L``.  answer: 3x3 rows, decimals to about 1e-4.
-
-    >>> check_directional_scaling([[1.36, 0.48, 0], [0.48, 1.64, 0], [-0.36, -0.48, 1]])
-    Correct: the scaling matrix is (1.36, 0.48, 0), (0.48, 1.64, 0), (-0.36, -0.48, 1) (rows).
     """
     right, slips = _dir_answers()
     return _check_matrix(answer, "the scaling matrix", right, slips,
@@ -379,9 +367,6 @@ def check_directional_scaling(answer) -> Result:
 def check_three_points_map(answer) -> Result:
     """Exercise 4.7: the matrix of the affine map sending ``SRC_POINTS`` to ``DST_POINTS``
     (Goldman §4.7.3).  answer: 3x3 rows.
-
-    >>> check_three_points_map([[2, 2, 0], [-1, 1, 0], [-1, -3, 1]])
-    Correct: the matrix of the map is (2, 2, 0), (-1, 1, 0), (-1, -3, 1) (rows).
     """
     right, slips = _three_answers()
     return _check_matrix(answer, "the matrix of the map", right, slips,

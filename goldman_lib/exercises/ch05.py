@@ -169,9 +169,6 @@ def check_hexagon_program(answer) -> Result:
     vertex at ``(1, 0)`` (Goldman §5.2.2).  answer: program text.  Compares the segments drawn,
     each end within :data:`SEGMENT_TOL`.
 
-    >>> check_hexagon_program("CONNECT point(1, 0), point(0.5, 0.86603), point(-0.5, 0.86603), point(-1, 0), "
-    ...                       "point(-0.5, -0.86603), point(0.5, -0.86603), point(1, 0)")
-    Correct: your drawing is the regular hexagon: its 6 sides and nothing else.
     >>> print(check_hexagon_program(codo.SAMPLES["regular pentagon"]).message)
     none of your 5 segments is a side of the regular hexagon (e.g. (1, 0) to (0.309, 0.9511)): the hexagon turns by 360/6 degrees at the centre from one vertex to the next.
     """
@@ -288,10 +285,6 @@ def _image_square() -> np.ndarray:
 def check_image_program(answer) -> Result:
     """Exercise 4: a CODO program that draws the image of :data:`UNIT_SQUARE` under the affine map
     sending :data:`IMAGE_SRC` to :data:`IMAGE_DST` (Goldman §5.2, §4.7.3).  answer: program text.
-
-    >>> check_image_program('''M = affine(point(0,0), point(1,0), point(0,1), point(1,0), point(3,1), point(2,2))
-    ... DRAW M(polygon(point(0,0), point(1,0), point(1,1), point(0,1)))''')
-    Correct: your drawing is the image of the square: its 4 sides and nothing else.
     """
     lines, problem = _run(answer, "a CODO program (in quotes) that draws the image of the square")
     if problem is not None:
@@ -321,8 +314,6 @@ def check_sheared_turn(answer) -> Result:
     """Exercise 5: the turtle's TURN at ``(1, 0)`` for the sheared square (Goldman §5.1: the
     turtle cannot draw the affine image of its drawing by changing only its initial state).
 
-    >>> check_sheared_turn(45)
-    Correct: the turtle turns by 45 degrees at (1, 0). The program itself must change, not only the turtle's initial state: affine maps do not preserve angles.
     >>> print(check_sheared_turn(90).message)
     90 degrees is the square's turn; the shear changes the angles, which is exactly why the turtle program has to change: find the direction of the side from (1, 0) to (2, 1).
     """

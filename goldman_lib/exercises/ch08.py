@@ -324,8 +324,6 @@ def check_tao_body(answer) -> Result:
     """Check a body whose IFS (base case FORWARD 1 MOVE -1) is ``TAO_MAPS`` (Goldman §8.4): any body
     whose calls are made at the two maps' states and that leaves the turtle where it started.
 
-    >>> check_tao_body("RESIZE 1/2 RECURSE RESIZE 2 MOVE 1 TURN 90 RESIZE 1/2 RECURSE RESIZE 2 TURN -90 MOVE -1")
-    Correct: Ron's algorithm reads T1 and T2 back from your body, and it leaves the turtle where it started, like the base case.
     >>> check_tao_body("RESIZE 1/2 RECURSE RESIZE 2 MOVE 1 TURN 90 RESIZE 1/2 RECURSE RESIZE 2 MOVE -1")
     Not yet: your body does not bring the turtle back: it ends at P = (1, -1), heading 90 degrees, step 1, but the base case ends where it started, at P = (0, 0), heading 0 degrees, step 1. Undo every TURN, MOVE and RESIZE after the last RECURSE, in reverse order (a heading not restored is the usual slip).
     """

@@ -118,8 +118,6 @@ def check_expression_types(answer) -> Result:
     Recognises: an affine combination with a negative weight (2P - Q) or a fraction ((P + Q)/2)
     called undefined; P + Q called a point; a difference (weights summing to 0) called a point.
 
-    >>> check_expression_types(["vector", "undefined", "point", "point", "vector", "point"])
-    Correct: weights summing to 1 give a point, to 0 a vector, to anything else nothing that does not depend on the origin.
     >>> check_expression_types(["vector", "undefined", "undefined", "point", "vector", "point"])  # doctest: +ELLIPSIS
     Not yet: 1 of the 6 is wrong. 2P - Q is not undefined: its weights add up to 1, ...
     """
@@ -160,9 +158,6 @@ def check_affine_point(answer) -> Result:
 
     Recognises: A's weight taken as 1 or as 0 (weights not summing to 1), the centroid (equal
     weights), and the weights given to the wrong points.
-
-    >>> check_affine_point([1.3, 0.1])
-    Correct: A's weight is 1 - 0.3 - 0.45 = 0.25, and 0.25 A + 0.3 B + 0.45 C = (1.3, 0.1), the same point whatever the origin.
     """
     what = "the affine combination"
     got, err = read_points(answer, what, ask=what + " as [x, y]")

@@ -126,9 +126,6 @@ def check_rotation_about_point(answer) -> Result:
     """Check P rotated about the line through ``ROTATE_THROUGH`` along ``ROTATE_AXIS`` (Goldman §12.3);
     recognises the rotation about the origin, the other sense of rotation, Q not added back, and the
     axis left unnormalised in Rodrigues' formula.
-
-    >>> check_rotation_about_point([0, 2, 3])
-    Correct: v = P - Q = (2, 1, -1) turns into (-1, 2, 1) (120° about (1, 1, 1) sends (x, y, z) to (z, x, y)), and P' = Q + (-1, 2, 1).
     """
     got, err = _read_point(answer, "the rotated point as [x, y, z]")
     if err is not None:
@@ -192,9 +189,6 @@ def check_mirror_point(answer) -> Result:
 def check_scale_along(answer) -> Result:
     """Check the nonuniform scaling of ``SCALE_POINT`` (Goldman §12.4); recognises the uniform scaling,
     the scaling about the origin, the unnormalised direction and the factor s used for s - 1.
-
-    >>> check_scale_along([2, 5.4, 5.2])
-    Correct: (P - Q)·w = 2 along the unit w = (0, 0.6, 0.8), so P' = P + (s - 1)·2 w.
     """
     got, err = _read_point(answer, "the scaled point as [x, y, z]")
     if err is not None:
@@ -224,9 +218,6 @@ def check_scale_along(answer) -> Result:
 def check_orthogonal_projection(answer) -> Result:
     """Check the orthogonal projection of ``ORTHO_POINT`` (Goldman §12.5); recognises the mirror image
     (factor 2), the unnormalised normal and the plane through the origin.
-
-    >>> check_orthogonal_projection([2 / 3, 2 / 3, 2 / 3])
-    Correct: (P - Q)·n = 5 for n = N/3, so P' = P - 5 n, which lies on the plane.
     """
     got, err = _read_point(answer, "the projected point as [x, y, z]")
     if err is not None:
@@ -252,9 +243,6 @@ def check_orthogonal_projection(answer) -> Result:
 def check_perspective_projection(answer) -> Result:
     """Check the perspective image of ``PERSP_POINT`` (Goldman §12.5); recognises the ratio upside
     down, the orthogonal projection, the eye taken at the origin and the ratio applied to P itself.
-
-    >>> check_perspective_projection([5 / 3, 1 / 3, 7 / 3])
-    Correct: P' = E + t (P - E) with t = (Q - E)·N / (P - E)·N = 4/6; the length of N cancels.
     """
     got, err = _read_point(answer, "the perspective image as [x, y, z]")
     if err is not None:

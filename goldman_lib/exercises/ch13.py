@@ -119,9 +119,6 @@ def check_rotation_block(answer) -> Result:
     """Check the 3x3 block of the rotation by 90° about the y axis (Goldman §13.3); recognises the
     transpose (column convention, which is also the rotation the other way) and the rotation about
     another axis.
-
-    >>> check_rotation_block([[0, 0, -1], [0, 1, 0], [1, 0, 0]])
-    Correct: row i is the image of the i-th unit vector: x goes to -z, y stays, z goes to x.
     """
     got, err = _read(answer, "the 3x3 block as [[...], [...], [...]]", (3, 3), "your block")
     if err is not None:
@@ -181,9 +178,6 @@ def check_mirror_matrix(answer) -> Result:
     """Check the 4x4 mirror matrix in the plane x + y = 2 (Goldman §13.3); recognises the projection
     (factor 1), the unnormalised normal, the transposed matrix (translation in the last column),
     the wrong sign of the translation row, and the mirror in the plane through the origin.
-
-    >>> check_mirror_matrix([[0, -1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [2, 2, 0, 1]])
-    Correct: the block is I - 2 nᵀn with n = (1, 1, 0)/√2 (it swaps x and y with a sign), and the translation row is 2 (Q·n) n.
     """
     got, err = _read(answer, "the 4x4 matrix as four rows", (4, 4), "your matrix")
     if err is not None:
@@ -223,9 +217,6 @@ def _parts():
 def check_composite_matrix(answer) -> Result:
     """Check the matrix of "first translate, then rotate" (Goldman §13.6); recognises the wrong order,
     the transposed matrix (column convention) and the rotation the other way.
-
-    >>> check_composite_matrix([[0, 1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [-2, 1, 0, 1]])
-    Correct: with row vectors the first map stands on the left, M = T R; its last row is the shift turned by R.
     """
     got, err = _read(answer, "the 4x4 matrix as four rows", (4, 4), "your matrix")
     if err is not None:

@@ -145,9 +145,6 @@ def _lever_answers():
 def check_center_of_mass(answer) -> Result:
     """Exercise 1: the sum of the mass-points of :data:`LEVER_POINTS` with :data:`LEVER_MASSES`:
     the centre of mass and the total mass, ``[x, y, M]`` (Goldman §14.3).
-
-    >>> check_center_of_mass([0.25, 3.25, 4])
-    Correct: the sum is the mass-point at (0.25, 3.25) with total mass 4.
     """
     got, problem = read_points(answer, "your answer", ask="the centre of mass and the total mass as [x, y, M]")
     if problem is not None:
@@ -213,9 +210,6 @@ def _read_words(answer, n) -> tuple[list[str] | None, Result | None]:
 def check_point_or_vector(answer) -> Result:
     """Exercise 2: which combinations of :data:`COMBINATIONS` are points and which vectors: a
     vector exactly when the total mass is 0 (Goldman §14.3).
-
-    >>> check_point_or_vector(["vector", "point", "point", "vector", "point", "vector"])
-    Correct: the total masses are 0, 1, -1, 0, 1, 0: a vector exactly where the masses cancel (a negative mass is still a point).
     """
     words, problem = _read_words(answer, len(COMBINATIONS))
     if problem is not None:
@@ -258,9 +252,6 @@ def _same_answers():
 def check_same_projective_point(answer) -> Result:
     """Exercise 3: for each pair of :data:`TUPLE_PAIRS`, whether the tuples are proportional, the
     same projective point (Goldman §14.2).  answer: five booleans.
-
-    >>> check_same_projective_point([True, False, True, True, False])
-    Correct: pairs 1, 3 and 4 are proportional (factors -1/2, -1/2, 1/3); pairs 2 and 5 are not.
     """
     if is_unanswered(answer):
         return unanswered("a list of five True/False")
@@ -349,9 +340,6 @@ def _perspective_answers():
 def check_perspective_by_lever(answer) -> Result:
     """Exercise 5: the perspective image of :data:`PERSPECTIVE_POINT` as the sum of the
     mass-points ``(P, c)`` and ``(E, s - c)`` (Goldman §14.4).  answer: ``[x, y, z]``.
-
-    >>> check_perspective_by_lever([2, 3, 2])
-    Correct: the image is (2, 3, 2), on the plane and on the line EP.
     """
     got, problem = read_points(answer, "your point", ask="the image point as [x, y, z]")
     if problem is not None:
@@ -397,9 +385,6 @@ def _depth_answers():
 def check_pseudodepth(answer) -> Result:
     """Exercise 6: the pseudodepths ``1 - c/s`` of :data:`DEPTH_POINTS` (Goldman §14.4).
     answer: ``[dA, dB, dC]``.
-
-    >>> check_pseudodepth([0.5, 0.75, 0.2])
-    Correct: the pseudodepths are (0.5, 0.75, 0.2): C is nearest, then A, then B, the order of the depths s.
     """
     got, problem = read_points(answer, "your pseudodepths", ask="the three pseudodepths as [dA, dB, dC]")
     if problem is not None:
@@ -444,9 +429,6 @@ def _order_answers():
 def check_depth_order(answer) -> Result:
     """Exercise 7: the points of :data:`ORDER_POINTS` from nearest to farthest by pseudodepth
     (Goldman §14.4).  answer: a string of letters such as ``"ABCD"``.
-
-    >>> check_depth_order("BADC")
-    Correct: B, A, D, C by pseudodepth, the order of the depths; B and D share a line of sight (perspective sends them to one point), and pseudodepth still tells them apart.
     """
     if is_unanswered(answer):
         return unanswered("the order as a string of letters such as 'ABCD'")

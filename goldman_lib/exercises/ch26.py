@@ -137,8 +137,6 @@ def check_blossom_value(answer) -> Result:
     Recognises the curve at the average of the arguments, the curve at the in-range parameter,
     the weights exchanged (u_r P_j + (1 - u_r) P_(j+1)) and a stop one level early.
 
-    >>> check_blossom_value([8.5, 4.5])
-    Correct: p(0.5, 0.5, 2) = (8.5, 4.5); the order of the arguments does not matter (symmetry).
     >>> check_blossom_value([-0.5, 4.5])
     Not yet: the weights are exchanged: level r is (1 - u_r) P_j + u_r P_(j+1), so u_r = 2 goes twice as far as P_(j+1) from P_j, past it.
     """
@@ -173,9 +171,6 @@ def check_interval_points(answer) -> Result:
 
     answer: (3, 2).  Recognises the curve points P(a), P((a+b)/2), P(b) (points on the curve,
     not blossom values), the points in reverse order and a wrong number of points.
-
-    >>> check_interval_points([[-4, 12], [0, -4], [4, 4]])
-    Correct: the control points over [-1, 1] are p(a, a), p(a, b), p(b, b).
     """
     a, b = INTERVAL
     P = INTERVAL_CTRL
@@ -204,8 +199,6 @@ def check_second_derivative(answer) -> Result:
     Recognises the blossom value without the factor n(n-1), with only the factor n, the first
     derivative instead of the second, and the point P(t).
 
-    >>> check_second_derivative([7.5, -16.5])
-    Correct: P''(0.25) = 6 p((0.25, 1), delta, delta) = (7.5, -16.5).
     >>> check_second_derivative([1.25, -2.75])
     Not yet: that is p((t, 1), delta, delta) itself; the second derivative is n(n-1) = 6 times it.
     """
@@ -240,8 +233,6 @@ def check_monomial_to_bezier(answer) -> Result:
     Recognises the monomial coefficients themselves, the conversion without dividing by
     C(n, j), and a wrong count.
 
-    >>> check_monomial_to_bezier([2, 1, 2, 6])
-    Correct: P_k = sum_j C(k, j)/C(3, j) a_j gives 2, 1, 2, 6.
     >>> check_monomial_to_bezier([2, -1, 2, 12])
     Not yet: you used P_k = sum_j C(k, j) a_j: the blossom of t^j at (0^(n-k), 1^k) is C(k, j)/C(n, j), so divide by C(3, j).
     """
@@ -275,8 +266,6 @@ def check_bezier_to_monomial(answer) -> Result:
     Recognises the forward differences without the binomial factor C(n, j), the coefficients
     highest degree first, and a wrong count.
 
-    >>> check_bezier_to_monomial([1, -3, 3, 1])
-    Correct: a_j = C(3, j) Delta^j P_0 gives 1 - 3t + 3t^2 + t^3.
     >>> check_bezier_to_monomial([1, -1, 1, 1])
     Not yet: these are the forward differences Delta^j P_0 alone; a_j = P^(j)(0)/j! = C(n, j) Delta^j P_0 also has the binomial factor.
     """

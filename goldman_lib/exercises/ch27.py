@@ -139,8 +139,6 @@ def _span_curve(k: int, u: float) -> np.ndarray:
 def check_local_de_boor(answer) -> Result:
     """Check C(``DE_BOOR_U``) of the quadratic ``CURVE_CTRL`` by local de Boor (Goldman §27.2).
 
-    >>> check_local_de_boor([4, 4.5])
-    Correct: C(2) = (4, 4.5): the span [t3, t4) = [1, 3), points P1..P3, weights 2/3 and 1/3 on level 1, 1/2 on level 2.
     >>> check_local_de_boor([4, 3.75])
     Not yet: you used de Casteljau's weight (u - t_k)/(t_(k+1) - t_k) on every level, as if P1..P3 were a Bezier polygon over the span; de Boor's weight at node i of level r is (u - t_i)/(t_(i+p+1-r) - t_i), with the knots of that node.
     """
@@ -177,8 +175,6 @@ def check_local_de_boor(answer) -> Result:
 def check_basis_values(answer) -> Result:
     """Check the three quadratic B-splines non-zero at ``BASIS_U`` (Goldman §27.3).
 
-    >>> check_basis_values([1 / 24, 7 / 12, 3 / 8])
-    Correct: N_1,2, N_2,2, N_3,2 at u = 2.5 match, and they sum to 1 (partition of unity).
     >>> check_basis_values([0.0625, 0.375, 0.5625])
     Not yet: those are the Bernstein values of the span's local parameter (u - 1)/(3 - 1); on non-uniform knots the B-splines are not Bernstein polynomials: each level of the recurrence divides by its own knot difference, t_(k+r) - t_k.
     """
@@ -261,8 +257,6 @@ def _piece_value(i: int, x) -> np.ndarray:
 def check_spline_control_points(answer) -> Result:
     """Check the B-spline control points of the piecewise quadratic ``SPLINE_PIECES`` (Goldman §27.6).
 
-    >>> check_spline_control_points([0, 1, 1, -1])
-    Correct: the control points are the blossoms b(0, 0), b(0, 1), b(1, 3), b(3, 3); P2 comes out the same from either piece because the spline is C^1 at u = 1.
     >>> check_spline_control_points([0, 1, 1, -3])
     Not yet: P3 = b(3, 3) has a label in the span [1, 3]: use the blossom of the second piece there (you used the first piece's blossom beyond its span).
     """
@@ -301,8 +295,6 @@ def check_spline_control_points(answer) -> Result:
 def check_surface_point(answer) -> Result:
     """Check S(``SURF_UV``) of the degree (1, 2) surface (Goldman §27.8).
 
-    >>> check_surface_point([1.5, 1, 2.75])
-    Correct: S(1.5, 0.5) = (1.5, 1, 2.75): rows 1 and 2 weigh 1/2 each in u, the Bernstein weights 1/4, 1/2, 1/4 act in v.
     >>> check_surface_point([1, 1.5, 2.5])
     Not yet: you used the u knots along j and the v knots along i; i goes with u (the first knot vector), j with v.
     """
@@ -338,8 +330,6 @@ def check_surface_point(answer) -> Result:
 def check_nurbs_point(answer) -> Result:
     """Check C(``NURBS_U``) of the rational quadratic with weights ``NURBS_WEIGHTS`` (Goldman §27.9).
 
-    >>> check_nurbs_point([41 / 13, 14 / 13])
-    Correct: C(1.5) matches: the weights 2 and 3 pull the point towards P1 and P3 compared with the polynomial B-spline.
     >>> check_nurbs_point([3, 1.5])
     Not yet: that is the polynomial B-spline (every weight equal); multiply each N_k,2(u) by its weight w_k, and divide by the sum of the weighted basis values.
     """
@@ -377,9 +367,6 @@ def check_pyramid_node_interval(answer) -> Result:
 
     answer: [a, b].  Recognises the support of the basis function N_i,p (the level ignored), the one
     span [t_i, t_(i+1)] (the node is shared by several spans), and a knot index shifted by one.
-
-    >>> check_pyramid_node_interval([1, 4])
-    Correct: the node P_3^1 is labelled (u, 2) and is a blossom value of the pieces on [1, 2) and [2, 4): u in [1, 4].
     """
     r, i = PYRAMID_NODE
     p, t = PYRAMID_DEGREE, PYRAMID_KNOTS

@@ -115,9 +115,6 @@ def check_left_matrix_at_t(answer) -> Result:
     """Check L of a quadratic Bezier curve split at ``SPLIT_T`` (Goldman §29.2); recognises the
     transpose, R, the matrix at 1 - t (t and 1 - t swapped), the matrix at 1/2, and rows that do not
     sum to one.
-
-    >>> check_left_matrix_at_t([[1, 0, 0], [2 / 3, 1 / 3, 0], [4 / 9, 4 / 9, 1 / 9]])
-    Correct: row i of L is the left edge of the de Casteljau triangle at t = 1/3: (B_0^i, ..., B_i^i)(1/3).
     """
     got, err = _read(answer, "L", "L as a list of rows", (3, 3))
     if err is not None:
@@ -147,9 +144,6 @@ def check_left_matrix_at_t(answer) -> Result:
 def check_bspline_right_half(answer) -> Result:
     """Check R @ P for the uniform cubic B-spline segment ``BSPLINE_CTRL`` (Goldman §29.2);
     recognises L @ P, the Bezier R @ P, the transposed matrix and the whole refined polygon.
-
-    >>> check_bspline_right_half([[2.25, 5.25], [4, 6], [5.75, 5.5], [7, 4]])
-    Correct: R @ P uses the cubic mask 1/8 (1, 6, 1) at the old points and 1/2 (1, 1) at the midpoints: the four points match.
     """
     got, err = read_points(answer, "your points", ask="the four points as [[x, y], ...]")
     if err is not None:
@@ -189,9 +183,6 @@ def check_composed_fixed_point(answer) -> Result:
     """Check the fixed point of ``X -> X M_L M_R`` for ``COMPOSED_CTRL`` (Goldman §29.3); recognises
     the maps taken in the other order, the fixed points of M_L and M_R alone, C(1/2), and the
     parameter typed instead of the point.
-
-    >>> check_composed_fixed_point([16 / 3, 8 / 3])
-    Correct: M_L sends C(t) to C(t/2) and M_R sends C(s) to C((1 + s)/2), so the composite sends C(t) to C(1/2 + t/4) and fixes C(2/3).
     """
     got, err = read_points(answer, "your point", ask="the fixed point as [x, y]")
     if err is not None:
@@ -259,9 +250,6 @@ def _fractal():
 def check_fractal_joint(answer) -> Result:
     """Check the point where the halves of the fractal meet (Goldman §29.4); recognises the Bezier
     midpoint C(1/2) and weights that do not sum to one.
-
-    >>> check_fractal_joint([2, -2])
-    Correct: the joint is the last row of L (the first of R) applied to the control points: u P0 + v P1 + u P2 = (2, -2).
     """
     got, err = read_points(answer, "your point", ask="the joint as [x, y]")
     if err is not None:
@@ -289,9 +277,6 @@ def check_fractal_quarter_joint(answer) -> Result:
     """Check where the first two quarters of the fractal meet (Goldman §29.4): the joint of the
     left half, ``(L @ L @ P)[2]``; recognises the right half's joint, the Bezier point C(1/4), the
     joint of the whole curve, and the midpoint of P0 and the joint.
-
-    >>> check_fractal_quarter_joint([1, -2.5])
-    Correct: the left half has control points L @ P = P0, (P0 + P1)/2 and the joint, and its own joint is u, v, u applied to those: (1, -2.5).
     """
     got, err = read_points(answer, "your point", ask="the point as [x, y]")
     if err is not None:

@@ -116,9 +116,6 @@ def check_box_spline_mask(answer) -> Result:
     """Check the mask (times 8) of the box spline with multiplicities (2, 2, 1) (Goldman §30.2);
     recognises the mirrored layout (the e3 diagonal the other way), the mask not scaled by 8, the
     mask without the e3 factor, and entries that do not sum to 4 times 8.
-
-    >>> check_box_spline_mask([[1, 2, 1, 0], [2, 5, 4, 1], [1, 4, 5, 2], [0, 1, 2, 1]])
-    Correct: the mask is (1 + x)^2 (1 + y)^2 (1 + xy) / 8 multiplied out: each new point is an affine combination of the old ones.
     """
     got, err = read_points(answer, "your mask", ask="the mask times 8 as a list of rows")
     if err is not None:
@@ -201,9 +198,6 @@ def check_quad_edge_point(answer) -> Result:
     """Check the edge point of the quadrilateral scheme for ``QUAD_EDGE_POINTS`` (Goldman §30.3);
     recognises the midpoint, the average of the two face centroids, the triangle weights, and the
     midpoint averaged with the face centroids with equal weights.
-
-    >>> check_quad_edge_point([1, 0, 0.25])
-    Correct: the edge point is 3/8 (v + w) + 1/16 (the four other corners of its two faces): the average of the centroids of the four small quadrilaterals around the edge's midpoint.
     """
     got, err = _point(answer, "the edge point", "the edge point as [x, y, z]")
     if err is not None:
@@ -251,9 +245,6 @@ def check_extraordinary_height(answer) -> Result:
     """Check the height of the new vertex point of a valence-5 vertex in a quadrilateral mesh
     (Goldman §30.3); recognises the valence-4 weights, the edge and diagonal weights swapped, the
     diagonal neighbours left out, the triangle rule, and Catmull-Clark's vertex rule.
-
-    >>> check_extraordinary_height(5.625)
-    Correct: 9/16 of the vertex, 3/(8n) of each edge neighbour and 1/(16n) of each diagonal neighbour, with n = 5.
     """
     value, err = read_number(answer, "the height")
     if err is not None:
@@ -293,9 +284,6 @@ def check_tetrahedron_vertex(answer) -> Result:
     """Check where the tetrahedron's vertex goes after one level of the triangle scheme (Goldman
     §30.4); recognises Loop's (Warren's) valence-3 weight 3/16, the regular (valence 6) weights,
     plain centroids, and the vertex left where it was.
-
-    >>> check_tetrahedron_vertex([0.5, 0.5, 0.5])
-    Correct: 5/8 v + 3/(8n) (sum of its neighbours) with n = 3. At valence 3 every level shrinks the corner and its ring by 1/4 in every direction at once, so the corner keeps its shape: a cone point (see the eigenvalues in §30.4).
     """
     got, err = _point(answer, "the new vertex", "the new vertex as [x, y, z]")
     if err is not None:
@@ -327,9 +315,6 @@ def check_tetrahedron_vertex(answer) -> Result:
 def check_triangle_edge_point(answer) -> Result:
     """Check the edge point of the triangle scheme for ``EDGE_POINTS`` (Goldman §30.4); recognises
     the midpoint, plain centroids, and the quadrilateral scheme's weights.
-
-    >>> check_triangle_edge_point([2, 0, 0.5])
-    Correct: the edge point is 3/8 (v + w) + 1/8 (x + y).
     """
     got, err = _point(answer, "the edge point", "the edge point as [x, y, z]")
     if err is not None:
