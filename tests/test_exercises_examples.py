@@ -1,6 +1,6 @@
 """The examples that used to sit in the answer checkers' docstrings and showed a correct answer
 (issue 17 §2: Shift+Tab inside ``chNN.check_...(`` shows the docstring, so it must not give the
-answer away).  Each is the call and the exact verdict it printed; they run here, not as doctests.
+answer away), and the wrong-answer examples of the docstrings that worked the answer out.  Each is the call and the exact verdict it printed; they run here, not as doctests.
 """
 
 import importlib
@@ -145,6 +145,60 @@ EXAMPLES = [
      'Correct: 5/8 v + 3/(8n) (sum of its neighbours) with n = 3. At valence 3 every level shrinks the corner and its ring by 1/4 in every direction at once, so the corner keeps its shape: a cone point (see the eigenvalues in §30.4).'),
     ('goldman_lib.exercises.ch30', 'check_triangle_edge_point', 'check_triangle_edge_point([2, 0, 0.5])',
      'Correct: the edge point is 3/8 (v + w) + 1/8 (x + y).'),
+    ('goldman_lib.exercises.ch02', 'check_loop_period', 'check_loop_period(4.2857)',
+     'Not yet: 4.286 is not a whole number of repetitions: 360/84 is not whole, so one full turn of the heading is not enough; find the least k with k * 84 a multiple of 360.'),
+    ('goldman_lib.exercises.ch02', 'check_star_angle', 'check_star_angle(120)',
+     'Not yet: 120 degrees closes after only 3 passes (3 * 120 = 360): the 9 passes would draw the same triangle 3 times.'),
+    ('goldman_lib.exercises.ch03', 'check_program_dimension', 'check_program_dimension(math.log(4) / math.log(3))',
+     "Not yet: that is the Koch curve's dimension, four copies at a third; here the RESIZE factors give each copy its own scale."),
+    ('goldman_lib.exercises.ch03', 'check_c_curve_chord', 'check_c_curve_chord(45)',
+     'Not yet: 45 degrees is the chord to C(1/2) only; each halving of h nests one more copy, and each copy turns the chord by another 45 degrees.'),
+    ('goldman_lib.exercises.ch05', 'check_turtle_through_dots', 'print(check_turtle_through_dots([36.87, 5, 126.87, 4]).message)',
+     'turn 1 is the arc tangent of 3/4 without its quadrant: the segment goes left (x decreases), so its heading is between 90 and 180 degrees; use atan2(dy, dx).'),
+    ('goldman_lib.exercises.ch07', 'check_fixed_point_limit', 'check_fixed_point_limit(-2)',
+     'Not yet: -2 solves L^2 = 6 + L, but it is not a fixed point of F: sqrt(6 - 2) is 2, not -2 (a square root is never negative). Take the other root.'),
+    ('goldman_lib.exercises.ch07', 'check_newton_step', 'check_newton_step(1.6)',
+     'Not yet: that is what you get dividing f(x_n) by x_n squared: the derivative of x cubed is three times x squared.'),
+    ('goldman_lib.exercises.ch07', 'check_gauss_seidel_sweep', 'check_gauss_seidel_sweep([2, 1.4, 4 / 3])',
+     'Not yet: that is the Jacobi step: every component computed from the old (0, 0, 0). Gauss-Seidel uses each new value as soon as it is computed: the new x in the equation for y, the new x and y in the one for z.'),
+    ('goldman_lib.exercises.ch07', 'check_jacobi_sweeps', 'check_jacobi_sweeps([1.34, 1.165])',
+     'Not yet: that is the Gauss-Seidel iterate: you used the new x at once in the equation for y. Jacobi computes both components of a sweep from the previous iterate only.'),
+    ('goldman_lib.exercises.ch07', 'check_hausdorff', 'check_hausdorff(5)',
+     'Not yet: that is only the distance from A to B (how far a point of A is from its nearest point of B); the Hausdorff distance is the larger of the two directions: measure from B to A too.'),
+    ('goldman_lib.exercises.ch07', 'check_contraction_factor', 'check_contraction_factor(0.45)',
+     'Not yet: 0.45 is the largest eigenvalue of L^T L, the square of the stretch; take its square root.'),
+    ('goldman_lib.exercises.ch07', 'check_levels_needed', 'check_levels_needed(9)',
+     "Not yet: 9 levels is what the smallest factor, 0.5, would need; the theorem's s is the largest factor of the maps (the slowest map sets the pace)."),
+    ('goldman_lib.exercises.ch08', 'check_ron_map', 'check_ron_map([[0.25, 0.25, 0.5], [-0.25, 0.25, 0.25], [0, 0, 1]])',
+     'Not yet: that is the transposed matrix, for column vectors; here points are rows, Q = [x, y, 1] T, so the translation is the last row and the first row is the image of (1, 0), the direction w.'),
+    ('goldman_lib.exercises.ch17', 'check_reflected_direction', 'check_reflected_direction([-1/3, -0.82667, 0.45333])',
+     'Not yet: that points back towards the mirror: you reflected d itself, not -d. The ray leaves along the mirror image of -d about N, reflect(-d, N) = d - 2 (d . N) N.'),
+    ('goldman_lib.exercises.ch17', 'check_refracted_direction', 'check_refracted_direction([0.6, 0, -0.8])',
+     'Not yet: that is the incoming direction: the ray changes speed at the surface and bends (the indices differ), so sin(theta2) = (n1 / n2) sin(theta1).'),
+    ('goldman_lib.exercises.ch20', 'check_csg_difference', 'check_csg_difference([[5.5, 7]])',
+     "Not yet: that is A ∩ B, the part of the ray inside both balls; A − B keeps the part of A's interval that is not in B's."),
+    ('goldman_lib.exercises.ch20', 'check_euler_counts', 'check_euler_counts([12, 36, 8])',
+     'Not yet: you counted each edge once for every face it lies in: in a closed polyhedron every edge lies in exactly two faces, so halve the sum over the faces.'),
+    ('goldman_lib.exercises.ch20', 'check_octree_counts', 'check_octree_counts([48, 16, 0])',
+     'Not yet: you split every cell down to depth 2 (a uniform grid of 64 cells): an octree splits only partial cells, so a full octant at depth 1 stays one leaf.'),
+    ('goldman_lib.exercises.ch23', 'check_jacobi_step', 'print(check_jacobi_step([2.2, 1.352]).message)',
+     "that is a Gauss-Seidel sweep: you used patch 1's new radiosity for patch 2. Jacobi gathers from B^(0) only."),
+    ('goldman_lib.exercises.ch23', 'check_gauss_seidel_step', 'print(check_gauss_seidel_step([1.72, 3.1]).message)',
+     "that is the Jacobi step: patch 2 should gather from patch 1's radiosity as updated in this sweep."),
+    ('goldman_lib.exercises.ch24', 'check_de_casteljau_point', 'check_de_casteljau_point([9, 4.5])',
+     'Not yet: that is the point at t = 0.75: each step must move a fraction t = 0.25 of the way from P_j towards P_(j+1), (1-t) P_j + t P_(j+1), not a fraction 1 - t.'),
+    ('goldman_lib.exercises.ch24', 'check_bernstein_weights', 'check_bernstein_weights([0.4096, 0.1024, 0.0256, 0.0064, 0.0016])',
+     'Not yet: these are t^k (1-t)^(4-k) alone: B_k^4 also has the binomial coefficient C(4, k) (1, 4, 6, 4, 1), the number of paths down the de Casteljau pyramid.'),
+    ('goldman_lib.exercises.ch25', 'check_subdivision_right', 'check_subdivision_right([[12, 4], [11, 3], [10, 2.75], [9, 2.875]])',
+     'Not yet: these are the right points in reverse order: the right piece starts at the apex C(t) and ends at P3 = C(1).'),
+    ('goldman_lib.exercises.ch26', 'check_blossom_value', 'check_blossom_value([-0.5, 4.5])',
+     'Not yet: the weights are exchanged: level r is (1 - u_r) P_j + u_r P_(j+1), so u_r = 2 goes twice as far as P_(j+1) from P_j, past it.'),
+    ('goldman_lib.exercises.ch27', 'check_basis_values', 'check_basis_values([0.0625, 0.375, 0.5625])',
+     "Not yet: those are the Bernstein values of the span's local parameter (u - 1)/(3 - 1); on non-uniform knots the B-splines are not Bernstein polynomials: each level of the recurrence divides by its own knot difference, t_(k+r) - t_k."),
+    ('goldman_lib.exercises.ch28', 'check_oslo', 'check_oslo([[0, 0], [1, 2], [2.5, 4], [4, 4], [6, 0]])',
+     'Not yet: these are the points after inserting 0.5 alone; the Oslo algorithm inserts 0.5 and 1.5 together, giving 6 points.'),
+    ('goldman_lib.exercises.ch28', 'check_schaefer', 'check_schaefer([[0.75, 1.5], [2.25, 4.5], [4.5, 6], [7.5, 6], [9.75, 4.5], [11.25, 1.5]])',
+     "Not yet: that is Lane-Riesenfeld's answer (plain averages, Chaikin's quarter and three-quarter points): right for uniform knots only. With knot intervals of different lengths the weights come from the blossom labels, and the clamped ends keep P0 and P3."),
 ]
 
 
@@ -152,4 +206,7 @@ EXAMPLES = [
 def test_checker_example_gives_its_verdict(module, name, call, verdict):
     namespace = vars(importlib.import_module(module))
     assert name in call
-    assert repr(eval(call, dict(namespace))) == verdict
+    if call.startswith("print(") and call.endswith(")"):
+        assert str(eval(call[len("print("):-1], dict(namespace))) == verdict
+    else:
+        assert repr(eval(call, dict(namespace))) == verdict

@@ -70,9 +70,6 @@ def check_loop_period(answer) -> Result:
 
     answer: a whole number.  Recognises the period of one TURN alone, 360/T (not whole), a later
     multiple, the winding number given instead of the period.
-
-    >>> check_loop_period(4.2857)
-    Not yet: 4.286 is not a whole number of repetitions: 360/84 is not whole, so one full turn of the heading is not enough; find the least k with k * 84 a multiple of 360.
     """
     what = "the number of repetitions"
     k, problem = read_number(answer, what, "whole number")
@@ -106,9 +103,6 @@ def check_star_angle(answer) -> Result:
     """Exercise 2.2: an angle ``a`` for which ``REPEAT 9 [FORWARD 1 TURN a]`` closes after exactly 9
     passes and draws a star (Goldman §2.2).  Right answers: ``360 p / 9`` with ``gcd(p, 9) = 1`` and
     ``p`` not 1 or 8 (80, 160, 200, 280), within 0.01 degrees.
-
-    >>> check_star_angle(120)
-    Not yet: 120 degrees closes after only 3 passes (3 * 120 = 360): the 9 passes would draw the same triangle 3 times.
     """
     what = "the TURN angle"
     a, problem = read_number(answer, what, "number of degrees")

@@ -104,9 +104,6 @@ def check_program_dimension(answer) -> Result:
 
     Recognises all scales taken as a quarter, or as a half, the Koch curve's 4 copies at 1/3, the
     mean scale, and three copies counted instead of four.
-
-    >>> check_program_dimension(math.log(4) / math.log(3))
-    Not yet: that is the Koch curve's dimension, four copies at a third; here the RESIZE factors give each copy its own scale.
     """
     value, problem = read_number(answer, "the dimension")
     if problem is not None:
@@ -154,9 +151,6 @@ def check_c_curve_chord(answer) -> Result:
 
     Recognises one turn of 45 only, a neighbouring level, the turns taken clockwise, and the chord
     taken along the x-axis as for the Koch curve.
-
-    >>> check_c_curve_chord(45)
-    Not yet: 45 degrees is the chord to C(1/2) only; each halving of h nests one more copy, and each copy turns the chord by another 45 degrees.
     """
     what = "the chord's direction"
     value, problem = read_number(answer, what, "number of degrees")

@@ -358,9 +358,6 @@ def check_turtle_through_dots(answer) -> Result:
     polyline :data:`TURTLE_DOTS` from the first dot, heading ``(1, 0)`` (Goldman §5.1: the turtle
     needs arc tangents and square roots to connect dots).  Turns are compared modulo 360 to 0.01
     degree, distances to 1e-3.
-
-    >>> print(check_turtle_through_dots([36.87, 5, 126.87, 4]).message)
-    turn 1 is the arc tangent of 3/4 without its quadrant: the segment goes left (x decreases), so its heading is between 90 and 180 degrees; use atan2(dy, dx).
     """
     what = "the four numbers [turn 1, forward 1, turn 2, forward 2]"
     got, problem = read_points(answer, "your commands", ask=what)

@@ -264,9 +264,6 @@ def check_ron_map(answer) -> Result:
 
     Recognises the transposed (column-vector) matrix, the map of another call, calls that do not
     move the turtle, clockwise turns, and a second row that reflects.
-
-    >>> check_ron_map([[0.25, 0.25, 0.5], [-0.25, 0.25, 0.25], [0, 0, 1]])
-    Not yet: that is the transposed matrix, for column vectors; here points are rows, Q = [x, y, 1] T, so the translation is the last row and the first row is the image of (1, 0), the direction w.
     """
     what = f"T{RON_CALL}"
     got, err = read_points(answer, "your matrix", ask=f"{what} as a 3x3 matrix [[.., .., 0], [.., .., 0], [.., .., 1]]")

@@ -102,9 +102,6 @@ def check_reflected_direction(answer) -> Result:
 
     Recognises -R (the mirror image of d rather than of -d), a sign slip d + 2 (d . N) N (no bounce),
     the normal left unnormalised, and the incoming direction itself.
-
-    >>> check_reflected_direction([-1/3, -0.82667, 0.45333])
-    Not yet: that points back towards the mirror: you reflected d itself, not -d. The ray leaves along the mirror image of -d about N, reflect(-d, N) = d - 2 (d . N) N.
     """
     got, err = _read_vector(answer, "your direction", 3, "the reflected direction as [x, y, z]")
     if err is not None:
@@ -141,9 +138,6 @@ def check_refracted_direction(answer) -> Result:
 
     Recognises no bending, the ratio of indices upside down, bending to the other side of the normal,
     angles (not sines) divided by the index, and the reflected ray.
-
-    >>> check_refracted_direction([0.6, 0, -0.8])
-    Not yet: that is the incoming direction: the ray changes speed at the surface and bends (the indices differ), so sin(theta2) = (n1 / n2) sin(theta1).
     """
     got, err = _read_vector(answer, "your direction", 3, "the refracted direction as [x, y, z]")
     if err is not None:

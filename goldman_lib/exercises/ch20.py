@@ -125,9 +125,6 @@ def check_csg_difference(answer) -> Result:
 
     Recognises the union, the intersection, B − A, A's interval alone, the symmetric difference and
     the answer in x instead of t.
-
-    >>> check_csg_difference([[5.5, 7]])
-    Not yet: that is A ∩ B, the part of the ray inside both balls; A − B keeps the part of A's interval that is not in B's.
     """
     got, err = _read_intervals(answer, "your intervals")
     if err is not None:
@@ -202,9 +199,6 @@ def check_euler_counts(answer) -> Result:
 
     Recognises edges counted once per face (each edge lies in two faces), the caps left out, and the
     counts of the hexagon's pyramid.
-
-    >>> check_euler_counts([12, 36, 8])
-    Not yet: you counted each edge once for every face it lies in: in a closed polyhedron every edge lies in exactly two faces, so halve the sum over the faces.
     """
     got, err = read_points(answer, "your counts", ask="[V, E, F]")
     if err is not None:
@@ -304,9 +298,6 @@ def check_octree_counts(answer) -> Result:
 
     Recognises full cells split as well (a uniform grid), the tree stopped a level early, the
     depth-1 full cells left out, and partial and empty swapped.
-
-    >>> check_octree_counts([48, 16, 0])
-    Not yet: you split every cell down to depth 2 (a uniform grid of 64 cells): an octree splits only partial cells, so a full octant at depth 1 stays one leaf.
     """
     got, err = read_points(answer, "your counts", ask="[full, partial, empty]")
     if err is not None:

@@ -99,9 +99,6 @@ def _gs(F, rho, E, order=(0, 1)):
 def check_jacobi_step(answer) -> Result:
     """Check one Jacobi step ``B^(1) = E + rho F E`` (Goldman §23.5).  Recognises a Gauss-Seidel sweep,
     the transposed form factors, a missing reflectance and a missing emission.
-
-    >>> print(check_jacobi_step([2.2, 1.352]).message)
-    that is a Gauss-Seidel sweep: you used patch 1's new radiosity for patch 2. Jacobi gathers from B^(0) only.
     """
     got, err = _pair(answer, "your [B_1, B_2]", 2, "[B_1, B_2]")
     if err is not None:
@@ -125,9 +122,6 @@ def check_jacobi_step(answer) -> Result:
 def check_gauss_seidel_step(answer) -> Result:
     """Check one Gauss-Seidel sweep, patch 1 first (Goldman §23.5).  Recognises the Jacobi step,
     the sweep in the other order and a missing emission.
-
-    >>> print(check_gauss_seidel_step([1.72, 3.1]).message)
-    that is the Jacobi step: patch 2 should gather from patch 1's radiosity as updated in this sweep.
     """
     got, err = _pair(answer, "your [B_1, B_2]", 2, "[B_1, B_2]")
     if err is not None:

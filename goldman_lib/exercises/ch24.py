@@ -102,9 +102,6 @@ def check_de_casteljau_point(answer) -> Result:
     answer: [x, y].  Recognises a point of an intermediate level of the construction (stopped too
     early), the point at 1 - t (t and 1 - t exchanged in (1-t) P_j + t P_{j+1}) and the centroid of
     the control points (equal weights instead of the Bernstein weights).
-
-    >>> check_de_casteljau_point([9, 4.5])
-    Not yet: that is the point at t = 0.75: each step must move a fraction t = 0.25 of the way from P_j towards P_(j+1), (1-t) P_j + t P_(j+1), not a fraction 1 - t.
     """
     t = DE_CASTELJAU_T
     what = f"the point at t={fmt(t)}"
@@ -138,9 +135,6 @@ def check_bernstein_weights(answer) -> Result:
     Recognises the weights without the binomial coefficients, the list in reverse order (t and
     1 - t exchanged) and a wrong number of weights; otherwise names the first weight that is off.
     Tolerance 1e-4 per weight.
-
-    >>> check_bernstein_weights([0.4096, 0.1024, 0.0256, 0.0064, 0.0016])
-    Not yet: these are t^k (1-t)^(4-k) alone: B_k^4 also has the binomial coefficient C(4, k) (1, 4, 6, 4, 1), the number of paths down the de Casteljau pyramid.
     """
     n, t = BERNSTEIN_N, BERNSTEIN_T
     what = "the weights"

@@ -92,9 +92,6 @@ def check_subdivision_right(answer) -> Result:
 
     answer: (4, 2).  Recognises the right piece in reverse order (read down the right edge), the
     left piece, the split at 1 - t (t and 1 - t exchanged) and the first level of the pyramid.
-
-    >>> check_subdivision_right([[12, 4], [11, 3], [10, 2.75], [9, 2.875]])
-    Not yet: these are the right points in reverse order: the right piece starts at the apex C(t) and ends at P3 = C(1).
     """
     what = "the right piece's control points"
     got, err = read_points(answer, what, ask="the right piece's four control points as [[x0, y0], ..., [x3, y3]]")

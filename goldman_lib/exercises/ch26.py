@@ -136,9 +136,6 @@ def check_blossom_value(answer) -> Result:
 
     Recognises the curve at the average of the arguments, the curve at the in-range parameter,
     the weights exchanged (u_r P_j + (1 - u_r) P_(j+1)) and a stop one level early.
-
-    >>> check_blossom_value([-0.5, 4.5])
-    Not yet: the weights are exchanged: level r is (1 - u_r) P_j + u_r P_(j+1), so u_r = 2 goes twice as far as P_(j+1) from P_j, past it.
     """
     u = np.array(BLOSSOM_ARGS)
     P = BLOSSOM_CTRL

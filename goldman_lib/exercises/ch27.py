@@ -174,9 +174,6 @@ def check_local_de_boor(answer) -> Result:
 
 def check_basis_values(answer) -> Result:
     """Check the three quadratic B-splines non-zero at ``BASIS_U`` (Goldman §27.3).
-
-    >>> check_basis_values([0.0625, 0.375, 0.5625])
-    Not yet: those are the Bernstein values of the span's local parameter (u - 1)/(3 - 1); on non-uniform knots the B-splines are not Bernstein polynomials: each level of the recurrence divides by its own knot difference, t_(k+r) - t_k.
     """
     what = f"[N_1,2, N_2,2, N_3,2] at u = {fmt(BASIS_U)}"
     got, err = read_points(answer, "your basis values", ask=what + " as a list of three numbers")

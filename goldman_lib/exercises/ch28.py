@@ -158,9 +158,6 @@ def check_boehm_insert(answer) -> Result:
 
 def check_oslo(answer) -> Result:
     """Check the six control points over ``OSLO_NEW_KNOTS`` (Goldman §28.3.2).
-
-    >>> check_oslo([[0, 0], [1, 2], [2.5, 4], [4, 4], [6, 0]])
-    Not yet: these are the points after inserting 0.5 alone; the Oslo algorithm inserts 0.5 and 1.5 together, giving 6 points.
     """
     what = "the refined control points"
     got, err = read_points(answer, what)
@@ -245,9 +242,6 @@ def check_chaikin(answer) -> Result:
 
 def check_schaefer(answer) -> Result:
     """Check one level of Schaefer's algorithm on the non-uniform quadratic (Goldman §28.4.2).
-
-    >>> check_schaefer([[0.75, 1.5], [2.25, 4.5], [4.5, 6], [7.5, 6], [9.75, 4.5], [11.25, 1.5]])
-    Not yet: that is Lane-Riesenfeld's answer (plain averages, Chaikin's quarter and three-quarter points): right for uniform knots only. With knot intervals of different lengths the weights come from the blossom labels, and the clamped ends keep P0 and P3.
     """
     what = "the new control points"
     got, err = read_points(answer, what)
