@@ -149,7 +149,7 @@ def _stated(doc: str, value: float) -> bool:
     """A small whole number (a count, a degree, a coordinate such as 0 or 1 appears in any formula)
     states the answer only where the docstring says it is one: "= 3", "is 3", "gives 3", "so 3"."""
     text = f"{value:g}"
-    return bool(re.search(rf"(?:=|\bis|\bgives|\bso|\banswer)\s*\(?{re.escape(text)}(?![\d.])", doc))
+    return bool(re.search(rf"(?:=|\bis|\bgives|\bso|\banswer)\s*\(?{re.escape(text)}(?![\d.(\w])", doc))
 
 
 # -- the helpers above can fail ---------------------------------------------------------------------

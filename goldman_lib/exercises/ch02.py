@@ -66,7 +66,7 @@ PROBLEMS = {
 
 def check_loop_period(answer) -> Result:
     """Exercise 2.1: the period of ``REPEAT k [FORWARD 1 TURN 60 FORWARD 2 TURN 24]`` (Goldman §2.2,
-    looping lemma): the total turning is 84 = 360 * 7/30, so 30 passes.
+    looping lemma): the least number of passes whose total turning is a multiple of 360.
 
     answer: a whole number.  Recognises the period of one TURN alone, 360/T (not whole), a later
     multiple, the winding number given instead of the period.
@@ -101,9 +101,7 @@ def check_loop_period(answer) -> Result:
 
 def check_star_angle(answer) -> Result:
     """Exercise 2.2: an angle ``a`` for which ``REPEAT 9 [FORWARD 1 TURN a]`` closes after exactly 9
-    passes and draws a star (Goldman §2.2).  Right answers: ``360 p / 9`` with ``gcd(p, 9) = 1`` and
-    ``p`` not 1 or 8 (80, 160, 200, 280), within 0.01 degrees.
-    """
+    passes and draws a star (Goldman §2.2).  Every such angle is accepted, within 0.01 degrees."""
     what = "the TURN angle"
     a, problem = read_number(answer, what, "number of degrees")
     if problem is not None:

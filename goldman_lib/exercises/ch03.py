@@ -97,10 +97,8 @@ def check_equal_scales_dimension(answer) -> Result:
 
 
 def check_program_dimension(answer) -> Result:
-    """Exercise 3.2: the dimension of :data:`TENT_PROGRAM` (Goldman §3.2.2).  Its RECURSE calls run at
-    the scales 1/4, 1/2, 1/2, 1/4 (the RESIZE factors multiply); with ``x = 2^-D`` the equation
-    ``2 x + 2 x^2 = 1`` gives ``x = (sqrt 3 - 1)/2`` and ``D = log2(1 + sqrt 3) = 1.44998``.
-    Accepts 1e-4.
+    """Exercise 3.2: the dimension of :data:`TENT_PROGRAM` (Goldman §3.2.2), from the scales of its
+    RECURSE calls (the RESIZE factors multiply) and the equation sum s_i^D = 1.  Accepts 1e-4.
 
     Recognises all scales taken as a quarter, or as a half, the Koch curve's 4 copies at 1/3, the
     mean scale, and three copies counted instead of four.
@@ -145,9 +143,8 @@ def _angle_mod(a: float) -> float:
 
 
 def check_c_curve_chord(answer) -> Result:
-    """Exercise 3.3: the direction of the chord from C(0) to C(2^-5) on the C-curve (Goldman §3.3).
-    The first half of the curve is a copy turned 45 degrees and scaled by 1/sqrt 2, so C(2^-j)
-    lies at angle 45 j: 225 = -135 degrees for j = 5.  Any angle equal mod 360 is right (0.01).
+    """Exercise 3.3: the direction of the chord from C(0) to C(2^-5) on the C-curve (Goldman §3.3), in
+    degrees.  Any angle equal mod 360 is right (0.01).
 
     Recognises one turn of 45 only, a neighbouring level, the turns taken clockwise, and the chord
     taken along the x-axis as for the Koch curve.

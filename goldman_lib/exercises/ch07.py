@@ -105,9 +105,8 @@ def _limit_iterates():
 
 
 def check_fixed_point_limit(answer) -> Result:
-    """Check the limit of x -> sqrt(6 + x) from 0: L = sqrt(6 + L), L^2 - L - 6 = 0, L = 3 (the
-    root -2 is not a fixed point: a square root is never negative) (Goldman §7.2).
-    """
+    """Check the limit of x -> sqrt(6 + x) from 0, a fixed point L = sqrt(6 + L) (Goldman §7.2);
+    recognises the root of the quadratic that is not a fixed point (a square root is never negative)."""
     value, problem = read_number(answer, "the limit L")
     if problem is not None:
         return problem
@@ -135,7 +134,7 @@ def _df_newton(x):
 
 
 def check_newton_step(answer) -> Result:
-    """Check x2 of Newton's method on ``x^3 - 10`` from 2: x1 = 13/6, x2 = 3277/1521 (Goldman §7.3.1).
+    """Check x2 of Newton's method on ``x^3 - 10`` from 2 (Goldman §7.3.1).
 
     Recognises one step (x1), the limit (the cube root of 10), the sign slip ``x + f/f'`` and the
     derivative without its factor 3.
@@ -204,8 +203,8 @@ def _read_vector(answer, what: str, n: int):
 
 
 def check_gauss_seidel_sweep(answer) -> Result:
-    """Check one Gauss-Seidel sweep from 0 on ``SEIDEL_A x = SEIDEL_B``: x = 8/4 = 2, then
-    y = (7 - 2)/5 = 1, then z = (8 - 2*2 - 1)/6 = 1/2 (Goldman §7.3.2).
+    """Check one Gauss-Seidel sweep from 0 on ``SEIDEL_A x = SEIDEL_B``: x first, then y with the new
+    x, then z with the new x and y (Goldman §7.3.2).
 
     Recognises the Jacobi step (no new value used), the new x used but not the new y, a sweep
     from the last unknown to the first, and the exact solution.
@@ -239,8 +238,7 @@ def check_gauss_seidel_sweep(answer) -> Result:
 
 
 def check_jacobi_sweeps(answer) -> Result:
-    """Check two Jacobi sweeps on ``JACOBI_A x = JACOBI_B`` from (1, 1): (7/5, 5/4), then
-    ((9 - 2*5/4)/5, (6 - 7/5)/4) = (1.3, 1.15) (Goldman §7.3.2).
+    """Check two Jacobi sweeps on ``JACOBI_A x = JACOBI_B`` from (1, 1) (Goldman §7.3.2).
 
     Recognises the Gauss-Seidel iterate, one sweep only, and the exact solution.
     """
@@ -268,8 +266,8 @@ def check_jacobi_sweeps(answer) -> Result:
 # -- §7.3.3 ----------------------------------------------------------------------------------------
 
 def check_hausdorff(answer) -> Result:
-    """Check h(A, B) for ``HAUSDORFF_A``, ``HAUSDORFF_B``: A -> B is 5 ((4, 0) to (0, 3)), B -> A is
-    10 ((12, 6) to (4, 0)), so h = 10 (Goldman §7.3.3).
+    """Check the Hausdorff distance h(A, B) for ``HAUSDORFF_A``, ``HAUSDORFF_B``: the larger of the two
+    one-sided distances (Goldman §7.3.3).
 
     Recognises one direction only, the closest pair, and the farthest pair.
     """
@@ -295,8 +293,8 @@ def check_hausdorff(answer) -> Result:
 
 
 def check_contraction_factor(answer) -> Result:
-    """Check the contraction factor of ``STRETCH_L``: L^T L = [[0.09, 0.12], [0.12, 0.41]] has
-    eigenvalues 0.45 and 0.05, so s = sqrt(0.45) = 0.67082 (Goldman §7.3.3).
+    """Check the contraction factor of ``STRETCH_L``: the square root of the largest eigenvalue of
+    L^T L (Goldman §7.3.3).
 
     Recognises the eigenvalue (the diagonal of a triangular L), the area factor (determinant),
     the Frobenius norm, the largest column length and a forgotten square root.
@@ -339,7 +337,8 @@ def _levels(s: float, h0: float, tol: float) -> int:
 
 
 def check_levels_needed(answer) -> Result:
-    """Check the smallest n with 0.75^n * 4 <= 0.01: n >= ln(0.0025)/ln(0.75) = 20.8, so 21 (Goldman §7.3.3).
+    """Check the smallest n with s^n h(A0, A) <= ``LEVEL_TOL``, s the largest factor of the maps
+    (Goldman §7.3.3).
 
     Recognises the smallest or average factor used instead of the largest, the distance h(A0, A)
     forgotten, and a count one too small or too large.

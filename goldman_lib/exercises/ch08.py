@@ -259,8 +259,8 @@ def _ron_expected() -> np.ndarray:
 
 
 def check_ron_map(answer) -> Result:
-    """Check the map of the third call of ``RON_BODY``: the turtle is at P = (1/2, 1/4) with
-    w = (1/4, -1/4), so T3 = [[1/4, -1/4, 0], [1/4, 1/4, 0], [1/2, 1/4, 1]] (Goldman §8.4).
+    """Check the matrix of the map of the third call of ``RON_BODY``, in the row convention: the
+    turtle's direction w, w turned 90 degrees and its position P as rows (Goldman §8.4).
 
     Recognises the transposed (column-vector) matrix, the map of another call, calls that do not
     move the turtle, clockwise turns, and a second row that reflects.

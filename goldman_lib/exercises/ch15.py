@@ -142,7 +142,7 @@ def check_complex_factor(answer) -> Result:
 # -- §15.3.1 -------------------------------------------------------------------------------------------
 
 def check_quaternion_product(answer) -> Result:
-    """Check p q = (ab - u·v, a v + b u + u × v) = (7, 4, -4, 3) for p = (1, 2, 0, -1), q = (2, -1, 1, 3)
+    """Check the product p q = (ab - u·v, a v + b u + u × v) of ``PRODUCT_P`` and ``PRODUCT_Q``
     (Goldman §15.3.1).
 
     Recognises q p (the other order), a missing cross product, a plus sign on the dot product, and
@@ -251,8 +251,7 @@ def check_conformal_image(answer) -> Result:
 # -- §15.3.6 -------------------------------------------------------------------------------------------
 
 def check_rotation_matrix(answer) -> Result:
-    """Check the row-convention matrix of q = (0.6, 0, 0.48, 0.64):
-    [[-0.28, 0.768, -0.576], [-0.768, 0.1808, 0.6144], [0.576, 0.6144, 0.5392]] (Goldman §15.3.6).
+    """Check the row-convention rotation matrix of the unit quaternion ``MATRIX_Q`` (Goldman §15.3.6).
 
     Accepts the 4x4 matrix too.  Recognises the transposed (column-convention) matrix, off-diagonal
     entries without their factor 2, and the diagonal 1 - (y^2 + z^2) without the 2.
@@ -302,9 +301,8 @@ def _z_angle(q) -> float:
 
 
 def check_slerp_angle(answer) -> Result:
-    """Check the angle of slerp(q0, q1, 0.3): q0 turns by 40° about z, q1 by 300° = -60° with
-    q0·q1 < 0, so slerp negates q1 and turns from 40° to -60°: at t = 0.3 the angle is 10°
-    (Goldman §15.3.5).
+    """Check the rotation angle of slerp(q0, q1, t) for rotations about z, where q0·q1 < 0 makes slerp
+    take the shorter arc by negating q1 (Goldman §15.3.5).
 
     Recognises the longer arc (q1 not negated), the half angle of the quaternion, t measured from
     q1, and normalised linear interpolation.
@@ -340,9 +338,8 @@ def check_slerp_angle(answer) -> Result:
 
 
 def check_lerp_distortion(answer) -> Result:
-    """Check the distortion of M = (3/4) I + (1/4) R, R the 120° turn about z: in the xy-plane M acts
-    as the complex number 3/4 + (1/4) e^{i 120°}, a scaling by √7/4 with a rotation, and z is
-    kept, so the distortion is 1 - √7/4 ≈ 0.3386 (Goldman §15.3.4).
+    """Check the distortion 1 - |scale| of the blend M = (3/4) I + (1/4) R, R a turn about z: in the
+    xy-plane M acts as a complex number, a scaling with a rotation (Goldman §15.3.4).
 
     Recognises 0 (taking the blend for a rotation), the scale √7/4 itself, the squared scale
     (7/16), and the halfway blend's 0.5.

@@ -109,8 +109,8 @@ PROBLEMS = {
 # -- §16.2 ---------------------------------------------------------------------------------------------
 
 def check_reflected_colour(answer) -> Result:
-    """Check C * (I_1 c_1 + I_2 c_2) = (0.5, 1, 0.25) * ((0.72, 0.24, 0) + (0.12, 0.3, 0.6)) =
-    (0.42, 0.54, 0.15) (Goldman §16.2).
+    """Check the colour C * (I_1 c_1 + I_2 c_2) a surface of colour C reflects under two coloured
+    lights (Goldman §16.2).
 
     Recognises the lights' colours without their intensities, the light alone (surface colour left
     out), the lights' colours multiplied instead of added, and the surface colour added.
@@ -145,8 +145,8 @@ def check_reflected_colour(answer) -> Result:
 # -- §16.4 ---------------------------------------------------------------------------------------------
 
 def check_diffuse(answer) -> Result:
-    """Check I_p k_d (L . N) with N = (0, 0.6, 0.8), L = (2, 0, 4)/sqrt(20): cos = 3.2/sqrt(20) =
-    0.71554, times 1.2 = 0.85865 (Goldman §16.4).
+    """Check the diffuse intensity I_p k_d (L · N), with L the unit vector from the surface point to the
+    light and N normalised (Goldman §16.4).
 
     Recognises an unnormalised normal, an unnormalised L, L taken from the origin instead of from
     P, and a missing k_d or I_p.
@@ -212,8 +212,8 @@ def check_mirror_direction(answer) -> Result:
 
 
 def check_specular(answer) -> Result:
-    """Check k_s (R . V)^n with L = (1, 0, 1)/sqrt 2, R = (-1, 0, 1)/sqrt 2, V = (-1, 1, 3)/sqrt 11:
-    R . V = 4/sqrt 22, 0.9 (16/22)^4 = 0.25179 (Goldman §16.5).
+    """Check the specular intensity k_s (R · V)^n, with R the mirror direction of the unit L and V the
+    unit vector to the eye (Goldman §16.5).
 
     Recognises Blinn's halfway vector (N . H)^n, a missing exponent, an extra L . N factor, and V
     pointing from the eye (R . V < 0 gives 0).
@@ -248,8 +248,8 @@ def check_specular(answer) -> Result:
 
 
 def check_highlight_exponent(answer) -> Result:
-    """Check n = ln(1/2) / ln(cos 12°) = 31.37 (Goldman §16.5): then
-    :func:`goldman_lib.lighting.highlight_half_width` of n is 12 degrees.
+    """Check the exponent n that halves the highlight at the given angle, (cos θ)^n = 1/2 (Goldman
+    §16.5; :func:`goldman_lib.lighting.highlight_half_width` is its inverse).
 
     Recognises 12° taken as the full width (half-width 6°), the half-width doubled (24°), the
     small-angle approximation 2 ln 2 / θ², and 1/e instead of 1/2.
@@ -290,10 +290,8 @@ def _total(ambient=True, lights=None, specular_colour=(1.0, 1.0, 1.0), white=Fal
 
 
 def check_total_intensity(answer) -> Result:
-    """Check the displayed colour of the total intensity (Goldman §16.3, §16.6): ambient
-    0.12 C = (0.108, 0.06, 0.024); light 1 (cos 0.8, R·V 0.8): 0.56 C + 0.2048; light 2 (cos 0.6,
-    R·V 0.6): (0.42 C + 0.0648) (1.2, 0.6, 0.6); total (1.34816, 0.70968, 0.43008), displayed
-    (1, 0.70968, 0.43008).
+    """Check the displayed colour of the total intensity, ambient plus each light's diffuse and
+    specular terms, clipped to [0, 1] (Goldman §16.3, §16.6).
 
     Recognises the unclipped total, the ambient term left out, one light left out, the specular
     highlight in the material's colour, and light 2 taken as white.

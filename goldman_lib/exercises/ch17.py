@@ -97,7 +97,7 @@ PROBLEMS = {
 # -- §17.4 ---------------------------------------------------------------------------------------------
 
 def check_reflected_direction(answer) -> Result:
-    """Check the mirror direction R = d - 2 (d . N) N with N = (0, 0.6, 0.8): (1/3, 0.82667, -0.45333)
+    """Check the mirror direction R = d - 2 (d · N) N of a ray off a mirror with unit normal N
     (Goldman §17.4).
 
     Recognises -R (the mirror image of d rather than of -d), a sign slip d + 2 (d . N) N (no bounce),
@@ -133,8 +133,7 @@ def check_reflected_direction(answer) -> Result:
 # -- §17.5 ---------------------------------------------------------------------------------------------
 
 def check_refracted_direction(answer) -> Result:
-    """Check Snell's law: sin(theta1) = 0.6, sin(theta2) = 0.6 / 1.25 = 0.48, T = (0.48, 0, -sqrt(0.7696))
-    (Goldman §17.5).
+    """Check the refracted direction by Snell's law, n1 sin(theta1) = n2 sin(theta2) (Goldman §17.5).
 
     Recognises no bending, the ratio of indices upside down, bending to the other side of the normal,
     angles (not sines) divided by the index, and the reflected ray.
@@ -174,7 +173,7 @@ def check_refracted_direction(answer) -> Result:
 
 
 def check_critical_angle(answer) -> Result:
-    """Check the critical angle arcsin(1.2 / 1.6) = arcsin(0.75) = 48.59 degrees (Goldman §17.5).
+    """Check the critical angle of total internal reflection, in degrees, arcsin(n2 / n1) (Goldman §17.5).
 
     Recognises the angle from the surface (arccos), the critical angle into air (arcsin(1 / 1.6)),
     radians, and the ratio's sine without arcsin.
@@ -253,7 +252,8 @@ def check_blocked_lights(answer) -> Result:
 # -- §17.2 ---------------------------------------------------------------------------------------------
 
 def check_ray_tree_size(answer) -> Result:
-    """Check (2^(d+1) - 1)(1 + L) = 31 x 4 = 124 for depth 4 and 3 lights (Goldman §17.2).
+    """Check the number of rays of a full ray tree of the given depth with shadow rays to every light
+    (Goldman §17.2).
 
     Recognises the shadow rays forgotten, the shadow rays alone, the depth off by one, and 2^d.
     """
@@ -281,7 +281,8 @@ def check_ray_tree_size(answer) -> Result:
 
 
 def check_ray_tree_colour(answer) -> Result:
-    """Check I = I_floor + k_floor (I_sphere + k_sphere I_background) = (0.64, 0.34, 0.52) (Goldman §17.2).
+    """Check I = I_floor + k_floor (I_sphere + k_sphere I_background) for the ray tree of the exercise
+    (Goldman §17.2).
 
     Recognises the depth-1 colour (the background not reached), the weights not multiplied along the
     path, and the weights left out.

@@ -197,9 +197,8 @@ def _newton(start, sign_xu=-1.0, add=False):
 
 
 def check_newton_step(answer) -> Result:
-    """Check one Newton step on G = O + t d - X(u, v): from (1, 0.5, 0.5), G = (-0.5, -0.5, 1.5),
-    J = [d, -X_u, -X_v] = [[0, -1, 0], [0, 0, -1], [-1, 1, 1]], step (-0.5, 0.5, 0.5), new point
-    (1.5, 0, 0) (Goldman §18.3).
+    """Check one Newton step on G = O + t d - X(u, v) from the given start, with the Jacobian
+    J = [d, -X_u, -X_v] (Goldman §18.3).
 
     Recognises the step added instead of subtracted, +X_u and +X_v in the Jacobian, and the
     converged intersection (2, 0, 0) instead of one step.
@@ -226,7 +225,7 @@ def check_newton_step(answer) -> Result:
 # -- §18.4 ---------------------------------------------------------------------------------------------
 
 def check_cylinder_curvature(answer) -> Result:
-    """Check [K, |H|] = [0, 1/(2r)] = [0, 0.2] for r = 2.5 (Goldman §18.4).
+    """Check [K, |H|], the Gauss and mean curvature of the cylinder of the exercise (Goldman §18.4).
 
     Recognises the sphere's values (1/r^2, 1/r), |H| = 1/r (a principal curvature, not the mean),
     and K = 1/r^2 with the right H.
@@ -258,7 +257,8 @@ def check_cylinder_curvature(answer) -> Result:
 
 
 def check_torus_curvature(answer) -> Result:
-    """Check K = cos v / (r (R + r cos v)) = -0.5 / 2.5 = -0.2 at v = 120° (Goldman §18.4).
+    """Check the Gauss curvature K = cos v / (r (R + r cos v)) of the torus at the given v (Goldman
+    §18.4).
 
     Recognises the lost sign, (R + r) in place of (R + r cos v), and v taken in radians.
     """

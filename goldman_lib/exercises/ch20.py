@@ -120,8 +120,7 @@ def _finite(iv):
 # -- §20.2 ---------------------------------------------------------------------------------------------
 
 def check_csg_difference(answer) -> Result:
-    """Check the inside intervals of A − B along the ray (Goldman §20.2): A spans x in [-2, 2], so
-    t in [3, 7]; B spans x in [0.5, 2.5], t in [5.5, 7.5]; A − B is [3, 5.5].
+    """Check the inside intervals of A − B along the ray, in the ray's parameter t (Goldman §20.2).
 
     Recognises the union, the intersection, B − A, A's interval alone, the symmetric difference and
     the answer in x instead of t.
@@ -195,7 +194,7 @@ def check_which_tree(answer) -> Result:
 # -- §20.3 ---------------------------------------------------------------------------------------------
 
 def check_euler_counts(answer) -> Result:
-    """Check [V, E, F] of a hexagonal prism: [12, 18, 8] (Goldman §20.3).
+    """Check [V, E, F] of a hexagonal prism (Goldman §20.3).
 
     Recognises edges counted once per face (each edge lies in two faces), the caps left out, and the
     counts of the hexagon's pyramid.
@@ -227,8 +226,7 @@ def check_euler_counts(answer) -> Result:
 
 
 def check_genus(answer) -> Result:
-    """Check the genus of the block with two holes: V - E + F - (L - F) = 24 - 36 + 14 - 4 = -2 =
-    2(S - G), so G = 2 (Goldman §20.3).
+    """Check the genus of the block with holes, from V - E + F - (L - F) = 2(S - G) (Goldman §20.3).
 
     Recognises the rings left out, the factor 2 forgotten, and the sign of the genus reversed.
     """
@@ -292,9 +290,8 @@ def check_flipped_face(answer) -> Result:
 # -- §20.4 ---------------------------------------------------------------------------------------------
 
 def check_octree_counts(answer) -> Result:
-    """Check [full, partial, empty] leaves of the octree of z <= 0.6 at depth 2: the four lower
-    octants are full at depth 1; each upper octant splits into four full and four partial cells:
-    [4 + 16, 16, 0] (Goldman §20.4).
+    """Check [full, partial, empty] leaves of the octree of the half-space z <= 0.6 at depth 2
+    (Goldman §20.4).
 
     Recognises full cells split as well (a uniform grid), the tree stopped a level early, the
     depth-1 full cells left out, and partial and empty swapped.

@@ -130,7 +130,7 @@ def check_de_casteljau_point(answer) -> Result:
 
 
 def check_bernstein_weights(answer) -> Result:
-    """Check the list B_k^N(T), k = 0..N, with ``BERNSTEIN_N, BERNSTEIN_T`` = 4, 0.2 (Goldman §24.3).
+    """Check the list B_k^N(T), k = 0..N, with ``BERNSTEIN_N, BERNSTEIN_T`` (Goldman §24.3).
 
     Recognises the weights without the binomial coefficients, the list in reverse order (t and
     1 - t exchanged) and a wrong number of weights; otherwise names the first weight that is off.
