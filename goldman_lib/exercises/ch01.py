@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals, turtle
-from goldman_lib.exercises import far_off, guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, read_points, unanswered, wrong
 from goldman_lib.fixed_point import hausdorff_distance
 
@@ -106,7 +106,7 @@ def _program(answer, what: str) -> tuple[str | None, Result | None]:
         return None, unanswered(f"a turtle program (in quotes) for {what}")
     if not isinstance(answer, str):
         return None, wrong(f"the answer should be a turtle program in quotes, like \"REPEAT 3 [FORWARD 1 TURN 120]\"; "
-                           f"you gave {type(answer).__name__} {answer!r}.")
+                           f"you gave {type(answer).__name__} {quote(answer)}.")
     try:
         turtle.expand(answer)
     except ValueError as exc:

@@ -78,6 +78,8 @@ def check_loop_period(answer) -> Result:
     loop = fractals.loop_analysis(LOOP_PASS)
     T = round(loop.total_turning)
     q, p = loop.period, loop.winding
+    if k > 1e6:
+        return wrong(f"{fmt(k)} passes is far too many; the looping lemma gives a period below 360.")
     if k != int(k) or k < 1:
         return wrong(f"{fmt(k)} is not a whole number of repetitions: 360/{T} is not whole, so one full turn of the "
                      f"heading is not enough; find the least k with k * {T} a multiple of 360.")

@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import affine
-from goldman_lib.exercises import far_off, guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_P", "ROTATE_Q", "ROTATE_ANGLE", "COMPOSE_ANGLE", "COMPOSE_SCALE",
@@ -309,7 +309,7 @@ def check_commuting_pairs(answer) -> Result:
         if isinstance(given, str):
             given = words.get(given.strip().lower(), given)
         if not isinstance(given, (bool, np.bool_)):
-            return wrong(f"the answer for pair ({label}) should be True or False; you gave {answer[label]!r}.")
+            return wrong(f"the answer for pair ({label}) should be True or False; you gave {quote(answer[label])}.")
         if bool(given) != affine.commute(M, N):
             return wrong(f"pair ({label}): {reasons[label]}")
     return correct(f"all {len(COMMUTE_PAIRS)} answers are right: maps commute when they fix the same point and "

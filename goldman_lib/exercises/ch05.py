@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from goldman_lib import codo
-from goldman_lib.exercises import far_off, guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import (Result, correct, fmt, is_unanswered, off_by, read_number, read_points,
                                    unanswered, wrong)
 
@@ -128,7 +128,7 @@ def _run(answer, ask) -> tuple[list | None, Result | None]:
         return None, unanswered(ask)
     if not isinstance(answer, str):
         return None, wrong(f"the answer should be a CODO program in quotes; you gave {type(answer).__name__} "
-                           f"{answer!r}.")
+                           f"{quote(answer)}.")
     try:
         return codo.run(answer), None
     except codo.CodoError as exc:
@@ -184,7 +184,7 @@ def _one_expression(answer, names, setup_values, ask):
     if is_unanswered(answer):
         return None, unanswered(ask)
     if not isinstance(answer, str):
-        return None, wrong(f"the answer should be a CODO expression in quotes; you gave {answer!r}.")
+        return None, wrong(f"the answer should be a CODO expression in quotes; you gave {quote(answer)}.")
     if "\n" in answer.strip() or ";" in answer:
         return None, wrong("write one expression (no statements, no ';'), e.g. \"A + ...\".")
     setup = "; ".join(f"{n} = point({x!r}, {y!r})" for n, (x, y) in zip(names, setup_values)) + "\n"
@@ -259,11 +259,11 @@ def check_expression_types(answer) -> Result:
         return wrong(f"the answer should be a dict like {{\"P + v\": \"point\", ...}}; you gave {type(answer).__name__}.")
     missing = [e for e in TYPE_EXPRESSIONS if e not in answer]
     if missing:
-        return wrong(f"give a type for every expression; {missing[0]!r} is missing.")
+        return wrong(f"give a type for every expression; {quote(missing[0])} is missing.")
     for e in TYPE_EXPRESSIONS:
         given = str(answer[e]).strip().lower()
         if given not in ("point", "vector", "illegal"):
-            return wrong(f"the type of {e!r} should be 'point', 'vector' or 'illegal'; you gave {answer[e]!r}.")
+            return wrong(f"the type of {quote(e)} should be 'point', 'vector' or 'illegal'; you gave {quote(answer[e])}.")
         kind, why = _type_of(e)
         if given != kind:
             if kind == "illegal":

@@ -23,7 +23,7 @@ import numpy as np
 
 from goldman_lib import affine, fractals
 from goldman_lib import conformal_ifs as cf
-from goldman_lib.exercises import far_off, guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 from goldman_lib.exercises.projects import Case, check_project, describe
 from goldman_lib.turtle import Turtle
@@ -124,13 +124,13 @@ def parse_body(text: str) -> list[tuple[str, float | None]]:
             i += 1
             continue
         if word not in ("FORWARD", "MOVE", "TURN", "RESIZE"):
-            raise ValueError(f"{tokens[i]!r} is not a command (FORWARD, MOVE, TURN, RESIZE, RECURSE)")
+            raise ValueError(f"{quote(tokens[i])} is not a command (FORWARD, MOVE, TURN, RESIZE, RECURSE)")
         if i + 1 >= len(tokens):
             raise ValueError(f"{word} needs a number after it")
         try:
             value = number(tokens[i + 1])
         except (ValueError, ZeroDivisionError):
-            raise ValueError(f"{tokens[i + 1]!r} after {word} is not a number") from None
+            raise ValueError(f"{quote(tokens[i + 1])} after {word} is not a number") from None
         out.append((word, value))
         i += 2
     return out

@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from goldman_lib import vectors
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import guard_checkers, quote
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, is_unanswered, off_by,
                                    read_number, read_points, unanswered, wrong)
 
@@ -128,12 +128,12 @@ def check_expression_types(answer) -> Result:
     if isinstance(answer, str):
         answer = [a.strip() for a in answer.replace(";", ",").split(",")]
     if not isinstance(answer, (list, tuple)) or len(answer) != n or not all(isinstance(a, str) for a in answer):
-        return wrong(f"the answer should be {what}, one per expression (a) to ({chr(96 + n)}); you gave {answer!r}.")
+        return wrong(f"the answer should be {what}, one per expression (a) to ({chr(96 + n)}); you gave {quote(answer)}.")
     said = []
     for a in answer:
         key = _ALIASES.get(a.strip().lower())
         if key is None:
-            return wrong(f"{a!r} is not one of point, vector, undefined; give one of these words per expression.")
+            return wrong(f"{quote(a)} is not one of point, vector, undefined; give one of these words per expression.")
         said.append(key)
     expected = _expected_kinds()
     bad = [k for k in range(n) if said[k] != expected[k]]

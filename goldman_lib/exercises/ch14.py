@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import mass_points as mp
-from goldman_lib.exercises import far_off, guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, unanswered, is_unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "LEVER_POINTS", "LEVER_MASSES", "COMBO_MASSES", "COMBINATIONS", "TUPLE_PAIRS",
@@ -199,11 +199,11 @@ def _read_words(answer, n) -> tuple[list[str] | None, Result | None]:
     if is_unanswered(answer):
         return None, unanswered("a list of six words 'point' or 'vector'")
     if isinstance(answer, str) or not isinstance(answer, (list, tuple)):
-        return None, wrong(f"the answer is a list of {n} words, each 'point' or 'vector'; you gave {answer!r}.")
+        return None, wrong(f"the answer is a list of {n} words, each 'point' or 'vector'; you gave {quote(answer)}.")
     words = [w.strip().lower() if isinstance(w, str) else None for w in answer]
     if len(words) != n or any(w not in ("point", "vector") for w in words):
         return None, wrong(f"the answer is a list of {n} words, each 'point' or 'vector', one per combination; you "
-                           f"gave {answer!r}.")
+                           f"gave {quote(answer)}.")
     return words, None
 
 
@@ -258,7 +258,7 @@ def check_same_projective_point(answer) -> Result:
     n = len(TUPLE_PAIRS)
     if not isinstance(answer, (list, tuple)) or len(answer) != n or not all(isinstance(a, (bool, np.bool_))
                                                                              for a in answer):
-        return wrong(f"the answer is a list of {n} booleans True/False, one per pair; you gave {answer!r}.")
+        return wrong(f"the answer is a list of {n} booleans True/False, one per pair; you gave {quote(answer)}.")
     got = [bool(a) for a in answer]
     right, slips = _same_answers()
     if got == right:
@@ -435,11 +435,11 @@ def check_depth_order(answer) -> Result:
     if isinstance(answer, (list, tuple)) and all(isinstance(a, str) for a in answer):
         answer = "".join(answer)
     if not isinstance(answer, str):
-        return wrong(f"the answer is a string of the four letters, nearest first, such as 'ABCD'; you gave {answer!r}.")
+        return wrong(f"the answer is a string of the four letters, nearest first, such as 'ABCD'; you gave {quote(answer)}.")
     letters = "".join(ch for ch in answer.upper() if ch.isalpha())
     if sorted(letters) != sorted(ORDER_POINTS):
         return wrong(f"the answer names each of the points {', '.join(ORDER_POINTS)} once, nearest first; you gave "
-                     f"{answer!r}.")
+                     f"{quote(answer)}.")
     right, slips = _order_answers()
     if letters == right:
         return correct(f"{', '.join(right)} by pseudodepth, the order of the depths; B and D share a line of sight "

@@ -20,7 +20,7 @@ import numpy as np
 
 from goldman_lib import lighting
 from goldman_lib import ray_tracing as rt
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, unanswered, wrong, is_unanswered
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.lighting import Light, Material
@@ -224,9 +224,9 @@ def check_blocked_lights(answer) -> Result:
         if any(float(x) != int(x) for x in items):
             raise ValueError
     except (TypeError, ValueError, OverflowError):
-        return wrong(f"give a list of light numbers (0 to {len(SHADOW_LIGHTS) - 1}), e.g. [1, 3]; you gave {answer!r}.")
+        return wrong(f"give a list of light numbers (0 to {len(SHADOW_LIGHTS) - 1}), e.g. [1, 3]; you gave {quote(answer)}.")
     if not got <= set(range(len(SHADOW_LIGHTS))):
-        return wrong(f"the lights are numbered 0 to {len(SHADOW_LIGHTS) - 1}; you gave {sorted(got)}.")
+        return wrong(f"the lights are numbered 0 to {len(SHADOW_LIGHTS) - 1}; you gave {quote(sorted(got))}.")
     expected = _shadow_answer()
     if got == expected:
         return correct("the shadow ray to L0 passes through the sphere before reaching the light, and L3 is below the "

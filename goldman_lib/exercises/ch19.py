@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import simple_surfaces as S
-from goldman_lib.exercises import far_off, guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector  # shared readers
 from goldman_lib.exercises.projects import Case, check_project, describe
@@ -90,9 +90,9 @@ def _read_flags(answer, what, n):
     try:
         flags = [bool(v) if isinstance(v, (bool, np.bool_)) or v in (0, 1) else None for v in answer]
     except TypeError:
-        return None, wrong(f"{what} should be a list of {n} True/False values; you gave {answer!r}.")
+        return None, wrong(f"{what} should be a list of {n} True/False values; you gave {quote(answer)}.")
     if len(flags) != n or any(f is None for f in flags):
-        return None, wrong(f"{what} should be a list of {n} True/False values (or 1/0); you gave {answer!r}.")
+        return None, wrong(f"{what} should be a list of {n} True/False values (or 1/0); you gave {quote(answer)}.")
     return flags, None
 
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import solid_modeling as sm
-from goldman_lib.exercises import far_off, guard_checkers
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, read_points, unanswered, wrong
 from goldman_lib.exercises.projects import Case, check_project, describe
 from goldman_lib.simple_surfaces import Sphere
@@ -177,7 +177,7 @@ def check_which_tree(answer) -> Result:
     if is_unanswered(answer):
         return unanswered("a letter, e.g. \"a\"")
     if not isinstance(answer, str) or answer.strip().strip("()").lower() not in TREE_OPTIONS:
-        return wrong(f"give one of the letters {', '.join(TREE_OPTIONS)} as a string; you gave {answer!r}.")
+        return wrong(f"give one of the letters {', '.join(TREE_OPTIONS)} as a string; you gave {quote(answer)}.")
     letter = answer.strip().strip("()").lower()
     if _same(_tree_result(letter), TREE_RESULT, 1e-12):
         return correct(f"({letter}) {TREE_OPTIONS[letter]}: A ∪ B covers one interval, and subtracting C cuts the "
@@ -217,6 +217,8 @@ def check_euler_counts(answer) -> Result:
     if np.array_equal(got, [n + 1, 2 * n, n + 1]):
         return wrong("those are the counts of a pyramid over the hexagon; a prism has two hexagons joined by "
                      "rectangles.")
+    if np.abs(got).max() > 1e6:
+        return wrong("a hexagonal prism has a few vertices, edges and faces, not millions; count them.")
     chi = int(got[0] - got[1] + got[2])
     if chi != 2:
         return wrong(f"your counts give V - E + F = {chi}, but a prism is a simple polyhedron (Euler: 2). Count "
@@ -267,7 +269,7 @@ def check_flipped_face(answer) -> Result:
     if err is not None:
         return err
     if value != int(value) or not 0 <= value < len(PYRAMID_FACES):
-        return wrong(f"give a face index from 0 to {len(PYRAMID_FACES) - 1}; you gave {answer!r}.")
+        return wrong(f"give a face index from 0 to {len(PYRAMID_FACES) - 1}; you gave {quote(answer)}.")
     k = int(value)
     brep = sm.BRep(PYRAMID_VERTICES, [list(f) for f in PYRAMID_FACES])
     bad_edges = [p for p in brep.problems() if "opposite directions" in p]

@@ -168,6 +168,9 @@ def check_prism_counts(answer) -> Result:
         return wrong(f"{what} should be three numbers; yours has shape {got.shape}.")
     if not np.allclose(got, np.round(got)):
         return wrong("V, E and F count vertices, edges and faces: they are whole numbers.")
+    if np.abs(got).max() > 1e6:
+        return wrong("two levels multiply the counts of a small prism by about sixteen, not by millions; count "
+                     "each level with V' = V + E + F.")
     V, E, F = (int(round(x)) for x in got)
     mesh = ss.prism(PRISM_SIDES)
     m1 = ss.centroid_averaging(mesh, 1)
