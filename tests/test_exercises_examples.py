@@ -1,6 +1,7 @@
 """The examples that used to sit in the answer checkers' docstrings and showed a correct answer
 (issue 17 §2: Shift+Tab inside ``chNN.check_...(`` shows the docstring, so it must not give the
-answer away), and the wrong-answer examples of the docstrings that worked the answer out.  Each is the call and the exact verdict it printed; they run here, not as doctests.
+answer away), the wrong-answer examples of the docstrings that worked the answer out, and the correct-answer
+examples of the chapter modules' own docstrings.  Each is the call and the exact verdict it printed; they run here, not as doctests.
 """
 
 import importlib
@@ -199,6 +200,38 @@ EXAMPLES = [
      'Not yet: these are the points after inserting 0.5 alone; the Oslo algorithm inserts 0.5 and 1.5 together, giving 6 points.'),
     ('goldman_lib.exercises.ch28', 'check_schaefer', 'check_schaefer([[0.75, 1.5], [2.25, 4.5], [4.5, 6], [7.5, 6], [9.75, 4.5], [11.25, 1.5]])',
      "Not yet: that is Lane-Riesenfeld's answer (plain averages, Chaikin's quarter and three-quarter points): right for uniform knots only. With knot intervals of different lengths the weights come from the blossom labels, and the clamped ends keep P0 and P3."),
+    ('goldman_lib.exercises.ch04', 'check_rotate_about_point', 'check_rotate_about_point([-1, 1])',
+     'Correct: the image of P = (4, 2) is (-1, 1).'),
+    ('goldman_lib.exercises.ch05', 'check_parallelogram_vertex', 'check_parallelogram_vertex("A + C - B")',
+     'Correct: A + C - B is the fourth vertex D of the parallelogram ABCD, for every A, B, C.'),
+    ('goldman_lib.exercises.ch06', 'check_fixed_point', 'check_fixed_point([4, 2])',
+     'Correct: the fixed point of w is (4, 2).'),
+    ('goldman_lib.exercises.ch09', 'check_dot_from_lengths', 'check_dot_from_lengths(-4)',
+     'Correct: u · v = (|u|² + |v|² - |u - v|²) / 2 = (16 + 25 - 49) / 2 = -4: the angle between u and v is obtuse.'),
+    ('goldman_lib.exercises.ch10', 'check_dot_product', 'check_dot_product(-3)',
+     'Correct: u · v = 2·4 + (-1)·5 + 3·(-2) = -3: negative, so the angle between u and v is obtuse.'),
+    ('goldman_lib.exercises.ch11', 'check_law_of_cosines', 'check_law_of_cosines(7)',
+     'Correct: c² = a² + b² - 2ab cos γ gives the third side c = 7.'),
+    ('goldman_lib.exercises.ch12', 'check_mirror_point', 'check_mirror_point([2, -3, -1])',
+     "Correct: (P - Q)·n = 3 for the unit normal n = N/3, so P' = P - 2·3 n."),
+    ('goldman_lib.exercises.ch13', 'check_translation_row', 'check_translation_row([-1, 0, 3])',
+     'Correct: the translation row is Q - Q L = (1, 0, 2) - (2, 0, -1), so that Q stays where it is.'),
+    ('goldman_lib.exercises.ch14', 'check_point_at_infinity', 'check_point_at_infinity([4, -6, 0])',
+     "Correct: (4, -6, 0) is the line's point at infinity: w = 0 and (x, y) is a direction of the line."),
+    ('goldman_lib.exercises.ch24', 'check_bernstein_weights', 'check_bernstein_weights([0.4096, 0.4096, 0.1536, 0.0256, 0.0016])',
+     'Correct: the 5 weights match, and they sum to one.'),
+    ('goldman_lib.exercises.ch25', 'check_piece_parameter', 'check_piece_parameter(0.5)',
+     'Correct: C(0.7) is R(0.5).'),
+    ('goldman_lib.exercises.ch26', 'check_polar_form', 'check_polar_form(12)',
+     'Correct: p(1, 2, 3) = 12: 2 u1u2u3 + 3 (u1u2 + u1u3 + u2u3)/3 - 6 (u1 + u2 + u3)/3 + 1.'),
+    ('goldman_lib.exercises.ch27', 'check_continuity_orders', 'check_continuity_orders([3, 2, 1, 0])',
+     'Correct: at a knot of multiplicity m a quartic is C^(4 - m): C^3, C^2, C^1, C^0 at the knots 1, 2, 3, 4.'),
+    ('goldman_lib.exercises.ch28', 'check_convergence_levels', 'check_convergence_levels(5)',
+     'Correct: 0.5 / 4^5 is below 0.001 and 0.5 / 4^4 is not: five more levels.'),
+    ('goldman_lib.exercises.ch29', 'check_normal_curve_point', 'check_normal_curve_point([32 / 81, 24 / 81, 8 / 81, 1 / 81])',
+     'Correct: N(1/3) = (B_1^4, B_2^4, B_3^4, B_4^4)(1/3) = (0.3951, 0.2963, 0.09877, 0.01235).'),
+    ('goldman_lib.exercises.ch30', 'check_prism_counts', 'check_prism_counts([122, 240, 120])',
+     'Correct: two levels take the pentagonal prism to V, E, F = (122, 240, 120), and V - E + F = 2 at every level.'),
 ]
 
 

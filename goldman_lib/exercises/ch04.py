@@ -8,8 +8,6 @@ of the points written as rows) and names the misconception; it says how far off 
 what the answer is.  Hand-computed decimals are accepted to about 1e-4 (relative).  ``None`` or
 ``...`` means "not answered yet".
 
->>> check_rotate_about_point([-1, 1])
-Correct: the image of P = (4, 2) is (-1, 1).
 >>> print(check_rotate_about_point([-2, 4]).message)
 (-2, 4) is P rotated about the origin; rotate about Q: move Q to the origin (P - Q), rotate, then add Q back.
 """

@@ -7,8 +7,6 @@ within a tolerance, so decimals to about four places (``0.86603``) are as good a
 Messages name the slip and how far off an answer is, never the expected numbers.  ``None`` or
 ``...`` means "not answered yet".
 
->>> check_parallelogram_vertex("A + C - B")
-Correct: A + C - B is the fourth vertex D of the parallelogram ABCD, for every A, B, C.
 >>> print(check_parallelogram_vertex("A + C").message)
 A + C does not run: line 1, column 3, at '+': A + C is neither a point nor a vector: its weights add up to 2.
 """

@@ -8,8 +8,6 @@ answer is.  ``None`` or ``...`` means "not answered yet".
 
 >>> print(PROBLEMS["check_fixed_point"])
 The map w(P) = P L + (5, 0), where L turns by 90 degrees counterclockwise and halves, (x, y) L = (-y/2, x/2), is a contraction. Find its fixed point P = w(P) as [x, y] (Goldman §6.2).
->>> check_fixed_point([4, 2])
-Correct: the fixed point of w is (4, 2).
 """
 
 from __future__ import annotations

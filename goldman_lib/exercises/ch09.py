@@ -9,8 +9,6 @@ from coordinates) are chapter 10's.
 
 >>> print(PROBLEMS["check_dot_from_lengths"])  # doctest: +ELLIPSIS
 Two vectors have lengths |u| = 4 and |v| = 5, and |u - v| = 7. ... Goldman §9.4).
->>> check_dot_from_lengths(-4)
-Correct: u · v = (|u|² + |v|² - |u - v|²) / 2 = (16 + 25 - 49) / 2 = -4: the angle between u and v is obtuse.
 """
 
 from __future__ import annotations

@@ -9,8 +9,6 @@ product from an angle, the orientation rules of the determinant) are chapter 9's
 
 >>> print(PROBLEMS["check_dot_product"])
 Compute u · v for u = (2, -1, 3) and v = (4, 5, -2) in rectangular coordinates (Goldman §10.3).
->>> check_dot_product(-3)
-Correct: u · v = 2·4 + (-1)·5 + 3·(-2) = -3: negative, so the angle between u and v is obtuse.
 """
 
 from __future__ import annotations

@@ -6,8 +6,6 @@ checker and the statement never disagree; ``PROBLEMS`` holds the statements by c
 
 >>> print(PROBLEMS["check_law_of_cosines"])
 A triangle has sides a = 5 and b = 8 with the angle γ = 60° between them. Give the third side c (Goldman §11.2).
->>> check_law_of_cosines(7)
-Correct: c² = a² + b² - 2ab cos γ gives the third side c = 7.
 """
 
 from __future__ import annotations

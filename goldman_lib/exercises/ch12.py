@@ -6,9 +6,6 @@ Each exercise's data are module constants, so the notebook prints the problem fr
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers of the kinds each checker recognises.  Hand-computed decimals are
 accepted to a relative 1e-4 (2/3 typed as 0.6667 is right).
-
->>> check_mirror_point([2, -3, -1])
-Correct: (P - Q)·n = 3 for the unit normal n = N/3, so P' = P - 2·3 n.
 """
 
 from __future__ import annotations

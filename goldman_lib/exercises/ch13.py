@@ -6,9 +6,6 @@ Each exercise's data are module constants, so the notebook prints the problem fr
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers of the kinds each checker recognises.  Hand-computed decimals are
 accepted to a relative 1e-4.
-
->>> check_translation_row([-1, 0, 3])
-Correct: the translation row is Q - Q L = (1, 0, 2) - (2, 0, -1), so that Q stays where it is.
 """
 
 from __future__ import annotations

@@ -9,8 +9,6 @@ never what the answer is.  ``None`` or ``...`` means "not answered yet".
 
 >>> print(PROBLEMS["check_point_at_infinity"])
 In homogeneous coordinates (x, y, w) the line 3x + 2y = 11 of the plane is 3x + 2y - 11w = 0. Give its point at infinity as [x, y, w] (any nonzero multiple will do) (Goldman §14.2).
->>> check_point_at_infinity([4, -6, 0])
-Correct: (4, -6, 0) is the line's point at infinity: w = 0 and (x, y) is a direction of the line.
 """
 
 from __future__ import annotations

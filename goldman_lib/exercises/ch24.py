@@ -9,8 +9,6 @@ chapter's worked examples (the cubic (0, 0), (1, 2.5), (3, 2.5), (4, 0.5) and th
 
 >>> print(PROBLEMS["check_bernstein_weights"])
 Give the 5 Bernstein weights B_0^4(0.2), ..., B_4^4(0.2) that the quartic Bezier curve gives its control points at t = 0.2, as a list (Goldman §24.3).
->>> check_bernstein_weights([0.4096, 0.4096, 0.1536, 0.0256, 0.0016])
-Correct: the 5 weights match, and they sum to one.
 """
 
 from __future__ import annotations

@@ -9,8 +9,6 @@ patches of §25.3) and from chapter 24's exercises (the one drill of smooth join
 
 >>> print(PROBLEMS["check_piece_parameter"])
 A cubic C is subdivided at t = 0.4, and the right piece R is parametrised over [0, 1] again. The point C(0.7) lies on R: at which parameter s of R (Goldman §25.2)?
->>> check_piece_parameter(0.5)
-Correct: C(0.7) is R(0.5).
 """
 
 from __future__ import annotations

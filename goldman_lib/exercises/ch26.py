@@ -8,8 +8,6 @@ chapter's worked examples (its cubic (0, 0), (1, 2.5), (3, 2.5), (4, 0.5) and th
 
 >>> print(PROBLEMS["check_polar_form"])
 The cubic polynomial P(t) = 2t^3 + 3t^2 - 6t + 1 has a blossom p(u1, u2, u3) of degree 3. Write it down from the blossoms of the monomials and give the value p(1, 2, 3) (Goldman §26.2).
->>> check_polar_form(12)
-Correct: p(1, 2, 3) = 12: 2 u1u2u3 + 3 (u1u2 + u1u3 + u2u3)/3 - 6 (u1 + u2 + u3)/3 + 1.
 """
 
 from __future__ import annotations

@@ -8,8 +8,6 @@ circle and the sphere).
 
 >>> print(PROBLEMS["check_continuity_orders"])  # doctest: +ELLIPSIS
 A quartic B-spline (degree 4) has the knots ... (Goldman §27.4).
->>> check_continuity_orders([3, 2, 1, 0])
-Correct: at a knot of multiplicity m a quartic is C^(4 - m): C^3, C^2, C^1, C^0 at the knots 1, 2, 3, 4.
 """
 
 from __future__ import annotations

@@ -9,8 +9,6 @@ knot 0.4).  The crossing-count drill of variation diminishing lives in chapter 2
 
 >>> print(PROBLEMS["check_convergence_levels"])  # doctest: +ELLIPSIS
 After some levels of subdivision ... (Goldman §28.4.3).
->>> check_convergence_levels(5)
-Correct: 0.5 / 4^5 is below 0.001 and 0.5 / 4^4 is not: five more levels.
 """
 
 from __future__ import annotations

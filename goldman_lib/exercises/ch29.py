@@ -4,9 +4,6 @@
 Each exercise's data are module constants, so the notebook prints the problem from here and the
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers of the kinds each checker recognises.
-
->>> check_normal_curve_point([32 / 81, 24 / 81, 8 / 81, 1 / 81])
-Correct: N(1/3) = (B_1^4, B_2^4, B_3^4, B_4^4)(1/3) = (0.3951, 0.2963, 0.09877, 0.01235).
 """
 
 from __future__ import annotations

@@ -4,9 +4,6 @@ the chapter's programming project.
 Each exercise's data are module constants, so the notebook prints the problem from here and the
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers of the kinds each checker recognises.
-
->>> check_prism_counts([122, 240, 120])
-Correct: two levels take the pentagonal prism to V, E, F = (122, 240, 120), and V - E + F = 2 at every level.
 """
 
 from __future__ import annotations
