@@ -101,6 +101,13 @@ HOSTILE = {
     "a function": len,
     "a generator": (i for i in range(3)),
     "NUL bytes": "\x00" * 100,
+    # texts a program or expression checker parses: deep, long, huge numbers, endless loops
+    "5000 open brackets": "(" * 5000,
+    "nested calls": "point(" * 1500,
+    "9,999 letters": "a" * 9999,
+    "a 5000-digit number": "FORWARD " + "9" * 5000,
+    "a loop of 10**10 steps": "REPEAT 99999 [ REPEAT 99999 [ FORWARD 1 ] ]",
+    "1/0": "1/0",
 }
 
 

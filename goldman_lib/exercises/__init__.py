@@ -33,7 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Result", "Unreadable", "quote", "plain", "unreadable", "answer_checker", "guard_checkers", "far_off",
+__all__ = ["Result", "Unreadable", "quote", "clip", "plain", "unreadable", "answer_checker", "guard_checkers", "far_off",
            "read_vector", "all_close", "distance_text", "correct", "wrong", "unanswered", "is_unanswered", "read_number", "read_points", "check_number",
            "check_points", "fmt", "fmt_points", "off_by"]
 
@@ -213,6 +213,17 @@ def quote(answer, limit: int = QUOTE_LIMIT) -> str:
     except Exception:  # noqa: BLE001 - a container that cannot even be iterated
         return f"<a {type(answer).__name__}>"
     text = "".join(out)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def clip(text, limit: int = 80) -> str:
+    """A text (an expression the learner wrote, an error message about it) cut to ``limit``
+    characters for a message.
+
+    >>> clip("A + B - C"), clip("x" * 100, 10)
+    ('A + B - C', 'xxxxxxx...')
+    """
+    text = str(text)
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 

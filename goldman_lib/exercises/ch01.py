@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals, turtle
-from goldman_lib.exercises import far_off, guard_checkers, quote
+from goldman_lib.exercises import far_off, guard_checkers, quote, clip
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, read_points, unanswered, wrong
 from goldman_lib.fixed_point import hausdorff_distance
 
@@ -110,7 +110,7 @@ def _program(answer, what: str) -> tuple[str | None, Result | None]:
     try:
         turtle.expand(answer)
     except ValueError as exc:
-        return None, wrong(f"the program does not run: {exc}.")
+        return None, wrong(f"the program does not run: {clip(exc, 200)}.")
     return answer, None
 
 

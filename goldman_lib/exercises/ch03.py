@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals
-from goldman_lib.exercises import guard_checkers
+from goldman_lib.exercises import guard_checkers, clip
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "EQUAL_COPIES", "EQUAL_SCALE", "TENT_PROGRAM", "CHORD_LEVEL", "BOUND_START",
@@ -203,7 +203,7 @@ def check_c_curve_base_case(answer) -> Result:
     try:
         prog = c_curve.with_base(answer)
     except (TypeError, ValueError) as exc:
-        return wrong(f"that is not a base case: {exc}.")
+        return wrong(f"that is not a base case: {clip(exc, 200)}.")
     if not prog.polylines(0):
         return wrong("your base case draws nothing (only MOVE and TURN): then every level draws nothing either.")
     if prog.base == c_curve.base:

@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from goldman_lib import codo
-from goldman_lib.exercises import far_off, guard_checkers, quote
+from goldman_lib.exercises import far_off, guard_checkers, quote, clip
 from goldman_lib.exercises import (Result, correct, fmt, is_unanswered, off_by, read_number, read_points,
                                    unanswered, wrong)
 
@@ -130,7 +130,7 @@ def _run(answer, ask) -> tuple[list | None, Result | None]:
     try:
         return codo.run(answer), None
     except codo.CodoError as exc:
-        return None, wrong(f"the program does not run: {exc}.")
+        return None, wrong(f"the program does not run: {clip(exc, 200)}.")
 
 
 def _compare(polylines, expected: list[np.ndarray], name: str, hint: str) -> Result:
@@ -192,7 +192,7 @@ def _one_expression(answer, names, setup_values, ask):
         # the message for the learner's own line, numbered as they wrote it
         msg = str(exc).replace(f"line {exc.line},", "line 1,", 1).replace(
             f"column {exc.column},", f"column {exc.column - 4 if exc.line == 2 else exc.column},", 1)
-        return None, wrong(f"{' '.join(answer.split())} does not run: {msg.split('. Adding')[0]}.")
+        return None, wrong(f"{clip(' '.join(answer.split()))} does not run: {clip(msg.split('. Adding')[0], 200)}.")
 
 
 def check_parallelogram_vertex(answer) -> Result:
@@ -203,7 +203,7 @@ def check_parallelogram_vertex(answer) -> Result:
     >>> print(check_parallelogram_vertex("B + C - A").message)
     B + C - A is the vertex opposite A, which makes ABDC a parallelogram with B and C next to each other; in ABCD the vertex D is next to A and to C, opposite B.
     """
-    expr = " ".join(answer.split()) if isinstance(answer, str) else ""
+    expr = clip(" ".join(answer.split())) if isinstance(answer, str) else ""
     for k, (A, B, C) in enumerate(PARALLELOGRAM_TRIPLES):
         X, problem = _one_expression(answer, "ABC", (A, B, C), "a CODO expression (in quotes) in A, B and C")
         if problem is not None:

@@ -23,7 +23,7 @@ import numpy as np
 
 from goldman_lib import affine, fractals
 from goldman_lib import conformal_ifs as cf
-from goldman_lib.exercises import far_off, guard_checkers, quote
+from goldman_lib.exercises import far_off, guard_checkers, quote, clip
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 from goldman_lib.exercises.projects import Case, check_project, describe
 from goldman_lib.turtle import Turtle
@@ -332,7 +332,7 @@ def check_tao_body(answer) -> Result:
         body = parse_body(answer)
         program = _program(body, TAO_BASE)
     except (TypeError, ValueError) as exc:
-        return wrong(f"the body does not read: {exc}.")
+        return wrong(f"the body does not read: {clip(exc, 200)}.")
     maps, (P, w) = call_states(body, base_moves=0.0)
     home = cf.state_map((0, 0), (1, 0))
     if not np.allclose(cf.state_map(P, w), home, atol=1e-9):
