@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 import goldman_lib.exercises as exercises
-from goldman_lib.exercises import Result, quote
+from goldman_lib.exercises import Result, fmt, quote
 from test_solutions import EXERCISES, leaked, numbers_in, run_solution, solution_cells, solution_code
 
 #: Shifts (relative to the answer's size) chosen so that their two-digit roundings are not numbers a
@@ -139,6 +139,11 @@ def test_docstring_does_not_state_the_answer(path, index, module, name):
     given = module.PROBLEMS[name]
     found = [e for e in leaked(doc, answer, given) if not _small_int(e) or _stated(doc, e)]
     assert not found, f"{name}'s docstring states the expected value ({found}):\n{doc}"
+    arr = _numeric(answer)
+    if arr is not None and 2 <= arr.size <= 16:
+        written = ", ".join(fmt(v) for v in arr.ravel())
+        assert written not in doc.replace("[", "(").replace("]", ")"), (
+            f"{name}'s docstring states the expected value ({written}):\n{doc}")
 
 
 def _small_int(value: float) -> bool:

@@ -199,13 +199,11 @@ def check_final_state(answer) -> Result:
 
 def check_polygon_program(answer) -> Result:
     """Exercise 1.2: a program for the regular polygon with interior angles
-    :data:`POLYGON_INTERIOR` and side :data:`POLYGON_SIDE` (Goldman §1.3): the 9-gon, turning 40.
+    :data:`POLYGON_INTERIOR` and side :data:`POLYGON_SIDE` (Goldman §1.3), checked by running it and
+    comparing the drawing.
 
     Recognises turning by the interior angle instead of the exterior one, another number of
     sides (naming that polygon's interior angle), wrong side lengths, an open path.
-
-    >>> check_polygon_program("REPEAT 9 [FORWARD 1.5 TURN 140]")
-    Not yet: your turtle turns by the interior angle, 140 degrees; at each corner it turns by the exterior angle, 180 minus the interior angle.
     """
     program, problem = _program(answer, f"the regular polygon with interior angles {POLYGON_INTERIOR}")
     if problem is not None:

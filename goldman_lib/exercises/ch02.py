@@ -175,14 +175,10 @@ def check_loop_centre(answer) -> Result:
 
 def check_gasket_scale(answer) -> Result:
     """Exercise 2.4: the scale ``r`` of the octagonal gasket's copies (Goldman §2.3, fractal gaskets):
-    along a side each copy reaches ``r + r cos 45`` from its corner, so ``2 r (1 + cos 45) = 1``.
-    Accepts 1e-4.
+    along a side of the big octagon, the copies at its two corners just touch.  Accepts 1e-4.
 
     Recognises the Sierpinski and hexagonal scales (1/2, 1/3), one copy's reach taken as the whole
     side, and the copy's full width used on both sides.
-
-    >>> check_gasket_scale(1 / 3)
-    Not yet: 1/3 is the scale of the hexagonal gasket (and the carpet); the octagon's copies reach further along a side, because of its 45 degree corners.
     """
     what = "the scale r"
     r, problem = read_number(answer, what)
@@ -214,14 +210,11 @@ def check_gasket_scale(answer) -> Result:
 
 
 def check_c_curve_commands(answer) -> Result:
-    """Exercise 2.5: the commands executed by level 6 of the C-curve (Goldman §2.3):
-    ``c(0) = 1``, ``c(n) = 5 + 2 c(n-1)``, so ``c(n) = 6 * 2**n - 5``.
+    """Exercise 2.5: the commands executed by level 6 of the C-curve (Goldman §2.3), from the
+    recurrence of the command count c(n) of level n.
 
     Recognises the FORWARDs alone, the other commands alone, a neighbouring level, and the
     recursion added instead of doubled.
-
-    >>> check_c_curve_commands(64)
-    Not yet: 64 counts the FORWARDs only (the segments drawn); every level also runs the TURNs and RESIZEs of its body.
     """
     n = C_CURVE_LEVEL
     what = "the number of commands"

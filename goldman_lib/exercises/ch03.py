@@ -65,14 +65,11 @@ def _near(value: float, target: float, tol: float) -> bool:
 
 
 def check_equal_scales_dimension(answer) -> Result:
-    """Exercise 3.1: the dimension of 8 copies at scale 1/4 (Goldman §3.2): ``log 8 / log 4 = 3/2``.
+    """Exercise 3.1: the dimension of 8 copies at scale 1/4 (Goldman §3.2), from N s^D = 1.
     Accepts 1e-3.
 
     Recognises the ratio upside down, the counts divided instead of their logarithms, the scale
     taken as 1/3 (the carpet's log 8 / log 3).
-
-    >>> check_equal_scales_dimension(8 / 4)
-    Not yet: that divides the counts (8 / 4); the dimension divides their logarithms: D = log N / log(1/s).
     """
     value, problem = read_number(answer, "the dimension")
     if problem is not None:
@@ -227,14 +224,11 @@ def check_c_curve_base_case(answer) -> Result:
 
 
 def check_attraction_bound(answer) -> Result:
-    """Exercise 3.5: the bound on the Hausdorff distance at level 6 between two C-curve drawings
-    0.3 apart at level 0 (Goldman §3.4): ``0.3 (1/sqrt 2)^6 = 0.3 / 8``.  Accepts 1e-5.
+    """Exercise 3.5: the bound on the Hausdorff distance at level 6 between two C-curve drawings 0.3
+    apart at level 0 (Goldman §3.4), from the contraction factor of the C-curve's maps.  Accepts 1e-5.
 
     Recognises the Koch curve's factor 1/3, a factor 1/2, a neighbouring level, the copies' distances
     added up (times 2 per level), and no shrinking at all.
-
-    >>> check_attraction_bound(0.3 / 3 ** 6)
-    Not yet: that shrinks by a third per level, the Koch curve's scale; the C-curve's copies are scaled by 1/sqrt 2.
     """
     what = "the bound"
     value, problem = read_number(answer, what)

@@ -156,11 +156,8 @@ def check_iterate_map(answer) -> Result:
 
 
 def check_carpet_points(answer) -> Result:
-    """Exercise 2: points returned by the deterministic algorithm for the carpet at
-    ``CARPET_LEVEL`` from the 5-point square: ``5 * 8**level`` (Goldman §6.1, §6.3).
-
-    >>> print(check_carpet_points(8 ** 3).message)
-    512 counts the copies of the square; each copy has 5 points (a closed polyline repeats its first point).
+    """Exercise 2: points returned by the deterministic algorithm for the carpet at ``CARPET_LEVEL``
+    from the 5-point square (Goldman §6.1, §6.3): each level applies every map to every point.
     """
     value, problem = read_number(answer, "the number of points")
     if problem is not None:
@@ -217,10 +214,7 @@ def check_chaos_game_steps(answer) -> Result:
 
 def check_tree_branches(answer) -> Result:
     """Exercise 5: trunk copies in ``A_TREE_LEVEL`` of a tree with ``TREE_MAPS`` maps and a trunk as
-    condensation set: ``1 + 3 + ... + 3**level`` (Goldman §6.4).
-
-    >>> print(check_tree_branches(81).message)
-    81 counts only the newest, smallest trunks (3^4); the condensation set keeps a copy of every earlier level too.
+    condensation set (Goldman §6.4): each generation adds the images of the last one.
     """
     value, problem = read_number(answer, "the number of trunks")
     if problem is not None:

@@ -172,14 +172,11 @@ def _program(body, base=(("FORWARD", 1.0),)):
 # -- §8.2 ----------------------------------------------------------------------------------------------
 
 def check_moved_point(answer) -> Result:
-    """Check where (1/2, 1/2) is drawn from the state P = (-1, 2), w = (1, 1): the map sends (x, y)
-    to P + x w + y w_perp = (-1 + x - y, 2 + x + y), so (-1, 3) (Goldman §8.2).
+    """Check where (1/2, 1/2) is drawn from the turtle state P = (-1, 2), w = (1, 1): the map sends
+    (x, y) to P + x w + y w_perp (Goldman §8.2).
 
     Recognises a translation only, a clockwise turn, a turn without the scaling, a turn and scaling
     without the translation.
-
-    >>> check_moved_point([0, 2])
-    Not yet: you turned the drawing clockwise: the heading turns from (1, 0) to w = (1, 1), counterclockwise, so (0, 1) goes to the perpendicular (-1, 1), not (1, -1).
     """
     what = "the moved point"
     got, err = _read_point(answer, what)
@@ -213,14 +210,11 @@ def check_moved_point(answer) -> Result:
 # -- §8.3 ----------------------------------------------------------------------------------------------
 
 def check_level_end(answer) -> Result:
-    """Check where level 1 of ``LEVEL_BODY`` ends: RESIZE 1/2, a call moves by (1/2, 0), TURN 90, a
-    call moves by (0, 1/2): P = (1/2, 1/2), while level 0 (FORWARD 1) ends at (1, 0) (Goldman §8.3).
+    """Check where level 1 of ``LEVEL_BODY`` ends: each call moves the turtle as FORWARD 1 does, with
+    the step and heading in force at the call (Goldman §8.3).
 
     Recognises the base case's end, calls that do not move the turtle, a forgotten RESIZE and a
     clockwise turn.
-
-    >>> check_level_end([1, 0])
-    Not yet: (1, 0) is where level 0, FORWARD 1, ends; level 1 runs the body, and each of its calls moves the turtle as FORWARD 1 does, with the step and heading in force at the call.
     """
     what = "the end of level 1"
     got, err = _read_point(answer, what)
@@ -372,15 +366,11 @@ def check_tao_body(answer) -> Result:
 # -- §8.5 ----------------------------------------------------------------------------------------------
 
 def check_bump_from_ifs(answer) -> Result:
-    """Check the bump read back from ``BUMP_MAPS`` (Goldman §8.5): T_i sends (0, 0) to its last row P and
-    (1, 0) to P + w (first row); the segments chain (0, 0) -> (0.3, 0.4) -> (0.6, 0) -> (1, 0), T2 from
-    its end (0.6, 0) back to (0.3, 0.4).
+    """Check the bump read back from ``BUMP_MAPS`` (Goldman §8.5): T_i sends (0, 0) to its last row P
+    and (1, 0) to P + w (first row), so each map is one segment of the bump.
 
     Recognises the last rows taken as the segments' starts (missing the backward segment), the first
     rows taken as points, a missing end point and the bump in reverse.
-
-    >>> check_bump_from_ifs([[0, 0], [0.3, 0.4], [0.6, 0]])
-    Not yet: a bump with 3 maps has 4 points, one more than segments: from (0, 0) through the segments' joints to (1, 0).
     """
     got, err = read_points(answer, "your bump", ask="the bump as a list of points [[x0, y0], ...]")
     if err is not None:

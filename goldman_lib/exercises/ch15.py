@@ -104,13 +104,11 @@ PROBLEMS = {
 # -- §15.2 ---------------------------------------------------------------------------------------------
 
 def check_complex_factor(answer) -> Result:
-    """Check z = (-1 + 3i) / (2 + i) = (-1 + 3i)(2 - i) / 5 = (1 + 7i) / 5 (Goldman §15.2).
+    """Check the complex number z with z (2 + i) = -1 + 3i, a quotient of complex numbers (Goldman
+    §15.2); read as [Re z, Im z] or as a Python complex number.
 
     Recognises the product instead of the quotient, the quotient the other way up, a conjugate
     taken on the wrong factor, and coordinates divided one by one.
-
-    >>> check_complex_factor([-5, 5])
-    Not yet: that is (2 + i)(-1 + 3i), the product; z is the quotient (-1 + 3i) / (2 + i): multiply top and bottom by the conjugate 2 - i.
     """
     if isinstance(answer, (complex, np.complexfloating)):
         answer = [answer.real, answer.imag]   # the chapter computes with Python complex numbers too
@@ -182,8 +180,8 @@ def _sandwich(a, v, b):
 
 
 def check_rotated_vector(answer) -> Result:
-    """Check q v q* for q = (cos 45°, sin 45° (1, 0, 1)/√2) and v = (1, 2, 0): the image is
-    (1/2 - √2, √2/2, 1/2 + √2) (Goldman §15.3.2).
+    """Check q v q* for the unit quaternion q of the rotation ``ROTATION_ANGLE`` about ``ROTATION_AXIS``
+    and v = ``ROTATION_V`` (Goldman §15.3.2).
 
     Recognises the full angle in q (cos θ, not cos θ/2: twice the rotation), the opposite rotation
     (q* v q), q v q instead of q v q*, and an axis left unnormalised.
@@ -218,8 +216,8 @@ def check_rotated_vector(answer) -> Result:
 
 
 def check_conformal_image(answer) -> Result:
-    """Check the vector part of q v q* for q = (1, 2, 0, 2), v = (0, 1, 0): (-4, -7, 4), of length
-    |q|^2 |v| = 9 (Goldman §15.3.2).
+    """Check the vector part of q v q* for the quaternion ``CONFORMAL_Q`` (not a unit quaternion) and
+    v = ``CONFORMAL_V``: a rotation with a scaling by |q|^2 (Goldman §15.3.2).
 
     Recognises the rotation alone (divided by |q|^2), a scaling by |q| instead of |q|^2, q* v q
     (the other rotation) and q v q.

@@ -182,8 +182,8 @@ def check_diffuse(answer) -> Result:
 # -- §16.5 ---------------------------------------------------------------------------------------------
 
 def check_mirror_direction(answer) -> Result:
-    """Check R = 2 (L . N) N - L with N = (1, 1, 1)/sqrt 3: L . N = 1.4/sqrt 3, so
-    R = (2.8/3)(1, 1, 1) - (0.6, 0, 0.8) = (1/3, 14/15, 2/15) (Goldman §16.5).
+    """Check the mirror direction R = 2 (L · N) N - L of the unit L about the unit normal N
+    (Goldman §16.5).
 
     Recognises -R (the reflection pointing into the surface), an unnormalised N, and the missing
     factor 2.

@@ -210,8 +210,8 @@ def _shadow_answer():
 
 
 def check_blocked_lights(answer) -> Result:
-    """Check which lights the shadow rays find blocked: L0 (the sphere is in the way) and L3 (below the
-    floor: the surface itself blocks it) (Goldman §17.3).
+    """Check which lights the shadow rays from the surface point find blocked, by the sphere or by
+    the surface itself (Goldman §17.3).
 
     Recognises the shadow ray continued past the light (L2's light hangs between P and the sphere),
     a light behind the surface forgotten, and the lit lights given instead of the blocked ones.

@@ -97,7 +97,8 @@ def _unit(v):
 # -- §18.2 ---------------------------------------------------------------------------------------------
 
 def check_implicit_normal(answer) -> Result:
-    """Check grad F / |grad F| = (2, 4, -2√2)/√28 at (1, 1, √2) (Goldman §18.2).
+    """Check the unit normal grad F / |grad F| of the implicit surface at the given point
+    (Goldman §18.2).
 
     Recognises the gradient left unnormalised, the opposite direction, and a lost minus sign on the
     z-derivative.
@@ -123,8 +124,8 @@ def check_implicit_normal(answer) -> Result:
 
 
 def check_parametric_normal(answer) -> Result:
-    """Check X_u × X_v / |.| with X_u = (1, 0, 2uv) = (1, 0, 4), X_v = (0, 1, u^2) = (0, 1, 1):
-    (-4, -1, 1)/√18 (Goldman §18.2).
+    """Check the unit normal X_u × X_v / |X_u × X_v| of the parametric surface at the given (u, v)
+    (Goldman §18.2).
 
     Recognises X_v × X_u (the opposite normal), the unnormalised cross product, and a sign slip in
     the middle component.
@@ -152,8 +153,8 @@ def check_parametric_normal(answer) -> Result:
 
 
 def check_deformed_normal(answer) -> Result:
-    """Check J^{-T} n for J = [[1, 0, 2], [0, 3, 0], [0, 0, 1]]: J^{-T} (1, 1, 1) = (1, 1/3, -1), unit
-    (3, 1, -3)/√19 (Goldman §18.2).
+    """Check the unit normal of the deformed surface, J^{-T} n normalised, for the Jacobian J of the
+    deformation (Goldman §18.2).
 
     Recognises J n (the normal moved like a tangent), J^{-1} n (the inverse without the transpose),
     J^T n (the transpose without the inverse), and the unnormalised J^{-T} n.

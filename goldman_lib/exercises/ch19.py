@@ -191,14 +191,11 @@ def check_sphere_hit(answer) -> Result:
 
 
 def check_cylinder_hit(answer) -> Result:
-    """Check where the ray of exercise 4 enters the capped cylinder (Goldman §19.4.2): through the
-    top cap, since the infinite cylinder's wall is met above the top.
+    """Check where the ray of exercise 4 enters the capped cylinder (Goldman §19.4.2): the first hit
+    with the wall or a cap that lies on the bounded solid.
 
     Recognises the infinite cylinder's wall hit, the exit (the open tube's only hit), and the plane
     of the bottom cap outside its disc.
-
-    >>> check_cylinder_hit(1.0)
-    Not yet: that is where the ray meets the infinite cylinder, but there the point is above the top (z > height): the bounded cylinder's wall is not there. Check the caps.
     """
     value, err = read_number(answer, "your t")
     if err is not None:

@@ -166,13 +166,10 @@ def _tree_result(letter: str) -> np.ndarray:
 
 
 def check_which_tree(answer) -> Result:
-    """Check which CSG tree turns the intervals A [1, 5], B [3, 8], C [4, 6] into [1, 4], [6, 8]:
-    (c) (A ∪ B) − C (Goldman §20.2).
+    """Check which CSG tree turns the intervals A [1, 5], B [3, 8], C [4, 6] into [1, 4], [6, 8]
+    (Goldman §20.2).
 
     Explains what each other tree keeps or loses.
-
-    >>> check_which_tree("b")
-    Not yet: (A − C) ∪ B subtracts C from A only; B then fills C's interval back in, so the result has no gap.
     """
     if is_unanswered(answer):
         return unanswered("a letter, e.g. \"a\"")
@@ -257,13 +254,10 @@ def check_genus(answer) -> Result:
 
 
 def check_flipped_face(answer) -> Result:
-    """Check which face of the pyramid is inside out: face 3 ([3, 2, 4] runs the edge 3 -> 2 the same
-    way as the base and 2 -> 4 the same way as face 2) (Goldman §20.3).
+    """Check which face of the pyramid is inside out: the one that runs a shared edge the same way
+    as its neighbour (Goldman §20.3).
 
     Recognises the faces that share an edge with the flipped face.
-
-    >>> check_flipped_face(2)
-    Not yet: face 2 shares an edge with the flipped face, so that edge runs the same way in both; but face 2's other edges run opposite to their neighbours'. Find the face all of whose edges disagree.
     """
     value, err = read_number(answer, "your face index", "face index")
     if err is not None:
