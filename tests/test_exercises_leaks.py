@@ -12,6 +12,7 @@ wrong type, and each slip the chapter recognises (``SLIPS``).
 from __future__ import annotations
 
 import ast
+import functools
 import inspect
 import json
 import re
@@ -28,6 +29,7 @@ from test_solutions import EXERCISES, leaked, numbers_in, run_solution, solution
 SHIFTS = (0.0371, -0.0529, 0.283, -0.417, 1.37)
 
 
+@functools.lru_cache(maxsize=None)
 def _answer(path, index):
     cell = dict(solution_cells(path))[index]
     namespace, last, _ = run_solution(solution_code(cell))

@@ -16,6 +16,14 @@ Correct: the perimeter is 6.
 >>> check_number(5.5, 6.0, what="the perimeter", hint="a hexagon has six sides")
 Not yet: the perimeter is too small. Hint: a hexagon has six sides.
 
+Any object can be given as an answer.  Every chapter checker reads it through one layer here
+(:func:`answer_checker`, applied to each chapter's checkers by :func:`guard_checkers`):
+:func:`plain` turns the answer into bounded plain data (numbers, text, lists, arrays; complex numbers
+only where a chapter computes with them) or says why it cannot ("I could not read your answer ...
+as ...: it is nested more than 32 levels deep"), and :func:`quote` shows at most a short prefix of
+it in a message, without calling the answer's own ``__repr__``.  :func:`read_number`,
+:func:`read_points` and :func:`read_vector` go through the same layer.
+
 A wrong answer is explained, never answered: messages name the slip, or say which way an answer
 is off and roughly how much in words ("a little too large"), never the gap in digits, nor what the
 answer is (``tests/test_exercises.py`` feeds every checker its recognised slips
