@@ -16,8 +16,10 @@ def test_result_verdicts_render_as_text_and_html():
 def test_check_number_says_how_far_off():
     assert check_number(6.0000001, 6, what="x").correct
     r = check_number(6.5, 6, what="the perimeter", hint="six sides")
-    assert repr(r) == "Not yet: the perimeter is off by 0.5. Hint: six sides."
-    assert "6" not in repr(check_number(6.5, 6, what="x")).replace("6.5", ""), "the expected value is not given"
+    assert repr(r) == "Not yet: the perimeter is too large. Hint: six sides."
+    assert repr(check_number(6.1, 6, what="x")) == "Not yet: x is a little too large."
+    assert repr(check_number(-6, 6, what="x")) == "Not yet: x is far too small."
+    assert "6" not in repr(check_number(6.5, 6, what="x")), "neither the expected value nor the gap is given"
     assert repr(check_number("six", 6, what="x")) == "Not yet: x should be a number; you gave 'six'."
     assert repr(check_number(float("nan"), 6, what="x")) == "Not yet: x should be a finite number; you gave nan."
     assert not check_number(None, 6, what="x").answered and not check_number(..., 6, what="x").answered
@@ -32,7 +34,8 @@ def test_read_number():
 def test_check_points_names_the_first_point_that_is_off():
     assert check_points([[0, 0], [1, 1]], np.array([[0, 0], [1, 1]]), what="P").correct
     r = check_points([[0, 0], [1, 2]], [[0, 0], [1, 1]], what="the points")
-    assert repr(r) == "Not yet: point 1 of the points, (1, 2), is 1 away from where it should be (1 of 2 points are off)."
+    assert repr(r) == ("Not yet: point 1 of the points, (1, 2), is well off from where it should be "
+                       "(1 of 2 points are off).")
     assert "shape (2, 2); yours has shape (3, 2)" in repr(check_points(np.zeros((3, 2)), np.zeros((2, 2)), what="P"))
 
 

@@ -35,7 +35,7 @@ def test_final_state():
     _assert_wrong(ch01.check_final_state([[-1, -3], [0, -2]]), "every TURN clockwise", "counterclockwise")
     _assert_wrong(ch01.check_final_state([[2, 3], [0, 2]]), "MOVE 3 left out", "without drawing")
     _assert_wrong(ch01.check_final_state([[-1, 3], [0, 1]]), "P is right, but w is not")
-    _assert_wrong(ch01.check_final_state([[0, 3], [0, 2]]), "w is right, but P is off by 1")
+    _assert_wrong(ch01.check_final_state([[0, 3], [0, 2]]), "w is right, but P is off")
     _assert_wrong(ch01.check_final_state([-1, 3]), "give both parts of the state")
     _assert_wrong(ch01.check_final_state([[5, 5], [5, 5]]), "both P and w are off")
     _assert_wrong(ch01.check_final_state([1, 2, 3]), "shape (3,)")
@@ -94,7 +94,7 @@ def test_circle_step():
     _assert_wrong(ch01.check_circle_step(0.312869), "half the chord")
     _assert_wrong(ch01.check_circle_step(1.236068), "sine of the whole central angle")
     _assert_wrong(ch01.check_circle_step(4 * math.sin(9)), "radians")
-    _assert_wrong(ch01.check_circle_step(0.6), "off by 0.026", "chord")
+    _assert_wrong(ch01.check_circle_step(0.6), "a little too small", "chord")
 
 
 # -- 1.5 the spiral's ink: 1 + 1.5 + ... + 1.5^7 = (1.5^8 - 1) / 0.5 = 49.2578125 --------------------
@@ -107,7 +107,7 @@ def test_spiral_ink():
     _assert_wrong(ch01.check_spiral_ink(17.0859375), "last side alone")
     _assert_wrong(ch01.check_spiral_ink(25.62890625), "step after the loop")
     _assert_wrong(ch01.check_spiral_ink(22), "does not add 0.5")
-    _assert_wrong(ch01.check_spiral_ink(50), "off by 0.74", "geometric series")
+    _assert_wrong(ch01.check_spiral_ink(50), "a little too large", "geometric series")
 
 
 # -- 1.6 the rosette: REPEAT 8 [REPEAT 4 [FORWARD 1 TURN 90] TURN 45] --------------------------------

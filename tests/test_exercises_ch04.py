@@ -31,7 +31,7 @@ def test_rotate_about_point():
     _assert_wrong(ch04.check_rotate_about_point([-3, 2]), "add Q back")                    # R(90)(P - Q)
     _assert_wrong(ch04.check_rotate_about_point([-3, 7]), "subtract Q before rotating")   # R(90)(P + Q) - Q
     r = ch04.check_rotate_about_point([0, 1])
-    _assert_wrong(r, "off by 1 (distance)")
+    _assert_wrong(r, "off")
     _assert_wrong(ch04.check_rotate_about_point([1, 2, 3]), "two numbers")
 
 
@@ -45,7 +45,7 @@ def test_composite_matrix():
     _assert_wrong(ch04.check_composite_matrix([[0, -3, 0], [3, 0, 0], [-2, 0, 1]]), "clockwise")
     _assert_wrong(ch04.check_composite_matrix([[0, 3, 1], [-3, 0, 0], [-2, 0, 1]]), "last column")
     _assert_wrong(ch04.check_composite_matrix([[0, 3, 0], [-3, 0, 0], [-2, 1, 1]]),
-                  "third row of your matrix, the translation", "off by 1")
+                  "third row of your matrix, the translation", "is off.")
     _assert_wrong(ch04.check_composite_matrix([[0, 3], [-3, 0]]), "3x3 matrix")
 
 
@@ -73,7 +73,7 @@ def test_point_and_vector_image():
     # M (1, 2, 1)^T = (4, 2, 2), M (1, 2, 0)^T = (4, 2, 1)
     _assert_wrong(ch04.check_point_and_vector_image([[4, 2], [4, 2]]), "multiplies M by a column")
     _assert_wrong(ch04.check_point_and_vector_image([[2, 3], [5, 2]]), "swapped")
-    _assert_wrong(ch04.check_point_and_vector_image([[5, 2], [2, 4]]), "image of the vector v", "off by 1")
+    _assert_wrong(ch04.check_point_and_vector_image([[5, 2], [2, 4]]), "image of the vector v", "is off;")
     _assert_wrong(ch04.check_point_and_vector_image([5, 2]), "two points")
 
 

@@ -31,7 +31,7 @@ def test_iterate_map():
     _assert_wrong(ch06.check_iterate_map([1, 0]), "does not turn")
     _assert_wrong(ch06.check_iterate_map([-2, 0]), "one step short")
     _assert_wrong(ch06.check_iterate_map([0.5, 0]), "one step too many")
-    _assert_wrong(ch06.check_iterate_map([0, -2]), "off by 1 (distance)")
+    _assert_wrong(ch06.check_iterate_map([0, -2]), "is well off")
     _assert_wrong(ch06.check_iterate_map([0, -1, 0]), "one point")
 
 
@@ -42,7 +42,7 @@ def test_carpet_points():
     _assert_wrong(ch06.check_carpet_points(120), "multiplies by 8")
     _assert_wrong(ch06.check_carpet_points(2925), "every level")      # 5 (1 + 8 + 64 + 512)
     _assert_wrong(ch06.check_carpet_points(320), "one level short")
-    _assert_wrong(ch06.check_carpet_points(2561), "off by 1")
+    _assert_wrong(ch06.check_carpet_points(2561), "too large")
     _assert_wrong(ch06.check_carpet_points("many"), "should be a number")
 
 
@@ -63,7 +63,7 @@ def test_chaos_game_steps():
     _assert_wrong(ch06.check_chaos_game_steps([0.5, 3]), "one step short")
     _assert_wrong(ch06.check_chaos_game_steps([0, 0]), "HALFWAY")
     _assert_wrong(ch06.check_chaos_game_steps([1, 2]), "averages the corners")
-    _assert_wrong(ch06.check_chaos_game_steps([0.25, 2.5]), "off by 1 (distance)")
+    _assert_wrong(ch06.check_chaos_game_steps([0.25, 2.5]), "is well off")
 
 
 def test_tree_branches():
@@ -73,7 +73,7 @@ def test_tree_branches():
     _assert_wrong(ch06.check_tree_branches(40), "one level short")
     _assert_wrong(ch06.check_tree_branches(364), "one level too many")
     _assert_wrong(ch06.check_tree_branches(31), "2 maps")
-    _assert_wrong(ch06.check_tree_branches(100), "off by 21")
+    _assert_wrong(ch06.check_tree_branches(100), "too small")
 
 
 # -- the programming project ------------------------------------------------------------------------

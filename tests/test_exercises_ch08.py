@@ -59,7 +59,7 @@ def test_ron_map():
     _wrong(ch08.check_ron_map([[0.25, -0.25, 0], [0.25, 0.25, 0], [0, 0, 1]]), "each earlier RECURSE moves")
     _wrong(ch08.check_ron_map([[0.25, 0.25, 0], [-0.25, 0.25, 0], [0.5, -0.25, 1]]), "clockwise")
     _wrong(ch08.check_ron_map([[0.25, -0.25, 0], [-0.25, -0.25, 0], [0.5, 0.25, 1]]), "reflects")
-    _wrong(ch08.check_ron_map([[0.25, -0.25, 0], [0.25, 0.25, 0], [0.5, 0.5, 1]]), "the point P (last row) is off by 0.25")
+    _wrong(ch08.check_ron_map([[0.25, -0.25, 0], [0.25, 0.25, 0], [0.5, 0.5, 1]]), "the point P (last row) is off")
     _wrong(ch08.check_ron_map([[0.25, -0.25, 1], [0.25, 0.25, 0], [0.5, 0.25, 1]]), "last column (0, 0, 1)")
     _wrong(ch08.check_ron_map([[1, 2], [3, 4]]), "3x3 matrix")
 
@@ -101,7 +101,7 @@ def test_bump_from_ifs():
     _wrong(ch08.check_bump_from_ifs(right[::-1]), "in reverse")
     _wrong(ch08.check_bump_from_ifs([[0, 0], [0.6, 0], [0.6, 0], [1, 0]]), "last row as the start", "backwards")
     _wrong(ch08.check_bump_from_ifs([[0, 0], [0.3, 0.4], [-0.3, 0.4], [0.4, 0]]), "a direction, not a point")
-    _wrong(ch08.check_bump_from_ifs([[0, 0], [0.3, 0.5], [0.6, 0], [1, 0]]), "point 1 of your bump is 0.1 away")
+    _wrong(ch08.check_bump_from_ifs([[0, 0], [0.3, 0.5], [0.6, 0], [1, 0]]), "point 1 of your bump is off")
     _wrong(ch08.check_bump_from_ifs(right + [[2, 0]]), "yours has 5")
     _wrong(ch08.check_bump_from_ifs([0, 0]), "list of points")
 

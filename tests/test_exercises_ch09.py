@@ -90,7 +90,7 @@ def test_dot_slips_are_named():
     assert "forgot to halve" in message(ch09.check_dot_from_lengths, -8)
     assert "sign is reversed" in message(ch09.check_dot_from_lengths, 4)
     assert "squared lengths" in message(ch09.check_dot_from_lengths, 1)
-    assert "off by 1" in message(ch09.check_dot_from_lengths, -3)
+    assert "too large" in message(ch09.check_dot_from_lengths, -3)
 
 
 def test_cross_slips_are_named():

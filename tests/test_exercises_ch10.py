@@ -74,7 +74,7 @@ def test_cross_slips():
     assert "difference, not a sum" in message(ch10.check_cross_product, [14, 0, 5])
     assert "middle coordinate" in message(ch10.check_cross_product, [10, 8, -7])
     assert "vector of products" in message(ch10.check_cross_product, [2, -3, -8])
-    assert "coordinate 3 is off by 1" in message(ch10.check_cross_product, [10, -8, -6])
+    assert "coordinate 3 is too large" in message(ch10.check_cross_product, [10, -8, -6])
 
 
 def test_determinant_slips():

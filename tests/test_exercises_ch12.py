@@ -92,6 +92,6 @@ def test_projection_slips():
 
 def test_other_wrong_answers_say_how_far_and_never_the_answer():
     r = ch12.check_mirror_point([2, -3, 0])
-    assert not r.correct and "1 away" in r.message
+    assert not r.correct and "off" in r.message
     r = ch12.check_rotation_about_point([0, 2])
     assert not r.correct and "shape (2,)" in r.message

@@ -29,8 +29,8 @@ def test_center_of_mass():
     _assert_wrong(ch14.check_center_of_mass([1, 13, 4]), "dividing by the mass")
     _assert_wrong(ch14.check_center_of_mass([7 / 3, 1, 3]), "without their masses")   # the same slip, mass 3
     _assert_wrong(ch14.check_center_of_mass([0.25, 3.25, 6]), "WITH their signs")
-    _assert_wrong(ch14.check_center_of_mass([0.25, 3.25, 5]), "off by 1")
-    _assert_wrong(ch14.check_center_of_mass([0.25, 4.25, 4]), "mass is right", "off by 1 (distance)")
+    _assert_wrong(ch14.check_center_of_mass([0.25, 3.25, 5]), "too large")
+    _assert_wrong(ch14.check_center_of_mass([0.25, 4.25, 4]), "mass is right", "centre of mass is off")
     _assert_wrong(ch14.check_center_of_mass([0.25, 3.25]), "three numbers")
 
 
@@ -88,7 +88,7 @@ def test_perspective_by_lever():
     _assert_wrong(ch14.check_perspective_by_lever([-6, -5, -14]), "sign is wrong")    # (4 P - 8 E) / (-4)
     _assert_wrong(ch14.check_perspective_by_lever([1.2, 2.2, 0.4]), "from the origin")  # s = 10, c = 2
     _assert_wrong(ch14.check_perspective_by_lever([24, 36, 24, 12]), "mass-point", "right one")
-    _assert_wrong(ch14.check_perspective_by_lever([2, 4, 2]), "off by 1 (distance)", "not on the line EP")
+    _assert_wrong(ch14.check_perspective_by_lever([2, 4, 2]), "your point is off", "not on the line EP")
     _assert_wrong(ch14.check_perspective_by_lever([2, 3, 3]), "not on the plane")
 
 
@@ -100,7 +100,7 @@ def test_pseudodepth():
     _assert_wrong(ch14.check_pseudodepth([2, 4, 1.25]), "s/c")
     _assert_wrong(ch14.check_pseudodepth([8, 16, 5]), "depths s themselves")
     _assert_wrong(ch14.check_pseudodepth([-1, -3, -0.25]), "1 - s/c")
-    _assert_wrong(ch14.check_pseudodepth([0.5, 0.7, 0.2]), "pseudodepth of B is off by 0.05")
+    _assert_wrong(ch14.check_pseudodepth([0.5, 0.7, 0.2]), "pseudodepth of B is too small")
     _assert_wrong(ch14.check_pseudodepth([0.5, 0.75]), "three numbers")
 
 

@@ -66,7 +66,7 @@ def test_hand_decimals_are_accepted():
 
 
 def test_de_casteljau_messages():
-    assert "0.03 from the curve at t=0.25" in ch24.check_de_casteljau_point([3.0, 4.53]).message
+    assert "a little off from the curve at t=0.25" in ch24.check_de_casteljau_point([3.0, 4.53]).message
     assert "level 1" in ch24.check_de_casteljau_point([5, 8]).message
     assert "level 2" in ch24.check_de_casteljau_point([2, 3.5]).message
     assert "point at t = 0.75" in ch24.check_de_casteljau_point([9, 4.5]).message
@@ -79,7 +79,7 @@ def test_bernstein_messages():
     assert "reversed" in ch24.check_bernstein_weights(BERN[::-1]).message
     assert "list of 5 numbers" in ch24.check_bernstein_weights([0.4, 0.4, 0.15, 0.03]).message
     r = ch24.check_bernstein_weights([0.4096, 0.4096, 0.2, 0.0256, 0.0016])
-    assert "weight 2 (B_2^4) is off by 0.046" in r.message and "sum to one" in r.message
+    assert "weight 2 (B_2^4) is too large" in r.message and "sum to one" in r.message
 
 
 def test_end_condition_messages():
@@ -113,7 +113,7 @@ def test_c1_join_messages():
     assert "wrong side" in ch24.check_c1_join_unequal([[6, 3], [2, 5]]).message
     assert "length of Q1 - Q0" in ch24.check_c1_join_unequal([[6, 3], [12, 0]]).message
     r = ch24.check_c1_join_unequal([[6, 3], [10, 2]])
-    assert "1 from where it should be" in r.message and "10" not in r.message.replace("[10, 2]", "")
+    assert "Q1 is off from where it should be" in r.message and "10" not in r.message.replace("[10, 2]", "")
 
 
 def test_patch_messages():
@@ -122,7 +122,7 @@ def test_patch_messages():
     assert "plain average" in ch24.check_patch_point([2, 2, 16 / 9]).message
     assert "shape" in ch24.check_patch_point([1, 2]).message
     r = ch24.check_patch_point([1, 2, 2])
-    assert "0.19 from the patch point" in r.message
+    assert "off from the patch point" in r.message
 
 
 # -- Exercise 8 (§24.1), worked by hand: nodes 0, 1/2, 1 at t = 1/4 give level 1 (2, 2) and (2, 6),

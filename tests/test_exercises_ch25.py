@@ -88,7 +88,7 @@ def test_the_split_at_one_minus_t_is_what_the_slip_assumes():
 
 @pytest.mark.parametrize("answer,reason", [
     (0.3, "did not rescale"), (0.75, "LEFT piece's interval"), (0.82, "solve t = t0"),
-    (1.75, "parameter of the LEFT piece"), (0.6, "off by 0.1"),
+    (1.75, "parameter of the LEFT piece"), (0.6, "too large"),
 ])
 def test_piece_parameter_wrong_answers_say_why(answer, reason):
     r = ch25.check_piece_parameter(answer)
@@ -96,7 +96,7 @@ def test_piece_parameter_wrong_answers_say_why(answer, reason):
 
 
 @pytest.mark.parametrize("answer,reason", [
-    (2.0, "chord LINE"), (2 ** 0.5, "SMALLER"), (2 ** 0.5 + 5 ** 0.5, "added the distances"), (1.0, "off by 1.2"),
+    (2.0, "chord LINE"), (2 ** 0.5, "SMALLER"), (2 ** 0.5 + 5 ** 0.5, "added the distances"), (1.0, "much too small"),
 ])
 def test_flatness_wrong_answers_say_why(answer, reason):
     r = ch25.check_flatness(answer)
@@ -123,7 +123,7 @@ def test_box_pairs_wrong_answers_say_why(answer, reason):
 
 
 @pytest.mark.parametrize("answer,reason", [(5, "number of control points"), (4, "is the degree"),
-                                           (1, "curve itself crosses"), (2, "off by 1")])
+                                           (1, "curve itself crosses"), (2, "too small")])
 def test_crossing_wrong_answers_say_why(answer, reason):
     r = ch25.check_crossing_bound(answer)
     assert not r.correct and reason in r.message, r

@@ -68,7 +68,7 @@ def test_local_de_boor_slips():
     assert "level 1" in ch27.check_local_de_boor([5, 4]).message
     assert "P0..P2, the points of another span" in ch27.check_local_de_boor([4, 4]).message
     assert "P2..P4" in ch27.check_local_de_boor([5, 10]).message
-    assert "is 6 from C(2)" in ch27.check_local_de_boor([0, 0]).message
+    assert "is well off from C(2)" in ch27.check_local_de_boor([0, 0]).message
     assert "one point" in ch27.check_local_de_boor([1, 2, 3]).message
 
 
@@ -77,7 +77,7 @@ def test_basis_values_slips():
     assert "Bernstein" in ch27.check_basis_values([0.0625, 0.375, 0.5625]).message
     assert "reverse order" in ch27.check_basis_values(BASIS[::-1]).message
     assert "sum to 0.9" in ch27.check_basis_values([0.1, 0.5, 0.3]).message
-    assert "N_1,2 is off by 0.0083" in ch27.check_basis_values([0.05, 0.575, 0.375]).message
+    assert "N_1,2 is too large" in ch27.check_basis_values([0.05, 0.575, 0.375]).message
     assert "three basis functions" in ch27.check_basis_values([0.2, 0.8]).message
 
 
@@ -92,7 +92,7 @@ def test_continuity_orders_slips():
 def test_spline_control_points_slips():
     assert "values of the spline" in ch27.check_spline_control_points([0, 0.75, 0.5, -1]).message
     assert "second piece" in ch27.check_spline_control_points([0, 1, 1, -3]).message
-    assert "P2 is off by 1" in ch27.check_spline_control_points([0, 1, 2, -1]).message
+    assert "P2 is much too large" in ch27.check_spline_control_points([0, 1, 2, -1]).message
     assert "has 4 control points" in ch27.check_spline_control_points([0, 1, -1]).message
 
 
@@ -100,7 +100,7 @@ def test_surface_point_slips():
     assert "u knots along j" in ch27.check_surface_point([1, 1.5, 2.5]).message
     assert "row 1 alone" in ch27.check_surface_point([1, 1, 3]).message
     assert "row 2 alone" in ch27.check_surface_point([2, 1, 2.5]).message
-    assert "height is off by 0.25" in ch27.check_surface_point([1.5, 1, 3]).message
+    assert "height is too large" in ch27.check_surface_point([1.5, 1, 3]).message
     assert "one point" in ch27.check_surface_point([1.5, 1]).message
 
 
@@ -110,7 +110,7 @@ def test_nurbs_point_slips():
     assert "forgot to divide" in ch27.check_nurbs_point([5.125, 1.75]).message
     assert "sum of the weights" in ch27.check_nurbs_point([5.125 / 7, 1.75 / 7]).message
     assert "divided by the weights" in ch27.check_nurbs_point([2.9459, 1.7838]).message
-    assert "0.17 from C(1.5)" in ch27.check_nurbs_point([3, 1]).message
+    assert "off from C(1.5)" in ch27.check_nurbs_point([3, 1]).message
 
 
 def test_slips_are_all_recognised_as_wrong():

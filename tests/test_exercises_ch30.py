@@ -56,8 +56,11 @@ def test_box_mask_messages():
     assert "one factor of 1/2 too many" in ch30.check_box_spline_mask((np.array(BOX) / 2).tolist()).message
     r = ch30.check_box_spline_mask([[1, 2, 1, 0], [2, 4, 4, 1], [1, 4, 5, 2], [0, 1, 2, 1]])
     assert "yours total 31" in r.message
+    r = ch30.check_box_spline_mask([[1, 2, 1, 0], [2, 5, 4, 1], [1, 4, 5, 2], [0, 1, 2, 1.01]])
+    assert "should total 32" in r.message and "yours miss that total by a little" in r.message
+    assert "yours total 32" not in r.message
     r = ch30.check_box_spline_mask([[1, 2, 1, 0], [2, 4, 5, 1], [1, 4, 5, 2], [0, 1, 2, 1]])
-    assert "row 1, column 1" in r.message and "off by 1" in r.message
+    assert "row 1, column 1" in r.message and "too small" in r.message
     assert "four by four" in ch30.check_box_spline_mask([[1, 2], [2, 1]]).message
 
 
@@ -75,7 +78,7 @@ def test_quad_edge_messages():
     assert "two old faces" in ch30.check_quad_edge_point([1, 0, 0.5]).message   # (f1 + f2)/2 with f = (1, +-1, 0.5)
     assert "equal weights" in ch30.check_quad_edge_point([1, 0, 1 / 3]).message
     assert "triangle scheme's weights" in ch30.check_quad_edge_point([1.25, 0, 0.5]).message
-    assert "away from where it should be" in ch30.check_quad_edge_point([1, 0.1, 0.25]).message
+    assert "is off from where it should be" in ch30.check_quad_edge_point([1, 0.1, 0.25]).message
 
 
 def test_extraordinary_height_messages():
@@ -89,7 +92,7 @@ def test_extraordinary_height_messages():
     # Catmull-Clark: face points (8 + 2 + 6 + 2)/4 = 4.5, edge midpoints 5: (4.5 + 2*5 + 2*8)/5 = 6.1
     assert "Catmull-Clark" in ch30.check_extraordinary_height(6.1).message
     r = ch30.check_extraordinary_height(5.5)
-    assert "off by 0.12" in r.message and "n = 5" in r.message
+    assert "a little too small" in r.message and "n = 5" in r.message
     assert ch30.check_extraordinary_height(5.6251).correct
 
 
@@ -101,7 +104,7 @@ def test_tetrahedron_messages():
     assert "valence-6" in ch30.check_tetrahedron_vertex([9 / 16] * 3).message
     # plain centroids: 2/3 v + 1/9 sum = 2/3 - 1/9 = 5/9
     assert "plain centroids" in ch30.check_tetrahedron_vertex([5 / 9] * 3).message
-    assert "away" in ch30.check_tetrahedron_vertex([0.6, 0.6, 0.6]).message
+    assert "is off from where it should be" in ch30.check_tetrahedron_vertex([0.6, 0.6, 0.6]).message
 
 
 def test_triangle_edge_messages():

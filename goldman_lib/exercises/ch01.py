@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals, turtle
+from goldman_lib.exercises import far_off, guard_checkers, quote, clip
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, read_points, unanswered, wrong
 from goldman_lib.fixed_point import hausdorff_distance
 
@@ -105,11 +106,11 @@ def _program(answer, what: str) -> tuple[str | None, Result | None]:
         return None, unanswered(f"a turtle program (in quotes) for {what}")
     if not isinstance(answer, str):
         return None, wrong(f"the answer should be a turtle program in quotes, like \"REPEAT 3 [FORWARD 1 TURN 120]\"; "
-                           f"you gave {type(answer).__name__} {answer!r}.")
+                           f"you gave {type(answer).__name__} {quote(answer)}.")
     try:
         turtle.expand(answer)
     except ValueError as exc:
-        return None, wrong(f"the program does not run: {exc}.")
+        return None, wrong(f"the program does not run: {clip(exc, 200)}.")
     return answer, None
 
 
@@ -187,7 +188,7 @@ def check_final_state(answer) -> Result:
         if np.all(np.abs(got - np.array([sp, sw])) <= 1e-6):
             return wrong(f"that is the state of {name}: {why}.")
     if np.all(np.abs(got[1] - w) <= 1e-6):
-        return wrong(f"w is right, but P is {off_by(0, np.hypot(*(got[0] - p)))} in distance; follow P command by "
+        return wrong(f"w is right, but P is {far_off(got[0], p)}; follow P command by "
                      f"command: FORWARD and MOVE add d*w to P.")
     if np.all(np.abs(got[0] - p) <= 1e-6):
         return wrong("P is right, but w is not: TURN rotates w, RESIZE scales it, and FORWARD and MOVE leave it "
@@ -198,13 +199,11 @@ def check_final_state(answer) -> Result:
 
 def check_polygon_program(answer) -> Result:
     """Exercise 1.2: a program for the regular polygon with interior angles
-    :data:`POLYGON_INTERIOR` and side :data:`POLYGON_SIDE` (Goldman §1.3): the 9-gon, turning 40.
+    :data:`POLYGON_INTERIOR` and side :data:`POLYGON_SIDE` (Goldman §1.3), checked by running it and
+    comparing the drawing.
 
     Recognises turning by the interior angle instead of the exterior one, another number of
     sides (naming that polygon's interior angle), wrong side lengths, an open path.
-
-    >>> check_polygon_program("REPEAT 9 [FORWARD 1.5 TURN 140]")
-    Not yet: your turtle turns by the interior angle, 140 degrees; at each corner it turns by the exterior angle, 180 minus the interior angle.
     """
     program, problem = _program(answer, f"the regular polygon with interior angles {POLYGON_INTERIOR}")
     if problem is not None:
@@ -408,3 +407,7 @@ SLIPS = {
                               "REPEAT 8 [REPEAT 4 [FORWARD 1 TURN 90] TURN 40]",
                               "REPEAT 8 [REPEAT 4 [FORWARD 1 TURN 90] TURN 45"],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

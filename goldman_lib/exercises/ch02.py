@@ -19,6 +19,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals, turtle
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -65,13 +66,10 @@ PROBLEMS = {
 
 def check_loop_period(answer) -> Result:
     """Exercise 2.1: the period of ``REPEAT k [FORWARD 1 TURN 60 FORWARD 2 TURN 24]`` (Goldman §2.2,
-    looping lemma): the total turning is 84 = 360 * 7/30, so 30 passes.
+    looping lemma): the least number of passes whose total turning is a multiple of 360.
 
     answer: a whole number.  Recognises the period of one TURN alone, 360/T (not whole), a later
     multiple, the winding number given instead of the period.
-
-    >>> check_loop_period(4.2857)
-    Not yet: 4.286 is not a whole number of repetitions: 360/84 is not whole, so one full turn of the heading is not enough; find the least k with k * 84 a multiple of 360.
     """
     what = "the number of repetitions"
     k, problem = read_number(answer, what, "whole number")
@@ -80,6 +78,8 @@ def check_loop_period(answer) -> Result:
     loop = fractals.loop_analysis(LOOP_PASS)
     T = round(loop.total_turning)
     q, p = loop.period, loop.winding
+    if k > 1e6:
+        return wrong(f"{fmt(k)} passes is far too many; the looping lemma gives a period below 360.")
     if k != int(k) or k < 1:
         return wrong(f"{fmt(k)} is not a whole number of repetitions: 360/{T} is not whole, so one full turn of the "
                      f"heading is not enough; find the least k with k * {T} a multiple of 360.")
@@ -103,18 +103,14 @@ def check_loop_period(answer) -> Result:
 
 def check_star_angle(answer) -> Result:
     """Exercise 2.2: an angle ``a`` for which ``REPEAT 9 [FORWARD 1 TURN a]`` closes after exactly 9
-    passes and draws a star (Goldman §2.2).  Right answers: ``360 p / 9`` with ``gcd(p, 9) = 1`` and
-    ``p`` not 1 or 8 (80, 160, 200, 280), within 0.01 degrees.
-
-    >>> check_star_angle(160)
-    Correct: 9 * 160 = 1440 = 4 * 360 and no fewer passes close: the turtle draws the {9/4} star.
-    >>> check_star_angle(120)
-    Not yet: 120 degrees closes after only 3 passes (3 * 120 = 360): the 9 passes would draw the same triangle 3 times.
-    """
+    passes and draws a star (Goldman §2.2).  Every such angle is accepted, within 0.01 degrees."""
     what = "the TURN angle"
     a, problem = read_number(answer, what, "number of degrees")
     if problem is not None:
         return problem
+    if abs(a) > 1e6:
+        return wrong(f"{fmt(a)} degrees turns the turtle round thousands of times in one TURN; give an angle "
+                     f"between -360 and 360.")
     n = STAR_PASSES
     near = round(n * a / 360)
     if abs(a - 360 * near / n) <= 0.01:
@@ -173,20 +169,16 @@ def check_loop_centre(answer) -> Result:
     for value, why in slips:
         if np.all(np.abs(got - np.asarray(value)) <= 1e-4):
             return wrong(f"{why}.")
-    return wrong(f"your point is {off_by(0, np.hypot(*(got - c)))} (its distance from the centre). Hint: with points "
+    return wrong(f"your point is {far_off(got, c)} from the centre. Hint: with points "
                  f"as complex numbers, find d and T of one pass and solve c = d + e^(iT) c.")
 
 
 def check_gasket_scale(answer) -> Result:
     """Exercise 2.4: the scale ``r`` of the octagonal gasket's copies (Goldman §2.3, fractal gaskets):
-    along a side each copy reaches ``r + r cos 45`` from its corner, so ``2 r (1 + cos 45) = 1``.
-    Accepts 1e-4.
+    along a side of the big octagon, the copies at its two corners just touch.  Accepts 1e-4.
 
     Recognises the Sierpinski and hexagonal scales (1/2, 1/3), one copy's reach taken as the whole
     side, and the copy's full width used on both sides.
-
-    >>> check_gasket_scale(1 / 3)
-    Not yet: 1/3 is the scale of the hexagonal gasket (and the carpet); the octagon's copies reach further along a side, because of its 45 degree corners.
     """
     what = "the scale r"
     r, problem = read_number(answer, what)
@@ -218,14 +210,11 @@ def check_gasket_scale(answer) -> Result:
 
 
 def check_c_curve_commands(answer) -> Result:
-    """Exercise 2.5: the commands executed by level 6 of the C-curve (Goldman §2.3):
-    ``c(0) = 1``, ``c(n) = 5 + 2 c(n-1)``, so ``c(n) = 6 * 2**n - 5``.
+    """Exercise 2.5: the commands executed by level 6 of the C-curve (Goldman §2.3), from the
+    recurrence of the command count c(n) of level n.
 
     Recognises the FORWARDs alone, the other commands alone, a neighbouring level, and the
     recursion added instead of doubled.
-
-    >>> check_c_curve_commands(64)
-    Not yet: 64 counts the FORWARDs only (the segments drawn); every level also runs the TURNs and RESIZEs of its body.
     """
     n = C_CURVE_LEVEL
     what = "the number of commands"
@@ -390,3 +379,7 @@ SLIPS = {
                            0.3],
     "check_c_curve_commands": [64, 315, 187, 763, 31, 400],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -16,6 +16,7 @@ import math
 import numpy as np
 
 from goldman_lib import fractals
+from goldman_lib.exercises import guard_checkers, clip
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "EQUAL_COPIES", "EQUAL_SCALE", "TENT_PROGRAM", "CHORD_LEVEL", "BOUND_START",
@@ -64,14 +65,11 @@ def _near(value: float, target: float, tol: float) -> bool:
 
 
 def check_equal_scales_dimension(answer) -> Result:
-    """Exercise 3.1: the dimension of 8 copies at scale 1/4 (Goldman §3.2): ``log 8 / log 4 = 3/2``.
+    """Exercise 3.1: the dimension of 8 copies at scale 1/4 (Goldman §3.2), from N s^D = 1.
     Accepts 1e-3.
 
     Recognises the ratio upside down, the counts divided instead of their logarithms, the scale
     taken as 1/3 (the carpet's log 8 / log 3).
-
-    >>> check_equal_scales_dimension(8 / 4)
-    Not yet: that divides the counts (8 / 4); the dimension divides their logarithms: D = log N / log(1/s).
     """
     value, problem = read_number(answer, "the dimension")
     if problem is not None:
@@ -96,16 +94,11 @@ def check_equal_scales_dimension(answer) -> Result:
 
 
 def check_program_dimension(answer) -> Result:
-    """Exercise 3.2: the dimension of :data:`TENT_PROGRAM` (Goldman §3.2.2).  Its RECURSE calls run at
-    the scales 1/4, 1/2, 1/2, 1/4 (the RESIZE factors multiply); with ``x = 2^-D`` the equation
-    ``2 x + 2 x^2 = 1`` gives ``x = (sqrt 3 - 1)/2`` and ``D = log2(1 + sqrt 3) = 1.44998``.
-    Accepts 1e-4.
+    """Exercise 3.2: the dimension of :data:`TENT_PROGRAM` (Goldman §3.2.2), from the scales of its
+    RECURSE calls (the RESIZE factors multiply) and the equation sum s_i^D = 1.  Accepts 1e-4.
 
     Recognises all scales taken as a quarter, or as a half, the Koch curve's 4 copies at 1/3, the
     mean scale, and three copies counted instead of four.
-
-    >>> check_program_dimension(math.log(4) / math.log(3))
-    Not yet: that is the Koch curve's dimension, four copies at a third; here the RESIZE factors give each copy its own scale.
     """
     value, problem = read_number(answer, "the dimension")
     if problem is not None:
@@ -147,15 +140,11 @@ def _angle_mod(a: float) -> float:
 
 
 def check_c_curve_chord(answer) -> Result:
-    """Exercise 3.3: the direction of the chord from C(0) to C(2^-5) on the C-curve (Goldman §3.3).
-    The first half of the curve is a copy turned 45 degrees and scaled by 1/sqrt 2, so C(2^-j)
-    lies at angle 45 j: 225 = -135 degrees for j = 5.  Any angle equal mod 360 is right (0.01).
+    """Exercise 3.3: the direction of the chord from C(0) to C(2^-5) on the C-curve (Goldman §3.3), in
+    degrees.  Any angle equal mod 360 is right (0.01).
 
     Recognises one turn of 45 only, a neighbouring level, the turns taken clockwise, and the chord
     taken along the x-axis as for the Koch curve.
-
-    >>> check_c_curve_chord(45)
-    Not yet: 45 degrees is the chord to C(1/2) only; each halving of h nests one more copy, and each copy turns the chord by another 45 degrees.
     """
     what = "the chord's direction"
     value, problem = read_number(answer, what, "number of degrees")
@@ -188,8 +177,9 @@ def check_c_curve_chord(answer) -> Result:
     if same(r, 0):
         return wrong("the chord along the x-axis is what the Koch curve gives at h = 4^-j; the C-curve's first half is "
                      "turned 45 degrees, so its chords turn with every halving.")
-    return wrong(f"{what} is {off_by(min(abs(r - _angle_mod(expected)), 360 - abs(r - _angle_mod(expected))), 0)} "
-                 f"degrees (mod 360). Hint: C(2^-j) is the end of the first half of the first half of ... (j times), "
+    e = _angle_mod(expected)
+    return wrong(f"{what} is {off_by(e + (r - e + 180) % 360 - 180, e)} "
+                 f"(mod 360). Hint: C(2^-j) is the end of the first half of the first half of ... (j times), "
                  f"and each first half is turned 45 degrees.")
 
 
@@ -210,7 +200,7 @@ def check_c_curve_base_case(answer) -> Result:
     try:
         prog = c_curve.with_base(answer)
     except (TypeError, ValueError) as exc:
-        return wrong(f"that is not a base case: {exc}.")
+        return wrong(f"that is not a base case: {clip(exc, 200)}.")
     if not prog.polylines(0):
         return wrong("your base case draws nothing (only MOVE and TURN): then every level draws nothing either.")
     if prog.base == c_curve.base:
@@ -234,14 +224,11 @@ def check_c_curve_base_case(answer) -> Result:
 
 
 def check_attraction_bound(answer) -> Result:
-    """Exercise 3.5: the bound on the Hausdorff distance at level 6 between two C-curve drawings
-    0.3 apart at level 0 (Goldman §3.4): ``0.3 (1/sqrt 2)^6 = 0.3 / 8``.  Accepts 1e-5.
+    """Exercise 3.5: the bound on the Hausdorff distance at level 6 between two C-curve drawings 0.3
+    apart at level 0 (Goldman §3.4), from the contraction factor of the C-curve's maps.  Accepts 1e-5.
 
     Recognises the Koch curve's factor 1/3, a factor 1/2, a neighbouring level, the copies' distances
     added up (times 2 per level), and no shrinking at all.
-
-    >>> check_attraction_bound(0.3 / 3 ** 6)
-    Not yet: that shrinks by a third per level, the Koch curve's scale; the C-curve's copies are scaled by 1/sqrt 2.
     """
     what = "the bound"
     value, problem = read_number(answer, what)
@@ -284,3 +271,7 @@ SLIPS = {
                                 [("FORWARD", 2)], [("MOVE", 1)], [("FORWARD", 1)], [("JUMP", 1)]],
     "check_attraction_bound": [0.3 / 3 ** 6, 0.3 / 2 ** 6, 0.3 * 0.5 ** 2.5, 0.3 * 0.5 ** 3.5, 2.4, 0.3, 0.05],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -8,8 +8,6 @@ of the points written as rows) and names the misconception; it says how far off 
 what the answer is.  Hand-computed decimals are accepted to about 1e-4 (relative).  ``None`` or
 ``...`` means "not answered yet".
 
->>> check_rotate_about_point([-1, 1])
-Correct: the image of P = (4, 2) is (-1, 1).
 >>> print(check_rotate_about_point([-2, 4]).message)
 (-2, 4) is P rotated about the origin; rotate about Q: move Q to the origin (P - Q), rotate, then add Q back.
 """
@@ -19,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import affine
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_P", "ROTATE_Q", "ROTATE_ANGLE", "COMPOSE_ANGLE", "COMPOSE_SCALE",
@@ -226,7 +225,7 @@ def _check_point(answer, what, ask, right, slips) -> Result:
     for why, value in slips.items():
         if _close(got, value):
             return wrong(f"{fmt(got)} {why}")
-    return wrong(f"{what} is {off_by(0, np.linalg.norm(got - right))} (distance); check each step: "
+    return wrong(f"{what} is {far_off(got, right)}; check each step: "
                  f"P - Q, the rotation (x, y) -> (-y, x), then add Q back.")
 
 
@@ -253,8 +252,8 @@ def _check_matrix(answer, what, right, slips, hint) -> Result:
     k = bad[0]
     part = "the translation (the image of the origin)" if k == 2 else f"the image of the vector e{k + 1}"
     also = f" (also off: {', '.join('row ' + str(j + 1) for j in bad[1:])})" if len(bad) > 1 else ""
-    return wrong(f"the {_ROWS[k]} row of your matrix, {part}, is {off_by(0, np.linalg.norm(got[k] - right[k]))} "
-                 f"(distance){also}. Hint: {hint}.")
+    return wrong(f"the {_ROWS[k]} row of your matrix, {part}, is {far_off(got[k], right[k])}"
+                 f"{also}. Hint: {hint}.")
 
 
 # -- the checkers -------------------------------------------------------------------------------
@@ -273,9 +272,6 @@ def check_rotate_about_point(answer) -> Result:
 def check_composite_matrix(answer) -> Result:
     """Exercise 4.2: the matrix of "rotate by ``COMPOSE_ANGLE`` about the origin, then scale by
     ``COMPOSE_SCALE`` about ``COMPOSE_CENTER``" (Goldman §4.3, §4.5).  answer: 3x3 rows.
-
-    >>> check_composite_matrix([[0, 3, 0], [-3, 0, 0], [-2, 0, 1]])
-    Correct: the composite matrix is (0, 3, 0), (-3, 0, 0), (-2, 0, 1) (rows).
     """
     right, slips = _composite_answers()
     return _check_matrix(answer, "the composite matrix", right, slips,
@@ -286,9 +282,6 @@ def check_composite_matrix(answer) -> Result:
 def check_commuting_pairs(answer) -> Result:
     """Exercise 4.3: which pairs of :data:`COMMUTE_PAIRS` commute (Goldman §4.3, §4.4).  answer: a
     dict ``{label: bool}`` (also ``"yes"``/``"no"``).
-
-    >>> check_commuting_pairs({"a": False, "b": True, "c": False, "d": True, "e": False})
-    Correct: all 5 answers are right: maps commute when they fix the same point and their linear parts commute (or both are translations).
     """
     if is_unanswered(answer):
         return unanswered("a dict {label: True or False} for the pairs a to e")
@@ -314,7 +307,7 @@ def check_commuting_pairs(answer) -> Result:
         if isinstance(given, str):
             given = words.get(given.strip().lower(), given)
         if not isinstance(given, (bool, np.bool_)):
-            return wrong(f"the answer for pair ({label}) should be True or False; you gave {answer[label]!r}.")
+            return wrong(f"the answer for pair ({label}) should be True or False; you gave {quote(answer[label])}.")
         if bool(given) != affine.commute(M, N):
             return wrong(f"pair ({label}): {reasons[label]}")
     return correct(f"all {len(COMMUTE_PAIRS)} answers are right: maps commute when they fix the same point and "
@@ -344,16 +337,13 @@ def check_point_and_vector_image(answer) -> Result:
     k = 0 if not _close(got[0], right[0]) else 1
     name = ("the image of the point P: (x, y, 1) M, translation included" if k == 0
             else "the image of the vector v: (x, y, 0) M, no translation")
-    return wrong(f"{name}, is {off_by(0, np.linalg.norm(got[k] - right[k]))} (distance); multiply the row of "
+    return wrong(f"{name}, is {far_off(got[k], right[k])}; multiply the row of "
                  f"affine coordinates by M, column by column.")
 
 
 def check_point_and_vectors_map(answer) -> Result:
     """Exercise 4.5: the matrix of the map sending a point and two vectors to their images
     (Goldman §4.7.1): ``L = V^-1 W``, translation ``Q - P L``.  answer: 3x3 rows.
-
-    >>> check_point_and_vectors_map([[0, 2, 0], [1, -1, 0], [1, 2, 1]])
-    Correct: the matrix of the map is (0, 2, 0), (1, -1, 0), (1, 2, 1) (rows).
     """
     right, slips = _pv_answers()
     return _check_matrix(answer, "the matrix of the map", right, slips,
@@ -365,9 +355,6 @@ def check_directional_scaling(answer) -> Result:
     """Exercise 4.6: the matrix of the scaling by ``DIR_FACTOR`` along ``DIR_DIRECTION`` about
     ``DIR_CENTER`` (Goldman §4.7.2): ``L = I + (s - 1) w^T w`` with ``w`` the unit vector, translation
     ``C - C L``.  answer: 3x3 rows, decimals to about 1e-4.
-
-    >>> check_directional_scaling([[1.36, 0.48, 0], [0.48, 1.64, 0], [-0.36, -0.48, 1]])
-    Correct: the scaling matrix is (1.36, 0.48, 0), (0.48, 1.64, 0), (-0.36, -0.48, 1) (rows).
     """
     right, slips = _dir_answers()
     return _check_matrix(answer, "the scaling matrix", right, slips,
@@ -378,9 +365,6 @@ def check_directional_scaling(answer) -> Result:
 def check_three_points_map(answer) -> Result:
     """Exercise 4.7: the matrix of the affine map sending ``SRC_POINTS`` to ``DST_POINTS``
     (Goldman §4.7.3).  answer: 3x3 rows.
-
-    >>> check_three_points_map([[2, 2, 0], [-1, 1, 0], [-1, -3, 1]])
-    Correct: the matrix of the map is (2, 2, 0), (-1, 1, 0), (-1, -3, 1) (rows).
     """
     right, slips = _three_answers()
     return _check_matrix(answer, "the matrix of the map", right, slips,
@@ -402,3 +386,7 @@ SLIPS = {
     "check_directional_scaling": [v.tolist() for v in _dir_answers()[1].values()],
     "check_three_points_map": [v.tolist() for v in _three_answers()[1].values()],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -7,8 +7,6 @@ within a tolerance, so decimals to about four places (``0.86603``) are as good a
 Messages name the slip and how far off an answer is, never the expected numbers.  ``None`` or
 ``...`` means "not answered yet".
 
->>> check_parallelogram_vertex("A + C - B")
-Correct: A + C - B is the fourth vertex D of the parallelogram ABCD, for every A, B, C.
 >>> print(check_parallelogram_vertex("A + C").message)
 A + C does not run: line 1, column 3, at '+': A + C is neither a point nor a vector: its weights add up to 2.
 """
@@ -20,6 +18,7 @@ import math
 import numpy as np
 
 from goldman_lib import codo
+from goldman_lib.exercises import far_off, guard_checkers, quote, clip
 from goldman_lib.exercises import (Result, correct, fmt, is_unanswered, off_by, read_number, read_points,
                                    unanswered, wrong)
 
@@ -127,11 +126,11 @@ def _run(answer, ask) -> tuple[list | None, Result | None]:
         return None, unanswered(ask)
     if not isinstance(answer, str):
         return None, wrong(f"the answer should be a CODO program in quotes; you gave {type(answer).__name__} "
-                           f"{answer!r}.")
+                           f"{quote(answer)}.")
     try:
         return codo.run(answer), None
     except codo.CodoError as exc:
-        return None, wrong(f"the program does not run: {exc}.")
+        return None, wrong(f"the program does not run: {clip(exc, 200)}.")
 
 
 def _compare(polylines, expected: list[np.ndarray], name: str, hint: str) -> Result:
@@ -148,7 +147,7 @@ def _compare(polylines, expected: list[np.ndarray], name: str, hint: str) -> Res
         near = min(_gap(d, e) for e in expected)
         if near <= 0.05:
             return wrong(f"your segment from {_show(d[0])} to {_show(d[1])} is nearly a side of {name} but "
-                         f"{off_by(0, near)}: type more decimals (four places) or exact values such as sqrt(3)/2.")
+                         f"slightly off: type more decimals (four places) or exact values such as sqrt(3)/2.")
         if not any(_gap(d, e) <= SEGMENT_TOL for d in drawn for e in expected):
             return wrong(f"none of your {len(drawn)} segments is a side of {name} (e.g. {_show(d[0])} to {_show(d[1])}): "
                          f"{hint}.")
@@ -168,9 +167,6 @@ def check_hexagon_program(answer) -> Result:
     vertex at ``(1, 0)`` (Goldman §5.2.2).  answer: program text.  Compares the segments drawn,
     each end within :data:`SEGMENT_TOL`.
 
-    >>> check_hexagon_program("CONNECT point(1, 0), point(0.5, 0.86603), point(-0.5, 0.86603), point(-1, 0), "
-    ...                       "point(-0.5, -0.86603), point(0.5, -0.86603), point(1, 0)")
-    Correct: your drawing is the regular hexagon: its 6 sides and nothing else.
     >>> print(check_hexagon_program(codo.SAMPLES["regular pentagon"]).message)
     none of your 5 segments is a side of the regular hexagon (e.g. (1, 0) to (0.309, 0.9511)): the hexagon turns by 360/6 degrees at the centre from one vertex to the next.
     """
@@ -186,7 +182,7 @@ def _one_expression(answer, names, setup_values, ask):
     if is_unanswered(answer):
         return None, unanswered(ask)
     if not isinstance(answer, str):
-        return None, wrong(f"the answer should be a CODO expression in quotes; you gave {answer!r}.")
+        return None, wrong(f"the answer should be a CODO expression in quotes; you gave {quote(answer)}.")
     if "\n" in answer.strip() or ";" in answer:
         return None, wrong("write one expression (no statements, no ';'), e.g. \"A + ...\".")
     setup = "; ".join(f"{n} = point({x!r}, {y!r})" for n, (x, y) in zip(names, setup_values)) + "\n"
@@ -196,7 +192,7 @@ def _one_expression(answer, names, setup_values, ask):
         # the message for the learner's own line, numbered as they wrote it
         msg = str(exc).replace(f"line {exc.line},", "line 1,", 1).replace(
             f"column {exc.column},", f"column {exc.column - 4 if exc.line == 2 else exc.column},", 1)
-        return None, wrong(f"{' '.join(answer.split())} does not run: {msg.split('. Adding')[0]}.")
+        return None, wrong(f"{clip(' '.join(answer.split()))} does not run: {clip(msg.split('. Adding')[0], 200)}.")
 
 
 def check_parallelogram_vertex(answer) -> Result:
@@ -207,7 +203,7 @@ def check_parallelogram_vertex(answer) -> Result:
     >>> print(check_parallelogram_vertex("B + C - A").message)
     B + C - A is the vertex opposite A, which makes ABDC a parallelogram with B and C next to each other; in ABCD the vertex D is next to A and to C, opposite B.
     """
-    expr = " ".join(answer.split()) if isinstance(answer, str) else ""
+    expr = clip(" ".join(answer.split())) if isinstance(answer, str) else ""
     for k, (A, B, C) in enumerate(PARALLELOGRAM_TRIPLES):
         X, problem = _one_expression(answer, "ABC", (A, B, C), "a CODO expression (in quotes) in A, B and C")
         if problem is not None:
@@ -232,7 +228,7 @@ def check_parallelogram_vertex(answer) -> Result:
         if k == 1:
             return wrong(f"{expr} gives D for the first triple A, B, C = {_pts(PARALLELOGRAM_TRIPLES[0])} but not "
                          f"for A, B, C = {_pts((A, B, C))}: write it in terms of A, B and C, not numbers.")
-        return wrong(f"for A, B, C = {_pts((A, B, C))}, {expr} is {off_by(0, np.linalg.norm(got - want))} from D. "
+        return wrong(f"for A, B, C = {_pts((A, B, C))}, {expr} is {far_off(got, want)} from D. "
                      f"Hint: opposite sides of a parallelogram are the same vector, D - A = C - B.")
     return correct(f"{expr} is the fourth vertex D of the parallelogram ABCD, for every A, B, C.")
 
@@ -261,11 +257,11 @@ def check_expression_types(answer) -> Result:
         return wrong(f"the answer should be a dict like {{\"P + v\": \"point\", ...}}; you gave {type(answer).__name__}.")
     missing = [e for e in TYPE_EXPRESSIONS if e not in answer]
     if missing:
-        return wrong(f"give a type for every expression; {missing[0]!r} is missing.")
+        return wrong(f"give a type for every expression; {quote(missing[0])} is missing.")
     for e in TYPE_EXPRESSIONS:
         given = str(answer[e]).strip().lower()
         if given not in ("point", "vector", "illegal"):
-            return wrong(f"the type of {e!r} should be 'point', 'vector' or 'illegal'; you gave {answer[e]!r}.")
+            return wrong(f"the type of {quote(e)} should be 'point', 'vector' or 'illegal'; you gave {quote(answer[e])}.")
         kind, why = _type_of(e)
         if given != kind:
             if kind == "illegal":
@@ -287,10 +283,6 @@ def _image_square() -> np.ndarray:
 def check_image_program(answer) -> Result:
     """Exercise 4: a CODO program that draws the image of :data:`UNIT_SQUARE` under the affine map
     sending :data:`IMAGE_SRC` to :data:`IMAGE_DST` (Goldman §5.2, §4.7.3).  answer: program text.
-
-    >>> check_image_program('''M = affine(point(0,0), point(1,0), point(0,1), point(1,0), point(3,1), point(2,2))
-    ... DRAW M(polygon(point(0,0), point(1,0), point(1,1), point(0,1)))''')
-    Correct: your drawing is the image of the square: its 4 sides and nothing else.
     """
     lines, problem = _run(answer, "a CODO program (in quotes) that draws the image of the square")
     if problem is not None:
@@ -320,8 +312,6 @@ def check_sheared_turn(answer) -> Result:
     """Exercise 5: the turtle's TURN at ``(1, 0)`` for the sheared square (Goldman §5.1: the
     turtle cannot draw the affine image of its drawing by changing only its initial state).
 
-    >>> check_sheared_turn(45)
-    Correct: the turtle turns by 45 degrees at (1, 0). The program itself must change, not only the turtle's initial state: affine maps do not preserve angles.
     >>> print(check_sheared_turn(90).message)
     90 degrees is the square's turn; the shear changes the angles, which is exactly why the turtle program has to change: find the direction of the side from (1, 0) to (2, 1).
     """
@@ -348,7 +338,7 @@ def check_sheared_turn(answer) -> Result:
         return wrong("a negative TURN turns clockwise; the parallelogram is drawn counterclockwise, like the square.")
     if abs(a - math.radians(right)) <= 1e-3:
         return wrong(f"{fmt(a)} looks like radians; TURN takes degrees.")
-    return wrong(f"{what} is {off_by(r if r <= 180 else r - 360, right)} degrees. Hint: the turtle arrives heading "
+    return wrong(f"{what} is {off_by(r if r <= 180 else r - 360, right)}. Hint: the turtle arrives heading "
                  f"along (1, 0); it must turn to the direction of the side from (1, 0) to (2, 1).")
 
 
@@ -366,9 +356,6 @@ def check_turtle_through_dots(answer) -> Result:
     polyline :data:`TURTLE_DOTS` from the first dot, heading ``(1, 0)`` (Goldman §5.1: the turtle
     needs arc tangents and square roots to connect dots).  Turns are compared modulo 360 to 0.01
     degree, distances to 1e-3.
-
-    >>> print(check_turtle_through_dots([36.87, 5, 126.87, 4]).message)
-    turn 1 is the arc tangent of 3/4 without its quadrant: the segment goes left (x decreases), so its heading is between 90 and 180 degrees; use atan2(dy, dx).
     """
     what = "the four numbers [turn 1, forward 1, turn 2, forward 2]"
     got, problem = read_points(answer, "your commands", ask=what)
@@ -410,7 +397,7 @@ def check_turtle_through_dots(answer) -> Result:
                          "atan2(dy, dx).")
         if abs(got[0] - math.radians(right[0])) <= 1e-3:
             return wrong("turn 1 looks like radians; TURN takes degrees.")
-        return wrong(f"turn 1 is {off_by(0, min((got[0] - right[0]) % 360, (right[0] - got[0]) % 360))} degrees: the "
+        return wrong(f"turn 1 is {off_by(right[0] + (got[0] - right[0] + 180) % 360 - 180, right[0])}: the "
                      f"turtle heads along (1, 0) and must turn to the direction of the first segment.")
     if angle_ok(got[2], headings[1]):
         return wrong("turn 2 is the heading of the second segment; TURN is relative: subtract the heading the turtle "
@@ -418,7 +405,7 @@ def check_turtle_through_dots(answer) -> Result:
     if angle_ok(got[2], -right[2]):
         return wrong("turn 2 goes the wrong way: a positive TURN is counterclockwise; the polyline bends to the left "
                      "at the second dot.")
-    return wrong(f"turn 2 is {off_by(0, min((got[2] - right[2]) % 360, (right[2] - got[2]) % 360))} degrees: it is "
+    return wrong(f"turn 2 is {off_by(right[2] + (got[2] - right[2] + 180) % 360 - 180, right[2])}: it is "
                  f"the change of heading at the second dot, from the first segment's direction to the second's.")
 
 
@@ -447,3 +434,7 @@ SLIPS = {
     "check_turtle_through_dots": [[36.87, 5, 126.87, 4], [-36.87, 5, 126.87, 4], [143.13, 7, 126.87, 4],
                                   [143.13, 5, 270, 4], [143.13, 5, -126.87, 4], [143.13, 25, 126.87, 4]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

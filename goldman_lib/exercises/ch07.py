@@ -19,6 +19,7 @@ import math
 import numpy as np
 
 from goldman_lib import fixed_point as fp
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, check_number, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -104,12 +105,8 @@ def _limit_iterates():
 
 
 def check_fixed_point_limit(answer) -> Result:
-    """Check the limit of x -> sqrt(6 + x) from 0: L = sqrt(6 + L), L^2 - L - 6 = 0, L = 3 (the
-    root -2 is not a fixed point: a square root is never negative) (Goldman §7.2).
-
-    >>> check_fixed_point_limit(-2)
-    Not yet: -2 solves L^2 = 6 + L, but it is not a fixed point of F: sqrt(6 - 2) is 2, not -2 (a square root is never negative). Take the other root.
-    """
+    """Check the limit of x -> sqrt(6 + x) from 0, a fixed point L = sqrt(6 + L) (Goldman §7.2);
+    recognises the root of the quadratic that is not a fixed point (a square root is never negative)."""
     value, problem = read_number(answer, "the limit L")
     if problem is not None:
         return problem
@@ -137,13 +134,10 @@ def _df_newton(x):
 
 
 def check_newton_step(answer) -> Result:
-    """Check x2 of Newton's method on ``x^3 - 10`` from 2: x1 = 13/6, x2 = 3277/1521 (Goldman §7.3.1).
+    """Check x2 of Newton's method on ``x^3 - 10`` from 2 (Goldman §7.3.1).
 
     Recognises one step (x1), the limit (the cube root of 10), the sign slip ``x + f/f'`` and the
     derivative without its factor 3.
-
-    >>> check_newton_step(1.6)
-    Not yet: that is what you get dividing f(x_n) by x_n squared: the derivative of x cubed is three times x squared.
     """
     value, problem = read_number(answer, "x2")
     if problem is not None:
@@ -209,14 +203,11 @@ def _read_vector(answer, what: str, n: int):
 
 
 def check_gauss_seidel_sweep(answer) -> Result:
-    """Check one Gauss-Seidel sweep from 0 on ``SEIDEL_A x = SEIDEL_B``: x = 8/4 = 2, then
-    y = (7 - 2)/5 = 1, then z = (8 - 2*2 - 1)/6 = 1/2 (Goldman §7.3.2).
+    """Check one Gauss-Seidel sweep from 0 on ``SEIDEL_A x = SEIDEL_B``: x first, then y with the new
+    x, then z with the new x and y (Goldman §7.3.2).
 
     Recognises the Jacobi step (no new value used), the new x used but not the new y, a sweep
     from the last unknown to the first, and the exact solution.
-
-    >>> check_gauss_seidel_sweep([2, 1.4, 4 / 3])
-    Not yet: that is the Jacobi step: every component computed from the old (0, 0, 0). Gauss-Seidel uses each new value as soon as it is computed: the new x in the equation for y, the new x and y in the one for z.
     """
     what = "the new [x, y, z]"
     got, err = _read_vector(answer, what, 3)
@@ -247,13 +238,9 @@ def check_gauss_seidel_sweep(answer) -> Result:
 
 
 def check_jacobi_sweeps(answer) -> Result:
-    """Check two Jacobi sweeps on ``JACOBI_A x = JACOBI_B`` from (1, 1): (7/5, 5/4), then
-    ((9 - 2*5/4)/5, (6 - 7/5)/4) = (1.3, 1.15) (Goldman §7.3.2).
+    """Check two Jacobi sweeps on ``JACOBI_A x = JACOBI_B`` from (1, 1) (Goldman §7.3.2).
 
     Recognises the Gauss-Seidel iterate, one sweep only, and the exact solution.
-
-    >>> check_jacobi_sweeps([1.34, 1.165])
-    Not yet: that is the Gauss-Seidel iterate: you used the new x at once in the equation for y. Jacobi computes both components of a sweep from the previous iterate only.
     """
     what = "[x, y] after two sweeps"
     got, err = _read_vector(answer, what, 2)
@@ -279,13 +266,10 @@ def check_jacobi_sweeps(answer) -> Result:
 # -- §7.3.3 ----------------------------------------------------------------------------------------
 
 def check_hausdorff(answer) -> Result:
-    """Check h(A, B) for ``HAUSDORFF_A``, ``HAUSDORFF_B``: A -> B is 5 ((4, 0) to (0, 3)), B -> A is
-    10 ((12, 6) to (4, 0)), so h = 10 (Goldman §7.3.3).
+    """Check the Hausdorff distance h(A, B) for ``HAUSDORFF_A``, ``HAUSDORFF_B``: the larger of the two
+    one-sided distances (Goldman §7.3.3).
 
     Recognises one direction only, the closest pair, and the farthest pair.
-
-    >>> check_hausdorff(5)
-    Not yet: that is only the distance from A to B (how far a point of A is from its nearest point of B); the Hausdorff distance is the larger of the two directions: measure from B to A too.
     """
     value, problem = read_number(answer, "the Hausdorff distance")
     if problem is not None:
@@ -309,14 +293,11 @@ def check_hausdorff(answer) -> Result:
 
 
 def check_contraction_factor(answer) -> Result:
-    """Check the contraction factor of ``STRETCH_L``: L^T L = [[0.09, 0.12], [0.12, 0.41]] has
-    eigenvalues 0.45 and 0.05, so s = sqrt(0.45) = 0.67082 (Goldman §7.3.3).
+    """Check the contraction factor of ``STRETCH_L``: the square root of the largest eigenvalue of
+    L^T L (Goldman §7.3.3).
 
     Recognises the eigenvalue (the diagonal of a triangular L), the area factor (determinant),
     the Frobenius norm, the largest column length and a forgotten square root.
-
-    >>> check_contraction_factor(0.45)
-    Not yet: 0.45 is the largest eigenvalue of L^T L, the square of the stretch; take its square root.
     """
     value, problem = read_number(answer, "the contraction factor")
     if problem is not None:
@@ -356,13 +337,11 @@ def _levels(s: float, h0: float, tol: float) -> int:
 
 
 def check_levels_needed(answer) -> Result:
-    """Check the smallest n with 0.75^n * 4 <= 0.01: n >= ln(0.0025)/ln(0.75) = 20.8, so 21 (Goldman §7.3.3).
+    """Check the smallest n with s^n h(A0, A) <= ``LEVEL_TOL``, s the largest factor of the maps
+    (Goldman §7.3.3).
 
     Recognises the smallest or average factor used instead of the largest, the distance h(A0, A)
     forgotten, and a count one too small or too large.
-
-    >>> check_levels_needed(9)
-    Not yet: 9 levels is what the smallest factor, 0.5, would need; the theorem's s is the largest factor of the maps (the slowest map sets the pace).
     """
     value, problem = read_number(answer, "n")
     if problem is not None:
@@ -371,6 +350,8 @@ def check_levels_needed(answer) -> Result:
         return wrong(f"n counts levels, a whole number; you gave {fmt(value)}. Round up the n that solves "
                      f"s^n h(A0, A) = {fmt(LEVEL_TOL)}.")
     v = int(value)
+    if v < 0:
+        return wrong(f"n counts levels, a whole number 0 or more; you gave {fmt(value)}.")
     s, h0 = max(LEVEL_FACTORS), LEVEL_START_DISTANCE
     n = _levels(s, h0, LEVEL_TOL)
     if v == n:
@@ -509,3 +490,7 @@ SLIPS = {
     "check_contraction_factor": [0.45, 0.5, 0.15, math.sqrt(0.5), math.hypot(0.4, 0.5)],
     "check_levels_needed": [9, 13, 17, 20, 22],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

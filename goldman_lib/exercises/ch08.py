@@ -23,6 +23,7 @@ import numpy as np
 
 from goldman_lib import affine, fractals
 from goldman_lib import conformal_ifs as cf
+from goldman_lib.exercises import far_off, guard_checkers, quote, clip
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
 from goldman_lib.exercises.projects import Case, check_project, describe
 from goldman_lib.turtle import Turtle
@@ -123,13 +124,13 @@ def parse_body(text: str) -> list[tuple[str, float | None]]:
             i += 1
             continue
         if word not in ("FORWARD", "MOVE", "TURN", "RESIZE"):
-            raise ValueError(f"{tokens[i]!r} is not a command (FORWARD, MOVE, TURN, RESIZE, RECURSE)")
+            raise ValueError(f"{quote(tokens[i])} is not a command (FORWARD, MOVE, TURN, RESIZE, RECURSE)")
         if i + 1 >= len(tokens):
             raise ValueError(f"{word} needs a number after it")
         try:
             value = number(tokens[i + 1])
         except (ValueError, ZeroDivisionError):
-            raise ValueError(f"{tokens[i + 1]!r} after {word} is not a number") from None
+            raise ValueError(f"{quote(tokens[i + 1])} after {word} is not a number") from None
         out.append((word, value))
         i += 2
     return out
@@ -171,14 +172,11 @@ def _program(body, base=(("FORWARD", 1.0),)):
 # -- §8.2 ----------------------------------------------------------------------------------------------
 
 def check_moved_point(answer) -> Result:
-    """Check where (1/2, 1/2) is drawn from the state P = (-1, 2), w = (1, 1): the map sends (x, y)
-    to P + x w + y w_perp = (-1 + x - y, 2 + x + y), so (-1, 3) (Goldman §8.2).
+    """Check where (1/2, 1/2) is drawn from the turtle state P = (-1, 2), w = (1, 1): the map sends
+    (x, y) to P + x w + y w_perp (Goldman §8.2).
 
     Recognises a translation only, a clockwise turn, a turn without the scaling, a turn and scaling
     without the translation.
-
-    >>> check_moved_point([0, 2])
-    Not yet: you turned the drawing clockwise: the heading turns from (1, 0) to w = (1, 1), counterclockwise, so (0, 1) goes to the perpendicular (-1, 1), not (1, -1).
     """
     what = "the moved point"
     got, err = _read_point(answer, what)
@@ -204,7 +202,7 @@ def check_moved_point(answer) -> Result:
     unscaled = affine.apply(q[None], affine.rotation(45) @ affine.translation(P))[0]
     if np.linalg.norm(got - unscaled) <= tol:
         return wrong("you turned by 45 degrees but kept the size: the step |w| = sqrt(2) scales the whole drawing.")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from where "
+    return wrong(f"your point is {far_off(got, expected)} from where "
                  f"it is drawn; send (0, 0) to P and (1, 0) to P + w, and (0, 1) to P plus w turned 90 degrees "
                  f"counterclockwise.")
 
@@ -212,14 +210,11 @@ def check_moved_point(answer) -> Result:
 # -- §8.3 ----------------------------------------------------------------------------------------------
 
 def check_level_end(answer) -> Result:
-    """Check where level 1 of ``LEVEL_BODY`` ends: RESIZE 1/2, a call moves by (1/2, 0), TURN 90, a
-    call moves by (0, 1/2): P = (1/2, 1/2), while level 0 (FORWARD 1) ends at (1, 0) (Goldman §8.3).
+    """Check where level 1 of ``LEVEL_BODY`` ends: each call moves the turtle as FORWARD 1 does, with
+    the step and heading in force at the call (Goldman §8.3).
 
     Recognises the base case's end, calls that do not move the turtle, a forgotten RESIZE and a
     clockwise turn.
-
-    >>> check_level_end([1, 0])
-    Not yet: (1, 0) is where level 0, FORWARD 1, ends; level 1 runs the body, and each of its calls moves the turtle as FORWARD 1 does, with the step and heading in force at the call.
     """
     what = "the end of level 1"
     got, err = _read_point(answer, what)
@@ -247,7 +242,7 @@ def check_level_end(answer) -> Result:
     _, (cw, _) = call_states(body, turn_sign=-1.0)
     if np.linalg.norm(got - cw) <= tol:
         return wrong("you turned clockwise: TURN 90 turns the heading counterclockwise, from (1, 0) towards (0, 1).")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from the end "
+    return wrong(f"your point is {far_off(got, expected)} from the end "
                  f"of level 1; follow the body command by command, each RECURSE acting like FORWARD 1.")
 
 
@@ -258,14 +253,11 @@ def _ron_expected() -> np.ndarray:
 
 
 def check_ron_map(answer) -> Result:
-    """Check the map of the third call of ``RON_BODY``: the turtle is at P = (1/2, 1/4) with
-    w = (1/4, -1/4), so T3 = [[1/4, -1/4, 0], [1/4, 1/4, 0], [1/2, 1/4, 1]] (Goldman §8.4).
+    """Check the matrix of the map of the third call of ``RON_BODY``, in the row convention: the
+    turtle's direction w, w turned 90 degrees and its position P as rows (Goldman §8.4).
 
     Recognises the transposed (column-vector) matrix, the map of another call, calls that do not
     move the turtle, clockwise turns, and a second row that reflects.
-
-    >>> check_ron_map([[0.25, 0.25, 0.5], [-0.25, 0.25, 0.25], [0, 0, 1]])
-    Not yet: that is the transposed matrix, for column vectors; here points are rows, Q = [x, y, 1] T, so the translation is the last row and the first row is the image of (1, 0), the direction w.
     """
     what = f"T{RON_CALL}"
     got, err = read_points(answer, "your matrix", ask=f"{what} as a 3x3 matrix [[.., .., 0], [.., .., 0], [.., .., 1]]")
@@ -305,9 +297,9 @@ def check_ron_map(answer) -> Result:
     bad_w = np.linalg.norm(got[0, :2] - expected[0, :2]) > tol
     parts = []
     if bad_p:
-        parts.append(f"the point P (last row) is {off_by(np.linalg.norm(got[2, :2] - expected[2, :2]), 0.0)}")
+        parts.append(f"the point P (last row) is {far_off(got[2, :2], expected[2, :2])}")
     if bad_w:
-        parts.append(f"the direction w (first row) is {off_by(np.linalg.norm(got[0, :2] - expected[0, :2]), 0.0)}")
+        parts.append(f"the direction w (first row) is {far_off(got[0, :2], expected[0, :2])}")
     if not parts:
         parts.append("the second row should be w turned 90 degrees counterclockwise")
     return wrong("; ".join(parts) + f". Follow the body to call {RON_CALL}, each RECURSE acting like FORWARD 1.")
@@ -323,8 +315,6 @@ def check_tao_body(answer) -> Result:
     """Check a body whose IFS (base case FORWARD 1 MOVE -1) is ``TAO_MAPS`` (Goldman §8.4): any body
     whose calls are made at the two maps' states and that leaves the turtle where it started.
 
-    >>> check_tao_body("RESIZE 1/2 RECURSE RESIZE 2 MOVE 1 TURN 90 RESIZE 1/2 RECURSE RESIZE 2 TURN -90 MOVE -1")
-    Correct: Ron's algorithm reads T1 and T2 back from your body, and it leaves the turtle where it started, like the base case.
     >>> check_tao_body("RESIZE 1/2 RECURSE RESIZE 2 MOVE 1 TURN 90 RESIZE 1/2 RECURSE RESIZE 2 MOVE -1")
     Not yet: your body does not bring the turtle back: it ends at P = (1, -1), heading 90 degrees, step 1, but the base case ends where it started, at P = (0, 0), heading 0 degrees, step 1. Undo every TURN, MOVE and RESIZE after the last RECURSE, in reverse order (a heading not restored is the usual slip).
     """
@@ -336,7 +326,7 @@ def check_tao_body(answer) -> Result:
         body = parse_body(answer)
         program = _program(body, TAO_BASE)
     except (TypeError, ValueError) as exc:
-        return wrong(f"the body does not read: {exc}.")
+        return wrong(f"the body does not read: {clip(exc, 200)}.")
     maps, (P, w) = call_states(body, base_moves=0.0)
     home = cf.state_map((0, 0), (1, 0))
     if not np.allclose(cf.state_map(P, w), home, atol=1e-9):
@@ -376,15 +366,11 @@ def check_tao_body(answer) -> Result:
 # -- §8.5 ----------------------------------------------------------------------------------------------
 
 def check_bump_from_ifs(answer) -> Result:
-    """Check the bump read back from ``BUMP_MAPS`` (Goldman §8.5): T_i sends (0, 0) to its last row P and
-    (1, 0) to P + w (first row); the segments chain (0, 0) -> (0.3, 0.4) -> (0.6, 0) -> (1, 0), T2 from
-    its end (0.6, 0) back to (0.3, 0.4).
+    """Check the bump read back from ``BUMP_MAPS`` (Goldman §8.5): T_i sends (0, 0) to its last row P
+    and (1, 0) to P + w (first row), so each map is one segment of the bump.
 
     Recognises the last rows taken as the segments' starts (missing the backward segment), the first
     rows taken as points, a missing end point and the bump in reverse.
-
-    >>> check_bump_from_ifs([[0, 0], [0.3, 0.4], [0.6, 0]])
-    Not yet: a bump with 3 maps has 4 points, one more than segments: from (0, 0) through the segments' joints to (1, 0).
     """
     got, err = read_points(answer, "your bump", ask="the bump as a list of points [[x0, y0], ...]")
     if err is not None:
@@ -415,7 +401,7 @@ def check_bump_from_ifs(answer) -> Result:
                      "last row plus the first.")
     bad = [k for k in range(n) if np.linalg.norm(got[k] - expected[k]) > tol]
     k = bad[0]
-    return wrong(f"point {k} of your bump is {fmt(np.linalg.norm(got[k] - expected[k]), 2)} away from where it "
+    return wrong(f"point {k} of your bump is {far_off(got[k], expected[k])} from where it "
                  f"should be ({len(bad)} of {n} points are off). Each map sends (0, 0) to its last row P and "
                  f"(1, 0) to P + w; one of them runs backwards.")
 
@@ -558,3 +544,7 @@ SLIPS = {
         [[0, 0], [0.3, 0.4], [-0.3, 0.4], [0.4, 0]],
     ],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -9,8 +9,6 @@ from coordinates) are chapter 10's.
 
 >>> print(PROBLEMS["check_dot_from_lengths"])  # doctest: +ELLIPSIS
 Two vectors have lengths |u| = 4 and |v| = 5, and |u - v| = 7. ... Goldman §9.4).
->>> check_dot_from_lengths(-4)
-Correct: u · v = (|u|² + |v|² - |u - v|²) / 2 = (16 + 25 - 49) / 2 = -4: the angle between u and v is obtuse.
 """
 
 from __future__ import annotations
@@ -20,6 +18,7 @@ import math
 import numpy as np
 
 from goldman_lib import vectors
+from goldman_lib.exercises import guard_checkers, quote
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, is_unanswered, off_by,
                                    read_number, read_points, unanswered, wrong)
 
@@ -117,8 +116,6 @@ def check_expression_types(answer) -> Result:
     Recognises: an affine combination with a negative weight (2P - Q) or a fraction ((P + Q)/2)
     called undefined; P + Q called a point; a difference (weights summing to 0) called a point.
 
-    >>> check_expression_types(["vector", "undefined", "point", "point", "vector", "point"])
-    Correct: weights summing to 1 give a point, to 0 a vector, to anything else nothing that does not depend on the origin.
     >>> check_expression_types(["vector", "undefined", "undefined", "point", "vector", "point"])  # doctest: +ELLIPSIS
     Not yet: 1 of the 6 is wrong. 2P - Q is not undefined: its weights add up to 1, ...
     """
@@ -129,12 +126,12 @@ def check_expression_types(answer) -> Result:
     if isinstance(answer, str):
         answer = [a.strip() for a in answer.replace(";", ",").split(",")]
     if not isinstance(answer, (list, tuple)) or len(answer) != n or not all(isinstance(a, str) for a in answer):
-        return wrong(f"the answer should be {what}, one per expression (a) to ({chr(96 + n)}); you gave {answer!r}.")
+        return wrong(f"the answer should be {what}, one per expression (a) to ({chr(96 + n)}); you gave {quote(answer)}.")
     said = []
     for a in answer:
         key = _ALIASES.get(a.strip().lower())
         if key is None:
-            return wrong(f"{a!r} is not one of point, vector, undefined; give one of these words per expression.")
+            return wrong(f"{quote(a)} is not one of point, vector, undefined; give one of these words per expression.")
         said.append(key)
     expected = _expected_kinds()
     bad = [k for k in range(n) if said[k] != expected[k]]
@@ -159,9 +156,6 @@ def check_affine_point(answer) -> Result:
 
     Recognises: A's weight taken as 1 or as 0 (weights not summing to 1), the centroid (equal
     weights), and the weights given to the wrong points.
-
-    >>> check_affine_point([1.3, 0.1])
-    Correct: A's weight is 1 - 0.3 - 0.45 = 0.25, and 0.25 A + 0.3 B + 0.45 C = (1.3, 0.1), the same point whatever the origin.
     """
     what = "the affine combination"
     got, err = read_points(answer, what, ask=what + " as [x, y]")
@@ -380,3 +374,7 @@ SLIPS = {
     "check_orientation": [[5, 5, 10, 0], [-5, -5, -10, 0], [-5, 5, -5, 0], [-5, 5, -10, 5]],
     "check_associator": [[0, 0, 0], [-2, -3, -7], [-3, -2, -8], [3, 2, 8]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

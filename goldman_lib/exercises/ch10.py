@@ -9,8 +9,6 @@ product from an angle, the orientation rules of the determinant) are chapter 9's
 
 >>> print(PROBLEMS["check_dot_product"])
 Compute u · v for u = (2, -1, 3) and v = (4, 5, -2) in rectangular coordinates (Goldman §10.3).
->>> check_dot_product(-3)
-Correct: u · v = 2·4 + (-1)·5 + 3·(-2) = -3: negative, so the angle between u and v is obtuse.
 """
 
 from __future__ import annotations
@@ -20,6 +18,7 @@ import math
 import numpy as np
 
 from goldman_lib import vectors
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, off_by, read_number, read_points, wrong)
 
 __all__ = ["PROBLEMS", "SLIPS", "DOT_U", "DOT_V", "CROSS_U", "CROSS_V", "DET_ROWS", "ANGLE_U", "ANGLE_V",
@@ -215,7 +214,7 @@ def check_angle(answer) -> Result:
         return wrong("you divided by |u|² |v|², the squared lengths: |u| = sqrt(u · u), so take the square roots.")
     if abs(value - (180 - expected)) <= 0.01:
         return wrong("that is the supplementary angle: u · v is positive here, so θ is acute.")
-    return wrong(f"the angle is {off_by(value, expected)} degrees. Hint: cos θ = u · v / (|u| |v|).")
+    return wrong(f"the angle is {off_by(value, expected)}. Hint: cos θ = u · v / (|u| |v|).")
 
 
 # -- exercise 5 ---------------------------------------------------------------------------------
@@ -303,3 +302,7 @@ SLIPS = {
     "check_parallelogram_area": [3.3541, 45, 3, 11, 10.8167],
     "check_coplanar_k": [24, 0, -4],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -6,8 +6,6 @@ checker and the statement never disagree; ``PROBLEMS`` holds the statements by c
 
 >>> print(PROBLEMS["check_law_of_cosines"])
 A triangle has sides a = 5 and b = 8 with the angle γ = 60° between them. Give the third side c (Goldman §11.2).
->>> check_law_of_cosines(7)
-Correct: c² = a² + b² - 2ab cos γ gives the third side c = 7.
 """
 
 from __future__ import annotations
@@ -16,6 +14,7 @@ import numpy as np
 
 from goldman_lib import vector_geometry as vg
 from goldman_lib import vectors
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_number, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "TRIANGLE", "PLANE_POINT", "PLANE_NORMAL", "QUERY_POINT", "LINE1", "LINE2",
@@ -267,7 +266,7 @@ def check_three_planes(answer) -> Result:
         return wrong(f"your point lies on {['no', 'one', 'two'][len(PLANES) - len(misses)]} of the planes but not on the "
                      f"{' and '.join(misses)} ({', '.join(_plane_text(*PLANES[names.index(m)]) for m in misses)}); "
                      f"it must satisfy all three equations.")
-    return wrong(f"your point is {fmt(float(np.linalg.norm(got - expected)), 2)} from the common point and lies on "
+    return wrong(f"your point is {far_off(got, expected)} from the common point and lies on "
                  "none of the planes. Check the cross products N2 × N3, N3 × N1, N1 × N2 and det(N1, N2, N3).")
 
 
@@ -298,7 +297,7 @@ def check_slerp(answer) -> Result:
                      "closer to v0.")
     length = float(np.linalg.norm(got))
     hint = "" if abs(length - 1) < 1e-2 else " Slerp of unit vectors is a unit vector; yours is not."
-    return wrong(f"{what} is {fmt(float(np.linalg.norm(got - expected)), 2)} away from your vector.{hint} "
+    return wrong(f"{what} is {far_off(got, expected)} from your vector.{hint} "
                  "Find θ from v0·v1, then the weights sin((1 - t)θ)/sin θ and sin(tθ)/sin θ.")
 
 
@@ -348,3 +347,7 @@ SLIPS = {
                     [2 / np.sqrt(5), 1 / np.sqrt(10), 1 / np.sqrt(10)],
                     [0.5, np.sqrt(3) / (2 * np.sqrt(2)), np.sqrt(3) / (2 * np.sqrt(2))]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

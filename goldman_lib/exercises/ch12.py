@@ -6,9 +6,6 @@ Each exercise's data are module constants, so the notebook prints the problem fr
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers of the kinds each checker recognises.  Hand-computed decimals are
 accepted to a relative 1e-4 (2/3 typed as 0.6667 is right).
-
->>> check_mirror_point([2, -3, -1])
-Correct: (P - Q)·n = 3 for the unit normal n = N/3, so P' = P - 2·3 n.
 """
 
 from __future__ import annotations
@@ -16,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import transforms
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_POINT", "ROTATE_AXIS", "ROTATE_THROUGH", "ROTATE_ANGLE", "MIRROR_POINT",
@@ -98,9 +96,8 @@ def _close(got, expected) -> bool:
 
 
 def _far(got, expected, hint) -> Result:
-    dist = float(np.linalg.norm(got - np.asarray(expected, dtype=float)))
     hint = hint.rstrip(".")
-    return wrong(f"your point is {fmt(dist, 2)} away from the image; {hint}.")
+    return wrong(f"your point is {far_off(got, expected)} from the image; {hint}.")
 
 
 def _unit(v):
@@ -111,7 +108,7 @@ def _on_plane_check(got, Q, N):
     """A note for a point off the plane of a projection: how far off (the image must lie on the plane)."""
     d = abs(float((got - Q) @ _unit(N)))
     if d > REL_TOL * max(1.0, float(np.abs(got).max())):
-        return f". Your point is not on the plane ({fmt(d, 2)} from it), and a projection's image lies on it"
+        return ". Your point is not on the plane, and a projection's image lies on it"
     return ""
 
 
@@ -126,9 +123,6 @@ def check_rotation_about_point(answer) -> Result:
     """Check P rotated about the line through ``ROTATE_THROUGH`` along ``ROTATE_AXIS`` (Goldman §12.3);
     recognises the rotation about the origin, the other sense of rotation, Q not added back, and the
     axis left unnormalised in Rodrigues' formula.
-
-    >>> check_rotation_about_point([0, 2, 3])
-    Correct: v = P - Q = (2, 1, -1) turns into (-1, 2, 1) (120° about (1, 1, 1) sends (x, y, z) to (z, x, y)), and P' = Q + (-1, 2, 1).
     """
     got, err = _read_point(answer, "the rotated point as [x, y, z]")
     if err is not None:
@@ -192,9 +186,6 @@ def check_mirror_point(answer) -> Result:
 def check_scale_along(answer) -> Result:
     """Check the nonuniform scaling of ``SCALE_POINT`` (Goldman §12.4); recognises the uniform scaling,
     the scaling about the origin, the unnormalised direction and the factor s used for s - 1.
-
-    >>> check_scale_along([2, 5.4, 5.2])
-    Correct: (P - Q)·w = 2 along the unit w = (0, 0.6, 0.8), so P' = P + (s - 1)·2 w.
     """
     got, err = _read_point(answer, "the scaled point as [x, y, z]")
     if err is not None:
@@ -224,9 +215,6 @@ def check_scale_along(answer) -> Result:
 def check_orthogonal_projection(answer) -> Result:
     """Check the orthogonal projection of ``ORTHO_POINT`` (Goldman §12.5); recognises the mirror image
     (factor 2), the unnormalised normal and the plane through the origin.
-
-    >>> check_orthogonal_projection([2 / 3, 2 / 3, 2 / 3])
-    Correct: (P - Q)·n = 5 for n = N/3, so P' = P - 5 n, which lies on the plane.
     """
     got, err = _read_point(answer, "the projected point as [x, y, z]")
     if err is not None:
@@ -252,9 +240,6 @@ def check_orthogonal_projection(answer) -> Result:
 def check_perspective_projection(answer) -> Result:
     """Check the perspective image of ``PERSP_POINT`` (Goldman §12.5); recognises the ratio upside
     down, the orthogonal projection, the eye taken at the origin and the ratio applied to P itself.
-
-    >>> check_perspective_projection([5 / 3, 1 / 3, 7 / 3])
-    Correct: P' = E + t (P - E) with t = (Q - E)·N / (P - E)·N = 4/6; the length of N cancels.
     """
     got, err = _read_point(answer, "the perspective image as [x, y, z]")
     if err is not None:
@@ -310,3 +295,7 @@ SLIPS = {
         [2, 2 / 3, 2],        # t P
     ],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

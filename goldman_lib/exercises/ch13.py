@@ -6,9 +6,6 @@ Each exercise's data are module constants, so the notebook prints the problem fr
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers of the kinds each checker recognises.  Hand-computed decimals are
 accepted to a relative 1e-4.
-
->>> check_translation_row([-1, 0, 3])
-Correct: the translation row is Q - Q L = (1, 0, 2) - (2, 0, -1), so that Q stays where it is.
 """
 
 from __future__ import annotations
@@ -16,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import transforms
+from goldman_lib.exercises import far_off, guard_checkers, off_by
 from goldman_lib.exercises import Result, correct, fmt, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -100,12 +98,12 @@ def _close(got, expected) -> bool:
 def _entry(got, expected, name, hint) -> Result:
     bad = np.argwhere(np.abs(got - expected) > REL_TOL * np.maximum(1.0, np.abs(expected)))
     i, j = (int(x) for x in bad[0])
-    return wrong(f"the entry in row {i}, column {j} of {name} is off by {fmt(abs(got[i, j] - expected[i, j]), 2)} "
+    return wrong(f"the entry in row {i}, column {j} of {name} is {off_by(got[i, j], expected[i, j])} "
                  f"({len(bad)} entries are off); {hint}.")
 
 
 def _far(got, expected, what, hint) -> Result:
-    return wrong(f"{what} is {fmt(float(np.linalg.norm(got - expected)), 2)} away from where it should be; {hint}.")
+    return wrong(f"{what} is {far_off(got, expected)} from where it should be; {hint}.")
 
 
 # -- §13.3 rotation -------------------------------------------------------------------------------------------
@@ -118,9 +116,6 @@ def check_rotation_block(answer) -> Result:
     """Check the 3x3 block of the rotation by 90° about the y axis (Goldman §13.3); recognises the
     transpose (column convention, which is also the rotation the other way) and the rotation about
     another axis.
-
-    >>> check_rotation_block([[0, 0, -1], [0, 1, 0], [1, 0, 0]])
-    Correct: row i is the image of the i-th unit vector: x goes to -z, y stays, z goes to x.
     """
     got, err = _read(answer, "the 3x3 block as [[...], [...], [...]]", (3, 3), "your block")
     if err is not None:
@@ -180,9 +175,6 @@ def check_mirror_matrix(answer) -> Result:
     """Check the 4x4 mirror matrix in the plane x + y = 2 (Goldman §13.3); recognises the projection
     (factor 1), the unnormalised normal, the transposed matrix (translation in the last column),
     the wrong sign of the translation row, and the mirror in the plane through the origin.
-
-    >>> check_mirror_matrix([[0, -1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [2, 2, 0, 1]])
-    Correct: the block is I - 2 nᵀn with n = (1, 1, 0)/√2 (it swaps x and y with a sign), and the translation row is 2 (Q·n) n.
     """
     got, err = _read(answer, "the 4x4 matrix as four rows", (4, 4), "your matrix")
     if err is not None:
@@ -222,9 +214,6 @@ def _parts():
 def check_composite_matrix(answer) -> Result:
     """Check the matrix of "first translate, then rotate" (Goldman §13.6); recognises the wrong order,
     the transposed matrix (column convention) and the rotation the other way.
-
-    >>> check_composite_matrix([[0, 1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [-2, 1, 0, 1]])
-    Correct: with row vectors the first map stands on the left, M = T R; its last row is the shift turned by R.
     """
     got, err = _read(answer, "the 4x4 matrix as four rows", (4, 4), "your matrix")
     if err is not None:
@@ -542,3 +531,7 @@ def check_projective_map_project(function) -> Result:
                          what="projective_map",
                          hint="the rows [P_i 1] of the first four sources, each scaled by a factor, must go to "
                               "the rows [R_i 1], each scaled by its factor; the fifth pair fixes the factors")
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -9,8 +9,6 @@ never what the answer is.  ``None`` or ``...`` means "not answered yet".
 
 >>> print(PROBLEMS["check_point_at_infinity"])
 In homogeneous coordinates (x, y, w) the line 3x + 2y = 11 of the plane is 3x + 2y - 11w = 0. Give its point at infinity as [x, y, w] (any nonzero multiple will do) (Goldman §14.2).
->>> check_point_at_infinity([4, -6, 0])
-Correct: (4, -6, 0) is the line's point at infinity: w = 0 and (x, y) is a direction of the line.
 """
 
 from __future__ import annotations
@@ -18,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import mass_points as mp
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, unanswered, is_unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "LEVER_POINTS", "LEVER_MASSES", "COMBO_MASSES", "COMBINATIONS", "TUPLE_PAIRS",
@@ -144,9 +143,6 @@ def _lever_answers():
 def check_center_of_mass(answer) -> Result:
     """Exercise 1: the sum of the mass-points of :data:`LEVER_POINTS` with :data:`LEVER_MASSES`:
     the centre of mass and the total mass, ``[x, y, M]`` (Goldman §14.3).
-
-    >>> check_center_of_mass([0.25, 3.25, 4])
-    Correct: the sum is the mass-point at (0.25, 3.25) with total mass 4.
     """
     got, problem = read_points(answer, "your answer", ask="the centre of mass and the total mass as [x, y, M]")
     if problem is not None:
@@ -169,8 +165,8 @@ def check_center_of_mass(answer) -> Result:
     if not np.isclose(got[2], right[2], atol=1e-6):
         return wrong(f"the total mass M is {off_by(got[2], right[2])}. Hint: M is the sum of the masses, with "
                      f"their signs.")
-    return wrong(f"the mass is right; your centre of mass is {off_by(0, np.linalg.norm(got[:2] - right[:2]))} "
-                 f"(distance). Hint: add the mass-points (m P, m) coordinate by coordinate, then divide by the "
+    return wrong(f"the mass is right; your centre of mass is {far_off(got[:2], right[:2])}"
+                 f". Hint: add the mass-points (m P, m) coordinate by coordinate, then divide by the "
                  f"total mass.")
 
 
@@ -201,20 +197,17 @@ def _read_words(answer, n) -> tuple[list[str] | None, Result | None]:
     if is_unanswered(answer):
         return None, unanswered("a list of six words 'point' or 'vector'")
     if isinstance(answer, str) or not isinstance(answer, (list, tuple)):
-        return None, wrong(f"the answer is a list of {n} words, each 'point' or 'vector'; you gave {answer!r}.")
+        return None, wrong(f"the answer is a list of {n} words, each 'point' or 'vector'; you gave {quote(answer)}.")
     words = [w.strip().lower() if isinstance(w, str) else None for w in answer]
     if len(words) != n or any(w not in ("point", "vector") for w in words):
         return None, wrong(f"the answer is a list of {n} words, each 'point' or 'vector', one per combination; you "
-                           f"gave {answer!r}.")
+                           f"gave {quote(answer)}.")
     return words, None
 
 
 def check_point_or_vector(answer) -> Result:
     """Exercise 2: which combinations of :data:`COMBINATIONS` are points and which vectors: a
     vector exactly when the total mass is 0 (Goldman §14.3).
-
-    >>> check_point_or_vector(["vector", "point", "point", "vector", "point", "vector"])
-    Correct: the total masses are 0, 1, -1, 0, 1, 0: a vector exactly where the masses cancel (a negative mass is still a point).
     """
     words, problem = _read_words(answer, len(COMBINATIONS))
     if problem is not None:
@@ -257,16 +250,13 @@ def _same_answers():
 def check_same_projective_point(answer) -> Result:
     """Exercise 3: for each pair of :data:`TUPLE_PAIRS`, whether the tuples are proportional, the
     same projective point (Goldman §14.2).  answer: five booleans.
-
-    >>> check_same_projective_point([True, False, True, True, False])
-    Correct: pairs 1, 3 and 4 are proportional (factors -1/2, -1/2, 1/3); pairs 2 and 5 are not.
     """
     if is_unanswered(answer):
         return unanswered("a list of five True/False")
     n = len(TUPLE_PAIRS)
     if not isinstance(answer, (list, tuple)) or len(answer) != n or not all(isinstance(a, (bool, np.bool_))
                                                                              for a in answer):
-        return wrong(f"the answer is a list of {n} booleans True/False, one per pair; you gave {answer!r}.")
+        return wrong(f"the answer is a list of {n} booleans True/False, one per pair; you gave {quote(answer)}.")
     got = [bool(a) for a in answer]
     right, slips = _same_answers()
     if got == right:
@@ -348,9 +338,6 @@ def _perspective_answers():
 def check_perspective_by_lever(answer) -> Result:
     """Exercise 5: the perspective image of :data:`PERSPECTIVE_POINT` as the sum of the
     mass-points ``(P, c)`` and ``(E, s - c)`` (Goldman §14.4).  answer: ``[x, y, z]``.
-
-    >>> check_perspective_by_lever([2, 3, 2])
-    Correct: the image is (2, 3, 2), on the plane and on the line EP.
     """
     got, problem = read_points(answer, "your point", ask="the image point as [x, y, z]")
     if problem is not None:
@@ -369,7 +356,7 @@ def check_perspective_by_lever(answer) -> Result:
     (Q, N) = PERSPECTIVE_PLANE
     off_plane = abs(float((got - np.array(Q)) @ np.array(N)))
     where = "it is not on the plane of projection" if off_plane > 1e-6 else "it is on the plane, but not on the line EP"
-    return wrong(f"your point is {off_by(0, np.linalg.norm(got - right))} (distance); {where}. Hint: compute c and s "
+    return wrong(f"your point is {far_off(got, right)}; {where}. Hint: compute c and s "
                  f"first, then (c P + (s - c) E) / s.")
 
 
@@ -396,9 +383,6 @@ def _depth_answers():
 def check_pseudodepth(answer) -> Result:
     """Exercise 6: the pseudodepths ``1 - c/s`` of :data:`DEPTH_POINTS` (Goldman §14.4).
     answer: ``[dA, dB, dC]``.
-
-    >>> check_pseudodepth([0.5, 0.75, 0.2])
-    Correct: the pseudodepths are (0.5, 0.75, 0.2): C is nearest, then A, then B, the order of the depths s.
     """
     got, problem = read_points(answer, "your pseudodepths", ask="the three pseudodepths as [dA, dB, dC]")
     if problem is not None:
@@ -443,20 +427,17 @@ def _order_answers():
 def check_depth_order(answer) -> Result:
     """Exercise 7: the points of :data:`ORDER_POINTS` from nearest to farthest by pseudodepth
     (Goldman §14.4).  answer: a string of letters such as ``"ABCD"``.
-
-    >>> check_depth_order("BADC")
-    Correct: B, A, D, C by pseudodepth, the order of the depths; B and D share a line of sight (perspective sends them to one point), and pseudodepth still tells them apart.
     """
     if is_unanswered(answer):
         return unanswered("the order as a string of letters such as 'ABCD'")
     if isinstance(answer, (list, tuple)) and all(isinstance(a, str) for a in answer):
         answer = "".join(answer)
     if not isinstance(answer, str):
-        return wrong(f"the answer is a string of the four letters, nearest first, such as 'ABCD'; you gave {answer!r}.")
+        return wrong(f"the answer is a string of the four letters, nearest first, such as 'ABCD'; you gave {quote(answer)}.")
     letters = "".join(ch for ch in answer.upper() if ch.isalpha())
     if sorted(letters) != sorted(ORDER_POINTS):
         return wrong(f"the answer names each of the points {', '.join(ORDER_POINTS)} once, nearest first; you gave "
-                     f"{answer!r}.")
+                     f"{quote(answer)}.")
     right, slips = _order_answers()
     if letters == right:
         return correct(f"{', '.join(right)} by pseudodepth, the order of the depths; B and D share a line of sight "
@@ -483,3 +464,7 @@ SLIPS = {
     "check_pseudodepth": [[0.5, 0.25, 0.8], [4 / 7, 0.8, 0.25], [2, 4, 1.25], [8, 16, 5], [-1, -3, -0.25]],
     "check_depth_order": ["CDAB", "BDAC", "DBCA", "ABCD"],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -23,6 +23,7 @@ import math
 import numpy as np
 
 from goldman_lib import quaternions as qt
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.exercises.projects import Case, check_project, describe
@@ -103,14 +104,14 @@ PROBLEMS = {
 # -- §15.2 ---------------------------------------------------------------------------------------------
 
 def check_complex_factor(answer) -> Result:
-    """Check z = (-1 + 3i) / (2 + i) = (-1 + 3i)(2 - i) / 5 = (1 + 7i) / 5 (Goldman §15.2).
+    """Check the complex number z with z (2 + i) = -1 + 3i, a quotient of complex numbers (Goldman
+    §15.2); read as [Re z, Im z] or as a Python complex number.
 
     Recognises the product instead of the quotient, the quotient the other way up, a conjugate
     taken on the wrong factor, and coordinates divided one by one.
-
-    >>> check_complex_factor([-5, 5])
-    Not yet: that is (2 + i)(-1 + 3i), the product; z is the quotient (-1 + 3i) / (2 + i): multiply top and bottom by the conjugate 2 - i.
     """
+    if isinstance(answer, (complex, np.complexfloating)):
+        answer = [answer.real, answer.imag]   # the chapter computes with Python complex numbers too
     got, err = _read_vector(answer, "your z", 2, "z as [Re z, Im z]")
     if err is not None:
         return err
@@ -132,14 +133,14 @@ def check_complex_factor(answer) -> Result:
     if _close(got, (b.real / a.real, b.imag / a.imag), tol):
         return wrong("you divided the coordinates one by one; complex division is not coordinatewise "
                      "(i^2 = -1 mixes them): multiply top and bottom by the conjugate 2 - i.")
-    return wrong(f"your z is {_dist(got, pair(z))} away from the right one; check that z (2 + i) "
+    return wrong(f"your z is {_dist(got, pair(z))} from the right one; check that z (2 + i) "
                  f"gives -1 + 3i, using i^2 = -1.")
 
 
 # -- §15.3.1 -------------------------------------------------------------------------------------------
 
 def check_quaternion_product(answer) -> Result:
-    """Check p q = (ab - u·v, a v + b u + u × v) = (7, 4, -4, 3) for p = (1, 2, 0, -1), q = (2, -1, 1, 3)
+    """Check the product p q = (ab - u·v, a v + b u + u × v) of ``PRODUCT_P`` and ``PRODUCT_Q``
     (Goldman §15.3.1).
 
     Recognises q p (the other order), a missing cross product, a plus sign on the dot product, and
@@ -167,7 +168,7 @@ def check_quaternion_product(answer) -> Result:
     if _close(got, p * q, tol):
         return wrong("you multiplied coordinate by coordinate; expand (a + u)(b + v) with the rules i^2 = -1, "
                      "i j = k = -j i, and so on.")
-    return wrong(f"your product is {_dist(got, expected)} away from p q; use (a, u)(b, v) = "
+    return wrong(f"your product is {_dist(got, expected)} from p q; use (a, u)(b, v) = "
                  f"(ab - u·v, a v + b u + u × v) with a = 1, u = (2, 0, -1), b = 2, v = (-1, 1, 3).")
 
 
@@ -179,8 +180,8 @@ def _sandwich(a, v, b):
 
 
 def check_rotated_vector(answer) -> Result:
-    """Check q v q* for q = (cos 45°, sin 45° (1, 0, 1)/√2) and v = (1, 2, 0): the image is
-    (1/2 - √2, √2/2, 1/2 + √2) (Goldman §15.3.2).
+    """Check q v q* for the unit quaternion q of the rotation ``ROTATION_ANGLE`` about ``ROTATION_AXIS``
+    and v = ``ROTATION_V`` (Goldman §15.3.2).
 
     Recognises the full angle in q (cos θ, not cos θ/2: twice the rotation), the opposite rotation
     (q* v q), q v q instead of q v q*, and an axis left unnormalised.
@@ -209,14 +210,14 @@ def check_rotated_vector(answer) -> Result:
     if _close(got, _sandwich(raw, v, qt.conjugate(raw)), tol):
         return wrong("your q is not a unit quaternion: the axis (1, 0, 1) has length √2, so normalise it to "
                      "u = (1, 0, 1)/√2 before forming (cos(θ/2), sin(θ/2) u); otherwise q v q* also scales by |q|^2.")
-    return wrong(f"your image is {_dist(got, expected)} away from q v q*; its length should stay "
+    return wrong(f"your image is {_dist(got, expected)} from q v q*; its length should stay "
                  f"|v| = {fmt(np.linalg.norm(v), 4)} (yours is {fmt(np.linalg.norm(got), 4)}). Split v into its part "
                  f"along u and the rest, or multiply out q v q* with q = (cos 45°, sin 45° u).")
 
 
 def check_conformal_image(answer) -> Result:
-    """Check the vector part of q v q* for q = (1, 2, 0, 2), v = (0, 1, 0): (-4, -7, 4), of length
-    |q|^2 |v| = 9 (Goldman §15.3.2).
+    """Check the vector part of q v q* for the quaternion ``CONFORMAL_Q`` (not a unit quaternion) and
+    v = ``CONFORMAL_V``: a rotation with a scaling by |q|^2 (Goldman §15.3.2).
 
     Recognises the rotation alone (divided by |q|^2), a scaling by |q| instead of |q|^2, q* v q
     (the other rotation) and q v q.
@@ -240,7 +241,7 @@ def check_conformal_image(answer) -> Result:
         return wrong("that is q* v q: it turns the other way. Multiply q v first, then by q* on the right.")
     if _close(got, _sandwich(q, v, q), tol):
         return wrong("that is (the vector part of) q v q: the right factor is the conjugate q* = (1, -2, 0, -2).")
-    return wrong(f"your image is {_dist(got, expected)} away from q v q*; its length should be "
+    return wrong(f"your image is {_dist(got, expected)} from q v q*; its length should be "
                  f"|q|^2 |v| (yours is {fmt(np.linalg.norm(got), 4)}). Multiply (0, v) by q on the left, then by "
                  f"q* on the right.")
 
@@ -248,8 +249,7 @@ def check_conformal_image(answer) -> Result:
 # -- §15.3.6 -------------------------------------------------------------------------------------------
 
 def check_rotation_matrix(answer) -> Result:
-    """Check the row-convention matrix of q = (0.6, 0, 0.48, 0.64):
-    [[-0.28, 0.768, -0.576], [-0.768, 0.1808, 0.6144], [0.576, 0.6144, 0.5392]] (Goldman §15.3.6).
+    """Check the row-convention rotation matrix of the unit quaternion ``MATRIX_Q`` (Goldman §15.3.6).
 
     Accepts the 4x4 matrix too.  Recognises the transposed (column-convention) matrix, off-diagonal
     entries without their factor 2, and the diagonal 1 - (y^2 + z^2) without the 2.
@@ -284,8 +284,8 @@ def check_rotation_matrix(answer) -> Result:
                      "1 - 2(x^2 + y^2).")
     bad = np.argwhere(np.abs(got - expected) > tol)
     i, j = (int(k) for k in bad[0])
-    return wrong(f"{len(bad)} of the 9 entries are off, the first M[{i}][{j}] by "
-                 f"{fmt(abs(got[i, j] - expected[i, j]), 2)}; check it against (1, 0, 0), (0, 1, 0), (0, 0, 1) "
+    return wrong(f"{len(bad)} of the 9 entries are off, the first, M[{i}][{j}], is "
+                 f"{off_by(got[i, j], expected[i, j])}; check it against (1, 0, 0), (0, 1, 0), (0, 0, 1) "
                  f"rotated by q v q*: those images are the rows of M.")
 
 
@@ -299,9 +299,8 @@ def _z_angle(q) -> float:
 
 
 def check_slerp_angle(answer) -> Result:
-    """Check the angle of slerp(q0, q1, 0.3): q0 turns by 40° about z, q1 by 300° = -60° with
-    q0·q1 < 0, so slerp negates q1 and turns from 40° to -60°: at t = 0.3 the angle is 10°
-    (Goldman §15.3.5).
+    """Check the rotation angle of slerp(q0, q1, t) for rotations about z, where q0·q1 < 0 makes slerp
+    take the shorter arc by negating q1 (Goldman §15.3.5).
 
     Recognises the longer arc (q1 not negated), the half angle of the quaternion, t measured from
     q1, and normalised linear interpolation.
@@ -332,14 +331,13 @@ def check_slerp_angle(answer) -> Result:
     if abs(value - _z_angle(nlerp)) <= tol:
         return wrong("that is normalised linear interpolation: the right arc, but not at constant speed; slerp "
                      "weights q0 and -q1 by sin((1 - t)θ)/sin θ and sin(tθ)/sin θ, θ the angle between them.")
-    return wrong(f"your angle is {off_by(value, expected)} degrees; read the angles of q0 and q1 from "
+    return wrong(f"your angle is {off_by(value, expected)}; read the angles of q0 and q1 from "
                  f"w = cos(θ/2), z = sin(θ/2), check the sign of q0·q1, then interpolate.")
 
 
 def check_lerp_distortion(answer) -> Result:
-    """Check the distortion of M = (3/4) I + (1/4) R, R the 120° turn about z: in the xy-plane M acts
-    as the complex number 3/4 + (1/4) e^{i 120°}, a scaling by √7/4 with a rotation, and z is
-    kept, so the distortion is 1 - √7/4 ≈ 0.3386 (Goldman §15.3.4).
+    """Check the distortion 1 - |scale| of the blend M = (3/4) I + (1/4) R, R a turn about z: in the
+    xy-plane M acts as a complex number, a scaling with a rotation (Goldman §15.3.4).
 
     Recognises 0 (taking the blend for a rotation), the scale √7/4 itself, the squared scale
     (7/16), and the halfway blend's 0.5.
@@ -529,3 +527,7 @@ SLIPS = {
     "check_slerp_angle": [118.0, 5.0, -30.0, 11.13],
     "check_lerp_distortion": [0.0, math.sqrt(7) / 4, 0.5625, 0.5],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals(), complex_ok=("check_complex_factor",))

@@ -21,6 +21,7 @@ import math
 import numpy as np
 
 from goldman_lib import lighting
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.lighting import Light, Material
@@ -108,8 +109,8 @@ PROBLEMS = {
 # -- §16.2 ---------------------------------------------------------------------------------------------
 
 def check_reflected_colour(answer) -> Result:
-    """Check C * (I_1 c_1 + I_2 c_2) = (0.5, 1, 0.25) * ((0.72, 0.24, 0) + (0.12, 0.3, 0.6)) =
-    (0.42, 0.54, 0.15) (Goldman §16.2).
+    """Check the colour C * (I_1 c_1 + I_2 c_2) a surface of colour C reflects under two coloured
+    lights (Goldman §16.2).
 
     Recognises the lights' colours without their intensities, the light alone (surface colour left
     out), the lights' colours multiplied instead of added, and the surface colour added.
@@ -137,15 +138,15 @@ def check_reflected_colour(answer) -> Result:
     if _close(got, incoming + C, tol) or _close(got, np.clip(incoming + C, 0, 1), tol):
         return wrong("you added the surface colour; a surface filters light: multiply each channel of the light "
                      "by the surface's fraction C of that channel.")
-    return wrong(f"your colour is {_dist(got, expected)} away; add the two lights channel by channel (colour "
+    return wrong(f"your colour is {_dist(got, expected)}; add the two lights channel by channel (colour "
                  f"times intensity), then multiply channel by channel by C.")
 
 
 # -- §16.4 ---------------------------------------------------------------------------------------------
 
 def check_diffuse(answer) -> Result:
-    """Check I_p k_d (L . N) with N = (0, 0.6, 0.8), L = (2, 0, 4)/sqrt(20): cos = 3.2/sqrt(20) =
-    0.71554, times 1.2 = 0.85865 (Goldman §16.4).
+    """Check the diffuse intensity I_p k_d (L · N), with L the unit vector from the surface point to the
+    light and N normalised (Goldman §16.4).
 
     Recognises an unnormalised normal, an unnormalised L, L taken from the origin instead of from
     P, and a missing k_d or I_p.
@@ -181,8 +182,8 @@ def check_diffuse(answer) -> Result:
 # -- §16.5 ---------------------------------------------------------------------------------------------
 
 def check_mirror_direction(answer) -> Result:
-    """Check R = 2 (L . N) N - L with N = (1, 1, 1)/sqrt 3: L . N = 1.4/sqrt 3, so
-    R = (2.8/3)(1, 1, 1) - (0.6, 0, 0.8) = (1/3, 14/15, 2/15) (Goldman §16.5).
+    """Check the mirror direction R = 2 (L · N) N - L of the unit L about the unit normal N
+    (Goldman §16.5).
 
     Recognises -R (the reflection pointing into the surface), an unnormalised N, and the missing
     factor 2.
@@ -206,13 +207,13 @@ def check_mirror_direction(answer) -> Result:
     if _close(got, (L @ n) * n - L, tol):
         return wrong("you lack the factor 2: (L·N) N - L goes from L to the normal; R goes as far again, "
                      "R = 2 (L·N) N - L.")
-    return wrong(f"your R is {_dist(got, expected)} away; it should be a unit vector (yours has length "
+    return wrong(f"your R is {_dist(got, expected)}; it should be a unit vector (yours has length "
                  f"{fmt(np.linalg.norm(got), 4)}). Normalise N, then R = 2 (L·N) N - L.")
 
 
 def check_specular(answer) -> Result:
-    """Check k_s (R . V)^n with L = (1, 0, 1)/sqrt 2, R = (-1, 0, 1)/sqrt 2, V = (-1, 1, 3)/sqrt 11:
-    R . V = 4/sqrt 22, 0.9 (16/22)^4 = 0.25179 (Goldman §16.5).
+    """Check the specular intensity k_s (R · V)^n, with R the mirror direction of the unit L and V the
+    unit vector to the eye (Goldman §16.5).
 
     Recognises Blinn's halfway vector (N . H)^n, a missing exponent, an extra L . N factor, and V
     pointing from the eye (R . V < 0 gives 0).
@@ -247,8 +248,8 @@ def check_specular(answer) -> Result:
 
 
 def check_highlight_exponent(answer) -> Result:
-    """Check n = ln(1/2) / ln(cos 12°) = 31.37 (Goldman §16.5): then
-    :func:`goldman_lib.lighting.highlight_half_width` of n is 12 degrees.
+    """Check the exponent n that halves the highlight at the given angle, (cos θ)^n = 1/2 (Goldman
+    §16.5; :func:`goldman_lib.lighting.highlight_half_width` is its inverse).
 
     Recognises 12° taken as the full width (half-width 6°), the half-width doubled (24°), the
     small-angle approximation 2 ln 2 / θ², and 1/e instead of 1/2.
@@ -289,10 +290,8 @@ def _total(ambient=True, lights=None, specular_colour=(1.0, 1.0, 1.0), white=Fal
 
 
 def check_total_intensity(answer) -> Result:
-    """Check the displayed colour of the total intensity (Goldman §16.3, §16.6): ambient
-    0.12 C = (0.108, 0.06, 0.024); light 1 (cos 0.8, R·V 0.8): 0.56 C + 0.2048; light 2 (cos 0.6,
-    R·V 0.6): (0.42 C + 0.0648) (1.2, 0.6, 0.6); total (1.34816, 0.70968, 0.43008), displayed
-    (1, 0.70968, 0.43008).
+    """Check the displayed colour of the total intensity, ambient plus each light's diffuse and
+    specular terms, clipped to [0, 1] (Goldman §16.3, §16.6).
 
     Recognises the unclipped total, the ambient term left out, one light left out, the specular
     highlight in the material's colour, and light 2 taken as white.
@@ -324,7 +323,7 @@ def check_total_intensity(answer) -> Result:
     for value, message in slips:
         if _close(got, value, tol) or _close(got, lighting.to_image(value), tol):
             return wrong(message)
-    return wrong(f"your colour is {_dist(got, expected)} away from the displayed one; work out L·N and R·V for each "
+    return wrong(f"your colour is {_dist(got, expected)} from the displayed one; work out L·N and R·V for each "
                  f"light (V = (0, 0, 1)), add the ambient term and both lights' terms, then clip.")
 
 
@@ -337,3 +336,7 @@ SLIPS = {
     "check_total_intensity": [[1.34816, 0.70968, 0.43008], [1.0, 0.64968, 0.40608], [0.8168, 0.5448, 0.3408],
                               [0.6394, 0.2249, 0.1133], [1.0, 0.5878, 0.2351], [1.0, 0.8746, 0.5194]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -20,6 +20,7 @@ import numpy as np
 
 from goldman_lib import lighting
 from goldman_lib import ray_tracing as rt
+from goldman_lib.exercises import guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, unanswered, wrong, is_unanswered
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.lighting import Light, Material
@@ -96,14 +97,11 @@ PROBLEMS = {
 # -- §17.4 ---------------------------------------------------------------------------------------------
 
 def check_reflected_direction(answer) -> Result:
-    """Check the mirror direction R = d - 2 (d . N) N with N = (0, 0.6, 0.8): (1/3, 0.82667, -0.45333)
+    """Check the mirror direction R = d - 2 (d · N) N of a ray off a mirror with unit normal N
     (Goldman §17.4).
 
     Recognises -R (the mirror image of d rather than of -d), a sign slip d + 2 (d . N) N (no bounce),
     the normal left unnormalised, and the incoming direction itself.
-
-    >>> check_reflected_direction([-1/3, -0.82667, 0.45333])
-    Not yet: that points back towards the mirror: you reflected d itself, not -d. The ray leaves along the mirror image of -d about N, reflect(-d, N) = d - 2 (d . N) N.
     """
     got, err = _read_vector(answer, "your direction", 3, "the reflected direction as [x, y, z]")
     if err is not None:
@@ -128,21 +126,17 @@ def check_reflected_direction(answer) -> Result:
                      "divide it by its length 5 first.")
     if _close(got, d, tol):
         return wrong("that is the incoming direction: a mirror turns the ray around its normal component.")
-    return wrong(f"your direction is {_dist(got, expected)} away from the reflected one; check that it has length 1, "
+    return wrong(f"your direction is {_dist(got, expected)} from the reflected one; check that it has length 1, "
                  f"that the angle to N equals the angle between -d and N, and use R = d - 2 (d . N) N with a unit N.")
 
 
 # -- §17.5 ---------------------------------------------------------------------------------------------
 
 def check_refracted_direction(answer) -> Result:
-    """Check Snell's law: sin(theta1) = 0.6, sin(theta2) = 0.6 / 1.25 = 0.48, T = (0.48, 0, -sqrt(0.7696))
-    (Goldman §17.5).
+    """Check the refracted direction by Snell's law, n1 sin(theta1) = n2 sin(theta2) (Goldman §17.5).
 
     Recognises no bending, the ratio of indices upside down, bending to the other side of the normal,
     angles (not sines) divided by the index, and the reflected ray.
-
-    >>> check_refracted_direction([0.6, 0, -0.8])
-    Not yet: that is the incoming direction: the ray changes speed at the surface and bends (the indices differ), so sin(theta2) = (n1 / n2) sin(theta1).
     """
     got, err = _read_vector(answer, "your direction", 3, "the refracted direction as [x, y, z]")
     if err is not None:
@@ -173,13 +167,13 @@ def check_refracted_direction(answer) -> Result:
     if _close(got, lighting.reflect(-d[None], N[None])[0], tol):
         return wrong("that is the reflected ray (it leaves the surface); the refracted ray goes on through it, "
                      "into the plastic.")
-    return wrong(f"your direction is {_dist(got, expected)} away from the refracted one; check that it is a unit "
+    return wrong(f"your direction is {_dist(got, expected)} from the refracted one; check that it is a unit "
                  f"vector going into the surface (z < 0) and that sin of its angle to the normal is "
                  f"(n1 / n2) sin(theta1).")
 
 
 def check_critical_angle(answer) -> Result:
-    """Check the critical angle arcsin(1.2 / 1.6) = arcsin(0.75) = 48.59 degrees (Goldman §17.5).
+    """Check the critical angle of total internal reflection, in degrees, arcsin(n2 / n1) (Goldman §17.5).
 
     Recognises the angle from the surface (arccos), the critical angle into air (arcsin(1 / 1.6)),
     radians, and the ratio's sine without arcsin.
@@ -203,7 +197,7 @@ def check_critical_angle(answer) -> Result:
         return wrong("that is in radians; give degrees.")
     if abs(value - CRITICAL_N2 / CRITICAL_N1) <= 1e-3:
         return wrong("that is sin(theta_c), the ratio n2 / n1; the angle is its arcsin, in degrees.")
-    return wrong(f"your angle is {off_by(value, expected)} degrees. At the critical angle the refracted ray grazes "
+    return wrong(f"your angle is {off_by(value, expected)}. At the critical angle the refracted ray grazes "
                  f"the surface (theta2 = 90 degrees): n1 sin(theta_c) = n2 sin 90.")
 
 
@@ -216,8 +210,8 @@ def _shadow_answer():
 
 
 def check_blocked_lights(answer) -> Result:
-    """Check which lights the shadow rays find blocked: L0 (the sphere is in the way) and L3 (below the
-    floor: the surface itself blocks it) (Goldman §17.3).
+    """Check which lights the shadow rays from the surface point find blocked, by the sphere or by
+    the surface itself (Goldman §17.3).
 
     Recognises the shadow ray continued past the light (L2's light hangs between P and the sphere),
     a light behind the surface forgotten, and the lit lights given instead of the blocked ones.
@@ -230,9 +224,9 @@ def check_blocked_lights(answer) -> Result:
         if any(float(x) != int(x) for x in items):
             raise ValueError
     except (TypeError, ValueError, OverflowError):
-        return wrong(f"give a list of light numbers (0 to {len(SHADOW_LIGHTS) - 1}), e.g. [1, 3]; you gave {answer!r}.")
+        return wrong(f"give a list of light numbers (0 to {len(SHADOW_LIGHTS) - 1}), e.g. [1, 3]; you gave {quote(answer)}.")
     if not got <= set(range(len(SHADOW_LIGHTS))):
-        return wrong(f"the lights are numbered 0 to {len(SHADOW_LIGHTS) - 1}; you gave {sorted(got)}.")
+        return wrong(f"the lights are numbered 0 to {len(SHADOW_LIGHTS) - 1}; you gave {quote(sorted(got))}.")
     expected = _shadow_answer()
     if got == expected:
         return correct("the shadow ray to L0 passes through the sphere before reaching the light, and L3 is below the "
@@ -258,7 +252,8 @@ def check_blocked_lights(answer) -> Result:
 # -- §17.2 ---------------------------------------------------------------------------------------------
 
 def check_ray_tree_size(answer) -> Result:
-    """Check (2^(d+1) - 1)(1 + L) = 31 x 4 = 124 for depth 4 and 3 lights (Goldman §17.2).
+    """Check the number of rays of a full ray tree of the given depth with shadow rays to every light
+    (Goldman §17.2).
 
     Recognises the shadow rays forgotten, the shadow rays alone, the depth off by one, and 2^d.
     """
@@ -286,7 +281,8 @@ def check_ray_tree_size(answer) -> Result:
 
 
 def check_ray_tree_colour(answer) -> Result:
-    """Check I = I_floor + k_floor (I_sphere + k_sphere I_background) = (0.64, 0.34, 0.52) (Goldman §17.2).
+    """Check I = I_floor + k_floor (I_sphere + k_sphere I_background) for the ray tree of the exercise
+    (Goldman §17.2).
 
     Recognises the depth-1 colour (the background not reached), the weights not multiplied along the
     path, and the weights left out.
@@ -310,7 +306,7 @@ def check_ray_tree_colour(answer) -> Result:
     if _close(got, c["floor_local"] + c["sphere_local"] + c["background"], tol):
         return wrong("you added the colours without the reflection coefficients: I = I_local + k_r I_reflected at "
                      "every hit.")
-    return wrong(f"your colour is {_dist(got, expected)} away; apply I = I_local + k_r I_reflected from the deepest "
+    return wrong(f"your colour is {_dist(got, expected)}; apply I = I_local + k_r I_reflected from the deepest "
                  f"hit upwards: first the sphere's colour, then the floor's.")
 
 
@@ -324,3 +320,7 @@ SLIPS = {
     "check_ray_tree_size": [31, 93, 60, 252, 16],
     "check_ray_tree_colour": [[0.58, 0.22, 0.22], [0.68, 0.42, 0.72], [1.1, 0.7, 1.3]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -18,6 +18,7 @@ import math
 import numpy as np
 
 from goldman_lib import surfaces as sf
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 __all__ = ["PROBLEMS", "SLIPS", "IMPLICIT_POINT", "GRAPH_UV", "DEFORM_NORMAL", "NEWTON_START", "NEWTON_ORIGIN",
@@ -96,7 +97,8 @@ def _unit(v):
 # -- §18.2 ---------------------------------------------------------------------------------------------
 
 def check_implicit_normal(answer) -> Result:
-    """Check grad F / |grad F| = (2, 4, -2√2)/√28 at (1, 1, √2) (Goldman §18.2).
+    """Check the unit normal grad F / |grad F| of the implicit surface at the given point
+    (Goldman §18.2).
 
     Recognises the gradient left unnormalised, the opposite direction, and a lost minus sign on the
     z-derivative.
@@ -117,13 +119,13 @@ def check_implicit_normal(answer) -> Result:
                      "F > 0.")
     if _close(got, _unit(g * [1, 1, -1]), tol):
         return wrong("check the sign of the z-component: the derivative of -z^2 is -2z.")
-    return wrong(f"your normal is {_dist(got, expected)} away; differentiate F in x, y and z, evaluate at P, and "
+    return wrong(f"your normal is {_dist(got, expected)}; differentiate F in x, y and z, evaluate at P, and "
                  f"divide by the length (your vector has length {fmt(np.linalg.norm(got), 4)}).")
 
 
 def check_parametric_normal(answer) -> Result:
-    """Check X_u × X_v / |.| with X_u = (1, 0, 2uv) = (1, 0, 4), X_v = (0, 1, u^2) = (0, 1, 1):
-    (-4, -1, 1)/√18 (Goldman §18.2).
+    """Check the unit normal X_u × X_v / |X_u × X_v| of the parametric surface at the given (u, v)
+    (Goldman §18.2).
 
     Recognises X_v × X_u (the opposite normal), the unnormalised cross product, and a sign slip in
     the middle component.
@@ -146,13 +148,13 @@ def check_parametric_normal(answer) -> Result:
         return wrong("that is X_u × X_v itself; divide it by its length to get the unit normal.")
     if _close(got, _unit(cross * [1, -1, 1]), tol):
         return wrong("check the middle component of the cross product: (a × b)_y = a_z b_x - a_x b_z.")
-    return wrong(f"your normal is {_dist(got, expected)} away; X_u = (1, 0, 2uv) and X_v = (0, 1, u^2) at the given "
+    return wrong(f"your normal is {_dist(got, expected)}; X_u = (1, 0, 2uv) and X_v = (0, 1, u^2) at the given "
                  f"(u, v), then their cross product, normalised.")
 
 
 def check_deformed_normal(answer) -> Result:
-    """Check J^{-T} n for J = [[1, 0, 2], [0, 3, 0], [0, 0, 1]]: J^{-T} (1, 1, 1) = (1, 1/3, -1), unit
-    (3, 1, -3)/√19 (Goldman §18.2).
+    """Check the unit normal of the deformed surface, J^{-T} n normalised, for the Jacobian J of the
+    deformation (Goldman §18.2).
 
     Recognises J n (the normal moved like a tangent), J^{-1} n (the inverse without the transpose),
     J^T n (the transpose without the inverse), and the unnormalised J^{-T} n.
@@ -179,7 +181,7 @@ def check_deformed_normal(answer) -> Result:
         return wrong("that is J^T n: the transpose, but not inverted; normals map by J^(-T) = (J^T)^(-1).")
     if _close(got, np.linalg.solve(M.T, n[0]), tol) or _close(got, np.linalg.solve(M.T, [1, 1, 1]), tol):
         return wrong("that is J^(-T) n before normalising: divide it by its length.")
-    return wrong(f"your normal is {_dist(got, expected)} away; the Jacobian of A is [[1, 0, 2], [0, 3, 0], [0, 0, 1]]; "
+    return wrong(f"your normal is {_dist(got, expected)}; the Jacobian of A is [[1, 0, 2], [0, 3, 0], [0, 0, 1]]; "
                  f"solve J^T m = n for m and normalise it.")
 
 
@@ -196,9 +198,8 @@ def _newton(start, sign_xu=-1.0, add=False):
 
 
 def check_newton_step(answer) -> Result:
-    """Check one Newton step on G = O + t d - X(u, v): from (1, 0.5, 0.5), G = (-0.5, -0.5, 1.5),
-    J = [d, -X_u, -X_v] = [[0, -1, 0], [0, 0, -1], [-1, 1, 1]], step (-0.5, 0.5, 0.5), new point
-    (1.5, 0, 0) (Goldman §18.3).
+    """Check one Newton step on G = O + t d - X(u, v) from the given start, with the Jacobian
+    J = [d, -X_u, -X_v] (Goldman §18.3).
 
     Recognises the step added instead of subtracted, +X_u and +X_v in the Jacobian, and the
     converged intersection (2, 0, 0) instead of one step.
@@ -218,14 +219,14 @@ def check_newton_step(answer) -> Result:
         return wrong("you added the step: Newton's update is (t, u, v) - J^(-1) G.")
     if _close(got, _newton(NEWTON_START, sign_xu=1.0), tol):
         return wrong("the Jacobian of G = O + t d - X(u, v) has the columns d, -X_u and -X_v (the minus from -X).")
-    return wrong(f"your point is {_dist(got, expected)} away; evaluate G and its Jacobian [d, -X_u, -X_v] at the start, "
+    return wrong(f"your point is {_dist(got, expected)}; evaluate G and its Jacobian [d, -X_u, -X_v] at the start, "
                  f"solve J s = G and subtract s.")
 
 
 # -- §18.4 ---------------------------------------------------------------------------------------------
 
 def check_cylinder_curvature(answer) -> Result:
-    """Check [K, |H|] = [0, 1/(2r)] = [0, 0.2] for r = 2.5 (Goldman §18.4).
+    """Check [K, |H|], the Gauss and mean curvature of the cylinder of the exercise (Goldman §18.4).
 
     Recognises the sphere's values (1/r^2, 1/r), |H| = 1/r (a principal curvature, not the mean),
     and K = 1/r^2 with the right H.
@@ -257,7 +258,8 @@ def check_cylinder_curvature(answer) -> Result:
 
 
 def check_torus_curvature(answer) -> Result:
-    """Check K = cos v / (r (R + r cos v)) = -0.5 / 2.5 = -0.2 at v = 120° (Goldman §18.4).
+    """Check the Gauss curvature K = cos v / (r (R + r cos v)) of the torus at the given v (Goldman
+    §18.4).
 
     Recognises the lost sign, (R + r) in place of (R + r cos v), and v taken in radians.
     """
@@ -290,3 +292,7 @@ SLIPS = {
     "check_cylinder_curvature": [[0.16, 0.4], [0, 0.4], [0.16, 0.2]],
     "check_torus_curvature": [0.2, -0.125, 0.2135],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

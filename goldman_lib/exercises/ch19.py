@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import simple_surfaces as S
+from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector  # shared readers
 from goldman_lib.exercises.projects import Case, check_project, describe
@@ -89,9 +90,9 @@ def _read_flags(answer, what, n):
     try:
         flags = [bool(v) if isinstance(v, (bool, np.bool_)) or v in (0, 1) else None for v in answer]
     except TypeError:
-        return None, wrong(f"{what} should be a list of {n} True/False values; you gave {answer!r}.")
+        return None, wrong(f"{what} should be a list of {n} True/False values; you gave {quote(answer)}.")
     if len(flags) != n or any(f is None for f in flags):
-        return None, wrong(f"{what} should be a list of {n} True/False values (or 1/0); you gave {answer!r}.")
+        return None, wrong(f"{what} should be a list of {n} True/False values (or 1/0); you gave {quote(answer)}.")
     return flags, None
 
 
@@ -190,14 +191,11 @@ def check_sphere_hit(answer) -> Result:
 
 
 def check_cylinder_hit(answer) -> Result:
-    """Check where the ray of exercise 4 enters the capped cylinder (Goldman §19.4.2): through the
-    top cap, since the infinite cylinder's wall is met above the top.
+    """Check where the ray of exercise 4 enters the capped cylinder (Goldman §19.4.2): the first hit
+    with the wall or a cap that lies on the bounded solid.
 
     Recognises the infinite cylinder's wall hit, the exit (the open tube's only hit), and the plane
     of the bottom cap outside its disc.
-
-    >>> check_cylinder_hit(1.0)
-    Not yet: that is where the ray meets the infinite cylinder, but there the point is above the top (z > height): the bounded cylinder's wall is not there. Check the caps.
     """
     value, err = read_number(answer, "your t")
     if err is not None:
@@ -252,7 +250,7 @@ def check_torus_normal(answer) -> Result:
     if np.abs(got - P / np.linalg.norm(P)).max() <= tol:
         return wrong("that is P / |P|, a sphere's normal about the center; a torus's normal points from the core "
                      "circle (radius R in the plane z = 0), not from the center.")
-    return wrong(f"your normal is {fmt(np.linalg.norm(got - n), 2)} from the right one; differentiate "
+    return wrong(f"your normal is {far_off(got, n)} from the right one; differentiate "
                  f"(x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + y^2) and normalise.")
 
 
@@ -427,3 +425,7 @@ SLIPS = {
     "check_torus_bound": [[True, False, False, False, True], [True, False, True, True, True],
                           [False, True, True, False, False]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

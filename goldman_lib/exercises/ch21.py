@@ -25,6 +25,7 @@ import numpy as np
 
 from goldman_lib import shading
 from goldman_lib import vector_geometry as vg
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
 from goldman_lib.exercises.projects import Case, check_project
@@ -130,7 +131,7 @@ def check_newell_normal(answer) -> Result:
                      "check the sign of (y_i - y_(i+1))(z_i + z_(i+1)).")
     if _close(got, raw, 1e-3) or _close(got, raw / 2, 1e-3):
         return wrong("that is Newell's vector before normalising; divide it by its length.")
-    return wrong(f"your normal is {_dist(got, expected)} away from Newell's; sum the three coordinates over the "
+    return wrong(f"your normal is {_dist(got, expected)} from Newell's; sum the three coordinates over the "
                  f"four edges (wrapping from the last vertex to the first), then normalise.")
 
 
@@ -158,7 +159,7 @@ def check_vertex_normal(answer) -> Result:
     if _close(got, F.mean(0), tol):
         return wrong("that is the plain average of the Newell vectors: normalise each first, then normalise "
                      "their average.")
-    return wrong(f"your vertex normal is {_dist(got, expected)} away; normalise each face vector, add the three, "
+    return wrong(f"your vertex normal is {_dist(got, expected)}; normalise each face vector, add the three, "
                  f"and normalise the sum.")
 
 
@@ -303,7 +304,7 @@ def check_forward_differences(answer) -> Result:
     if abs(got[1] - (2 * a * x0 - a + b)) <= tol:
         return wrong("that is the backward difference f(x0) - f(x0 - 1); the forward difference looks one pixel "
                      "ahead, f(x0 + 1) - f(x0).")
-    return wrong(f"your answer is {_dist(got, expected)} away; compute f(x0), f(x0 + 1) and f(x0 + 2) and take "
+    return wrong(f"your answer is {_dist(got, expected)}; compute f(x0), f(x0 + 1) and f(x0 + 2) and take "
                  f"differences.")
 
 
@@ -456,3 +457,7 @@ SLIPS = {
     "check_forward_differences": [[0.876, 0.05, 0.004], [0.876, 0.046, 0.008], [0.876, 0.042, 0.008]],
     "check_lerp_angle": [30.0, 90.0, 100.89],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

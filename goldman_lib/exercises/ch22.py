@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import hidden_surfaces as hs
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_list  # the shared reader
 from goldman_lib.exercises.projects import Case, check_project
@@ -182,7 +183,7 @@ def check_scan_line_span(answer) -> Result:
     if np.allclose(got, [P[:, 0].min(), P[:, 0].max()], atol=tol):
         return wrong("that is the x-range of the whole polygon; on one scan line only the crossings of the two "
                      "active edges bound the span.")
-    return wrong(f"your span is {fmt(float(np.abs(got - expected).max()), 2)} off at one end; find the two edges whose "
+    return wrong(f"your span is {far_off(got, expected)} at one end; find the two edges whose "
                  f"y-range contains the scan line and intersect each with it.")
 
 
@@ -218,8 +219,8 @@ def check_split_points(answer) -> Result:
                      "distance (P - Q)·N changes sign, at the fraction s_a / (s_a - s_b) along it.")
     if any(min(np.linalg.norm(T - p, axis=1)) < tol for p in got):
         return wrong("one of your points is a vertex of the triangle; no vertex lies on the plane here.")
-    err = min(np.abs(got - cut).max(), np.abs(got - cut[::-1]).max())
-    return wrong(f"your points are {fmt(float(err), 2)} off; compute s = (P - Q)·N at each vertex and interpolate along "
+    near = cut if np.abs(got - cut).max() <= np.abs(got - cut[::-1]).max() else cut[::-1]
+    return wrong(f"your points are {far_off(got, near)}; compute s = (P - Q)·N at each vertex and interpolate along "
                  f"the two edges whose ends have opposite signs.")
 
 
@@ -411,3 +412,7 @@ SLIPS = {
     "check_split_points": [[[3, 0, 0], [0, 2, 0]]],
     "check_bsp_order": [[3, 1, 2, 0, 4], [4, 0, 3, 1, 2]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -9,8 +9,6 @@ chapter's worked examples (the cubic (0, 0), (1, 2.5), (3, 2.5), (4, 0.5) and th
 
 >>> print(PROBLEMS["check_bernstein_weights"])
 Give the 5 Bernstein weights B_0^4(0.2), ..., B_4^4(0.2) that the quartic Bezier curve gives its control points at t = 0.2, as a list (Goldman §24.3).
->>> check_bernstein_weights([0.4096, 0.4096, 0.1536, 0.0256, 0.0016])
-Correct: the 5 weights match, and they sum to one.
 """
 
 from __future__ import annotations
@@ -20,6 +18,7 @@ import math
 import numpy as np
 
 from goldman_lib import bezier
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, is_unanswered, off_by,
                                    read_points, unanswered, wrong)
 
@@ -101,11 +100,6 @@ def check_de_casteljau_point(answer) -> Result:
     answer: [x, y].  Recognises a point of an intermediate level of the construction (stopped too
     early), the point at 1 - t (t and 1 - t exchanged in (1-t) P_j + t P_{j+1}) and the centroid of
     the control points (equal weights instead of the Bernstein weights).
-
-    >>> check_de_casteljau_point([3, 4.5])
-    Correct: the point at t=0.25 is (3, 4.5).
-    >>> check_de_casteljau_point([9, 4.5])
-    Not yet: that is the point at t = 0.75: each step must move a fraction t = 0.25 of the way from P_j towards P_(j+1), (1-t) P_j + t P_(j+1), not a fraction 1 - t.
     """
     t = DE_CASTELJAU_T
     what = f"the point at t={fmt(t)}"
@@ -129,19 +123,16 @@ def check_de_casteljau_point(answer) -> Result:
     if np.linalg.norm(got - DE_CASTELJAU_CTRL.mean(axis=0)) <= 1e-4:
         return wrong(f"your point is the average of the control points; the curve weights them by the "
                      f"Bernstein values at t, which are not equal.")
-    return wrong(f"your point is {fmt(dist, 2)} from the curve at t={fmt(t)}; the curve point is a repeated "
+    return wrong(f"your point is {far_off(got, expected)} from the curve at t={fmt(t)}; the curve point is a repeated "
                  f"affine combination (1-t) P_j + t P_(j+1), three levels deep for a cubic.")
 
 
 def check_bernstein_weights(answer) -> Result:
-    """Check the list B_k^N(T), k = 0..N, with ``BERNSTEIN_N, BERNSTEIN_T`` = 4, 0.2 (Goldman §24.3).
+    """Check the list B_k^N(T), k = 0..N, with ``BERNSTEIN_N, BERNSTEIN_T`` (Goldman §24.3).
 
     Recognises the weights without the binomial coefficients, the list in reverse order (t and
     1 - t exchanged) and a wrong number of weights; otherwise names the first weight that is off.
     Tolerance 1e-4 per weight.
-
-    >>> check_bernstein_weights([0.4096, 0.1024, 0.0256, 0.0064, 0.0016])
-    Not yet: these are t^k (1-t)^(4-k) alone: B_k^4 also has the binomial coefficient C(4, k) (1, 4, 6, 4, 1), the number of paths down the de Casteljau pyramid.
     """
     n, t = BERNSTEIN_N, BERNSTEIN_T
     what = "the weights"
@@ -174,8 +165,6 @@ def check_end_conditions(answer) -> Result:
     answer: (4, 2).  Recognises end points that are not interpolated, inner points without the
     factor 1/3 (C'(0) = 3 (P1 - P0)), and P2 on the wrong side of P3 (P3 + C'(1)/3).
 
-    >>> check_end_conditions([[1, 1], [3, 2], [6, 3], [7, 1]])
-    Correct: the control points match: P1 = P0 + C'(0)/3 and P2 = P3 - C'(1)/3.
     >>> check_end_conditions([[1, 1], [7, 4], [4, 7], [7, 1]])
     Not yet: the inner points are the right direction but three times too far: C'(0) = 3 (P1 - P0) for a cubic, so P1 - P0 is a third of C'(0) (and likewise at the other end).
     """
@@ -208,8 +197,6 @@ def check_hodograph(answer) -> Result:
     answer: (3, 2), the points ``n (P_{k+1} - P_k)``.  Recognises the differences without the
     factor n, the differences taken the other way (P_k - P_{k+1}) and a wrong number of points.
 
-    >>> check_hodograph([[3, 9], [9, 3], [3, -9]])
-    Correct: the hodograph's control points match.
     >>> check_hodograph([[1, 3], [3, 1], [1, -3]])
     Not yet: these are the differences P_(k+1) - P_k; the hodograph multiplies them by the degree n = 3.
     """
@@ -236,8 +223,6 @@ def check_degree_elevation(answer) -> Result:
     answer: (4, 2).  Recognises the weights swapped between ``P_{k-1}`` and ``P_k``, moved end
     points and a wrong number of points.
 
-    >>> check_degree_elevation([[0, 0], [4, 2], [5, 5], [3, 9]])
-    Correct: the elevated control points match.
     >>> check_degree_elevation([[0, 0], [2, 1], [4, 7], [3, 9]])
     Not yet: the weights are swapped: Q_k = k/(n+1) P_(k-1) + (1 - k/(n+1)) P_k gives P_(k-1) the weight k/(n+1).
     """
@@ -268,8 +253,6 @@ def check_c1_join_unequal(answer) -> Result:
     answer: (2, 2), the points Q0 and Q1.  Recognises a gap at the join, the equal-interval answer
     (G1 only), the ratio inverted, and a tangent pointing the wrong way (a cusp).
 
-    >>> check_c1_join_unequal([[6, 3], [10, 1]])
-    Correct: the join is C1: Q0 = P3 and Q1 - Q0 = 2 (P3 - P2), the ratio of the parameter intervals.
     >>> check_c1_join_unequal([[6, 3], [8, 2]])
     Not yet: this would be C1 for equal parameter intervals; here the join is only G1. In the global parameter Q'(1) = 3 (Q1 - Q0) / 2 must equal P'(1) = 3 (P3 - P2) / 1: scale the leg by the ratio of the intervals.
     """
@@ -303,7 +286,7 @@ def check_c1_join_unequal(answer) -> Result:
     if collinear and leg @ lead > 0:
         return wrong("the tangent direction is right (G1), but the length of Q1 - Q0 is not: Q1 - Q0 must be "
                      "P3 - P2 times the ratio of the parameter intervals (Q's over P's).")
-    return wrong(f"Q1 is {fmt(float(np.linalg.norm(got[1] - expected[1])), 2)} from where it should be: Q1 - Q0 "
+    return wrong(f"Q1 is {far_off(got[1], expected[1])} from where it should be: Q1 - Q0 "
                  f"must be parallel to P3 - P2 and scaled by the ratio of the parameter intervals.")
 
 
@@ -314,8 +297,6 @@ def check_patch_point(answer) -> Result:
     interpolation of the four corners only, and the plain average of the nine control points.
     Tolerance 1e-4.
 
-    >>> check_patch_point([1, 2, 1.8125])
-    Correct: P(0.5, 0.25) is (1, 2, 1.812).
     >>> check_patch_point([1, 2, 0.5])
     Not yet: that is the bilinear interpolation of the four corner points: the patch also weights the five other control points, by the products of the quadratic Bernstein values in u and in v.
     """
@@ -340,7 +321,7 @@ def check_patch_point(answer) -> Result:
     if np.linalg.norm(got - net.reshape(-1, 3).mean(axis=0)) <= 1e-4:
         return wrong("that is the plain average of the nine control points; the patch weights P_ij by the "
                      "products of the Bernstein values in u and in v, which are not equal.")
-    return wrong(f"your point is {fmt(float(np.linalg.norm(got - expected)), 2)} from the patch point; run de "
+    return wrong(f"your point is {far_off(got, expected)} from the patch point; run de "
                  f"Casteljau on each row at v, then on the three results at u.")
 
 
@@ -350,9 +331,6 @@ def check_neville_point(answer) -> Result:
     answer: [x, y].  Recognises the Bezier point of the same three points (approximation instead of
     interpolation: de Casteljau's weights 1-t and t on every level), a point of the first level of
     Neville's pyramid (stopped too early), and a data point itself.
-
-    >>> check_neville_point([2, 3])
-    Correct: L(0.25) = (2, 3), on the parabola through the three points.
     """
     t = NEVILLE_T
     what = f"L({fmt(t)})"
@@ -379,7 +357,7 @@ def check_neville_point(answer) -> Result:
     if np.any(np.linalg.norm(NEVILLE_POINTS - got, axis=1) <= 1e-4):
         return wrong(f"that is one of the data points; the curve passes through them at their nodes, and {fmt(t)} is "
                      "not one of the nodes.")
-    return wrong(f"your point is {fmt(dist, 2)} from {what}; each level of Neville's pyramid is an affine combination "
+    return wrong(f"your point is {far_off(got, expected)} from {what}; each level of Neville's pyramid is an affine combination "
                  "weighted by distances to the nodes, and extrapolation (a weight below 0) is allowed.")
 
 
@@ -397,3 +375,7 @@ SLIPS = {
     "check_patch_point": [[2, 1, 1.8125], [1, 2, 0.5], [2, 2, 16 / 9]],
     "check_neville_point": [[2, 1.5], [2, 2], [2, 6], [4, 4], [2, 1]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -9,8 +9,6 @@ patches of §25.3) and from chapter 24's exercises (the one drill of smooth join
 
 >>> print(PROBLEMS["check_piece_parameter"])
 A cubic C is subdivided at t = 0.4, and the right piece R is parametrised over [0, 1] again. The point C(0.7) lies on R: at which parameter s of R (Goldman §25.2)?
->>> check_piece_parameter(0.5)
-Correct: C(0.7) is R(0.5).
 """
 
 from __future__ import annotations
@@ -18,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bezier
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, off_by, read_number, read_points,
                                    wrong)
 from goldman_lib.exercises.projects import Case, check_project
@@ -91,11 +90,6 @@ def check_subdivision_right(answer) -> Result:
 
     answer: (4, 2).  Recognises the right piece in reverse order (read down the right edge), the
     left piece, the split at 1 - t (t and 1 - t exchanged) and the first level of the pyramid.
-
-    >>> check_subdivision_right([[9, 2.875], [10, 2.75], [11, 3], [12, 4]])
-    Correct: the right piece is the right edge of the de Casteljau pyramid, read from the apex C(t) up to P3.
-    >>> check_subdivision_right([[12, 4], [11, 3], [10, 2.75], [9, 2.875]])
-    Not yet: these are the right points in reverse order: the right piece starts at the apex C(t) and ends at P3 = C(1).
     """
     what = "the right piece's control points"
     got, err = read_points(answer, what, ask="the right piece's four control points as [[x0, y0], ..., [x3, y3]]")
@@ -164,8 +158,6 @@ def check_flatness(answer) -> Result:
     Recognises the distance to the chord line (not to the evenly spaced chord points), the
     smaller of the two distances (max vs min) and the sum of the distances.
 
-    >>> check_flatness(5 ** 0.5)
-    Correct: the flatness is 2.236, the distance of P2 from the chord point L2.
     >>> check_flatness(2)
     Not yet: that is the largest distance of a control point from the chord LINE; the flatness compares P_k with the evenly spaced chord points L_k = (1 - k/n) P0 + (k/n) Pn, which also measures the uneven spacing along the chord.
     """
@@ -199,9 +191,6 @@ def check_patch_split(answer) -> Result:
 
     answer: (2, 3, 3).  Recognises the split taken in u (along the columns) instead of v, the
     other piece (v >= PATCH_V), rows reversed, and a wrong shape.
-
-    >>> check_patch_split([[[0, 0, 0], [0, 1, 2], [0, 2, 2]], [[4, 0, 0], [4, 1, 1], [4, 2, 1.5]]])
-    Correct: the net matches: each row (a quadratic in v) is subdivided by de Casteljau, and the rows stay rows.
     """
     what = "the sub-net"
     got, err = read_points(answer, what, ask="the sub-net as two rows of three points [x, y, z]")
@@ -230,7 +219,7 @@ def check_patch_split(answer) -> Result:
     k = int(bad[0])
     i, j = divmod(k, 3)
     dist = float(np.linalg.norm(got[i, j] - expected[i, j]))
-    return wrong(f"point [{i}][{j}] of {what} is {fmt(dist, 2)} from where it should be ({bad.size} of 6 points are "
+    return wrong(f"point [{i}][{j}] of {what} is {far_off(got[i, j], expected[i, j])} from where it should be ({bad.size} of 6 points are "
                  f"off). Hint: run de Casteljau at v on each row and keep the first point of every level.")
 
 
@@ -253,8 +242,6 @@ def check_box_pairs(answer) -> Result:
     Recognises 4 (every pair kept), the number of actual intersections, and 1 (only the pairs
     that really meet counted, or one half of each curve).
 
-    >>> check_box_pairs(3)
-    Correct: 3 of the 4 pairs keep overlapping boxes; the curve pieces of one of them do not meet at all, and further splitting discards it.
     >>> check_box_pairs(4)
     Not yet: not every pair survives: compare the x-ranges of the control points of each half of the parabola with those of each half of the segment.
     """
@@ -283,8 +270,6 @@ def check_crossing_bound(answer) -> Result:
     Recognises the number of control points, the degree (the bound for any polynomial curve of
     that degree) and the number of times the curve itself crosses the line.
 
-    >>> check_crossing_bound(3)
-    Correct: the control polygon crosses y = 0.5 three times, so the curve crosses it at most 3 times (here it does once).
     >>> check_crossing_bound(5)
     Not yet: 5 is the number of control points; the bound is the number of times the POLYGON crosses the line: count the sign changes of y - 0.5 along P0, ..., P4.
     """
@@ -318,8 +303,6 @@ def check_join_order(answer) -> Result:
     Recognises the order found by comparing tangents only (1), the degree (3) and answers that
     deny the curves meet.
 
-    >>> check_join_order(2)
-    Correct: R0, R1, R2 are the first three control points of P's continuation and R3 is not, so the join is C2 but not C3.
     >>> check_join_order(3)
     Not yet: C3 would need all four control points of R to be those of P's continuation, and then R would be P's own polynomial; compare R3 with -P0 + 6 P1 - 12 P2 + 8 P3.
     """
@@ -453,3 +436,7 @@ def check_subdivision_project(function) -> Result:
                          what="de Casteljau subdivision",
                          hint="the left polygon is the first point of every level of the pyramid, the right polygon "
                               "the last point of every level, from the apex to P_n")
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -8,8 +8,6 @@ chapter's worked examples (its cubic (0, 0), (1, 2.5), (3, 2.5), (4, 0.5) and th
 
 >>> print(PROBLEMS["check_polar_form"])
 The cubic polynomial P(t) = 2t^3 + 3t^2 - 6t + 1 has a blossom p(u1, u2, u3) of degree 3. Write it down from the blossoms of the monomials and give the value p(1, 2, 3) (Goldman §26.2).
->>> check_polar_form(12)
-Correct: p(1, 2, 3) = 12: 2 u1u2u3 + 3 (u1u2 + u1u3 + u2u3)/3 - 6 (u1 + u2 + u3)/3 + 1.
 """
 
 from __future__ import annotations
@@ -19,6 +17,7 @@ import math
 import numpy as np
 
 from goldman_lib import blossom as bl
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, off_by, read_number, read_points,
                                    wrong)
 
@@ -135,11 +134,6 @@ def check_blossom_value(answer) -> Result:
 
     Recognises the curve at the average of the arguments, the curve at the in-range parameter,
     the weights exchanged (u_r P_j + (1 - u_r) P_(j+1)) and a stop one level early.
-
-    >>> check_blossom_value([8.5, 4.5])
-    Correct: p(0.5, 0.5, 2) = (8.5, 4.5); the order of the arguments does not matter (symmetry).
-    >>> check_blossom_value([-0.5, 4.5])
-    Not yet: the weights are exchanged: level r is (1 - u_r) P_j + u_r P_(j+1), so u_r = 2 goes twice as far as P_(j+1) from P_j, past it.
     """
     u = np.array(BLOSSOM_ARGS)
     P = BLOSSOM_CTRL
@@ -163,7 +157,7 @@ def check_blossom_value(answer) -> Result:
     if np.any(np.linalg.norm(two - got, axis=1) <= 1e-6):
         return wrong("that is a point of level 2 of the pyramid; a cubic's blossom has three arguments and three "
                      "levels.")
-    return wrong(f"your point is {fmt(float(np.linalg.norm(got - expected)), 2)} from p{_args_text(u)}; run the three "
+    return wrong(f"your point is {far_off(got, expected)} from p{_args_text(u)}; run the three "
                  f"levels with u1, u2, u3 (the argument outside [0, 1] extrapolates).")
 
 
@@ -172,9 +166,6 @@ def check_interval_points(answer) -> Result:
 
     answer: (3, 2).  Recognises the curve points P(a), P((a+b)/2), P(b) (points on the curve,
     not blossom values), the points in reverse order and a wrong number of points.
-
-    >>> check_interval_points([[-4, 12], [0, -4], [4, 4]])
-    Correct: the control points over [-1, 1] are p(a, a), p(a, b), p(b, b).
     """
     a, b = INTERVAL
     P = INTERVAL_CTRL
@@ -203,8 +194,6 @@ def check_second_derivative(answer) -> Result:
     Recognises the blossom value without the factor n(n-1), with only the factor n, the first
     derivative instead of the second, and the point P(t).
 
-    >>> check_second_derivative([7.5, -16.5])
-    Correct: P''(0.25) = 6 p((0.25, 1), delta, delta) = (7.5, -16.5).
     >>> check_second_derivative([1.25, -2.75])
     Not yet: that is p((t, 1), delta, delta) itself; the second derivative is n(n-1) = 6 times it.
     """
@@ -229,7 +218,7 @@ def check_second_derivative(answer) -> Result:
     if np.linalg.norm(got - bl.blossom(P, [t] * n)) <= 1e-6:
         return wrong("that is the point P(t) = p((t,1), (t,1), (t,1)); the second derivative puts delta = (1, 0) into "
                      "two slots.")
-    return wrong(f"your vector is {fmt(float(np.linalg.norm(got - expected)), 2)} from P''(t). With delta at two "
+    return wrong(f"your vector is {far_off(got, expected)} from P''(t). With delta at two "
                  f"levels, take second differences of the control points, then one level at t, then the factor n(n-1).")
 
 
@@ -239,8 +228,6 @@ def check_monomial_to_bezier(answer) -> Result:
     Recognises the monomial coefficients themselves, the conversion without dividing by
     C(n, j), and a wrong count.
 
-    >>> check_monomial_to_bezier([2, 1, 2, 6])
-    Correct: P_k = sum_j C(k, j)/C(3, j) a_j gives 2, 1, 2, 6.
     >>> check_monomial_to_bezier([2, -1, 2, 12])
     Not yet: you used P_k = sum_j C(k, j) a_j: the blossom of t^j at (0^(n-k), 1^k) is C(k, j)/C(n, j), so divide by C(3, j).
     """
@@ -274,8 +261,6 @@ def check_bezier_to_monomial(answer) -> Result:
     Recognises the forward differences without the binomial factor C(n, j), the coefficients
     highest degree first, and a wrong count.
 
-    >>> check_bezier_to_monomial([1, -3, 3, 1])
-    Correct: a_j = C(3, j) Delta^j P_0 gives 1 - 3t + 3t^2 + t^3.
     >>> check_bezier_to_monomial([1, -1, 1, 1])
     Not yet: these are the forward differences Delta^j P_0 alone; a_j = P^(j)(0)/j! = C(n, j) Delta^j P_0 also has the binomial factor.
     """
@@ -309,3 +294,7 @@ SLIPS = {
     "check_monomial_to_bezier": [[2, -3, 6, 1], [2, -1, 2, 12]],
     "check_bezier_to_monomial": [[1, -1, 1, 1], [1, 3, -3, 1]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

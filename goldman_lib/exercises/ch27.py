@@ -8,8 +8,6 @@ circle and the sphere).
 
 >>> print(PROBLEMS["check_continuity_orders"])  # doctest: +ELLIPSIS
 A quartic B-spline (degree 4) has the knots ... (Goldman §27.4).
->>> check_continuity_orders([3, 2, 1, 0])
-Correct: at a knot of multiplicity m a quartic is C^(4 - m): C^3, C^2, C^1, C^0 at the knots 1, 2, 3, 4.
 """
 
 from __future__ import annotations
@@ -17,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import bspline
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_points, wrong
 
 __all__ = ["PROBLEMS", "SLIPS",
@@ -138,8 +137,6 @@ def _span_curve(k: int, u: float) -> np.ndarray:
 def check_local_de_boor(answer) -> Result:
     """Check C(``DE_BOOR_U``) of the quadratic ``CURVE_CTRL`` by local de Boor (Goldman §27.2).
 
-    >>> check_local_de_boor([4, 4.5])
-    Correct: C(2) = (4, 4.5): the span [t3, t4) = [1, 3), points P1..P3, weights 2/3 and 1/3 on level 1, 1/2 on level 2.
     >>> check_local_de_boor([4, 3.75])
     Not yet: you used de Casteljau's weight (u - t_k)/(t_(k+1) - t_k) on every level, as if P1..P3 were a Bezier polygon over the span; de Boor's weight at node i of level r is (u - t_i)/(t_(i+p+1-r) - t_i), with the knots of that node.
     """
@@ -167,7 +164,7 @@ def check_local_de_boor(answer) -> Result:
         if p <= other <= len(CURVE_CTRL) - 1 and _near(got, _span_curve(other, u), 1e-6):
             return wrong(f"you ran the pyramid on P{other - p}..P{other}, the points of another span; u = {fmt(u)} "
                          f"lies in [t{k}, t{k + 1}) = [{fmt(t[k])}, {fmt(t[k + 1])}), so P_(k-p)..P_k act.")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from {what}. Find the span "
+    return wrong(f"your point is {far_off(got, expected)} from {what}. Find the span "
                  f"t_k <= u < t_(k+1) first; on level r the weight of node i is (u - t_i)/(t_(i+p+1-r) - t_i).")
 
 
@@ -175,11 +172,6 @@ def check_local_de_boor(answer) -> Result:
 
 def check_basis_values(answer) -> Result:
     """Check the three quadratic B-splines non-zero at ``BASIS_U`` (Goldman §27.3).
-
-    >>> check_basis_values([1 / 24, 7 / 12, 3 / 8])
-    Correct: N_1,2, N_2,2, N_3,2 at u = 2.5 match, and they sum to 1 (partition of unity).
-    >>> check_basis_values([0.0625, 0.375, 0.5625])
-    Not yet: those are the Bernstein values of the span's local parameter (u - 1)/(3 - 1); on non-uniform knots the B-splines are not Bernstein polynomials: each level of the recurrence divides by its own knot difference, t_(k+r) - t_k.
     """
     what = f"[N_1,2, N_2,2, N_3,2] at u = {fmt(BASIS_U)}"
     got, err = read_points(answer, "your basis values", ask=what + " as a list of three numbers")
@@ -260,8 +252,6 @@ def _piece_value(i: int, x) -> np.ndarray:
 def check_spline_control_points(answer) -> Result:
     """Check the B-spline control points of the piecewise quadratic ``SPLINE_PIECES`` (Goldman §27.6).
 
-    >>> check_spline_control_points([0, 1, 1, -1])
-    Correct: the control points are the blossoms b(0, 0), b(0, 1), b(1, 3), b(3, 3); P2 comes out the same from either piece because the spline is C^1 at u = 1.
     >>> check_spline_control_points([0, 1, 1, -3])
     Not yet: P3 = b(3, 3) has a label in the span [1, 3]: use the blossom of the second piece there (you used the first piece's blossom beyond its span).
     """
@@ -300,8 +290,6 @@ def check_spline_control_points(answer) -> Result:
 def check_surface_point(answer) -> Result:
     """Check S(``SURF_UV``) of the degree (1, 2) surface (Goldman §27.8).
 
-    >>> check_surface_point([1.5, 1, 2.75])
-    Correct: S(1.5, 0.5) = (1.5, 1, 2.75): rows 1 and 2 weigh 1/2 each in u, the Bernstein weights 1/4, 1/2, 1/4 act in v.
     >>> check_surface_point([1, 1.5, 2.5])
     Not yet: you used the u knots along j and the v knots along i; i goes with u (the first knot vector), j with v.
     """
@@ -328,7 +316,7 @@ def check_surface_point(answer) -> Result:
     if _near(got[:2], expected[:2], 1e-6):
         return wrong(f"x and y are right, the height is {off_by(got[2], expected[2])}; run the v direction on the "
                      f"heights of each active row, then combine the rows in u.")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from {what}. Find u's span in the "
+    return wrong(f"your point is {far_off(got, expected)} from {what}. Find u's span in the "
                  f"u knots and v's in the v knots; S = sum_i sum_j N_i,1(u) N_j,2(v) P_ij.")
 
 
@@ -337,8 +325,6 @@ def check_surface_point(answer) -> Result:
 def check_nurbs_point(answer) -> Result:
     """Check C(``NURBS_U``) of the rational quadratic with weights ``NURBS_WEIGHTS`` (Goldman §27.9).
 
-    >>> check_nurbs_point([41 / 13, 14 / 13])
-    Correct: C(1.5) matches: the weights 2 and 3 pull the point towards P1 and P3 compared with the polynomial B-spline.
     >>> check_nurbs_point([3, 1.5])
     Not yet: that is the polynomial B-spline (every weight equal); multiply each N_k,2(u) by its weight w_k, and divide by the sum of the weighted basis values.
     """
@@ -365,7 +351,7 @@ def check_nurbs_point(answer) -> Result:
     if _near(got, bspline.nurbs_curve(P, 1 / w, t, 2, u), 1e-3):
         return wrong("you divided by the weights instead of multiplying: a larger weight pulls the curve towards "
                      "its control point, so w_k multiplies N_k,2(u).")
-    return wrong(f"your point is {fmt(np.linalg.norm(got - expected), 2)} from {what}. Compute N_1,2, "
+    return wrong(f"your point is {far_off(got, expected)} from {what}. Compute N_1,2, "
                  f"N_2,2, N_3,2 at u = {fmt(u)}, then C = sum w_k N_k P_k / sum w_k N_k.")
 
 
@@ -376,9 +362,6 @@ def check_pyramid_node_interval(answer) -> Result:
 
     answer: [a, b].  Recognises the support of the basis function N_i,p (the level ignored), the one
     span [t_i, t_(i+1)] (the node is shared by several spans), and a knot index shifted by one.
-
-    >>> check_pyramid_node_interval([1, 4])
-    Correct: the node P_3^1 is labelled (u, 2) and is a blossom value of the pieces on [1, 2) and [2, 4): u in [1, 4].
     """
     r, i = PYRAMID_NODE
     p, t = PYRAMID_DEGREE, PYRAMID_KNOTS
@@ -419,3 +402,7 @@ SLIPS = {
     "check_nurbs_point": [[3.0, 1.5], [5.125, 1.75], [5.125 / 7, 0.25], [2.9459, 1.7838], [3.0, 1.0]],
     "check_pyramid_node_interval": [[1.0, 5.0], [1.0, 2.0], [0.0, 2.0], [2.0, 5.0], [0.0, 1.0]],
 }
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

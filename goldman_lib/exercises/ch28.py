@@ -9,8 +9,6 @@ knot 0.4).  The crossing-count drill of variation diminishing lives in chapter 2
 
 >>> print(PROBLEMS["check_convergence_levels"])  # doctest: +ELLIPSIS
 After some levels of subdivision ... (Goldman §28.4.3).
->>> check_convergence_levels(5)
-Correct: 0.5 / 4^5 is below 0.001 and 0.5 / 4^4 is not: five more levels.
 """
 
 from __future__ import annotations
@@ -18,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import knot_insertion as ki
+from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, read_number,
                                    read_points, wrong)
 from goldman_lib.exercises.projects import Case, check_project, compare_points
@@ -120,8 +119,6 @@ def _boehm_variant(ctrl, knots, degree, u, *, shift: int = 0, alpha_knot: int = 
 def check_boehm_insert(answer) -> Result:
     """Check the five control points after inserting ``BOEHM_U`` into the quadratic (Goldman §28.3.1).
 
-    >>> check_boehm_insert([[0, 0], [1, 2], [2.5, 4], [4, 4], [6, 0]])
-    Correct: the new control points match: P0 kept, two new points on the legs P0P1 and P1P2, P2 and P3 kept (shifted one place).
     >>> check_boehm_insert([[0, 0], [1, 2], [3.5, 4], [4, 4], [6, 0]])
     Not yet: the weights are swapped: Q_i = (1 - a_i) P_(i-1) + a_i P_i, so a_i, which grows with u, goes with P_i.
     """
@@ -159,11 +156,6 @@ def check_boehm_insert(answer) -> Result:
 
 def check_oslo(answer) -> Result:
     """Check the six control points over ``OSLO_NEW_KNOTS`` (Goldman §28.3.2).
-
-    >>> check_oslo([[0, 0], [1, 2], [2.5, 4], [3.5, 4], [5, 2], [6, 0]])
-    Correct: the refined control points match.
-    >>> check_oslo([[0, 0], [1, 2], [2.5, 4], [4, 4], [6, 0]])
-    Not yet: these are the points after inserting 0.5 alone; the Oslo algorithm inserts 0.5 and 1.5 together, giving 6 points.
     """
     what = "the refined control points"
     got, err = read_points(answer, what)
@@ -191,8 +183,6 @@ def check_oslo(answer) -> Result:
 def check_bezier_pieces(answer) -> Result:
     """Check the two Bezier polygons of the quadratic (Goldman §28.3.3).
 
-    >>> check_bezier_pieces([[[0, 0], [2, 4], [3, 4]], [[3, 4], [4, 4], [6, 0]]])
-    Correct: the Bezier pieces match.
     >>> check_bezier_pieces([[[0, 0], [2, 4], [4, 4]], [[2, 4], [4, 4], [6, 0]]])
     Not yet: the pieces must meet at one point, the curve point C(1) = b(1, 1): insert the knot 1 once more, so that it has multiplicity p = 2, and both pieces share that new control point.
     """
@@ -218,8 +208,6 @@ def check_bezier_pieces(answer) -> Result:
 def check_chaikin(answer) -> Result:
     """Check one Lane-Riesenfeld level of degree 2 on ``CHAIKIN_CTRL`` (Goldman §28.4.1).
 
-    >>> check_chaikin([[0.5, 1.5], [1.5, 4.5], [4, 6], [8, 6], [10, 4.5], [10, 1.5]])
-    Correct: the points of the refined polygon match: 1/4 and 3/4 along each leg.
     >>> check_chaikin([[0, 0], [1, 3], [2, 6], [6, 6], [10, 6], [10, 3], [10, 0]])
     Not yet: that is one averaging round (degree 1: the midpoints inserted); degree 2 averages twice.
     """
@@ -252,11 +240,6 @@ def check_chaikin(answer) -> Result:
 
 def check_schaefer(answer) -> Result:
     """Check one level of Schaefer's algorithm on the non-uniform quadratic (Goldman §28.4.2).
-
-    >>> check_schaefer([[0, 0], [1.5, 3], [4, 6], [7, 6], [10.5, 3], [12, 0]])
-    Correct: the six new control points match: they are the blossoms at consecutive knots of 0, 0, 0, 0.5, 1, 2, 3, 3, 3.
-    >>> check_schaefer([[0.75, 1.5], [2.25, 4.5], [4.5, 6], [7.5, 6], [9.75, 4.5], [11.25, 1.5]])
-    Not yet: that is Lane-Riesenfeld's answer (plain averages, Chaikin's quarter and three-quarter points): right for uniform knots only. With knot intervals of different lengths the weights come from the blossom labels, and the clamped ends keep P0 and P3.
     """
     what = "the new control points"
     got, err = read_points(answer, what)
@@ -441,3 +424,7 @@ def check_boehm_project(function) -> Result:
                          what="Boehm's knot insertion",
                          hint=("with t_k <= u < t_(k+1), keep P_0..P_(k-p) and P_k..P_n; for k-p+1 <= i <= k put "
                                "Q_i = (1 - a_i) P_(i-1) + a_i P_i with a_i = (u - t_i)/(t_(i+p) - t_i)"))
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

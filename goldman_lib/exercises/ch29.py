@@ -4,9 +4,6 @@
 Each exercise's data are module constants, so the notebook prints the problem from here and the
 checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
 ``SLIPS`` the wrong answers of the kinds each checker recognises.
-
->>> check_normal_curve_point([32 / 81, 24 / 81, 8 / 81, 1 / 81])
-Correct: N(1/3) = (B_1^4, B_2^4, B_3^4, B_4^4)(1/3) = (0.3951, 0.2963, 0.09877, 0.01235).
 """
 
 from __future__ import annotations
@@ -17,6 +14,7 @@ import numpy as np
 
 from goldman_lib import affine
 from goldman_lib import subdivision_matrices as sm
+from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -94,12 +92,12 @@ def _far(got, expected, what, hint) -> Result:
         if exp.size <= 4 and got.size == exp.size and exp.ndim == 1 and exp.size != 2:
             k = int(np.argmax(np.abs(got - exp)))
             return wrong(f"coordinate x{k + 1} of {what} is {off_by(got[k], exp[k])}; {hint}.")
-        return wrong(f"{what} is {fmt(np.linalg.norm(got - exp), 2)} away from where it should be; {hint}.")
+        return wrong(f"{what} is {far_off(got, exp)} from where it should be; {hint}.")
     err = np.linalg.norm((got - exp).reshape(len(exp), -1), axis=1)
     bad = np.flatnonzero(err > REL_TOL * np.maximum(1.0, np.abs(exp).reshape(len(exp), -1).max(axis=1)))
     k = int(bad[0])
     others = "the only point that is off" if bad.size == 1 else f"one of {bad.size} points off"
-    return wrong(f"point {k} of {what} is {fmt(err[k], 2)} away from where it should be ({others}); {hint}.")
+    return wrong(f"point {k} of {what} is {far_off(got[k], exp[k])} from where it should be ({others}); {hint}.")
 
 
 def _matrix_entry(got, expected, name, hint) -> Result:
@@ -114,9 +112,6 @@ def check_left_matrix_at_t(answer) -> Result:
     """Check L of a quadratic Bezier curve split at ``SPLIT_T`` (Goldman §29.2); recognises the
     transpose, R, the matrix at 1 - t (t and 1 - t swapped), the matrix at 1/2, and rows that do not
     sum to one.
-
-    >>> check_left_matrix_at_t([[1, 0, 0], [2 / 3, 1 / 3, 0], [4 / 9, 4 / 9, 1 / 9]])
-    Correct: row i of L is the left edge of the de Casteljau triangle at t = 1/3: (B_0^i, ..., B_i^i)(1/3).
     """
     got, err = _read(answer, "L", "L as a list of rows", (3, 3))
     if err is not None:
@@ -146,9 +141,6 @@ def check_left_matrix_at_t(answer) -> Result:
 def check_bspline_right_half(answer) -> Result:
     """Check R @ P for the uniform cubic B-spline segment ``BSPLINE_CTRL`` (Goldman §29.2);
     recognises L @ P, the Bezier R @ P, the transposed matrix and the whole refined polygon.
-
-    >>> check_bspline_right_half([[2.25, 5.25], [4, 6], [5.75, 5.5], [7, 4]])
-    Correct: R @ P uses the cubic mask 1/8 (1, 6, 1) at the old points and 1/2 (1, 1) at the midpoints: the four points match.
     """
     got, err = read_points(answer, "your points", ask="the four points as [[x, y], ...]")
     if err is not None:
@@ -188,9 +180,6 @@ def check_composed_fixed_point(answer) -> Result:
     """Check the fixed point of ``X -> X M_L M_R`` for ``COMPOSED_CTRL`` (Goldman §29.3); recognises
     the maps taken in the other order, the fixed points of M_L and M_R alone, C(1/2), and the
     parameter typed instead of the point.
-
-    >>> check_composed_fixed_point([16 / 3, 8 / 3])
-    Correct: M_L sends C(t) to C(t/2) and M_R sends C(s) to C((1 + s)/2), so the composite sends C(t) to C(1/2 + t/4) and fixes C(2/3).
     """
     got, err = read_points(answer, "your point", ask="the fixed point as [x, y]")
     if err is not None:
@@ -258,9 +247,6 @@ def _fractal():
 def check_fractal_joint(answer) -> Result:
     """Check the point where the halves of the fractal meet (Goldman §29.4); recognises the Bezier
     midpoint C(1/2) and weights that do not sum to one.
-
-    >>> check_fractal_joint([2, -2])
-    Correct: the joint is the last row of L (the first of R) applied to the control points: u P0 + v P1 + u P2 = (2, -2).
     """
     got, err = read_points(answer, "your point", ask="the joint as [x, y]")
     if err is not None:
@@ -288,9 +274,6 @@ def check_fractal_quarter_joint(answer) -> Result:
     """Check where the first two quarters of the fractal meet (Goldman §29.4): the joint of the
     left half, ``(L @ L @ P)[2]``; recognises the right half's joint, the Bezier point C(1/4), the
     joint of the whole curve, and the midpoint of P0 and the joint.
-
-    >>> check_fractal_quarter_joint([1, -2.5])
-    Correct: the left half has control points L @ P = P0, (P0 + P1)/2 and the joint, and its own joint is u, v, u applied to those: (1, -2.5).
     """
     got, err = read_points(answer, "your point", ask="the point as [x, y]")
     if err is not None:
@@ -466,3 +449,7 @@ def check_subdivision_matrices_project(function) -> Result:
                          compare=_compare_matrices, what="subdivision_matrices(n, t)",
                          hint="L[i, j] = B_j^i(t) (the left edge of the de Casteljau triangle) and "
                               "R[i, j] = B_{j-i}^{n-i}(t) (its right edge)")
+
+
+# Every checker above reads its answer through the shared layer: any object gives a Result.
+guard_checkers(globals())

@@ -11,8 +11,14 @@ which
   arguments cannot spoil the next case), under a time limit per case;
 * compares what it returned with what the library computes, through a ``compare`` function that
   says *what* is wrong ("point 2 is 0.3 from the curve", "4 points, expected 7");
-* never crashes: an exception inside the learner's function is reported as theirs, with its type,
-  message and the line of their cell it came from; a slow case is stopped and reported;
+* never crashes: anything raised inside the learner's function (an Exception, RecursionError,
+  SystemExit, ...; only KeyboardInterrupt, the learner stopping the kernel, goes through) is
+  reported as theirs, with its type, message and the line of their cell it came from; a result it
+  cannot read (complex numbers where real ones are expected, 10**400, an object whose ``__float__``
+  raises) is reported, not crashed on; a slow case is stopped and reported: the time limit is a
+  :class:`ProjectTimeout`, a BaseException that the learner's ``except Exception`` does not catch,
+  raised again every 50 ms until the function gives up, and a function that still returns late is
+  reported as too slow;
 * stops at the first failing case and reports the input, the learner's output, what was expected of
   it, and a hint; or confirms how many cases (and which kinds) passed.
 
@@ -46,7 +52,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from goldman_lib.exercises import Result, correct, fmt, is_unanswered, unanswered, wrong
+from goldman_lib.exercises import Result, Unreadable, correct, fmt, is_unanswered, plain, quote, unanswered, wrong
 
 __all__ = ["Case", "check_project", "describe", "compare_numbers", "compare_points", "ProjectTimeout"]
 
@@ -63,8 +69,11 @@ class Case:
     kind: str = ""
 
 
-class ProjectTimeout(Exception):
-    """Raised inside a learner's function that ran past the time limit of one case."""
+class ProjectTimeout(BaseException):
+    """Raised inside a learner's function that ran past the time limit of one case.
+
+    A BaseException, like KeyboardInterrupt, so that a learner's ``try: ... except Exception: pass``
+    around the slow part does not swallow it."""
 
 
 def describe(value, limit: int = 6) -> str:
@@ -78,10 +87,11 @@ def describe(value, limit: int = 6) -> str:
     "'abc' (a str)"
     """
     try:
+        if isinstance(value, (str, bytes)) or np.iscomplexobj(value):
+            raise TypeError
         arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        text = repr(value)
-        return (text if len(text) <= 80 else text[:77] + "...") + f" (a {type(value).__name__})"
+    except Exception:  # noqa: BLE001 - anything the learner returned
+        return _short_repr(value) + f" (a {type(value).__name__})"
     if arr.ndim == 0:
         return fmt(arr)
     if arr.ndim == 1 and arr.size <= limit:
@@ -90,6 +100,21 @@ def describe(value, limit: int = 6) -> str:
         return ", ".join(fmt(p) for p in arr)
     head = ", ".join(fmt(p) for p in arr.reshape(arr.shape[0], -1)[:3]) if arr.ndim >= 1 else ""
     return f"an array of shape {arr.shape} starting {head}"
+
+
+def _short_repr(value, limit: int = 80) -> str:
+    """``repr`` cut to ``limit`` characters: built-in data through the bounded
+    :func:`~goldman_lib.exercises.quote` (never deep, never long), an object of a class of its own
+    by its ``repr`` (a chapter may wrap results to describe them), guarded against one that raises."""
+    if isinstance(value, (str, bytes, int, float, complex, list, tuple, dict, set, frozenset, np.ndarray, np.generic)):
+        return quote(value, limit)
+    try:
+        text = repr(value)
+    except Exception:  # noqa: BLE001 - the learner's __repr__
+        return quote(value, limit)
+    if not isinstance(text, str):
+        return quote(value, limit)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def compare_numbers(tol: float = 1e-6) -> Callable[[Any, Any, Case], str | None]:
@@ -148,9 +173,16 @@ def _learner_line(exc: BaseException, function) -> str:
     return f" at line {rel} of its cell" + (f": `{text}`" if text else "")
 
 
+#: After the time limit, ProjectTimeout is raised again every this many seconds until the learner's
+#: function gives up (a loop that catches it and carries on gets it again at its next step).
+RETRY_INTERVAL = 0.05
+
+
 def _call_with_limit(function, args, kwargs, time_limit: float):
     """Call ``function`` with a wall-clock limit: a SIGALRM timer where possible (the main thread
-    of a POSIX process, as in a Jupyter kernel), otherwise a check after the call returns."""
+    of a POSIX process, as in a Jupyter kernel), raising :class:`ProjectTimeout` at the limit and
+    every ``RETRY_INTERVAL`` after it; in any case, a call that returns after the limit raises
+    ProjectTimeout too (a function that caught the limit and returned anyway is still too slow)."""
     use_alarm = hasattr(signal, "setitimer") and threading.current_thread() is threading.main_thread()
     start = time.perf_counter()
     if not use_alarm:
@@ -159,16 +191,39 @@ def _call_with_limit(function, args, kwargs, time_limit: float):
             raise ProjectTimeout
         return out
 
+    active = [True]
+
     def on_alarm(signum, frame):
-        raise ProjectTimeout
+        if active[0]:
+            raise ProjectTimeout
 
     previous = signal.signal(signal.SIGALRM, on_alarm)
-    signal.setitimer(signal.ITIMER_REAL, time_limit)
+    signal.setitimer(signal.ITIMER_REAL, time_limit, RETRY_INTERVAL)
     try:
-        return function(*args, **kwargs)
+        out = function(*args, **kwargs)
     finally:
+        active[0] = False
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+    if time.perf_counter() - start > time_limit:
+        raise ProjectTimeout
+    return out
+
+
+def _exception_text(exc: BaseException) -> str:
+    """The learner's exception message, short, whatever its ``__str__`` does."""
+    try:
+        message = str(exc)
+    except Exception:  # noqa: BLE001
+        message = "its message could not be shown"
+    return message if len(message) <= 120 else message[:117] + "..."
+
+
+def _has_complex(value) -> bool:
+    try:
+        return bool(np.iscomplexobj(value)) or (isinstance(value, (list, tuple)) and any(_has_complex(v) for v in value[:50]))
+    except Exception:  # noqa: BLE001
+        return False
 
 
 def check_project(function, cases, *, reference: Callable, compare: Callable, what: str,
@@ -202,10 +257,10 @@ def check_project(function, cases, *, reference: Callable, compare: Callable, wh
         except RecursionError as exc:
             return wrong(f"{head}: your function recursed too deeply{_learner_line(exc, function)} "
                          f"(is the base case reached?).{suffix}")
-        except Exception as exc:  # the learner's own error, reported as theirs
-            message = str(exc)
-            message = message if len(message) <= 120 else message[:117] + "..."
-            return wrong(f"{head}: your function raised {type(exc).__name__} ({message!r})"
+        except KeyboardInterrupt:
+            raise                        # the learner stopped the kernel: not a verdict
+        except BaseException as exc:     # noqa: BLE001 - the learner's own error (SystemExit too), reported as theirs
+            return wrong(f"{head}: your function raised {type(exc).__name__} ({_exception_text(exc)!r})"
                          f"{_learner_line(exc, function)}.{suffix}")
         if got is None:
             if i == 1:
@@ -213,9 +268,15 @@ def check_project(function, cases, *, reference: Callable, compare: Callable, wh
                                      f"(it must return its result).", answered=False)
             return wrong(f"{head}: your function returned None (a path without a return?).{suffix}")
         try:
+            plain(got, complex_ok=_has_complex(expected), max_items=10 ** 7, max_text=10 ** 6)
+        except Unreadable as exc:
+            reason = str(exc)
+            if not reason.endswith("not numbers or text"):   # an object of its own kind: compare decides
+                return wrong(f"{head}: your function returned {quote(got)}; I could not read it: {reason}.{suffix}")
+        try:
             problem = compare(got, expected, case)
-        except (TypeError, ValueError) as exc:
-            problem = f"it is not of the expected kind ({exc})"
+        except Exception as exc:  # noqa: BLE001 - whatever the learner's result does to the comparison
+            problem = f"it is not of the expected kind ({type(exc).__name__}: {_exception_text(exc)})"
         if problem is not None:
             return wrong(f"{head}: your function returned {describe(got)}; {problem}.{suffix}")
     kinds = sorted({c.kind for c in cases if c.kind})
