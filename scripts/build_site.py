@@ -258,6 +258,27 @@ def run_locally_box(cfg: dict, notebook: str) -> str:
     )
 
 
+FENCE = re.compile(r"^(```|~~~).*?^\1[ \t]*$", re.M | re.S)
+MATH_SPAN = re.compile(r"\$\$.+?\$\$|(?<![\\$])\$(?!\$)[^$]+?(?<!\\)\$", re.S)
+
+
+def one_line_math(markdown: str) -> str:
+    """Each ``$...$`` and ``$$...$$`` span on one line, outside code fences.  Jupyter takes the
+    mathematics out before it reads the markdown, MyST after: a formula's continuation line that
+    starts with ``- `` or ``1. `` would otherwise become a list item and leave the formula raw."""
+    def join(m: re.Match) -> str:
+        span = m.group(0)
+        return span if "\n\n" in span else re.sub(r"[ \t]*\n[ \t]*", " ", span)
+
+    out, last = [], 0
+    for fence in FENCE.finditer(markdown):
+        out.append(MATH_SPAN.sub(join, markdown[last:fence.start()]))
+        out.append(fence.group(0))
+        last = fence.end()
+    out.append(MATH_SPAN.sub(join, markdown[last:]))
+    return "".join(out)
+
+
 def prepare_notebook(nb: nbformat.NotebookNode, name: str, cfg: dict) -> dict:
     """Prepare a notebook for its static page, in place; returns counts for the build log."""
     labels = {}
@@ -272,6 +293,7 @@ def prepare_notebook(nb: nbformat.NotebookNode, name: str, cfg: dict) -> dict:
     heading, before, images = "", "", 0
     for i, cell in enumerate(nb.cells):
         if cell.cell_type == "markdown":
+            cell.source = one_line_math(cell.source)
             found = HEADING.findall(cell.source)
             if found:
                 heading = _plain(found[-1][1])
