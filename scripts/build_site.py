@@ -81,6 +81,26 @@ figure.goldman-static-view .caption-number { display: none; }
 """
 
 
+SEARCH_JS = """\
+// Search excerpts never quote a worked solution: Sphinx makes each result's excerpt from the text
+// of the page, closed <details> blocks included, so they are taken out first.
+(function () {
+  function patch() {
+    if (typeof Search === "undefined" || Search.goldmanPatched || typeof Search.htmlToText !== "function") return;
+    const htmlToText = Search.htmlToText;
+    Search.htmlToText = function (htmlString, anchor) {
+      const doc = new DOMParser().parseFromString(htmlString, "text/html");
+      doc.querySelectorAll("details").forEach(function (d) { d.remove(); });
+      return htmlToText(doc.documentElement.outerHTML, anchor);
+    };
+    Search.goldmanPatched = true;
+  }
+  patch();
+  document.addEventListener("DOMContentLoaded", patch);
+})();
+"""
+
+
 # --- settings ----------------------------------------------------------------------------------
 
 def git_origin() -> str | None:
@@ -173,6 +193,7 @@ def config_yaml(cfg: dict) -> str:
                 # not "_static": Jupyter Book would add every .js file in it (MathJax's too) to every page
                 "html_static_path": [STATIC],
                 "html_css_files": ["site.css"],
+                "html_js_files": ["search-excerpts.js"],
                 "numfig": False,
                 "html_show_sphinx": False,
             },
@@ -366,6 +387,7 @@ def write_source(src: Path, cfg: dict, quiet: bool = False) -> dict:
     _write_if_changed(src / "_config.yml", config_yaml(cfg))
     _write_if_changed(src / STATIC / "site.css", SITE_CSS)
     _write_if_changed(src / STATIC / "favicon.png", favicon())
+    _write_if_changed(src / STATIC / "search-excerpts.js", SEARCH_JS)
     totals = {"static_views": 0, "images": 0}
     for stem in ["index", *chapters]:
         nb = nbformat.read(COURSE / f"{stem}.ipynb", as_version=4)

@@ -308,4 +308,33 @@ def test_site_search(browser_page, site, query, stem):
     hits = page.evaluate("() => Array.from(document.querySelectorAll('#search-results ul.search li a'))"
                          ".map(a => a.getAttribute('href'))")
     assert any(h.split("#")[0].split("?")[0] == f"{stem}.html" for h in hits), f"{query!r} found {hits}"
+    # the excerpts under the results quote the chapters, never a worked solution
+    page.wait_for_function("() => Array.from(document.querySelectorAll('#search-results ul.search li'))"
+                           ".every(li => li.querySelector('p.context'))", timeout=60_000)
+    excerpts = page.evaluate("() => Array.from(document.querySelectorAll('#search-results ul.search li p.context'))"
+                             ".map(p => p.textContent)")
+    solutions = " ".join(s for h in hits for s in _solution_texts(h.split("#")[0].split("?")[0]))
+    leaked = [e for e in excerpts if any(" ".join(w) in solutions for w in _windows(e.split(), 8))]
+    assert not leaked, f"search excerpts quote worked solutions: {leaked}"
     assert not outside and not page.console_errors, (outside, page.console_errors)
+
+
+def _windows(words: list[str], n: int):
+    return [words[i:i + n] for i in range(max(0, len(words) - n + 1))]
+
+
+@functools.lru_cache(maxsize=None)
+def _solution_texts(page: str) -> tuple[str, ...]:
+    """The text of each worked solution of a built page, whitespace normalised."""
+    stem = page.removesuffix(".html")
+    if not (COURSE / f"{stem}.ipynb").exists():
+        return ()
+    html = (OUT / "html" / page).read_text(encoding="utf-8")
+    blocks = re.findall(r"<details>(.*?)</details>", html, re.S)
+    texts = []
+    for block in blocks:
+        text = re.sub(r"<[^>]+>", " ", block)
+        text = re.sub(r"&[a-z]+;|&#\d+;", " ", text)
+        texts.append(" ".join(text.split()))
+    assert len(texts) == _notebook_facts(stem)["solutions"]
+    return tuple(texts)
