@@ -10,12 +10,12 @@ ARGS ?=
 export PATH := $(BIN):$(PATH)
 export PYTHONHASHSEED := 0
 
-.PHONY: lab test outputs slides bench venv clean
+.PHONY: lab test outputs slides site bench venv clean
 
 $(STAMP): pyproject.toml
 	@bash scripts/make_venv.sh "$(PYTHON)" "$(VENV)"
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[lab,test]'
+	$(BIN)/python -m pip install --quiet -e '.[lab,test,site]'
 	@touch $(STAMP)
 
 venv: $(STAMP)
@@ -38,6 +38,12 @@ outputs: $(STAMP)
 ## make slides: an offline reveal.js deck per chapter in build/slides/.
 slides: $(STAMP)
 	$(BIN)/python scripts/build_slides.py
+
+## make site: the whole course as a static website in build/site/html (Jupyter Book 1.x, from the
+## stored outputs, offline). Launch buttons: SITE_REPO (default: origin), SITE_BRANCH (main), and
+## SITE_HUB=https://your.hub adds a JupyterHub button (nbgitpuller).
+site: $(STAMP)
+	$(BIN)/python scripts/build_site.py --repo "$(SITE_REPO)" --branch "$(SITE_BRANCH)" --hub "$(SITE_HUB)"
 
 ## make bench: speed against reference libraries, printed as ratios.
 bench: $(STAMP)

@@ -52,14 +52,16 @@ _TEMPLATE = """{%- extends 'reveal/index.html.j2' -%}
 _TEMPLATE_NAME = "goldman_offline_slides.html.j2"
 
 
-def ensure_vendor(out: Path = OUT, quiet: bool = False) -> Path:
-    """Install reveal.js, require.js, jQuery and MathJax into ``out/vendor`` unless the same
-    versions are already there; return the vendor directory."""
+def ensure_vendor(out: Path = OUT, quiet: bool = False, packages: dict[str, str] | None = None) -> Path:
+    """Install reveal.js, require.js, jQuery and MathJax (or the npm ``packages`` given, name ->
+    version: the site's MathJax) into ``out/vendor`` unless the same versions are already there;
+    return the vendor directory."""
+    packages = VENDOR_PACKAGES if packages is None else packages
     vendor = out / VENDOR_DIRNAME
     stamp = vendor / "goldman-vendor.json"
-    wanted = json.dumps(VENDOR_PACKAGES, sort_keys=True)
+    wanted = json.dumps(packages, sort_keys=True)
     modules = vendor / "node_modules"
-    if stamp.exists() and stamp.read_text() == wanted and all((modules / p).is_dir() for p in VENDOR_PACKAGES):
+    if stamp.exists() and stamp.read_text() == wanted and all((modules / p).is_dir() for p in packages):
         return vendor
     npm = shutil.which("npm")
     if npm is None:
@@ -69,12 +71,12 @@ def ensure_vendor(out: Path = OUT, quiet: bool = False) -> Path:
     (vendor / "package.json").write_text(json.dumps(
         {"name": "goldman-slides-vendor", "private": True, "description": "local copies for the offline decks"},
         indent=1))
-    specs = [f"{name}@{version}" for name, version in VENDOR_PACKAGES.items()]
+    specs = [f"{name}@{version}" for name, version in packages.items()]
     if not quiet:
         print(f"build_slides: fetching {' '.join(specs)} into {vendor.relative_to(REPO)} (once)")
     subprocess.run([npm, "install", "--prefix", str(vendor), "--no-audit", "--no-fund", "--no-save",
                     "--ignore-scripts", "--loglevel=error", *specs], check=True)
-    missing = [p for p in VENDOR_PACKAGES if not (modules / p).is_dir()]
+    missing = [p for p in packages if not (modules / p).is_dir()]
     if missing:
         raise SystemExit(f"build_slides: npm did not install {missing}")
     stamp.write_text(wanted)
