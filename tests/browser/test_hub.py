@@ -1,6 +1,8 @@
 """A class on one JupyterHub: two learners follow the instructor's nbgitpuller link, each gets their
 own copy of the course, runs chapter 6 in JupyterLab with its widgets, and a second pull after the
-instructor pushed a change keeps each learner's own edit (nbgitpuller's merge rules).
+instructor pushed a change keeps each learner's own edit (nbgitpuller's merge rules: the learner's
+edited notebook stays, lines both changed keep the learner's version, a deleted file comes back,
+the instructor's new file arrives).
 
 The test starts everything on 127.0.0.1 and stops it again:
 
@@ -285,6 +287,13 @@ def test_class_on_one_hub(hub, browser_page):
                       f"slider changed {frac:.1%} of the editor, note saved ({time.monotonic() - t0:.0f} s: "
                       f"{t_lab - t0:.0f} s to Lab, {t_run - t_lab:.0f} s to run)")
 
+    # Between the pulls, learner 1 also adds a line at the end of the README (where the instructor
+    # adds one too) and learner 2 deletes the course map.
+    own_line = "My own line at the end of the README (learner1)."
+    with open(home / "learner1" / COURSE / "README.md", "a") as f:
+        f.write("\n" + own_line + "\n")
+    (home / "learner2" / COURSE / "course" / "index.ipynb").unlink()
+
     # The instructor pushes a change to the course.
     work = hub["tmp"] / "instructor"
     _git("clone", "--quiet", "--depth", "1", "--branch", BRANCH, hub["repo"], str(work))
@@ -309,7 +318,15 @@ def test_class_on_one_hub(hub, browser_page):
         assert not any(_note(o) in text for o in others), f"{learner}'s copy holds another learner's note"
         assert (copy / "course" / "ANNOUNCEMENTS.md").read_text().strip() == announcement, (
             f"{learner} did not get the instructor's new file")
-        assert announcement in (copy / "README.md").read_text(), f"{learner} did not get the instructor's change"
+        # nbgitpuller's merge rules: lines both changed keep the learner's version; a file the
+        # learner deleted comes back
+        readme = (copy / "README.md").read_text()
+        if learner == "learner1":
+            assert own_line in readme and announcement not in readme, (
+                "learner1's README: where both changed the same lines, the learner's version should stay")
+        else:
+            assert announcement in readme and own_line not in readme, "learner2 did not get the README change"
+            assert (copy / "course" / "index.ipynb").is_file(), "learner2's deleted course map did not come back"
         if last:
             page.wait_for_function("(note) => document.body.innerText.includes(note)", arg=_note(learner),
                                    timeout=60_000)
