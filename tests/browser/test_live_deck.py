@@ -40,7 +40,7 @@ _JS_ON_SCREEN = """
 """
 
 _JS_DECK_WRAPS = """
-() => { const c = document.querySelector('.jp-Deck .jp-Cell .cm-content');
+() => { const c = document.querySelector('.jp-Deck .jp-CodeCell .cm-content');
         const o = document.querySelector('.jp-Deck .jp-OutputArea-output pre');
         return !!c && ['pre-wrap', 'break-spaces'].includes(getComputedStyle(c).whiteSpace) &&
                (!o || getComputedStyle(o).whiteSpace === 'pre-wrap'); }
@@ -75,7 +75,8 @@ def test_live_deck_view_responds(request, notebook, selector, title):
     lab.command("deck:start")
     try:
         # the course's Lab settings (binder/overrides.json, installed by `make venv`): in the deck,
-        # long code lines wrap (CodeMirror reads white-space from its content's style)
+        # long code lines wrap (CodeMirror reads white-space from its content's style; without the
+        # settings, a 900 px wide deck of chapter 17 showed 3 code cells wider than their editor)
         try:
             page.wait_for_function(_JS_DECK_WRAPS, timeout=30_000)
         except Exception:
