@@ -12,22 +12,28 @@ export PYTHONHASHSEED := 0
 
 .PHONY: lab test outputs slides site bench venv clean
 
+# JupyterLab settings the course ships (binder/overrides.json: the live deck wraps long code lines
+# and outputs), installed where the environment's JupyterLab reads them.
+LAB_OVERRIDES := $(VENV)/share/jupyter/lab/settings/overrides.json
+$(LAB_OVERRIDES): binder/overrides.json $(STAMP)
+	@mkdir -p $(dir $@) && cp binder/overrides.json $@
+
 $(STAMP): pyproject.toml
 	@bash scripts/make_venv.sh "$(PYTHON)" "$(VENV)"
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[lab,test,site]'
 	@touch $(STAMP)
 
-venv: $(STAMP)
+venv: $(STAMP) $(LAB_OVERRIDES)
 
 ## make lab: install everything into .venv and open JupyterLab on the course map.
-lab: $(STAMP)
+lab: $(STAMP) $(LAB_OVERRIDES)
 	$(BIN)/jupyter lab --ServerApp.root_dir="$(CURDIR)" $$([ "$$(id -u)" = 0 ] && echo --allow-root) $(ARGS) course/index.ipynb
 
 ## make test: unit, property, doctest, notebook (nbval under another SIMD dispatch: the portability
 ## check), widget-sweep and fuzz tests on two pytest-xdist workers, and beside them the browser tests
 ## (scripts/run_tests.py); prints each part's time and the total wall time, fails if either part fails.
-test: $(STAMP)
+test: $(STAMP) $(LAB_OVERRIDES)
 	@bash scripts/setup_browser.sh
 	@$(BIN)/python scripts/run_tests.py $(ARGS)
 

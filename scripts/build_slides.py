@@ -20,7 +20,10 @@ Usage: python scripts/build_slides.py [notebook.ipynb ...]   (default: course/*.
 from __future__ import annotations
 
 import argparse
+import functools
+import html
 import json
+import re
 import shutil
 import subprocess
 import sys
@@ -44,10 +47,38 @@ VENDOR_PACKAGES = {
     "mathjax": "2.7.9",
 }
 
-# The deck template: nbconvert's reveal template without the CDN-only blocks.
+# The slide size: 16:9, a projector's shape.  At 1280x720 the deck's text and code have the size
+# they had at reveal.js's default 960x700 (scale 1), and the code gets the width the 4:3 slide left
+# empty on either side.
+SLIDE_WIDTH, SLIDE_HEIGHT = 1280, 720
+
+# Code and outputs wrap inside the slide instead of running off its right edge (at 960x700, 460 of
+# 958 code blocks did).  Each line of a <pre> is its own block (see wrap_pre_lines), with a hanging
+# indent: a wrapped line goes on 4 characters right of its own indentation, so the structure of the
+# code stays visible.  Prompts ("In [3]:") are hidden: on a slide they only take width.
+DECK_CSS = """
+.reveal .slides pre { white-space: pre-wrap; overflow-wrap: anywhere; box-sizing: border-box; max-width: 100%; }
+.reveal .slides pre code { white-space: inherit; overflow: visible; max-height: none; }
+.reveal .slides pre .goldman-line { display: block; min-height: 1lh;
+  padding-left: calc((var(--goldman-indent, 0) + 4) * 1ch);
+  text-indent: calc((var(--goldman-indent, 0) + 4) * -1ch); }
+.reveal .slides .jp-InputPrompt, .reveal .slides .jp-OutputPrompt { display: none; }
+.reveal .slides .jp-Cell, .reveal .slides .jp-Cell-inputWrapper, .reveal .slides .jp-Cell-outputWrapper,
+.reveal .slides .jp-InputArea, .reveal .slides .jp-InputArea-editor, .reveal .slides .jp-OutputArea,
+.reveal .slides .jp-OutputArea-child, .reveal .slides .jp-OutputArea-output {
+  min-width: 0; max-width: 100%; box-sizing: border-box; }
+.reveal .slides .jp-RenderedHTMLCommon img, .reveal .slides .jp-OutputArea-output img { max-width: 100%; height: auto; }
+.reveal .slides .jp-RenderedHTMLCommon table { display: block; max-width: 100%; overflow-x: auto; }
+"""
+
+# The deck template: nbconvert's reveal template without the CDN-only blocks (plus DECK_CSS).
 _TEMPLATE = """{%- extends 'reveal/index.html.j2' -%}
 {%- block html_head_js_mermaidjs -%}{%- endblock html_head_js_mermaidjs -%}
 {% block jupyter_widgets %}{% endblock jupyter_widgets %}
+"""
+_TEMPLATE_CSS = """{%- block html_head_css -%}
+<style type="text/css">""" + DECK_CSS + """</style>
+{%- endblock html_head_css -%}
 """
 _TEMPLATE_NAME = "goldman_offline_slides.html.j2"
 
@@ -83,15 +114,20 @@ def ensure_vendor(out: Path = OUT, quiet: bool = False, packages: dict[str, str]
     return vendor
 
 
-def _exporter(vendor_url: str) -> SlidesExporter:
-    """A reveal.js exporter whose every script and style sheet is under ``vendor_url``."""
+@functools.lru_cache(maxsize=4)
+def _exporter(vendor_url: str, fit: bool = True) -> SlidesExporter:
+    """A reveal.js exporter whose every script and style sheet is under ``vendor_url`` (made once
+    and reused for every deck).  ``fit=False`` gives the deck as it was before code wrapped: no
+    DECK_CSS, reveal.js's default 960x700 slide (the browser test's check that its measure fails)."""
     nm = f"{vendor_url}/node_modules"
     exporter = SlidesExporter(
-        extra_loaders=[jinja2.DictLoader({_TEMPLATE_NAME: _TEMPLATE})],
+        extra_loaders=[jinja2.DictLoader({_TEMPLATE_NAME: _TEMPLATE + (_TEMPLATE_CSS if fit else "")})],
         template_file=_TEMPLATE_NAME,
         reveal_url_prefix=f"{nm}/reveal.js",
         reveal_theme="white",
         reveal_scroll=True,
+        reveal_width=str(SLIDE_WIDTH if fit else 960),
+        reveal_height=str(SLIDE_HEIGHT if fit else 700),
         require_js_url=f"{nm}/requirejs/require.js",
         jquery_url=f"{nm}/jquery/dist/jquery.min.js",
         mathjax_url=f"{nm}/mathjax/MathJax.js?config=TeX-AMS_CHTML-full,Safe",
@@ -129,17 +165,65 @@ def static_widgets(nb: nbformat.NotebookNode) -> int:
     return replaced
 
 
-def build_deck(notebook: Path | str, out: Path = OUT, quiet: bool = False) -> Path:
-    """Write ``out/<stem>.slides.html`` for ``notebook`` and return its path."""
+_PRE = re.compile(r"(<pre\b[^>]*>)(.*?)(</pre>)", re.S)
+_TAG_OR_NEWLINE = re.compile(r"(<(/?)([a-zA-Z][\w-]*)\b[^>]*>|\n)")
+
+
+def _wrap_lines(body: str) -> str:
+    """The content of one <pre>, each line in a <span class="goldman-line"> (with its indentation
+    in --goldman-indent, in characters).  Elements open across a line end (a highlighted string or
+    docstring spanning lines) are closed before it and opened again after it."""
+    lines, current, stack = [], [], []
+    pos = 0
+    for m in _TAG_OR_NEWLINE.finditer(body):
+        current.append(body[pos:m.start()])
+        pos = m.end()
+        if m.group(0) == "\n":
+            current.extend(f"</{name}>" for name, _ in reversed(stack))
+            lines.append("".join(current))
+            current = [tag for _, tag in stack]
+        elif m.group(2):                                  # a closing tag
+            if stack and stack[-1][0] == m.group(3).lower():
+                stack.pop()
+            current.append(m.group(0))
+        else:
+            if not m.group(0).endswith("/>") and m.group(3).lower() not in ("br", "img", "hr", "wbr"):
+                stack.append((m.group(3).lower(), m.group(0)))
+            current.append(m.group(0))
+    current.append(body[pos:])
+    last = "".join(current)
+    if re.sub(r"<[^>]*>", "", last):                      # text after the last newline
+        lines.append(last)
+    elif lines:
+        lines[-1] += last                                 # only tags: keep them (nothing to show)
+    out = []
+    for line in lines:
+        text = html.unescape(re.sub(r"<[^>]*>", "", line))
+        indent = len(text) - len(text.lstrip(" "))
+        style = f' style="--goldman-indent:{indent}"' if indent else ""
+        out.append(f'<span class="goldman-line"{style}>{line}</span>')
+    return "".join(out)
+
+
+def wrap_pre_lines(page: str) -> str:
+    """Every <pre> of the deck (code, outputs, code in markdown) with one block per line, for the
+    hanging indent of DECK_CSS."""
+    return _PRE.sub(lambda m: m.group(1) + _wrap_lines(m.group(2)) + m.group(3), page)
+
+
+def build_deck(notebook: Path | str, out: Path = OUT, quiet: bool = False, *, fit: bool = True,
+               name: str | None = None) -> Path:
+    """Write ``out/<stem>.slides.html`` (or ``out/<name>``) for ``notebook`` and return its path.
+    ``fit=False`` leaves out what makes code and outputs fit the slide (see ``_exporter``)."""
     notebook = Path(notebook).resolve()
     vendor = ensure_vendor(out, quiet=quiet)
     nb = nbformat.read(notebook, as_version=4)
     n_images = static_widgets(nb)
-    exporter = _exporter(vendor.relative_to(out).as_posix())
+    exporter = _exporter(vendor.relative_to(out).as_posix(), fit)
     body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": notebook.stem,
                                                                       "path": str(notebook.parent)}})
-    target = out / f"{notebook.stem}.slides.html"
-    target.write_text(body, encoding="utf-8")
+    target = out / (name or f"{notebook.stem}.slides.html")
+    target.write_text(wrap_pre_lines(body) if fit else body, encoding="utf-8")
     if not quiet:
         shown = target.relative_to(REPO) if target.is_relative_to(REPO) else target
         print(f"wrote {shown} ({n_images} widget views shown as their static image)")

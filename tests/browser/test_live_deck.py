@@ -8,6 +8,8 @@ ipympl figure, the shared Part I component an instructor edits live).
 
 from __future__ import annotations
 
+import sys
+
 import pytest
 
 from .conftest import LAB_ROOT, SCREENSHOTS
@@ -35,6 +37,13 @@ _JS_ON_SCREEN = """
   const top = inView ? document.elementFromPoint(cx, cy) : null;
   return {i, onTop: !!top && (top === c || c.parentElement.contains(top))};
 })
+"""
+
+_JS_DECK_WRAPS = """
+() => { const c = document.querySelector('.jp-Deck .jp-CodeCell .cm-content');
+        const o = document.querySelector('.jp-Deck .jp-OutputArea-output pre');
+        return !!c && ['pre-wrap', 'break-spaces'].includes(getComputedStyle(c).whiteSpace) &&
+               (!o || getComputedStyle(o).whiteSpace === 'pre-wrap'); }
 """
 
 # Where the deck is: the active cell, the (sub)slide it belongs to (the nearest cell at or above it
@@ -65,6 +74,14 @@ def test_live_deck_view_responds(request, notebook, selector, title):
                   "w.content.deselectAll(); }")
     lab.command("deck:start")
     try:
+        # the course's Lab settings (binder/overrides.json, installed by `make venv`): in the deck,
+        # long code lines wrap (CodeMirror reads white-space from its content's style; without the
+        # settings, a 900 px wide deck of chapter 17 showed 3 code cells wider than their editor)
+        try:
+            page.wait_for_function(_JS_DECK_WRAPS, timeout=30_000)
+        except Exception:
+            pytest.fail("code in the live deck does not wrap: binder/overrides.json is not installed as "
+                        f"{sys.prefix}/share/jupyter/lab/settings/overrides.json (make venv installs it)")
         _walk_and_move(lab, page, notebook, selector, title)
     finally:
         lab.command("deck:stop")

@@ -7,9 +7,11 @@ require.js, jQuery and MathJax is fetched with npm on the first build and reused
 
 from __future__ import annotations
 
+import concurrent.futures
 import importlib.util
 import re
 import shutil
+import time
 from html.parser import HTMLParser
 
 import nbformat
@@ -186,3 +188,110 @@ def test_offline_deck(browser_page):
     print(f"\noffline deck {deck.relative_to(REPO) if deck.is_relative_to(REPO) else deck}: "
           f"{sections} sections, {len(heading_texts)} headings, {len(images)} PNG images "
           f"(expected >= {expected}), math={'typeset' if has_math else 'none'}, no network requests")
+
+
+# -- every slide of every deck fits a 1280x720 projector ----------------------------------------------
+PROJECTOR = {"width": 1280, "height": 720}
+
+# Measure every slide of the open deck at once: reveal.js shows every slide (viewDistance past the
+# deck's length; each stays at its own place beside the present one, at the same scale) and every
+# worked solution is opened, so its code is measured too.  Returns what runs past its slide: a <pre>
+# (code or output) wider than its own box, an element of a code cell (its code, its outputs)
+# reaching past the slide's left or right edge, a slide that scrolls sideways; and counts of what
+# was measured, and of the code blocks where a long line wraps.
+_JS_WALK = """
+() => {
+  const R = Object.values(require.s.contexts._.defined).find(v => v && typeof v.getTotalSlides === 'function');
+  R.configure({transition: 'none', backgroundTransition: 'none', viewDistance: 10000, mobileViewDistance: 10000});
+  R.slide(0, 0);
+  document.querySelectorAll('.reveal .slides details').forEach(d => { d.open = true; });
+  const res = {slides: 0, code: 0, outputs: 0, wrapped: 0, problems: []};
+  const short = e => (e.textContent || '').trim().replace(/\\s+/g, ' ').slice(0, 70);
+  const what = e => e.closest('.jp-OutputArea') ? 'output' : (e.closest('.jp-CodeCell') ? 'code' : 'markdown code');
+  const tops = Array.from(document.querySelectorAll('.reveal .slides > section'));
+  tops.forEach((top, h) => {
+    const subs = Array.from(top.querySelectorAll(':scope > section'));
+    (subs.length ? subs : [top]).forEach((slide, v) => {
+      const at = `slide ${h}/${v}`;
+      res.slides += 1;
+      if (!slide.checkVisibility()) { res.problems.push(`${at}: not shown (reveal.js hid it)`); return; }
+      const box = slide.getBoundingClientRect();
+      if (slide.scrollWidth > slide.clientWidth + 1)
+        res.problems.push(`${at}: the slide scrolls sideways (${slide.scrollWidth} > ${slide.clientWidth} px)`);
+      slide.querySelectorAll('pre').forEach(pre => {
+        if (!pre.checkVisibility()) return;
+        if (pre.closest('.jp-OutputArea')) res.outputs += 1; else res.code += 1;
+        if (Array.from(pre.querySelectorAll('.goldman-line')).some(l => l.getClientRects().length > 1 ||
+            l.getBoundingClientRect().height > 1.5 * parseFloat(getComputedStyle(l).lineHeight))) res.wrapped += 1;
+        if (pre.scrollWidth > pre.clientWidth + 1)
+          res.problems.push(`${at}: ${what(pre)} wider than its box (${pre.scrollWidth} > ${pre.clientWidth} px): ${short(pre)}`);
+      });
+      slide.querySelectorAll('.jp-CodeCell, .jp-CodeCell *').forEach(e => {
+        const r = e.getBoundingClientRect();
+        if (r.width === 0 || r.height === 0 || !e.checkVisibility()) return;
+        if (r.right > box.right + 1 || r.left < box.left - 1)
+          res.problems.push(`${at}: ${what(e)} <${e.tagName.toLowerCase()} class="${e.className}"> spans ` +
+                            `${Math.round(r.left - box.left)}..${Math.round(r.right - box.left)} px of a ` +
+                            `${Math.round(box.width)} px slide: ${short(e)}`);
+      });
+    });
+  });
+  return res;
+}
+"""
+
+
+def _walk(page, deck) -> dict:
+    page.goto(deck.as_uri(), wait_until="load")
+    page.wait_for_function("() => !!document.querySelector('.reveal.ready')", timeout=60_000)
+    return page.evaluate(_JS_WALK)
+
+
+def test_every_slide_fits_a_projector(browser_context):
+    """Every deck (`make slides`) at 1280x720: no code block or output wider than the slide, no part of
+    a code cell cut off at the slide's edge, on any slide (worked solutions opened).
+
+    The decks are built one ahead of the browser (a thread builds the next while Chromium measures
+    this one).  MathJax is left to typeset as it likes: it changes the markdown, not the code cells.
+    As a check that the measure can fail, chapter 17's deck built as before the fix (no wrapping
+    CSS, no line blocks, the 960x700 slide) must show problems."""
+    notebooks = course_notebooks()
+    if not notebooks:
+        pytest.skip("no notebooks in course/ yet")
+    build_slides = _load_build_slides()
+    vendored = (build_slides.OUT / build_slides.VENDOR_DIRNAME / "node_modules" / "reveal.js").is_dir()
+    if not vendored and shutil.which("npm") is None:
+        pytest.skip("the offline deck fetches reveal.js and MathJax with npm once: sudo apt-get install npm")
+    started = time.monotonic()
+    page = browser_context.new_page()
+    page.set_viewport_size(PROJECTOR)
+    problems, totals = [], {"slides": 0, "code": 0, "outputs": 0, "wrapped": 0}
+    control_nb = next((nb for nb in notebooks if nb.name.startswith("17_")), notebooks[-1])
+    control = None
+    try:
+        with concurrent.futures.ThreadPoolExecutor(max_workers=1) as pool:
+            # one thread builds the decks in order (nbconvert, in Python) while Chromium measures
+            futures = [pool.submit(build_slides.build_deck, nb, quiet=True) for nb in notebooks]
+            unfitted = pool.submit(build_slides.build_deck, control_nb, quiet=True, fit=False,
+                                   name=f"unfitted-{control_nb.stem}.slides.html")
+            for future in futures:
+                deck = future.result()
+                found = _walk(page, deck)
+                for key in totals:
+                    totals[key] += found[key]
+                problems += [f"{deck.name} {p}" for p in found["problems"]]
+            control = unfitted.result()
+        walked = time.monotonic() - started
+        # the measure can fail: the deck built as before the fix shows code past the slide
+        before = _walk(page, control)
+        assert before["problems"], f"the measure finds nothing wrong in {control.name}, built without the fix"
+    finally:
+        page.close()
+        if control is not None:
+            control.unlink(missing_ok=True)
+    print(f"\n{len(notebooks)} decks at {PROJECTOR['width']}x{PROJECTOR['height']}: {totals['slides']} slides, "
+          f"{totals['code']} code blocks, {totals['outputs']} outputs, {totals['wrapped']} blocks wrap a long line, "
+          f"{len(problems)} problems (built and measured in {walked:.0f} s); without the fix, "
+          f"{control.name} has {len(before['problems'])}")
+    assert totals["slides"] >= len(notebooks), "a deck has no slides"
+    assert not problems, f"{len(problems)} things run past the slide at 1280x720:\n" + "\n".join(problems[:40])
