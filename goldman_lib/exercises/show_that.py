@@ -292,9 +292,17 @@ def _describe_term(term) -> str:
     _, monomial = term.as_coeff_Mul()
     if not monomial.free_symbols:
         return "the constant term"
-    factors = sorted(sympy.Mul.make_args(monomial), key=str)
-    words = [str(f).replace("**", "^").replace("*", "·") for f in factors if f.free_symbols]
-    return "the one in " + "·".join(words)
+    num, den = sympy.fraction(monomial)
+
+    def words(m):
+        fs = sorted((f for f in sympy.Mul.make_args(m) if f.free_symbols), key=str)
+        return "·".join(str(f).replace("**", "^").replace("*", "·") for f in fs)
+
+    text = words(num) or "1"
+    if den.free_symbols:
+        d = words(den)
+        text += "/" + (f"({d})" if "·" in d else d)
+    return "the one in " + text
 
 
 # -- the checker -----------------------------------------------------------------------------------

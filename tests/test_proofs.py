@@ -1,0 +1,203 @@
+"""The "show that" exercises (goldman_lib.exercises.proofs): each accepts a right answer written two
+independent ways and rejects two realistic slips, naming them.
+
+The right answers here are derived independently of the module: with sympy's own Matrix.cross,
+sympy.solve, sympy's Quaternion class, a determinant, or the book's closed form, and (for the
+constrained exercises) in coordinates with a unit vector.  The wrong ones are the slips a learner
+makes, written out by hand.
+"""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+
+sympy = pytest.importorskip("sympy")
+
+from goldman_lib.exercises import proofs  # noqa: E402
+from sympy.algebras.quaternion import Quaternion  # noqa: E402
+
+S = proofs.symbols_for
+
+
+def _right_and_wrong():
+    """name -> ([two right answers], [(wrong answer, words its message must contain)] )"""
+    cases = {}
+
+    uu, uv, vv = S("ch09_perpendicular_part")
+    cases["ch09_perpendicular_part"] = (
+        [vv - uv**2 / uu, (uu * vv - uv**2) / uu],
+        [(vv - 2 * uv**2 / uu, "k²(u·u) term"), (vv + uv**2 / uu, "wrong sign")])
+
+    uu, vv, uv = S("ch09_cross_length")
+    cases["ch09_cross_length"] = (
+        [uu * vv - uv**2, uu * vv * (1 - uv**2 / (uu * vv))],
+        [(uu * vv + uv**2, "1 + cos²θ"), (uu * vv, "missing a term")])
+
+    u1, u2, u3, v1, v2, v3 = S("ch10_cross_product")
+    u, v = sympy.Matrix([u1, u2, u3]), sympy.Matrix([v1, v2, v3])
+    det_rule = [sympy.Matrix([[u2, u3], [v2, v3]]).det(), -sympy.Matrix([[u1, u3], [v1, v3]]).det(),
+                sympy.Matrix([[u1, u2], [v1, v2]]).det()]
+    cases["ch10_cross_product"] = (
+        [u.cross(v), det_rule],
+        [(list(v.cross(u)), "is v × u"), ([det_rule[0], -det_rule[1], det_rule[2]], "middle coordinate")])
+
+    syms = S("ch10_triple_cross")
+    u, v, w = (sympy.Matrix(syms[i:i + 3]) for i in (0, 3, 6))
+    cases["ch10_triple_cross"] = (
+        [u.cross(v).cross(w), list(u.dot(w) * v - v.dot(w) * u)],
+        [(list(u.cross(v.cross(w))), "not associative"), (list(v.dot(w) * u - u.dot(w) * v), "sign")])
+
+    x0, y0, x1, y1, x2, y2 = S("ch11_triangle_area")
+    shoelace = ((x0 * y1 - x1 * y0) + (x1 * y2 - x2 * y1) + (x2 * y0 - x0 * y2)) / 2
+    det = sympy.Matrix([[x0, y0, 1], [x1, y1, 1], [x2, y2, 1]]).det() / 2
+    cases["ch11_triangle_area"] = ([shoelace, det], [(2 * det, "parallelogram"), (-shoelace, "clockwise")])
+
+    p1, p2, u1, u2, q1, q2, v1, v2 = S("ch11_line_intersection")
+    s, t = sympy.symbols("s t")
+    sol = sympy.solve([p1 + s * u1 - q1 - t * v1, p2 + s * u2 - q2 - t * v2], [s, t], dict=True)[0]
+    cramer = sympy.Matrix([[q1 - p1, -v1], [q2 - p2, -v2]]).det() / sympy.Matrix([[u1, -v1], [u2, -v2]]).det()
+    cases["ch11_line_intersection"] = ([sol[s], cramer], [(sol[t], "parameter t"), (-cramer, "v × u")])
+
+    c, sn, p, n = S("ch12_rodrigues_length")
+    cases["ch12_rodrigues_length"] = (
+        [(c**2 + sn**2) * n + (1 - c**2 - sn**2) * p**2,
+         (c * 1)**2 * n + (1 - c)**2 * p**2 + 2 * c * (1 - c) * p * p + sn**2 * (n - p**2)],
+        [(n, "end of the proof"), (c**2 * n + (1 - c)**2 * p**2 + 2 * c * (1 - c) * p**2 + sn**2 * n, "|a × v|² = |v|²")])
+
+    syms = S("ch12_perspective_formula")
+    P, E, Q, N = (sympy.Matrix(syms[i:i + 3]) for i in (0, 3, 6, 9))
+    tt = sympy.symbols("tt")
+    t_sol = sympy.solve((E + tt * (P - E) - Q).dot(N), tt)[0]
+    goldman = (((P - Q).dot(N)) * E + ((Q - E).dot(N)) * P) / ((P - E).dot(N))
+    cases["ch12_perspective_formula"] = (
+        [list(E + t_sol * (P - E)), goldman.T],
+        [(list(E + (P - E) / t_sol), "upside down"), (list(E - t_sol * (P - E)), "away from P")])
+
+    syms = S("ch13_translation_row")
+    Q = sympy.Matrix([syms[:3]])
+    L = sympy.Matrix(3, 3, syms[3:])
+    w = sympy.Matrix([sympy.symbols("w1:4")])
+    w_sol = sympy.solve(list(Q * L + w - Q), list(w), dict=True)[0]
+    cases["ch13_translation_row"] = (
+        [Q * (sympy.eye(3) - L), [w_sol[k] for k in w]],
+        [(Q * L - Q, "sign"), (Q - Q * L.T, "L Q")])
+
+    n1, n2, n3 = S("ch13_mirror_linear_part")
+    n = sympy.Matrix([[n1, n2, n3]])
+    rows = [list(sympy.eye(3)[i, :] - 2 * n[i] * n) for i in range(3)]          # images of e1, e2, e3
+    unit_form = [[n2**2 + n3**2 - n1**2, -2 * n1 * n2, -2 * n1 * n3],          # equal only when |n| = 1
+                 [-2 * n1 * n2, n1**2 + n3**2 - n2**2, -2 * n2 * n3],
+                 [-2 * n1 * n3, -2 * n2 * n3, n1**2 + n2**2 - n3**2]]
+    cases["ch13_mirror_linear_part"] = (
+        [rows, unit_form],
+        [(sympy.eye(3) - n.T * n, "orthogonal projection"), (2 * n.T * n - sympy.eye(3), "half-turn")])
+
+    m1, x1, m2, x2 = S("ch14_law_of_the_lever")
+    x = sympy.symbols("x")
+    lever = sympy.solve(m1 * (x - x1) + m2 * (x - x2), x)[0]
+    cases["ch14_law_of_the_lever"] = (
+        [lever, x1 + m2 / (m1 + m2) * (x2 - x1)],
+        [((m2 * x1 + m1 * x2) / (m1 + m2), "other end"), ((x1 + x2) / 2, "midpoint")])
+
+    t, w0, w1 = S("ch14_perspective_keeps_lines")
+    cases["ch14_perspective_keeps_lines"] = (
+        [t * w1 / ((1 - t) * w0 + t * w1), 1 - (1 - t) * w0 / ((1 - t) * w0 + t * w1)],
+        [(t, "keeps the parameter"), (t * w0 / ((1 - t) * w0 + t * w1), "mass at R'")])
+
+    w, x, y, z, v1, v2, v3 = S("ch15_sandwich_is_pure")
+    q, vq, qc = Quaternion(w, x, y, z), Quaternion(0, v1, v2, v3), Quaternion(w, -x, -y, -z)
+    sand = q * vq * qc
+    qv, vv3 = sympy.Matrix([x, y, z]), sympy.Matrix([v1, v2, v3])
+    closed = (w**2 - qv.dot(qv)) * vv3 + 2 * qv.dot(vv3) * qv + 2 * w * qv.cross(vv3)
+    one = q * vq
+    other = qc * vq * q
+    cases["ch15_sandwich_is_pure"] = (
+        [[sand.a, sand.b, sand.c, sand.d], [0] + list(closed)],
+        [([one.a, one.b, one.c, one.d], "one-sided"), ([other.a, other.b, other.c, other.d], "other way")])
+
+    w, x, y, z, v1, v2, v3 = S("ch15_one_sided_not_pure")
+    one = Quaternion(w, x, y, z) * Quaternion(0, v1, v2, v3)
+    cases["ch15_one_sided_not_pure"] = (
+        [one.a, -sympy.Matrix([x, y, z]).dot(sympy.Matrix([v1, v2, v3]))],
+        [(x * v1 + y * v2 + z * v3, "sign"), (sympy.Integer(0), "perpendicular")])
+    return cases
+
+
+CASES = _right_and_wrong()
+
+
+def test_every_exercise_is_tested_here():
+    assert set(CASES) == set(proofs.PROBLEMS)
+
+
+def test_at_least_two_exercises_per_chapter_done():
+    chapters = {}
+    for name in proofs.PROBLEMS:
+        chapters[name[:4]] = chapters.get(name[:4], 0) + 1
+    assert all(v >= 2 for v in chapters.values()), chapters
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_right_answers_written_two_ways_are_accepted(name):
+    check = getattr(proofs, name)
+    for answer in CASES[name][0]:
+        r = check(answer)
+        assert r.correct, f"{name}: {r}"
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_slips_are_rejected_and_named(name):
+    check = getattr(proofs, name)
+    for answer, words in CASES[name][1]:
+        r = check(answer)
+        assert r.answered and not r.correct, f"{name}: {r}"
+        assert words in r.message, f"{name}: expected {words!r} in {r}"
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_every_listed_slip_is_wrong_and_every_message_names_something(name):
+    check = getattr(proofs, name)
+    for slip in proofs.SLIPS[name]:
+        r = check(slip)
+        assert r.answered and not r.correct and len(r.message) > 30, f"{name}: {r}"
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_text_none_and_docstrings(name, monkeypatch):
+    check = getattr(proofs, name)
+    assert not check(None).answered
+    monkeypatch.setattr(sympy, "sympify", lambda *a, **k: pytest.fail("text was evaluated"))
+    r = check(" + ".join(str(s) for s in S(name)))
+    assert r.answered and not r.correct and "evaluates no text" in r.message
+    # the docstring (Shift+Tab) says what is checked, not the expression
+    right = CASES[name][0][0]
+    for entry in (right if isinstance(right, (list, sympy.MatrixBase)) else [right]):
+        for item in (entry if isinstance(entry, list) else [entry]):
+            text = str(sympy.expand(item))
+            if len(text) > 4:
+                assert text not in check.__doc__
+
+
+def test_a_huge_answer_returns_quickly():
+    w, x, y, z, v1, v2, v3 = S("ch15_sandwich_is_pure")
+    huge = [(w + x + y + z + v1 + v2 + v3)**60] * 4
+    t0 = time.perf_counter()
+    r = proofs.ch15_sandwich_is_pure(huge)
+    assert time.perf_counter() - t0 < 5 and not r.correct and "too large" in r.message
+
+
+def test_the_rodrigues_exercise_is_the_real_expansion():
+    """|R(v)|² in coordinates with a unit axis equals the exercise's expression with p = a·v, n = |v|²
+    and any c, s (so the exercise asks for a true step of the proof), at exact rational points."""
+    c, sn, p, n = S("ch12_rodrigues_length")
+    step = (c**2 + sn**2) * n + (1 - c**2 - sn**2) * p**2
+    R = sympy.Rational
+    for uu, vv, cc, ss, v in [(R(1, 2), R(-3, 4), R(2, 3), R(5, 7), [1, -2, 3]), (R(3), R(1, 5), R(-1, 3), R(4), [R(1, 2), 0, -7])]:
+        d = 1 + uu**2 + vv**2
+        a = sympy.Matrix([2 * uu / d, 2 * vv / d, (1 - uu**2 - vv**2) / d])
+        assert a.dot(a) == 1
+        v = sympy.Matrix(v)
+        rot = cc * v + (1 - cc) * a.dot(v) * a + ss * a.cross(v)
+        assert rot.dot(rot) == step.subs({c: cc, sn: ss, p: a.dot(v), n: v.dot(v)})
