@@ -122,6 +122,131 @@ def _right_and_wrong():
     cases["ch15_one_sided_not_pure"] = (
         [one.a, -sympy.Matrix([x, y, z]).dot(sympy.Matrix([v1, v2, v3]))],
         [(x * v1 + y * v2 + z * v3, "sign"), (sympy.Integer(0), "perpendicular")])
+    b0, b1, b2, b3, t = S("ch24_casteljau_is_bernstein")
+    bern = sum(sympy.binomial(3, k) * t**k * (1 - t)**(3 - k) * bk for k, bk in enumerate([b0, b1, b2, b3]))
+    power = (b0 + 3 * (b1 - b0) * t + 3 * (b2 - 2 * b1 + b0) * t**2 + (b3 - 3 * b2 + 3 * b1 - b0) * t**3)
+    cases["ch24_casteljau_is_bernstein"] = (
+        [bern, power],
+        [(sum(t**k * (1 - t)**(3 - k) * bk for k, bk in enumerate([b0, b1, b2, b3])), "binomial"),
+         (bern.subs(t, 1 - t), "wrong way round")])
+
+    b0, b1, b2, b3, t = S("ch24_derivative")
+    cases["ch24_derivative"] = (
+        [sympy.diff(power.subs(S("ch24_casteljau_is_bernstein")[4], t), t),
+         3 * sum(sympy.binomial(2, k) * t**k * (1 - t)**(2 - k) * d for k, d in enumerate([b1 - b0, b2 - b1, b3 - b2]))],
+        [(sum(sympy.binomial(2, k) * t**k * (1 - t)**(2 - k) * d for k, d in enumerate([b1 - b0, b2 - b1, b3 - b2])),
+          "degree factor 3"),
+         (-sympy.diff(bern, t), "sign")])
+
+    b0, b1, b2, b3, r = S("ch25_left_half")
+    u = sympy.symbols("u")
+    # the left piece's control values from the polar form: p(0,0,0), p(0,0,r), p(0,r,r), p(r,r,r)
+    def polar(x1, x2, x3):
+        c = [b0, b1, b2, b3]
+        for x in (x1, x2, x3):
+            c = [(1 - x) * a + x * b for a, b in zip(c, c[1:])]
+        return c[0]
+    by_polar = [polar(0, 0, 0), polar(0, 0, r), polar(0, r, r), polar(r, r, r)]
+    # and by reparametrising P(r u) and converting back to Bernstein coefficients in u
+    pru = sympy.Poly(sympy.expand(bern.subs(t, r * u)), u)
+    a = [pru.coeff_monomial(u**k) for k in range(4)]
+    by_conversion = [a[0], a[0] + a[1] / 3, a[0] + 2 * a[1] / 3 + a[2] / 3, a[0] + a[1] + a[2] + a[3]]
+    cases["ch25_left_half"] = (
+        [by_polar, by_conversion],
+        [([polar(r, r, r), polar(r, r, 1), polar(r, 1, 1), polar(1, 1, 1)], "right piece"),
+         (by_polar[::-1], "reverse order")])
+
+    b2, b3, h0, h1 = S("ch25_smooth_join")
+    c1 = sympy.symbols("c1")
+    sol = sympy.solve(sympy.Eq(3 * (b3 - b2) / h0, 3 * (c1 - b3) / h1), c1)[0]
+    cases["ch25_smooth_join"] = (
+        [sol, (b3 * (h0 + h1) - h1 * b2) / h0],
+        [(2 * b3 - b2, "equal parameter lengths"), (b3 + h0 / h1 * (b3 - b2), "upside down")])
+
+    a0, a1, a2, a3, u1, u2, u3 = S("ch26_cubic_blossom")
+    from itertools import permutations
+    perms = list(permutations([u1, u2, u3]))
+    avg = sum(a0 + a1 * x + a2 * x * y + a3 * x * y * z for x, y, z in perms) / len(perms)
+    cases["ch26_cubic_blossom"] = (
+        [avg, a0 + a1 * (u1 + u2 + u3) / 3 + a2 * (u1 * u2 + u2 * u3 + u3 * u1) / 3 + a3 * u1 * u2 * u3],
+        [(a0 + a1 * (u1 + u2 + u3) + a2 * (u1 * u2 + u2 * u3 + u3 * u1) + a3 * u1 * u2 * u3, "diagonal"),
+         (a0 + a1 * (u1 + u2 + u3) / 3 + a2 * (u1**2 + u2**2 + u3**2) / 3 + a3 * u1 * u2 * u3, "multiaffine")])
+
+    b0, b1, b2, u1, u2 = S("ch26_diagonal")
+    # the blossom of the quadratic (1-t)^2 b0 + 2t(1-t) b1 + t^2 b2 from its power form, by averaging
+    A, B, C = b0, 2 * (b1 - b0), b0 - 2 * b1 + b2          # P(t) = A + B t + C t^2
+    cases["ch26_diagonal"] = (
+        [A + B * (u1 + u2) / 2 + C * u1 * u2, (1 - u2) * ((1 - u1) * b0 + u1 * b1) + u2 * ((1 - u1) * b1 + u1 * b2)],
+        [((1 - u1) * (1 - u2) * b0 + 2 * u1 * (1 - u2) * b1 + u1 * u2 * b2, "not symmetric"),
+         (u1 * u2 * b0 + (u1 * (1 - u2) + u2 * (1 - u1)) * b1 + (1 - u1) * (1 - u2) * b2, "swaps the ends")])
+
+    P0, P1, P2, t1, t2, t3, t4, t = S("ch27_local_de_boor")
+    # Cox-de Boor recursion for the three quadratic B-splines on t1..t4 (with t0, t5 outside)
+    t0, t5 = sympy.symbols("t0 t5")
+    knots = [t0, t1, t2, t3, t4, t5]
+    def N(i, k):       # basis function on knots[i..i+k+1], restricted to the span [t2, t3)
+        if k == 0:
+            return sympy.Integer(1) if i == 2 else sympy.Integer(0)
+        left = (t - knots[i]) / (knots[i + k] - knots[i]) * N(i, k - 1) if N(i, k - 1) != 0 else 0
+        right = (knots[i + k + 1] - t) / (knots[i + k + 1] - knots[i + 1]) * N(i + 1, k - 1) if N(i + 1, k - 1) != 0 else 0
+        return left + right
+    cox = N(0, 2) * P0 + N(1, 2) * P1 + N(2, 2) * P2
+    a = ((t3 - t) * P0 + (t - t1) * P1) / (t3 - t1)
+    b = ((t4 - t) * P1 + (t - t2) * P2) / (t4 - t2)
+    cases["ch27_local_de_boor"] = (
+        [cox, sympy.factor(((t3 - t) * a + (t - t2) * b) / (t3 - t2))],
+        [(((t - t2) * a + (t3 - t) * b) / (t3 - t2), "swaps the weights"), ((a + b) / 2, "averages")])
+
+    (t,) = S("ch27_nurbs_circle")
+    cases["ch27_nurbs_circle"] = (
+        [[(1 - t**2) / (1 + t**2), 2 * t / (1 + t**2)], sympy.Matrix([[1 - t**2, 2 * t]]) / (1 + t**2)],
+        [([(1 - t)**2 + 2 * t * (1 - t), 2 * t * (1 - t) + t**2], "ignores the weights"),
+         ([1 - t**2, 2 * t], "divide")])
+
+    P0, P1, P2, t1, t2, t3, t4, u = S("ch28_boehm")
+    # the new control points are the blossom values, computed by sympy.solve from the blossom's
+    # affine property p(t2, u) = alpha P0 + (1 - alpha) P1 with u = alpha t1 + (1 - alpha) t3
+    al = sympy.symbols("alpha")
+    alpha = sympy.solve(al * t1 + (1 - al) * t3 - u, al)[0]
+    beta = sympy.solve(al * t2 + (1 - al) * t4 - u, al)[0]
+    cases["ch28_boehm"] = (
+        [[alpha * P0 + (1 - alpha) * P1, beta * P1 + (1 - beta) * P2],
+         [P0 + (u - t1) / (t3 - t1) * (P1 - P0), P1 + (u - t2) / (t4 - t2) * (P2 - P1)]],
+        [([(1 - alpha) * P0 + alpha * P1, (1 - beta) * P1 + beta * P2], "swap the weights"),
+         ([beta * P1 + (1 - beta) * P2, alpha * P0 + (1 - alpha) * P1], "wrong order")])
+
+    P0, P1 = S("ch28_chaikin")
+    cases["ch28_chaikin"] = (
+        [[P0 + (P1 - P0) / 4, P1 - (P1 - P0) / 4], sympy.Matrix([[3, 1], [1, 3]]) * sympy.Matrix([P0, P1]) / 4],
+        [([(P0 + P1) / 2, P1], "averages once"), ([(P0 + 3 * P1) / 4, (3 * P0 + P1) / 4], "wrong order")])
+
+    (r,) = S("ch29_left_matrix")
+    b = sympy.symbols("c0:3")
+    left = [b[0], (1 - r) * b[0] + r * b[1], (1 - r)**2 * b[0] + 2 * r * (1 - r) * b[1] + r**2 * b[2]]
+    jac = sympy.Matrix(left).jacobian(b)                     # the weights, read off by differentiation
+    cases["ch29_left_matrix"] = (
+        [jac, [[1, 0, 0], [1 - r, r, 0], [1 - 2 * r + r**2, 2 * r - 2 * r**2, r**2]]],
+        [(jac.T, "transpose"), ([[(1 - r)**2, 2 * r * (1 - r), r**2], [0, 1 - r, r], [0, 0, 1]], "right piece")])
+
+    P0, P1, P2 = S("ch29_cubic_bspline_rules")
+    cases["ch29_cubic_bspline_rules"] = (
+        [[(P0 + 6 * P1 + P2) / 8, (P1 + P2) / 2], [P1 + ((P0 - P1) + (P2 - P1)) / 8, P1 + (P2 - P1) / 2]],
+        [([(P0 + 2 * P1 + P2) / 4, (P1 + P2) / 2], "averages twice"), ([P1, (P1 + P2) / 2], "keeps the old point")])
+
+    V, e1, e2, e3, e4, d1, d2, d3, d4 = S("ch30_bicubic_vertex")
+    w = sympy.Matrix([[1, 6, 1]]) / 8
+    block = sympy.Matrix([[d1, e1, d2], [e4, V, e2], [d4, e3, d3]])
+    tensor = (w * block * w.T)[0]
+    cases["ch30_bicubic_vertex"] = (
+        [tensor, (36 * V + 6 * (e1 + e2 + e3 + e4) + (d1 + d2 + d3 + d4)) / 64],
+        [((V + e1 + e2 + e3 + e4 + d1 + d2 + d3 + d4) / 9, "centroid"),
+         (sympy.Rational(9, 16) * V + sympy.Rational(3, 32) * (e1 + e2 + e3 + e4), "diagonal neighbours")])
+
+    nV, nE, nF = S("ch30_euler_characteristic")
+    # a closed triangle mesh has 3F = 2E, but the counts must hold without using it
+    cases["ch30_euler_characteristic"] = (
+        [[nV + nE, 2 * nE + 3 * nF, 4 * nF], sympy.Matrix([[1, 1, 0], [0, 2, 3], [0, 0, 4]]) * sympy.Matrix([nV, nE, nF])],
+        [([nV + nE, 2 * nE, 4 * nF], "interior edges"), ([nV + nE, 2 * nE + 3 * nF, 3 * nF], "four")])
     return cases
 
 

@@ -108,9 +108,9 @@ def _(uu, uv, vv):
 
 
 @_define("ch09_cross_length", (
-    "Show that |u × v|² = |u|²|v|² − (u·v)² follows from |u × v| = |u||v| sin θ and "
-    "u·v = |u||v| cos θ. Give |u × v|² in terms of uu = u·u, vv = v·v and uv = u·v only "
-    "(no angle) (Goldman §9.4.2)."),
+    "Show that the area of the parallelogram on u and v can be computed from dot products alone: "
+    "from |u × v| = |u||v| sin θ and u·v = |u||v| cos θ, give |u × v|² in terms of uu = u·u, "
+    "vv = v·v and uv = u·v only (no angle) (Goldman §9.4.2)."),
     "uu vv uv", "Check |u × v|² written with dot products only.")
 def _(uu, vv, uv):
     return dict(expected=uu * vv - uv**2, what="|u × v|²",
@@ -140,10 +140,10 @@ def _(u1, u2, u3, v1, v2, v3):
 
 
 @_define("ch10_triple_cross", (
-    "Show that (u × v) × w = (u·w) v − (v·w) u, so that (u × v) × w and u × (v × w) differ and the "
-    "cross product is not associative. Compute (u × v) × w in coordinates from "
-    "u = (u1, u2, u3), v = (v1, v2, v3), w = (w1, w2, w3), or write the right-hand side with dot "
-    "products in coordinates; give it as [x, y, z] (Goldman §10.3.2)."),
+    "Show that the cross product is not associative: (u × v) × w lies in the plane of u and v, "
+    "while u × (v × w) lies in the plane of v and w. Compute (u × v) × w in coordinates from "
+    "u = (u1, u2, u3), v = (v1, v2, v3), w = (w1, w2, w3) and give it as [x, y, z]; then look for "
+    "the dot products in your coordinates (Goldman §10.3.2)."),
     "u1 u2 u3 v1 v2 v3 w1 w2 w3", "Check the coordinates of (u × v) × w.")
 def _(u1, u2, u3, v1, v2, v3, w1, w2, w3):
     u, v, w = [u1, u2, u3], [v1, v2, v3], [w1, w2, w3]
@@ -154,7 +154,7 @@ def _(u1, u2, u3, v1, v2, v3, w1, w2, w3):
                         "associative, so the brackets matter."),
                        (sympy.Matrix([_cross(w, _cross(u, v))]), "is w × (u × v): swapping the factors of the "
                         "outer cross product flips the sign.")],
-                success="it expands to (u·w) v − (v·w) u, while u × (v × w) = (u·w) v − (u·v) w: not associative.")
+                success="it is (u·w) v − (v·w) u, while u × (v × w) = (u·w) v − (u·v) w: not associative.")
 
 
 # == Chapter 11: applications ======================================================================
@@ -177,7 +177,7 @@ def _(x0, y0, x1, y1, x2, y2):
 
 @_define("ch11_line_intersection", (
     "Two lines in the plane, P + s u and Q + t v with u × v ≠ 0, meet where P + s u = Q + t v. "
-    "Show that s = ((Q − P) × v)/(u × v) by crossing both sides with v (in the plane a × b = "
+    "Find s by crossing both sides with a vector that removes t (in the plane a × b = "
     "a1 b2 − a2 b1). Give s in terms of p1, p2, u1, u2, q1, q2, v1, v2 (Goldman §11.5.1)."),
     "p1 p2 u1 u2 q1 q2 v1 v2", "Check the parameter s of the intersection point on the line P + s u.")
 def _(p1, p2, u1, u2, q1, q2, v1, v2):
@@ -189,7 +189,8 @@ def _(p1, p2, u1, u2, q1, q2, v1, v2):
                         "(crossing with u removes s, not t): cross both sides with v."),
                        (cr(d, [v1, v2]) / cr([v1, v2], [u1, u2]), "divides by v × u: crossing s u with v gives "
                         "s (u × v).")],
-                success="crossing P + s u = Q + t v with v removes t (v × v = 0) and leaves s (u × v) = (Q − P) × v.")
+                success="crossing with v removes t (v × v = 0): s = ((Q − P) × v)/(u × v), defined when the lines "
+                        "are not parallel.")
 
 
 # == Chapter 12: affine and projective formulas =====================================================
@@ -216,10 +217,9 @@ def _(c, s, p, n):
 
 
 @_define("ch12_perspective_formula", (
-    "Show that the perspective image of P from the eye E on the plane through Q with normal N is "
-    "P' = [((P − Q)·N) E + ((Q − E)·N) P] / ((P − E)·N). Intersect the line E + t(P − E) with the "
-    "plane (P' − Q)·N = 0, solve for t, and give P' as [x, y, z] in terms of p1, p2, p3, "
-    "e1, e2, e3, q1, q2, q3, n1, n2, n3 (Goldman §12.5.2)."),
+    "Derive the perspective image P' of a point P from the eye E on the plane through Q with normal "
+    "N: intersect the line E + t(P − E) with the plane (X − Q)·N = 0, solve for t, and give P' as "
+    "[x, y, z] in terms of p1, p2, p3, e1, e2, e3, q1, q2, q3, n1, n2, n3 (Goldman §12.5.2)."),
     "p1 p2 p3 e1 e2 e3 q1 q2 q3 n1 n2 n3", "Check the coordinates of the perspective image P'.")
 def _(p1, p2, p3, e1, e2, e3, q1, q2, q3, n1, n2, n3):
     P, E, Q, N = [p1, p2, p3], [e1, e2, e3], [q1, q2, q3], [n1, n2, n3]
@@ -234,16 +234,16 @@ def _(p1, p2, p3, e1, e2, e3, q1, q2, q3, n1, n2, n3):
                         "uses (P − Q)·N in t: the plane condition (E + t(P − E) − Q)·N = 0 gives (Q − E)·N."),
                        (sympy.Matrix([[e - t * (p - e) for p, e in zip(P, E)]]),
                         "walks from E away from P: the image lies on E + t(P − E), on the side of P.")],
-                success="the image lies on the line EP and on the plane, and its denominator (P − E)·N vanishes "
-                        "exactly when EP is parallel to the plane.")
+                success="P' = ((P − Q)·N E + (Q − E)·N P)/((P − E)·N), Goldman's formula: on the line EP and on the "
+                        "plane, undefined exactly when EP is parallel to the plane.")
 
 
 # == Chapter 13: matrices ==========================================================================
 
 @_define("ch13_translation_row", (
     "An affine map with linear part L (3x3, rows act on the right, P ↦ P L + w) fixes the point Q. "
-    "Show that its translation row is w = Q − Q L. Give w as [x, y, z] in terms of q1, q2, q3 and the "
-    "entries l11 ... l33 of L (row i, column j is lij) (Goldman §13.2.2)."),
+    "Find its translation row w, and show that the map is L acting about Q. Give w as [x, y, z] in "
+    "terms of q1, q2, q3 and the entries l11 ... l33 of L (row i, column j is lij) (Goldman §13.2.2)."),
     "q1 q2 q3 l11 l12 l13 l21 l22 l23 l31 l32 l33", "Check the translation row w of a map fixing Q.")
 def _(q1, q2, q3, l11, l12, l13, l21, l22, l23, l31, l32, l33):
     Q = sympy.Matrix([[q1, q2, q3]])
@@ -253,13 +253,13 @@ def _(q1, q2, q3, l11, l12, l13, l21, l22, l23, l31, l32, l33):
                         "so Q maps to Q L."),
                        (Q * L - Q, "differs by a sign: Q L + w = Q gives w = Q − Q L."),
                        (Q, "forgets the linear part: Q L + w = Q, so w = Q − Q L is Q only when L is the identity.")],
-                success="Q L + (Q − Q L) = Q, and every P maps to Q + (P − Q) L: L acting about Q.")
+                success="w = Q − Q L, and every P maps to P L + Q − Q L = Q + (P − Q) L: L acting about Q.")
 
 
 @_define("ch13_mirror_linear_part", (
-    "Show that the linear part of the mirror in a plane with unit normal n = (n1, n2, n3) is "
-    "M = I − 2 nᵀn (row vectors: v ↦ v M = v − 2 (v·n) n), and that M M = I. Give M as a 3x3 "
-    "matrix (a list of rows) in terms of n1, n2, n3 (Goldman §13.3.3)."),
+    "The mirror in a plane with unit normal n = (n1, n2, n3) sends a vector v to v − 2 (v·n) n. "
+    "Find its linear part M (row vectors: v ↦ v M) and show that M M = I. Give M as a 3x3 matrix "
+    "(a list of rows) in terms of n1, n2, n3 (Goldman §13.3.3)."),
     "n1 n2 n3", "Check the 3x3 linear part of the mirror in the plane with unit normal n.")
 def _(n1, n2, n3):
     n = sympy.Matrix([[n1, n2, n3]])
@@ -271,8 +271,8 @@ def _(n1, n2, n3):
                        (2 * n.T * n - I3, "is the half-turn about the normal line (its negative): the mirror keeps "
                         "the plane's directions and reverses n."),
                        (I3 + 2 * n.T * n, "adds the normal part: the mirror subtracts 2 (v·n) n.")],
-                success="M is symmetric, n M = −n, a vector in the plane is kept, and M M = I − 4 nᵀn + 4 nᵀ(n nᵀ)n = I "
-                        "because n nᵀ = 1.")
+                success="M = I − 2 nᵀn: symmetric, n M = −n, vectors in the plane kept, and "
+                        "M M = I − 4 nᵀn + 4 nᵀ(n nᵀ)n = I because n nᵀ = 1.")
 
 
 # == Chapter 14: projective space and mass-points ===================================================
@@ -340,6 +340,291 @@ def _(w, x, y, z, v1, v2, v3):
                        (sympy.Integer(0), "is 0, which holds only when the vector part of q is perpendicular to v.")],
                 success="it is −(x v1 + y v2 + z v3), nonzero unless (x, y, z) ⊥ v: q v leaves the pure vectors, "
                         "which is why a rotation needs the sandwich q v q*.")
+
+
+# == Chapter 24: Bezier curves =====================================================================
+
+def _bernstein(n, k, t):
+    return sympy.binomial(n, k) * t**k * (1 - t)**(n - k)
+
+
+def _casteljau(ctrl, t):
+    pts = list(ctrl)
+    while len(pts) > 1:
+        pts = [(1 - t) * a + t * b for a, b in zip(pts, pts[1:])]
+    return pts[0]
+
+
+@_define("ch24_casteljau_is_bernstein", (
+    "Show that the de Casteljau algorithm computes the Bernstein form: for a cubic with control "
+    "values b0, b1, b2, b3 (one coordinate of the control points), run the three levels of "
+    "de Casteljau at t and give the point, in terms of b0, b1, b2, b3, t; the checker compares it "
+    "with the sum of the Bernstein polynomials times the b's (Goldman §24.3)."),
+    "b0 b1 b2 b3 t", "Check the cubic's point at t computed by de Casteljau.")
+def _(b0, b1, b2, b3, t):
+    b = [b0, b1, b2, b3]
+    return dict(expected=sum(_bernstein(3, k, t) * b[k] for k in range(4)), what="the point",
+                slips=[(sum(t**k * (1 - t)**(3 - k) * b[k] for k in range(4)),
+                        "is missing the binomial coefficients 1, 3, 3, 1: each b_k is reached along C(3, k) paths "
+                        "of the de Casteljau triangle."),
+                       (sum(_bernstein(3, k, 1 - t) * b[k] for k in range(4)),
+                        "uses t and 1 − t the wrong way round: at t = 0 the curve starts at b0."),
+                       (sum(_bernstein(3, k, t) * b[k] for k in range(3)),
+                        "leaves out the last control value: all four b's contribute.")],
+                success="the point is Σ C(3, k) t^k (1 − t)^(3−k) b_k: every path down the triangle is a product of "
+                        "t's and (1 − t)'s.")
+
+
+@_define("ch24_derivative", (
+    "Show that the derivative of a cubic Bezier curve is 3 times the difference of the two points of "
+    "the second-to-last de Casteljau level. Give P'(t) in terms of b0, b1, b2, b3, t (differentiate "
+    "the Bernstein form, or take that difference) (Goldman §24.5)."),
+    "b0 b1 b2 b3 t", "Check the derivative P'(t) of the cubic.")
+def _(b0, b1, b2, b3, t):
+    b = [b0, b1, b2, b3]
+    p = sum(_bernstein(3, k, t) * b[k] for k in range(4))
+    left = _casteljau(b[:3], t)
+    right = _casteljau(b[1:], t)
+    return dict(expected=sympy.diff(p, t), what="P'(t)",
+                slips=[(right - left, "is missing the degree factor 3: the derivative of a degree-n curve is n times "
+                        "the difference of the last two de Casteljau points."),
+                       (3 * (left - right), "differs by a sign: take the right point minus the left point."),
+                       (3 * (_casteljau(b[2:], t) - _casteljau(b[:2], t)),
+                        "takes the difference one level too early: use the two points of the second-to-last level.")],
+                success="3 (p(t, t, 1) − p(t, t, 0)) in blossom form: at t = 0 it is 3 (b1 − b0), the end tangent.")
+
+
+# == Chapter 25: Bezier subdivision =================================================================
+
+@_define("ch25_left_half", (
+    "Show that de Casteljau subdivision at r gives the left piece: its control values are the left "
+    "edge of the de Casteljau triangle, and its curve at u is the original curve at r u. For a cubic "
+    "b0, b1, b2, b3, give the left piece's four control values [c0, c1, c2, c3] in terms of "
+    "b0, b1, b2, b3, r (Goldman §25.2)."),
+    "b0 b1 b2 b3 r", "Check the control values of the left piece after subdividing at r.")
+def _(b0, b1, b2, b3, r):
+    b = [b0, b1, b2, b3]
+    left = [_casteljau(b[:k + 1], r) for k in range(4)]
+    right = [_casteljau(b[k:], r) for k in range(4)]
+    level1 = [(1 - r) * x + r * y for x, y in zip(b, b[1:])]
+    return dict(expected=sympy.Matrix([left]), what="the left piece's control values",
+                slips=[(sympy.Matrix([right]), "are the right piece's (the right edge of the triangle): the left piece "
+                        "starts at b0."),
+                       (sympy.Matrix([left[::-1]]), "are in reverse order: the left piece starts at b0 and ends at the "
+                        "split point."),
+                       (sympy.Matrix([[b0] + level1]), "stop at the first level: the left edge takes the first point of "
+                        "every level of the triangle.")],
+                success="the left piece's Bernstein form at u is the original at r u: the two halves trace the curve.")
+
+
+@_define("ch25_smooth_join", (
+    "Two cubic Bezier curves join at c0 = b3; the first runs over a parameter interval of length h0 "
+    "and the second over one of length h1. Find the second control value c1 of the second curve that "
+    "makes the join C1 (the same derivative with respect to the global parameter; a curve over an "
+    "interval of length h has derivative (1/h) dP/du). Give c1 in terms of b2, b3, h0, h1 "
+    "(Goldman §25.5)."),
+    "b2 b3 h0 h1", "Check the second control value c1 of the next curve for a C1 join.")
+def _(b2, b3, h0, h1):
+    return dict(expected=b3 + h1 / h0 * (b3 - b2), what="c1",
+                slips=[(2 * b3 - b2, "assumes equal parameter lengths: with h0 ≠ h1 the tangent scales by h1/h0."),
+                       (b3 + h0 / h1 * (b3 - b2), "uses the ratio of the interval lengths upside down: each derivative is "
+                        "divided by its own curve's length."),
+                       (b3 - h1 / h0 * (b3 - b2), "goes back along the tangent: c1 continues the direction b2 → b3.")],
+                success="3 (b3 − b2)/h0 = 3 (c1 − b3)/h1: the derivatives with respect to the global parameter agree, "
+                        "and b2, b3, c1 are collinear.")
+
+
+# == Chapter 26: blossoming ========================================================================
+
+@_define("ch26_cubic_blossom", (
+    "Find the blossom of the cubic P(t) = a0 + a1 t + a2 t² + a3 t³ and show it is symmetric, "
+    "multiaffine and equals P on the diagonal. Give p(u1, u2, u3) in terms of a0, a1, a2, a3, "
+    "u1, u2, u3 (Goldman §26.2)."),
+    "a0 a1 a2 a3 u1 u2 u3", "Check the blossom p(u1, u2, u3) of a cubic.")
+def _(a0, a1, a2, a3, u1, u2, u3):
+    e1, e2, e3 = u1 + u2 + u3, u1 * u2 + u1 * u3 + u2 * u3, u1 * u2 * u3
+    return dict(expected=a0 + a1 * e1 / 3 + a2 * e2 / 3 + a3 * e3, what="p(u1, u2, u3)",
+                slips=[(a0 + a1 * e1 + a2 * e2 + a3 * e3, "does not give P back on the diagonal: divide each symmetric "
+                        "sum by its number of terms (3 for t and for t²)."),
+                       (a0 + a1 * e1 / 3 + a2 * (u1**2 + u2**2 + u3**2) / 3 + a3 * e3,
+                        "is not multiaffine: u1² has degree 2 in u1; t² blossoms to the products of distinct u's."),
+                       (a0 + a1 * u1 + a2 * u1 * u2 + a3 * e3, "is not symmetric: the blossom must not change when the "
+                        "u's are permuted.")],
+                success="symmetric, degree 1 in each u, and p(t, t, t) = P(t): the blossom is unique.")
+
+
+@_define("ch26_diagonal", (
+    "For a quadratic with control points b0 = p(0, 0), b1 = p(0, 1), b2 = p(1, 1), expand the blossom "
+    "p(u1, u2) by multiaffinity (write u = (1 − u)·0 + u·1 in each argument) and give it in terms of "
+    "b0, b1, b2, u1, u2. Its diagonal p(t, t) is the de Casteljau point (Goldman §26.3)."),
+    "b0 b1 b2 u1 u2", "Check the blossom p(u1, u2) of a quadratic from its control points.")
+def _(b0, b1, b2, u1, u2):
+    return dict(expected=(1 - u1) * (1 - u2) * b0 + (u1 * (1 - u2) + u2 * (1 - u1)) * b1 + u1 * u2 * b2,
+                what="p(u1, u2)",
+                slips=[((1 - u1) * (1 - u2) * b0 + 2 * u1 * (1 - u2) * b1 + u1 * u2 * b2,
+                        "is not symmetric: p(0, 1) and p(1, 0) are both b1, each reached once."),
+                       (u1 * u2 * b0 + (u1 * (1 - u2) + u2 * (1 - u1)) * b1 + (1 - u1) * (1 - u2) * b2,
+                        "swaps the ends: p(0, 0) = b0, so b0's weight is (1 − u1)(1 − u2)."),
+                       ((1 - u1) * (1 - u2) * b0 + (u1 + u2) * b1 + u1 * u2 * b2,
+                        "drops the u1 u2 terms of b1's weight: expand u1 (1 − u2) + u2 (1 − u1).")],
+                success="on the diagonal it is (1 − t)² b0 + 2t(1 − t) b1 + t² b2, the de Casteljau point.")
+
+
+# == Chapter 27: B-splines =========================================================================
+
+def _de_boor2(P0, P1, P2, t1, t2, t3, t4, t):
+    a = ((t3 - t) * P0 + (t - t1) * P1) / (t3 - t1)      # p(t2, t)
+    b = ((t4 - t) * P1 + (t - t2) * P2) / (t4 - t2)      # p(t, t3)
+    return ((t3 - t) * a + (t - t2) * b) / (t3 - t2)
+
+
+@_define("ch27_local_de_boor", (
+    "A quadratic B-spline segment over [t2, t3] has knots t1, t2, t3, t4 and control points "
+    "P0 = p(t1, t2), P1 = p(t2, t3), P2 = p(t3, t4). Run the local de Boor algorithm with blossoms "
+    "(first p(t2, t) and p(t, t3), then p(t, t)) and give the point p(t, t) in terms of P0, P1, P2, "
+    "t1, t2, t3, t4, t (Goldman §27.2)."),
+    "P0 P1 P2 t1 t2 t3 t4 t", "Check the point p(t, t) of a quadratic B-spline segment.")
+def _(P0, P1, P2, t1, t2, t3, t4, t):
+    wrong_den = (((t3 - t) * ((t3 - t) * P0 + (t - t2) * P1) + (t - t2) * ((t3 - t) * P1 + (t - t2) * P2))
+                 / (t3 - t2)**2)
+    a = ((t3 - t) * P0 + (t - t1) * P1) / (t3 - t1)
+    b = ((t4 - t) * P1 + (t - t2) * P2) / (t4 - t2)
+    return dict(expected=_de_boor2(P0, P1, P2, t1, t2, t3, t4, t), what="p(t, t)",
+                slips=[(wrong_den, "uses the middle interval [t2, t3] at the first level too: p(t2, t) interpolates "
+                        "between p(t1, t2) and p(t2, t3), over [t1, t3]."),
+                       (((t - t2) * a + (t3 - t) * b) / (t3 - t2), "swaps the weights of the last step: at t = t2 the "
+                        "point is p(t2, t2), from the left."),
+                       ((a + b) / 2, "averages the last level: its weights are (t3 − t)/(t3 − t2) and (t − t2)/(t3 − t2).")],
+                success="each step is affine in one blossom argument, so p(t, t) is the segment of the spline.")
+
+
+@_define("ch27_nurbs_circle", (
+    "Show that the rational quadratic Bezier curve with control points (1, 0), (1, 1), (0, 1) and "
+    "weights 1, 1, 2 lies on the unit circle. Give its point [x, y] as functions of t (the weighted "
+    "Bernstein sum divided by the weighted sum of the Bernstein polynomials) (Goldman §27.9)."),
+    "t", "Check the point [x, y] of a rational quadratic Bezier curve.")
+def _(t):
+    B = [_bernstein(2, k, t) for k in range(3)]
+    w = [1, 1, 2]
+    ctrl = [(1, 0), (1, 1), (0, 1)]
+    den = sum(wi * b for wi, b in zip(w, B))
+    pt = [sum(wi * b * c[i] for wi, b, c in zip(w, B, ctrl)) / den for i in range(2)]
+    poly = [sum(b * c[i] for b, c in zip(B, ctrl)) for i in range(2)]
+    num = [sum(wi * b * c[i] for wi, b, c in zip(w, B, ctrl)) for i in range(2)]
+    return dict(expected=sympy.Matrix([pt]), what="[x, y]",
+                slips=[(sympy.Matrix([poly]), "ignores the weights: that is the polynomial Bezier curve, a parabola."),
+                       (sympy.Matrix([num]), "forgets to divide by Σ w_k B_k: the weighted sum is a mass-point, not a point."),
+                       (sympy.Matrix([[pt[1], pt[0]]]), "swaps x and y: the curve starts at (1, 0).")],
+                success="x = (1 − t²)/(1 + t²), y = 2t/(1 + t²), and x² + y² = 1: a quarter of the unit circle.")
+
+
+# == Chapter 28: knot insertion ====================================================================
+
+@_define("ch28_boehm", (
+    "Insert the knot u (t2 ≤ u ≤ t3) into the quadratic B-spline with knots t1, t2, t3, t4 and control "
+    "points P0 = p(t1, t2), P1 = p(t2, t3), P2 = p(t3, t4). The new control points are P0, p(t2, u), "
+    "p(u, t3), P2. Give [p(t2, u), p(u, t3)] in terms of P0, P1, P2, t1, t2, t3, t4, u; the checker "
+    "then confirms the curve is unchanged (Goldman §28.3.1)."),
+    "P0 P1 P2 t1 t2 t3 t4 u", "Check the two new control points of Boehm's knot insertion.")
+def _(P0, P1, P2, t1, t2, t3, t4, u):
+    a = ((t3 - u) * P0 + (u - t1) * P1) / (t3 - t1)
+    b = ((t4 - u) * P1 + (u - t2) * P2) / (t4 - t2)
+    return dict(expected=sympy.Matrix([[a, b]]), what="the new control points",
+                slips=[(sympy.Matrix([[((t3 - u) * P0 + (u - t2) * P1) / (t3 - t2),
+                                       ((t3 - u) * P1 + (u - t2) * P2) / (t3 - t2)]]),
+                        "use the interval [t2, t3] for both: p(t2, u) interpolates over [t1, t3] and p(u, t3) over "
+                        "[t2, t4]."),
+                       (sympy.Matrix([[((u - t1) * P0 + (t3 - u) * P1) / (t3 - t1),
+                                       ((u - t2) * P1 + (t4 - u) * P2) / (t4 - t2)]]),
+                        "swap the weights: u near t1 gives a point near p(t1, t2) = P0."),
+                       (sympy.Matrix([[b, a]]), "are in the wrong order: p(t2, u) comes first.")],
+                success="they are the blossom at the new consecutive knots, so de Boor on the new knots gives the same "
+                        "curve.")
+
+
+@_define("ch28_chaikin", (
+    "Show that one Lane–Riesenfeld step for a uniform quadratic B-spline (double every control point, "
+    "then average neighbours twice) turns each edge P0 P1 into the two points of Chaikin's corner "
+    "cutting. Give [Q0, Q1] (in order along the edge) in terms of P0, P1 (Goldman §28.4.1)."),
+    "P0 P1", "Check the two new control points of one edge after a Lane–Riesenfeld step of degree 2.")
+def _(P0, P1):
+    return dict(expected=sympy.Matrix([[(3 * P0 + P1) / 4, (P0 + 3 * P1) / 4]]), what="[Q0, Q1]",
+                slips=[(sympy.Matrix([[(P0 + P1) / 2, P1]]), "averages once: degree 2 needs two rounds of averaging."),
+                       (sympy.Matrix([[(P0 + 3 * P1) / 4, (3 * P0 + P1) / 4]]), "gives the points in the wrong order: "
+                        "the one nearer P0 comes first."),
+                       (sympy.Matrix([[(2 * P0 + P1) / 3, (P0 + 2 * P1) / 3]]), "cuts at thirds: averaging twice "
+                        "gives quarters.")],
+                success="(3 P0 + P1)/4 and (P0 + 3 P1)/4: the knots doubled, the curve unchanged.")
+
+
+# == Chapter 29: subdivision matrices ==============================================================
+
+@_define("ch29_left_matrix", (
+    "Show that subdividing a quadratic Bezier curve at r is linear in the control points: the left "
+    "piece's control points are L(r) applied to b0, b1, b2, with row i the weights of the left piece's "
+    "i-th control point. Give the 3x3 matrix L(r) (a list of rows) in terms of r (Goldman §29.2.1)."),
+    "r", "Check the left subdivision matrix L(r) of a quadratic Bezier curve.")
+def _(r):
+    L = sympy.Matrix([[1, 0, 0], [1 - r, r, 0], [(1 - r)**2, 2 * r * (1 - r), r**2]])
+    R = sympy.Matrix([[(1 - r)**2, 2 * r * (1 - r), r**2], [0, 1 - r, r], [0, 0, 1]])
+    return dict(expected=L, what="L(r)",
+                slips=[(R, "is the right piece's matrix: the left piece starts at b0, row 1 is (1, 0, 0)."),
+                       (sympy.Matrix([[1, 0, 0], [r, 1 - r, 0], [r**2, 2 * r * (1 - r), (1 - r)**2]]),
+                        "uses r and 1 − r the wrong way round: at r = 0 the left piece shrinks to b0.")],
+                success="each row sums to 1 (an affine combination), and at r = 1/2 its eigenvalues are 1, 1/2, 1/4.")
+
+
+@_define("ch29_cubic_bspline_rules", (
+    "Show that the uniform cubic B-spline subdivision rules come from Lane–Riesenfeld: double every "
+    "control point, then average neighbours three times. Give the new points around P1, "
+    "[the vertex point that replaces P1, the edge point on P1 P2], in terms of P0, P1, P2 "
+    "(Goldman §29.2.2)."),
+    "P0 P1 P2", "Check the vertex and edge points of one uniform cubic B-spline subdivision step.")
+def _(P0, P1, P2):
+    return dict(expected=sympy.Matrix([[(P0 + 6 * P1 + P2) / 8, (P1 + P2) / 2]]), what="[vertex point, edge point]",
+                slips=[(sympy.Matrix([[(P0 + 2 * P1 + P2) / 4, (P1 + P2) / 2]]), "averages twice: degree 3 needs three "
+                        "rounds (twice is the quadratic rule, between old points)."),
+                       (sympy.Matrix([[P1, (P1 + P2) / 2]]), "keeps the old point: a cubic B-spline does not interpolate "
+                        "its control points; the vertex point moves toward its neighbours."),
+                       (sympy.Matrix([[(P1 + P2) / 2, (P0 + 6 * P1 + P2) / 8]]), "gives the two points in the wrong "
+                        "order: the vertex point first.")],
+                success="the rows of the subdivision matrix: (1, 6, 1)/8 at a vertex and (1, 1)/2 on an edge.")
+
+
+# == Chapter 30: subdivision surfaces ==============================================================
+
+@_define("ch30_bicubic_vertex", (
+    "Show that the vertex stencil of uniform bicubic B-spline subdivision is the tensor product of the "
+    "cubic B-spline curve's vertex stencil (1/8, 6/8, 1/8). Give the new position of a vertex V (one "
+    "coordinate) in terms of V, its four edge neighbours e1, e2, e3, e4 and its four diagonal "
+    "neighbours d1, d2, d3, d4 (Goldman §30.3.2.1)."),
+    "V e1 e2 e3 e4 d1 d2 d3 d4", "Check the bicubic vertex rule.")
+def _(V, e1, e2, e3, e4, d1, d2, d3, d4):
+    E, D = e1 + e2 + e3 + e4, d1 + d2 + d3 + d4
+    return dict(expected=sympy.Rational(9, 16) * V + sympy.Rational(3, 32) * E + sympy.Rational(1, 64) * D,
+                what="the new vertex",
+                slips=[(sympy.Rational(3, 4) * V + E / 16, "uses the curve stencil along each direction and adds: "
+                        "a tensor product multiplies the weights, which brings in the diagonal neighbours."),
+                       ((V + E + D) / 9, "is the centroid of the 3x3 block: the weights are products of (1/8, 6/8, 1/8)."),
+                       (sympy.Rational(9, 16) * V + sympy.Rational(3, 32) * E, "is missing the diagonal neighbours: "
+                        "the tensor product gives each the product of two end weights.")],
+                success="the weights are products (6/8)(6/8), (1/8)(6/8) and (1/8)(1/8), and they sum to 1.")
+
+
+@_define("ch30_euler_characteristic", (
+    "One step of triangle-mesh subdivision (Loop's split) puts a new vertex on every edge and cuts "
+    "every triangle into four. Show that it keeps V − E + F: give the new counts [V', E', F'] of a "
+    "closed triangle mesh in terms of nV, nE, nF (Goldman §30.4.1.2)."),
+    "nV nE nF", "Check the vertex, edge and face counts after one split.")
+def _(nV, nE, nF):
+    return dict(expected=sympy.Matrix([[nV + nE, 2 * nE + 3 * nF, 4 * nF]]), what="[V', E', F']",
+                slips=[(sympy.Matrix([[nV + nE, 2 * nE, 4 * nF]]), "counts only the halves of the old edges: each "
+                        "triangle also gets three new interior edges."),
+                       (sympy.Matrix([[nV + nE, 2 * nE + 3 * nF, 3 * nF]]), "cuts each triangle into three: the "
+                        "midpoints cut it into four."),
+                       (sympy.Matrix([[nV + nF, 2 * nE + 3 * nF, 4 * nF]]), "adds a vertex per face: the split adds "
+                        "one per edge.")],
+                success="V' − E' + F' = nV + nE − 2nE − 3nF + 4nF = nV − nE + nF: the Euler characteristic is kept.")
 
 
 PROBLEMS = {name: ex.statement for name, ex in _EXERCISES.items()}
