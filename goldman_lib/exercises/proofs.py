@@ -34,8 +34,7 @@ class _Exercise:
     statement: str
     symbol_names: str
     build: Callable  # symbols -> dict(expected=..., slips=[(form, words)], substitutions=..., what=, success=)
-    constraint_names: str = ""
-    extra: dict = field(default_factory=dict)
+    assumptions: dict = field(default_factory=dict)  # sympy assumptions, e.g. {"positive": True}
 
 
 _EXERCISES: dict[str, _Exercise] = {}
@@ -59,25 +58,35 @@ def _qmul(p, q):
 
 
 def symbols_for(name: str):
-    """The sympy symbols of exercise ``name``, in the order its statement lists them."""
+    """The sympy symbols of exercise ``name``, in the order its statement lists them (a tuple, or
+    the one symbol itself when there is only one).
+
+    >>> symbols_for("ch09_cross_length")
+    (uu, vv, uv)
+    """
     if name not in _EXERCISES:
         raise ValueError(f"name must be one of the show-that exercises {sorted(_EXERCISES)}; got {name!r}")
-    syms = symbols(_EXERCISES[name].symbol_names)
+    ex = _EXERCISES[name]
+    return sympy.symbols(ex.symbol_names, **ex.assumptions) if ex.assumptions else symbols(ex.symbol_names)
+
+
+def _symbol_tuple(name: str):
+    syms = symbols_for(name)
     return syms if isinstance(syms, tuple) else (syms,)
 
 
 def _check(name: str, answer):
     ex = _EXERCISES[name]
-    syms = symbols_for(name)
+    syms = _symbol_tuple(name)
     spec = ex.build(*syms)
     return check_expression(answer, spec["expected"], what=spec["what"], symbols=syms,
                             substitutions=spec.get("substitutions"), slips=spec.get("slips", ()),
                             success=spec.get("success"), ask=spec.get("ask"))
 
 
-def _define(name, statement, symbol_names, doc):
+def _define(name, statement, symbol_names, doc, **assumptions):
     def build(fn):
-        _EXERCISES[name] = _Exercise(name, statement, symbol_names, fn)
+        _EXERCISES[name] = _Exercise(name, statement, symbol_names, fn, assumptions)
 
         def checker(answer):
             return _check(name, answer)
@@ -88,6 +97,252 @@ def _define(name, statement, symbol_names, doc):
         __all__.append(name)
         return fn
     return build
+
+
+# == Chapter 2: looping lemmas ====================================================================
+
+@_define("ch02_three_steps", (
+    "REPEAT 3 [FORWARD 1, TURN A] starting at the origin heading along the x-axis. Show that the turtle "
+    "comes back to its start exactly when 1 + z + z² = 0 for z = cos A + i sin A (A = 120° or 240°): "
+    "give its position after the three steps as [x, y] in terms of c = cos A and s = sin A (turns are "
+    "counterclockwise; use cos 2A = c² − s² and sin 2A = 2cs) (Goldman §2.2)."),
+    "c s", "Check the turtle's position after three steps.")
+def _(c, s):
+    w = symbols("w_")
+    return dict(expected=sympy.Matrix([[1 + c + c**2 - s**2, s + 2 * c * s]]), what="the position",
+                substitutions=unit_circle_substitution(c, s, w),
+                slips=[(sympy.Matrix([[c + c**2 - s**2 + c**3 - 3 * c * s**2, s + 2 * c * s + 3 * c**2 * s - s**3]]),
+                        "turns before the first step: FORWARD comes first, along the initial heading."),
+                       (sympy.Matrix([[1 + c + c**2 - s**2, -s - 2 * c * s]]),
+                        "turns clockwise: TURN A turns counterclockwise, so y grows with sin A."),
+                       (sympy.Matrix([[1 + 2 * c, 2 * s]]), "uses the first heading twice: the third step is at angle 2A.")],
+                success="the steps are 1, z, z², so the loop closes exactly when 1 + z + z² = 0, that is z³ = 1 with "
+                        "z ≠ 1.")
+
+
+@_define("ch02_koch_length", (
+    "Each level of the Koch curve replaces every segment by 4 segments a third as long. Show that the "
+    "length grows without bound: give the length after n levels, starting from one segment of length L, "
+    "in terms of L and n (n a whole number) (Goldman §2.3.2)."),
+    "L n", "Check the length of the Koch curve after n levels.", positive=True, integer=True)
+def _(L, n):
+    return dict(expected=L * sympy.Rational(4, 3)**n, what="the length",
+                slips=[(L * sympy.Rational(3, 4)**n, "has the ratio upside down: 4 pieces of a third each make 4/3 "
+                        "of the length."),
+                       (L * (1 + n * sympy.Rational(1, 3)), "grows linearly: each level multiplies the length, it does "
+                        "not add a fixed amount."),
+                       (L * 4**n, "forgets that the pieces are a third as long.")],
+                success="(4/3)^n L grows without bound, while the curve stays in a bounded region.")
+
+
+# == Chapter 3: fractal strangeness ================================================================
+
+@_define("ch03_dimension", (
+    "A fractal made of N copies of itself, each scaled by s (0 < s < 1), has dimension D with N s^D = 1. "
+    "Solve for D: give D in terms of N and s, using sympy.log (Goldman §3.2.1)."),
+    "N s", "Check the dimension D of a self-similar fractal.", positive=True)
+def _(N, s):
+    return dict(expected=sympy.log(N) / sympy.log(1 / s), what="D",
+                slips=[(sympy.log(N) / sympy.log(s), "differs by a sign: log s < 0 for s < 1; use log(1/s)."),
+                       (sympy.log(1 / s) / sympy.log(N), "is upside down: taking logs of N s^D = 1 gives "
+                        "log N + D log s = 0."),
+                       (N * s, "is not a logarithm: D is an exponent, so solving for it takes logs.")],
+                success="D = log N / log(1/s): 1 for a segment (N = 2, s = 1/2), log 4/log 3 for the Koch curve.")
+
+
+@_define("ch03_finite_area", (
+    "A bump fractal adds m·r^k new triangles at level k (k = 0, 1, 2, ...), each of area a·q^k, with "
+    "r q < 1. Show that its total added area is finite: give the sum over all levels in terms of "
+    "m, a, r, q (Goldman §3.1)."),
+    "m a r q", "Check the total area added by all the levels.")
+def _(m, a, r, q):
+    return dict(expected=m * a / (1 - r * q), what="the total area",
+                slips=[(m * a * r * q / (1 - r * q), "leaves out level 0: the sum starts at k = 0."),
+                       (m * a / (1 - q), "uses only the shrinking of the area: the number of triangles grows by r too."),
+                       (m * a / (1 - r) / (1 - q), "multiplies two geometric series: each level's area is "
+                        "m a (r q)^k, one series with ratio r q.")],
+                success="a geometric series with ratio r q < 1: finite area (8/5 of the triangle for the Koch "
+                        "snowflake), though the boundary's length is infinite.")
+
+
+# == Chapter 4: affine transformations =============================================================
+
+@_define("ch04_rotation_centre", (
+    "Show that a rotation by A about the origin followed by a translation by w = (w1, w2) is a rotation "
+    "by A about some point Q (A ≠ 0): find the fixed point Q of P ↦ P R + w, where R is the 2x2 "
+    "rotation matrix in the row convention (rows (c, s) and (−s, c), c = cos A, s = sin A). Give Q as "
+    "[x, y] in terms of c, s, w1, w2 (Goldman §4.6)."),
+    "c s w1 w2", "Check the centre Q of the rotation.")
+def _(c, s, w1, w2):
+    R = sympy.Matrix([[c, s], [-s, c]])
+    w = sympy.Matrix([[w1, w2]])
+    Q = w * (sympy.eye(2) - R).inv()
+    Qcol = ((sympy.eye(2) - R).inv() * w.T).T
+    return dict(expected=Q, what="Q", substitutions=unit_circle_substitution(c, s, symbols("w_")),
+                slips=[(Qcol, "uses the column convention ((I − R)⁻¹ w): with rows, Q R + w = Q gives Q (I − R) = w."),
+                       (-Q, "differs by a sign: Q R + w = Q gives Q (I − R) = w, not −w."),
+                       (w / 2, "halves the translation: that is the centre only for a half-turn (A = 180°).")],
+                success="Q (I − R) = w has one solution when A ≠ 0, and P R + w = Q + (P − Q) R: a rotation about Q.")
+
+
+@_define("ch04_three_points", (
+    "Show that there is exactly one affine map sending (0, 0), (1, 0), (0, 1) to P0, P1, P2: give its "
+    "3x3 matrix in the row convention ([x, y, 1] M; the last row is the translation), in terms of "
+    "x0, y0, x1, y1, x2, y2 (Goldman §4.7.3)."),
+    "x0 y0 x1 y1 x2 y2", "Check the 3x3 matrix of the affine map fixed by three points.")
+def _(x0, y0, x1, y1, x2, y2):
+    M = sympy.Matrix([[x1 - x0, y1 - y0, 0], [x2 - x0, y2 - y0, 0], [x0, y0, 1]])
+    return dict(expected=M, what="the matrix",
+                slips=[(sympy.Matrix([[x1, y1, 0], [x2, y2, 0], [x0, y0, 1]]), "uses the points P1, P2 as the first "
+                        "rows: the rows are the images of the vectors (1, 0) and (0, 1), P1 − P0 and P2 − P0."),
+                       (sympy.Matrix([[x0, y0, 1], [x1 - x0, y1 - y0, 0], [x2 - x0, y2 - y0, 0]]),
+                        "puts the translation in the first row: in the book's convention it is the last row.")],
+                success="(0, 0, 1) M = P0, (1, 0, 1) M = P1 and (0, 1, 1) M = P2, and the vector rows are forced.")
+
+
+# == Chapter 5: affine geometry ====================================================================
+
+@_define("ch05_centroid", (
+    "Show that the medians of a triangle meet at the centroid: the point two thirds of the way from P0 "
+    "to the midpoint of P1 P2 is the same for every vertex. Give that point (one coordinate) in terms "
+    "of P0, P1, P2 as an affine combination (Goldman §5.2)."),
+    "P0 P1 P2", "Check the point two thirds of the way along the median from P0.")
+def _(P0, P1, P2):
+    M = (P1 + P2) / 2
+    return dict(expected=P0 + sympy.Rational(2, 3) * (M - P0), what="the point",
+                slips=[(P0 + (M - P0) / 3, "goes one third of the way: the centroid is two thirds from the vertex."),
+                       (P0 + sympy.Rational(2, 3) * (P1 + P2 - P0), "uses P1 + P2 for the midpoint: the midpoint is "
+                        "(P1 + P2)/2, weights summing to 1."),
+                       (M, "stops at the midpoint of P1 P2.")],
+                success="it is (P0 + P1 + P2)/3, symmetric in the vertices: all three medians pass through it.")
+
+
+@_define("ch05_varignon", (
+    "Show that the midpoints of the sides of any quadrilateral P0 P1 P2 P3 form a parallelogram: give "
+    "the vector from the midpoint of P0 P1 to the midpoint of P1 P2 (one coordinate) in terms of "
+    "P0, P1, P2, P3; the checker compares it with the opposite side (Goldman §5.2)."),
+    "P0 P1 P2 P3", "Check the side vector of the midpoint quadrilateral.")
+def _(P0, P1, P2, P3):
+    return dict(expected=(P1 + P2) / 2 - (P0 + P1) / 2, what="the vector",
+                slips=[(P2 - P0, "is the diagonal itself: the side of the midpoint figure is half of it."),
+                       ((P0 + P1) / 2 - (P1 + P2) / 2, "differs by a sign: from the midpoint of P0 P1 to that of P1 P2."),
+                       ((P1 + P2) / 2, "is the midpoint, a point: the side is a difference of two midpoints.")],
+                success="it is (P2 − P0)/2, and the opposite side, from the midpoint of P3 P0 to that of P2 P3, is "
+                        "(P2 − P0)/2 too: a parallelogram.")
+
+
+# == Chapter 6: iterated function systems ==========================================================
+
+@_define("ch06_fixed_point", (
+    "Show that a contractive similarity P ↦ s P R + w (0 < s < 1, R a rotation by A in the row "
+    "convention, rows (c, d) and (−d, c) with c = cos A, d = sin A) has one fixed point: solve "
+    "P = s P R + w and give P as [x, y] in terms of s, c, d, w1, w2 (Goldman §6.2)."),
+    "s c d w1 w2", "Check the fixed point of a contractive similarity.")
+def _(s, c, d, w1, w2):
+    R = sympy.Matrix([[c, d], [-d, c]])
+    w = sympy.Matrix([[w1, w2]])
+    P = w * (sympy.eye(2) - s * R).inv()
+    return dict(expected=P, what="the fixed point", substitutions=unit_circle_substitution(c, d, symbols("w_")),
+                slips=[(((sympy.eye(2) - s * R).inv() * w.T).T, "uses the column convention: with rows, "
+                        "P (I − s R) = w."),
+                       (w / (1 - s), "ignores the rotation: that is the fixed point only when A = 0."),
+                       (w * (sympy.eye(2) + s * R), "keeps the first two terms of the series w (I + sR + s²R² + ...).")],
+                success="the iterates converge to it from any start: the series w Σ (s R)^k converges because s < 1.")
+
+
+@_define("ch06_segment_attractor", (
+    "Show that the segment from A to B is the attractor of the IFS {P ↦ (P + A)/2, P ↦ (P + B)/2}: the "
+    "two maps send the point (1 − t) A + t B of the segment to points of the segment. Give the two "
+    "image parameters [t1, t2] (the first map's, then the second's) in terms of t (Goldman §6.3)."),
+    "t", "Check the parameters of the images of a point of the segment.")
+def _(t):
+    return dict(expected=sympy.Matrix([[t / 2, (1 + t) / 2]]), what="[t1, t2]",
+                slips=[(sympy.Matrix([[(1 + t) / 2, t / 2]]), "swaps the maps: the first pulls toward A, where t = 0."),
+                       (sympy.Matrix([[(1 - t) / 2, (2 - t) / 2]]), "measures from B: the parameter t is 0 at A."),
+                       (sympy.Matrix([[t / 2, t / 2 + 1]]), "goes past B: the second map halves the distance to B.")],
+                success="the images cover [0, 1/2] and [1/2, 1]: together the whole segment, so it is the attractor.")
+
+
+# == Chapter 7: fixed-point theorem ================================================================
+
+@_define("ch07_newton_derivative", (
+    "Newton's method iterates g(x) = x − f(x)/f'(x). Show that it converges fast near a simple root: "
+    "give g'(x) in terms of f0 = f(x), f1 = f'(x), f2 = f''(x); at a root f0 = 0, so g' = 0 there "
+    "(Goldman §7.3.1)."),
+    "f0 f1 f2", "Check g'(x) for Newton's iteration.")
+def _(f0, f1, f2):
+    return dict(expected=f0 * f2 / f1**2, what="g'(x)",
+                slips=[(-f0 * f2 / f1**2, "differs by a sign: check the sign of the second term of the quotient rule."),
+                       (sympy.Integer(0), "is g' at the root only: away from the root f(x) ≠ 0; differentiate "
+                        "x − f/f' with the quotient rule."),
+                       (f0 * f2 / f1**2 - 1, "forgets the derivative of x itself, which is 1.")],
+                success="g'(x) = f f''/f'², zero at a simple root: the error squares at each step.")
+
+
+@_define("ch07_jacobi_fixed_point", (
+    "For the system a11 x + a12 y = b1, a21 x + a22 y = b2, the Jacobi map is "
+    "(x, y) ↦ ((b1 − a12 y)/a11, (b2 − a21 x)/a22). Show that its fixed point solves the system: give "
+    "the fixed point's x in terms of a11, a12, a21, a22, b1, b2 (Goldman §7.3.2)."),
+    "a11 a12 a21 a22 b1 b2", "Check the x of the Jacobi map's fixed point.")
+def _(a11, a12, a21, a22, b1, b2):
+    det = a11 * a22 - a12 * a21
+    return dict(expected=(b1 * a22 - a12 * b2) / det, what="x",
+                slips=[((b2 * a11 - a21 * b1) / det, "is y: Cramer's rule for x replaces the first column by b."),
+                       ((b1 * a22 - a12 * b2) / (a11 * a22 + a12 * a21), "adds in the determinant: it is "
+                        "a11 a22 − a12 a21."),
+                       (b1 / a11, "is one Jacobi step from y = 0: the fixed point needs both equations at once.")],
+                success="a fixed point of the Jacobi map satisfies both equations: it is the solution (Cramer's rule).")
+
+
+# == Chapter 8: turtles and conformal IFS ==========================================================
+
+@_define("ch08_change_state", (
+    "A turtle program drawn from the state (P, w) (position P, heading w, complex numbers) draws, from "
+    "the state (Q, v), the image of its figure under the conformal map z ↦ Q + (v/w)(z − P). Give the "
+    "image of the point z = x + i y as [real part, imaginary part] in terms of x, y, px, py, wx, wy, "
+    "qx, qy, vx, vy (Goldman §8.2)."),
+    "x y px py wx wy qx qy vx vy", "Check the image of a point when the turtle's initial state changes.")
+def _(x, y, px, py, wx, wy, qx, qy, vx, vy):
+    def mul(a, b):
+        return (a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0])
+
+    def div(a, b):
+        d = b[0]**2 + b[1]**2
+        return ((a[0] * b[0] + a[1] * b[1]) / d, (a[1] * b[0] - a[0] * b[1]) / d)
+
+    def parts(z):
+        return sympy.Matrix([list(z)])
+
+    zp = (x - px, y - py)
+    img = tuple(q + m for q, m in zip((qx, qy), mul(div((vx, vy), (wx, wy)), zp)))
+    inv = tuple(q + m for q, m in zip((qx, qy), mul(div((wx, wy), (vx, vy)), zp)))
+    conj = tuple(q + m / (wx**2 + wy**2) for q, m in zip((qx, qy), mul(mul((vx, vy), (wx, wy)), zp)))
+    noP = tuple(q + m for q, m in zip((qx, qy), mul(div((vx, vy), (wx, wy)), (x, y))))
+    return dict(expected=parts(img), what="the image",
+                slips=[(parts(inv), "uses w/v: the map turns and scales the heading w into v, so it multiplies by v/w."),
+                       (parts(conj), "multiplies by v w/|w|²: dividing by w multiplies by its conjugate."),
+                       (parts(noP),
+                        "forgets to subtract P: the figure is moved from P to Q.")],
+                success="z ↦ Q + (v/w)(z − P) sends P to Q and turns w into v: a conformal map.")
+
+
+@_define("ch08_compose", (
+    "Show that the composite of two conformal maps is conformal: with w1(z) = a1 z + b1 and "
+    "w2(z) = a2 z + b2 (complex, a = ax + i ay, b = bx + i by), w2(w1(z)) = A z + B. Give B as "
+    "[real, imaginary] in terms of a1x, a1y, b1x, b1y, a2x, a2y, b2x, b2y (Goldman §8.3)."),
+    "a1x a1y b1x b1y a2x a2y b2x b2y", "Check the translation part B of w2(w1(z)).")
+def _(a1x, a1y, b1x, b1y, a2x, a2y, b2x, b2y):
+    def mul(ax, ay, bx, by):
+        return ax * bx - ay * by, ax * by + ay * bx
+    re, im = mul(a2x, a2y, b1x, b1y)
+    wre, wim = mul(a1x, a1y, b2x, b2y)
+    return dict(expected=sympy.Matrix([[re + b2x, im + b2y]]), what="B",
+                slips=[(sympy.Matrix([[wre + b1x, wim + b1y]]), "is the translation of w1(w2(z)): the first map "
+                        "applied is w1, so a2 multiplies b1."),
+                       (sympy.Matrix([[b1x + b2x, b1y + b2y]]), "adds the translations: w2 also turns and scales b1."),
+                       (sympy.Matrix([[a2x * b1x + a2y * b1y + b2x, a2x * b1y - a2y * b1x + b2y]]),
+                        "multiplies by the conjugate of a2: (a2x + i a2y)(b1x + i b1y) has real part a2x b1x − a2y b1y.")],
+                success="A = a2 a1 and B = a2 b1 + b2: again z ↦ A z + B, a conformal map.")
 
 
 # == Chapter 9: coordinate-free vector geometry =====================================================
@@ -633,7 +888,7 @@ PROBLEMS = {name: ex.statement for name, ex in _EXERCISES.items()}
 def _slips():
     out = {}
     for name, ex in _EXERCISES.items():
-        spec = ex.build(*symbols_for(name))
+        spec = ex.build(*_symbol_tuple(name))
         out[name] = [form for form, _ in spec.get("slips", ())]
     return out
 

@@ -217,10 +217,18 @@ def _too_large(obj) -> str | None:
     return None
 
 
+def _draw(sym, rng):
+    """A random exact value for ``sym`` that respects its assumptions (integer, positive)."""
+    if sym.is_integer:
+        return sympy.Integer(int(rng.integers(1 if sym.is_positive else 0, 9)))
+    num = int(rng.integers(1, 10)) if sym.is_positive else int(rng.integers(-9, 10))
+    return sympy.Rational(num, int(rng.integers(1, 8)))
+
+
 def _points(syms, count: int, seed: int):
     rng = np.random.default_rng(seed)
     for _ in range(count):
-        yield {s: sympy.Rational(int(rng.integers(-9, 10)), int(rng.integers(1, 8))) for s in syms}
+        yield {s: _draw(s, rng) for s in syms}
 
 
 def _value(expr, point):
@@ -231,7 +239,6 @@ def _value(expr, point):
     if v.free_symbols:
         return None
     if not v.is_Rational:
-        v = sympy.nsimplify(v) if v.is_number else v
         try:
             f = complex(v.evalf(40))
         except (TypeError, ValueError):
@@ -499,7 +506,7 @@ def _involves(g, e, params) -> str:
     moving = []
     for p in params:
         other = dict(base)
-        other[p] = base[p] + sympy.Rational(3, 2)
+        other[p] = base[p] + (2 if p.is_integer else sympy.Rational(3, 2))
         v1, v2 = _value(diff, base), _value(diff, other)
         if v1 is None or v2 is None or not _is_zero_value(v1 - v2):
             moving.append(str(p))
