@@ -362,6 +362,132 @@ def _right_and_wrong():
     cases["ch08_compose"] = (
         [[Bre, Bim], [a2x * b1x - a2y * b1y + b2x, a2x * b1y + a2y * b1x + b2y]],
         [([a1x * b2x - a1y * b2y + b1x, a1x * b2y + a1y * b2x + b1y], "w1(w2(z))"), ([b1x + b2x, b1y + b2y], "adds")])
+    n1, n2, n3, l1, l2, l3, e1, e2, e3, I, kd = S("ch16_lambert")
+    N, L_ = sympy.Matrix([n1, n2, n3]), sympy.Matrix([l1, l2, l3])
+    cases["ch16_lambert"] = (
+        [kd * I * N.dot(L_), I * (kd * (N.T * L_)[0])],
+        [(kd * I * (n1 * e1 + n2 * e2 + n3 * e3), "eye"), (2 * kd * I * N.dot(L_), "factor of 2")])
+
+    d, nn, ll = S("ch16_mirror_unit")
+    # |2dN - L|^2 in coordinates, then read back in terms of d, nn, ll by substituting the dot products
+    Nv, Lv = sympy.Matrix(sympy.symbols("N1:4")), sympy.Matrix(sympy.symbols("L1:4"))
+    R = 2 * Nv.dot(Lv) * Nv - Lv
+    coords = sympy.expand(R.dot(R))
+    target = 4 * d**2 * nn - 4 * d**2 + ll
+    assert sympy.expand(coords - target.subs({d: Nv.dot(Lv), nn: Nv.dot(Nv), ll: Lv.dot(Lv)})) == 0
+    cases["ch16_mirror_unit"] = (
+        [target, 4 * d**2 * (nn - 1) + ll],
+        [(4 * d**2 * nn + ll, "cross terms"), (sympy.Integer(1), "end of the proof")])
+
+    v1, v2, v3, n1, n2, n3 = S("ch17_reflected_ray")
+    v, n = sympy.Matrix([v1, v2, v3]), sympy.Matrix([n1, n2, n3])
+    r = v - 2 * v.dot(n) * n
+    cases["ch17_reflected_ray"] = (
+        [r.dot(n), -v.dot(n)],
+        [(v.dot(n), "sign of v·n"), (sympy.Integer(0), "lies in the mirror")])
+
+    v1, v2, v3, n1, n2, n3, eta1, eta2 = S("ch17_refraction_tangent")
+    v, n = sympy.Matrix([v1, v2, v3]), sympy.Matrix([n1, n2, n3])
+    # n × (v × n) is the tangential part for a unit n (BAC-CAB), computed with sympy's cross
+    cases["ch17_refraction_tangent"] = (
+        [eta1 / eta2 * n.cross(v.cross(n)), eta1 / eta2 * (v - v.dot(n) * n)],
+        [(eta2 / eta1 * (v - v.dot(n) * n), "η2/η1"), (v - v.dot(n) * n, "does not bend")])
+
+    u, v = S("ch18_parametric_normal")
+    P = sympy.Matrix([u, v, u**2 + v**2])
+    cases["ch18_parametric_normal"] = (
+        [P.diff(u).cross(P.diff(v)), [-2 * u, -2 * v, 1]],
+        [(P.diff(v).cross(P.diff(u)), "P_v × P_u"), ([-2 * u, -2 * v, 0], "z-component")])
+
+    u, v = S("ch18_gaussian_curvature")
+    # K = det(II)/det(I) from the fundamental forms of (u, v, u² + v²)
+    X = sympy.Matrix([u, v, u**2 + v**2])
+    Xu, Xv = X.diff(u), X.diff(v)
+    nrm = Xu.cross(Xv)
+    nunit_num = nrm                                        # divide by |nrm| below
+    E_, F_, G_ = Xu.dot(Xu), Xu.dot(Xv), Xv.dot(Xv)
+    L2, M2, N2 = (X.diff(u, 2).dot(nunit_num), X.diff(u).diff(v).dot(nunit_num), X.diff(v, 2).dot(nunit_num))
+    K = (L2 * N2 - M2**2) / nrm.dot(nrm) / (E_ * G_ - F_**2)
+    cases["ch18_gaussian_curvature"] = (
+        [K, 4 / (1 + 4 * u**2 + 4 * v**2)**2],
+        [(4 / (1 + 4 * u**2 + 4 * v**2), "square of the denominator"), (sympy.Integer(4), "numerator")])
+
+    p1, p2, p3, v1, v2, v3, c1, c2, c3, r = S("ch19_ray_sphere")
+    tt = sympy.symbols("tt")
+    X = sympy.Matrix([p1, p2, p3]) + tt * sympy.Matrix([v1, v2, v3]) - sympy.Matrix([c1, c2, c3])
+    poly = sympy.Poly(sympy.expand(X.dot(X) - r**2), tt)
+    coeffs = [poly.coeff_monomial(tt**2), poly.coeff_monomial(tt), poly.coeff_monomial(1)]
+    w = sympy.Matrix([p1 - c1, p2 - c2, p3 - c3])
+    vv = sympy.Matrix([v1, v2, v3])
+    cases["ch19_ray_sphere"] = (
+        [coeffs, [vv.dot(vv), 2 * vv.dot(w), w.dot(w) - r**2]],
+        [([vv.dot(vv), vv.dot(w), w.dot(w) - r**2], "factor 2"), ([vv.dot(vv), 2 * vv.dot(w), w.dot(w) + r**2], "adds r²")])
+
+    x1, x2, x3, p1, p2, p3, v1, v2, v3 = S("ch19_inversion")
+    Xp, vv = sympy.Matrix([x1 - p1, x2 - p2, x3 - p3]), sympy.Matrix([v1, v2, v3])
+    # least squares: the t minimising |X - P - t v|, which is t itself for points on the line
+    t_ls = sympy.solve(sympy.diff((Xp - tt * vv).dot(Xp - tt * vv), tt), tt, simplify=False)[0]
+    cases["ch19_inversion"] = (
+        [t_ls, (x1 - p1) / v1],                         # on the line any coordinate gives t (v1 ≠ 0)
+        [(Xp.dot(vv), "unit direction"), (sympy.Matrix([x1, x2, x3]).dot(vv) / vv.dot(vv), "subtract P")])
+
+    n = S("ch20_prism_euler")
+    cases["ch20_prism_euler"] = (
+        [[2 * n, 3 * n, n + 2], [n + n, n + n + n, 2 + n]],
+        [([2 * n, 2 * n, n + 2], "vertical edges"), ([2 * n, 3 * n, n + 1], "n-gon faces")])
+
+    n = S("ch20_frame_euler")
+    walls = 2 * n                        # outer and inner walls, one loop each
+    cases["ch20_frame_euler"] = (
+        [[4 * n, 6 * n, 2 * n + 2, 2 * n + 4], [2 * n + 2 * n, 4 * n + 2 * n, walls + 2, walls + 2 * 2]],
+        [([4 * n, 6 * n, 2 * n + 2, 2 * n + 2], "inner loop"), ([4 * n, 4 * n, 2 * n + 2, 2 * n + 4], "vertical edges")])
+
+    x0, y0, z0, x1, y1, z1, x2, y2, z2 = S("ch21_newell_triangle")
+    P0, P1, P2 = sympy.Matrix([x0, y0, z0]), sympy.Matrix([x1, y1, z1]), sympy.Matrix([x2, y2, z2])
+    cases["ch21_newell_triangle"] = (
+        [(P1 - P0).cross(P2 - P0), P0.cross(P1) + P1.cross(P2) + P2.cross(P0)],
+        [((P1 - P0).cross(P2 - P0) / 2, "twice the area"), ((P2 - P0).cross(P1 - P0), "other way")])
+
+    t, a, b, c = S("ch21_phong_length")
+    N0, N1 = sympy.Matrix(sympy.symbols("a1:4")), sympy.Matrix(sympy.symbols("b1:4"))
+    Nt = (1 - t) * N0 + t * N1
+    expr = sympy.expand(Nt.dot(Nt))
+    # read the coordinates' expansion back with a, b, c (check it, then give the dot-product form)
+    cand = (1 - t)**2 * a + 2 * t * (1 - t) * b + t**2 * c
+    assert sympy.expand(expr - cand.subs({a: N0.dot(N0), b: N0.dot(N1), c: N1.dot(N1)})) == 0
+    cases["ch21_phong_length"] = (
+        [cand, a - 2 * t * (a - b) + t**2 * (a - 2 * b + c)],
+        [((1 - t) * a + t * c, "squared lengths"), ((1 - t)**2 * a + t**2 * c, "cross term")])
+
+    a, b, c, d, x, y = S("ch22_depth_increment")
+    zz = sympy.symbols("zz")
+    zsol = sympy.solve(a * x + b * y + c * zz + d, zz, simplify=False)[0]
+    cases["ch22_depth_increment"] = (
+        [zsol.subs(x, x + 1) - zsol, -a / c],
+        [(a / c, "sign"), (-b / c, "column")])
+
+    syms = S("ch22_split_edge")
+    P0, P1, Q, N = (sympy.Matrix(syms[i:i + 3]) for i in (0, 3, 6, 9))
+    t_sol = sympy.solve((P0 + tt * (P1 - P0) - Q).dot(N), tt, simplify=False)[0]
+    cases["ch22_split_edge"] = (
+        [t_sol, (Q - P0).dot(N) / (P1 - P0).dot(N)],
+        [((P1 - Q).dot(N) / ((P1 - Q).dot(N) - (P0 - Q).dot(N)), "from P1"),
+         ((P0 - Q).dot(N) / ((P0 - Q).dot(N) + (P1 - Q).dot(N)), "adds")])
+
+    E1, E2, rho1, rho2, F12, F21 = S("ch23_two_patches")
+    B1s, B2s = sympy.symbols("B1s B2s")
+    sol = sympy.solve([E1 + rho1 * F12 * B2s - B1s, E2 + rho2 * F21 * B1s - B2s], [B1s, B2s], dict=True, simplify=False)[0]
+    Kmat = sympy.Matrix([[1, -rho1 * F12], [-rho2 * F21, 1]])
+    cases["ch23_two_patches"] = (
+        [sol[B1s], Kmat.LUsolve(sympy.Matrix([E1, E2]))[0]],
+        [(E1 + rho1 * F12 * E2, "one bounce"), ((E1 + rho1 * F21 * E2) / (1 - rho1 * rho2 * F12 * F21), "F21")])
+
+    A1, A2 = S("ch23_reciprocity")
+    f21, f22 = sympy.symbols("f21 f22")
+    sol = sympy.solve([A1 * 1 - A2 * f21, f21 + f22 - 1], [f21, f22], dict=True, simplify=False)[0]
+    cases["ch23_reciprocity"] = (
+        [[sol[f21], sol[f22]], [A1 / A2, (A2 - A1) / A2]],
+        [([A2 / A1, 1 - A2 / A1], "upside down"), ([A1 / A2, 0], "sees itself")])
     return cases
 
 

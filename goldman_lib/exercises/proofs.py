@@ -597,6 +597,284 @@ def _(w, x, y, z, v1, v2, v3):
                         "which is why a rotation needs the sandwich q v q*.")
 
 
+# == Chapter 16: color and intensity ==============================================================
+
+@_define("ch16_lambert", (
+    "Show that the diffuse (Lambert) term does not depend on where the eye is. With the unit normal "
+    "N = (n1, n2, n3), the unit direction to the light L = (l1, l2, l3), the unit direction to the eye "
+    "E = (e1, e2, e3), the light's intensity I and the diffuse coefficient kd, give the diffuse "
+    "intensity (Goldman §16.4)."),
+    "n1 n2 n3 l1 l2 l3 e1 e2 e3 I kd", "Check the diffuse intensity.")
+def _(n1, n2, n3, l1, l2, l3, e1, e2, e3, I, kd):
+    N, L, E = [n1, n2, n3], [l1, l2, l3], [e1, e2, e3]
+    R = [2 * _dot(N, L) * n - l for n, l in zip(N, L)]
+    return dict(expected=kd * I * _dot(N, L), what="the diffuse intensity",
+                slips=[(kd * I * _dot(N, E), "uses the eye's direction: diffuse light is scattered equally in every "
+                        "direction, so only the light's angle to the surface counts."),
+                       (kd * I * _dot(R, E), "is the specular term's cosine (R·E): the diffuse term uses N·L."),
+                       (kd * I * _dot(N, L) * _dot(N, E), "multiplies by N·E: the apparent area of a patch and the "
+                        "light it sends toward the eye cancel (Lambert's law).")],
+                success="kd I (N·L): no e in it, the same from every viewpoint.")
+
+
+@_define("ch16_mirror_unit", (
+    "The specular term uses the mirror direction R = 2 (N·L) N − L of the light direction L about the "
+    "normal N. Show that R is a unit vector when N and L are: expand |R|² = R·R and give it in terms of "
+    "d = N·L, nn = N·N and ll = L·L, *before* using nn = ll = 1 (Goldman §16.5)."),
+    "d nn ll", "Check |R|² expanded, before |N| = |L| = 1 is used.")
+def _(d, nn, ll):
+    return dict(expected=4 * d**2 * nn - 4 * d**2 + ll, what="|R|²",
+                slips=[(4 * d**2 * nn + ll, "is missing the cross terms: (2dN − L)·(2dN − L) has two products "
+                        "of 2dN with −L."),
+                       (4 * d**2 * nn - 2 * d**2 + ll, "counts the cross term once: 2dN·(−L) appears twice."),
+                       (sympy.Integer(1), "is the end of the proof: give the expansion before using nn = ll = 1, so "
+                        "the check sees the step (it should still contain d).")],
+                success="4d²(nn − 1) + ll, which is 1 when N and L are unit vectors: R is a unit vector, and R·N = N·L "
+                        "gives the same angle with the normal.")
+
+
+# == Chapter 17: ray tracing =======================================================================
+
+@_define("ch17_reflected_ray", (
+    "A ray travelling in direction v hits a mirror with unit normal n and leaves along r = v − 2 (v·n) n. "
+    "Show that the angle of incidence equals the angle of reflection: give r·n (for the checker, as an "
+    "expression) in terms of v1, v2, v3, n1, n2, n3 (Goldman §17.4)."),
+    "v1 v2 v3 n1 n2 n3", "Check r·n for the reflected ray.")
+def _(v1, v2, v3, n1, n2, n3):
+    v, n = [v1, v2, v3], [n1, n2, n3]
+    sub = unit_vector_substitution(n1, n2, n3, *symbols("u_ w_"))
+    return dict(expected=_dot([a - 2 * _dot(v, n) * b for a, b in zip(v, n)], n), what="r·n", substitutions=sub,
+                slips=[(_dot(v, n), "has the sign of v·n: the reflected ray leaves the surface on the side v arrived from."),
+                       (_dot(v, n) - 2 * _dot(v, n) * _dot(v, v), "uses n·n = v·v: n is a unit vector, n·n = 1."),
+                       (sympy.Integer(0), "says r lies in the mirror: only the normal component is reversed, "
+                        "not removed.")],
+                success="r·n = v·n − 2(v·n)(n·n) = −v·n because n·n = 1, and r − v is along n: the angles are equal.")
+
+
+@_define("ch17_refraction_tangent", (
+    "Snell's law η1 sin θ1 = η2 sin θ2 keeps the refracted ray in the plane of v and n. Show that the "
+    "tangential part of the refracted unit direction t is (η1/η2) times the tangential part of the "
+    "incident unit direction v: give t's tangential part t − (t·n) n as [x, y, z] in terms of "
+    "v1, v2, v3, n1, n2, n3, eta1, eta2 (n a unit normal) (Goldman §17.5)."),
+    "v1 v2 v3 n1 n2 n3 eta1 eta2", "Check the tangential part of the refracted direction.")
+def _(v1, v2, v3, n1, n2, n3, eta1, eta2):
+    v, n = [v1, v2, v3], [n1, n2, n3]
+    tan = [a - _dot(v, n) * b for a, b in zip(v, n)]
+    sub = unit_vector_substitution(n1, n2, n3, *symbols("u_ w_"))
+    return dict(expected=sympy.Matrix([[eta1 / eta2 * x for x in tan]]), what="the tangential part",
+                substitutions=sub,
+                slips=[(sympy.Matrix([[eta2 / eta1 * x for x in tan]]), "uses η2/η1: from η1 sin θ1 = η2 sin θ2, "
+                        "the new sine is the old one times η1/η2."),
+                       (sympy.Matrix([[eta1 / eta2 * x for x in v]]), "scales all of v: only the part along the "
+                        "surface scales; the normal part is fixed by |t| = 1."),
+                       (sympy.Matrix([tan]), "does not bend the ray: that holds only when η1 = η2.")],
+                success="|tangential part| = sin θ2 = (η1/η2) sin θ1, in the plane of v and n: Snell's law.")
+
+
+# == Chapter 18: surfaces ==========================================================================
+
+@_define("ch18_parametric_normal", (
+    "Show that P_u × P_v is normal to the parametric surface P(u, v) = (u, v, u² + v²) (a paraboloid): "
+    "give P_u × P_v as [x, y, z] in terms of u, v; the checker confirms it is perpendicular to both "
+    "tangents (Goldman §18.2.2)."),
+    "u v", "Check the normal P_u × P_v of the paraboloid.")
+def _(u, v):
+    Pu, Pv = [1, 0, 2 * u], [0, 1, 2 * v]
+    return dict(expected=sympy.Matrix([_cross(Pu, Pv)]), what="P_u × P_v",
+                slips=[(sympy.Matrix([_cross(Pv, Pu)]), "is P_v × P_u: the order of the factors flips the normal "
+                        "(the book's normal points up here)."),
+                       (sympy.Matrix([[-2 * u, -2 * v, 0]]), "drops the z-component: the cross product of (1, 0, ·) and "
+                        "(0, 1, ·) has z = 1.")],
+                success="(−2u, −2v, 1): its dot product with P_u = (1, 0, 2u) and with P_v = (0, 1, 2v) is 0.")
+
+
+@_define("ch18_gaussian_curvature", (
+    "For the surface z = f(u, v) the Gaussian curvature is K = (f_uu f_vv − f_uv²)/(1 + f_u² + f_v²)². "
+    "Show that the paraboloid z = u² + v² is curved most at its vertex: give K in terms of u, v "
+    "(Goldman §18.4.2)."),
+    "u v", "Check the Gaussian curvature of the paraboloid.")
+def _(u, v):
+    return dict(expected=4 / (1 + 4 * u**2 + 4 * v**2)**2, what="K",
+                slips=[(4 / (1 + 4 * u**2 + 4 * v**2), "drops the square of the denominator: (1 + f_u² + f_v²)²."),
+                       (4 / (1 + 2 * u**2 + 2 * v**2)**2, "uses f_u = u: the derivative of u² is 2u, squared 4u²."),
+                       (sympy.Integer(4), "uses only the numerator: the curvature is 4 at the vertex and falls off.")],
+                success="K = 4/(1 + 4u² + 4v²)², largest (4) at the vertex and positive everywhere.")
+
+
+# == Chapter 19: simple surfaces ===================================================================
+
+@_define("ch19_ray_sphere", (
+    "Substitute the ray P + t v into the sphere |X − C|² = r² and show that the intersections are the "
+    "roots of a quadratic a t² + b t + c = 0. Give [a, b, c] in terms of p1, p2, p3, v1, v2, v3, "
+    "c1, c2, c3, r (Goldman §19.4.1)."),
+    "p1 p2 p3 v1 v2 v3 c1 c2 c3 r", "Check the coefficients [a, b, c] of the ray-sphere quadratic.")
+def _(p1, p2, p3, v1, v2, v3, c1, c2, c3, r):
+    v, w = [v1, v2, v3], [p1 - c1, p2 - c2, p3 - c3]
+    return dict(expected=sympy.Matrix([[_dot(v, v), 2 * _dot(v, w), _dot(w, w) - r**2]]), what="[a, b, c]",
+                slips=[(sympy.Matrix([[_dot(v, v), _dot(v, w), _dot(w, w) - r**2]]), "is missing the factor 2 in b: expand the "
+                        "square of a sum."),
+                       (sympy.Matrix([[_dot(v, v), 2 * _dot(v, w), _dot(w, w) + r**2]]), "adds r²: moving r² to the "
+                        "left subtracts it."),
+                       (sympy.Matrix([[1, 2 * _dot(v, w), _dot(w, w) - r**2]]), "takes a = 1: that needs a unit direction; "
+                        "here v is any vector.")],
+                success="two real roots, one or none as b² − 4ac is positive, zero or negative: hit, graze or miss.")
+
+
+@_define("ch19_inversion", (
+    "Show how to find the parameter of a point on a line: if X = P + t v lies on the line, then "
+    "t is recovered from X by a dot product. Give t in terms of the coordinates of X, P and v "
+    "(x1, x2, x3, p1, p2, p3, v1, v2, v3) (Goldman §19.4.1.2)."),
+    "x1 x2 x3 p1 p2 p3 v1 v2 v3", "Check the parameter t of a point X on the line P + t v.")
+def _(x1, x2, x3, p1, p2, p3, v1, v2, v3):
+    X, P, v = [x1, x2, x3], [p1, p2, p3], [v1, v2, v3]
+    t = symbols("t_")
+    sub = {x: p + t * vv for x, p, vv in zip(X, P, v)}
+    d = [a - b for a, b in zip(X, P)]
+    return dict(expected=_dot(d, v) / _dot(v, v), what="t", substitutions=sub,
+                slips=[(_dot(d, v), "does not divide by v·v: that is t only for a unit direction."),
+                       (_dot(X, v) / _dot(v, v), "forgets to subtract P: t is measured from P."),
+                       (_dot(d, v) / _dot(d, d), "divides by (X − P)·(X − P): dot X − P = t v with v, so v·v divides.")],
+                success="(X − P)·v = t (v·v), so t = (X − P)·v/(v·v): exact for points on the line.")
+
+
+# == Chapter 20: solid modeling ====================================================================
+
+@_define("ch20_prism_euler", (
+    "Build a prism over an n-gon (two n-gon faces and n rectangles). Show that it satisfies Euler's "
+    "formula V − E + F = 2: give its counts [V, E, F] in terms of n (Goldman §20.3)."),
+    "n", "Check the vertex, edge and face counts of the prism.", positive=True, integer=True)
+def _(n):
+    return dict(expected=sympy.Matrix([[2 * n, 3 * n, n + 2]]), what="[V, E, F]",
+                slips=[(sympy.Matrix([[2 * n, 2 * n, n + 2]]), "forgets the n vertical edges between the two n-gons."),
+                       (sympy.Matrix([[2 * n, 3 * n, n + 1]]), "forgets one of the two n-gon faces."),
+                       (sympy.Matrix([[n, 3 * n, n + 2]]), "counts only one n-gon's vertices.")],
+                success="2n − 3n + n + 2 = 2 for every n.")
+
+
+@_define("ch20_frame_euler", (
+    "Build a picture frame: an n-gon prism with an n-gon hole through it (outer and inner walls, a top "
+    "and a bottom face each bounded by two loops). Show that V − E + F − (L − F) = 2(S − G) with S = 1 "
+    "shell and genus G = 1: give [V, E, F, L] (L counts every loop, outer and inner) in terms of n "
+    "(Goldman §20.3)."),
+    "n", "Check the vertex, edge, face and loop counts of the frame.", positive=True, integer=True)
+def _(n):
+    return dict(expected=sympy.Matrix([[4 * n, 6 * n, 2 * n + 2, 2 * n + 4]]), what="[V, E, F, L]",
+                slips=[(sympy.Matrix([[4 * n, 6 * n, 2 * n + 2, 2 * n + 2]]), "counts one loop per face: the top and "
+                        "the bottom each have an inner loop around the hole."),
+                       (sympy.Matrix([[4 * n, 4 * n, 2 * n + 2, 2 * n + 4]]), "forgets the vertical edges of the outer "
+                        "and inner walls."),
+                       (sympy.Matrix([[4 * n, 6 * n, 2 * n, 2 * n + 2]]), "forgets the top and bottom faces.")],
+                success="4n − 6n + (2n + 2) − (2n + 4 − 2n − 2) = 0 = 2(1 − 1): one hole, genus 1.")
+
+
+# == Chapter 21: shading ===========================================================================
+
+@_define("ch21_newell_triangle", (
+    "Show that Newell's formula, N = Σ ((y_i − y_{i+1})(z_i + z_{i+1}), (z_i − z_{i+1})(x_i + x_{i+1}), "
+    "(x_i − x_{i+1})(y_i + y_{i+1})) summed around a polygon, gives for a triangle P0 P1 P2 the cross "
+    "product (P1 − P0) × (P2 − P0). Give Newell's N for the triangle as [x, y, z] in terms of "
+    "x0, y0, z0, x1, y1, z1, x2, y2, z2 (Goldman §21.1.1)."),
+    "x0 y0 z0 x1 y1 z1 x2 y2 z2", "Check Newell's normal of a triangle.")
+def _(x0, y0, z0, x1, y1, z1, x2, y2, z2):
+    P = [[x0, y0, z0], [x1, y1, z1], [x2, y2, z2]]
+    N = [0, 0, 0]
+    for i in range(3):
+        a, b = P[i], P[(i + 1) % 3]
+        N[0] += (a[1] - b[1]) * (a[2] + b[2])
+        N[1] += (a[2] - b[2]) * (a[0] + b[0])
+        N[2] += (a[0] - b[0]) * (a[1] + b[1])
+    return dict(expected=sympy.Matrix([N]), what="Newell's N",
+                slips=[(sympy.Matrix([N]) / 2, "halves it: Newell's sum is twice the area vector, the full cross product."),
+                       (-sympy.Matrix([N]), "goes round the other way: the sum runs P0 → P1 → P2 → P0."),
+                       (sympy.Matrix([[N[0], N[1], 0]]), "leaves out the last component's sum.")],
+                success="term by term it equals (P1 − P0) × (P2 − P0), and for any planar polygon it is twice the area "
+                        "times the unit normal.")
+
+
+@_define("ch21_phong_length", (
+    "Phong shading interpolates normals: N(t) = (1 − t) N0 + t N1. Show that N(t) must be renormalised: "
+    "give |N(t)|² in terms of t and the dot products a = N0·N0, b = N0·N1, c = N1·N1 (Goldman §21.4)."),
+    "t a b c", "Check |N(t)|² for the interpolated normal.")
+def _(t, a, b, c):
+    return dict(expected=(1 - t)**2 * a + 2 * t * (1 - t) * b + t**2 * c, what="|N(t)|²",
+                slips=[((1 - t) * a + t * c, "interpolates the squared lengths: the length of an interpolated "
+                        "normal is not the interpolated length."),
+                       ((1 - t)**2 * a + t**2 * c, "is missing the cross term between N0 and N1."),
+                       ((1 - t)**2 * a + t * (1 - t) * b + t**2 * c, "counts the cross term once: N0·N1 and N1·N0 "
+                        "both appear.")],
+                success="with unit N0, N1 it is 1 − 2t(1 − t)(1 − b) < 1 between the ends unless N0 = N1: "
+                        "renormalise before shading.")
+
+
+# == Chapter 22: hidden surfaces ===================================================================
+
+@_define("ch22_depth_increment", (
+    "On the plane a x + b y + c z + d = 0 (c ≠ 0), show that depth changes by the same amount at every "
+    "step along a scan line, which is what makes the z-buffer's incremental depth work: give "
+    "z(x + 1, y) − z(x, y) in terms of a, b, c, d, x, y (Goldman §22.3)."),
+    "a b c d x y", "Check the depth step along a scan line.")
+def _(a, b, c, d, x, y):
+    z = lambda X, Y: -(a * X + b * Y + d) / c  # noqa: E731
+    return dict(expected=z(x + 1, y) - z(x, y), what="the depth step",
+                slips=[(a / c, "differs by a sign: z = −(a x + b y + d)/c decreases with x when a/c > 0."),
+                       (-c / a, "is upside down: solve the plane's equation for z, not for x."),
+                       (-b / c, "is the step down a column (y + 1), not along a scan line.")],
+                success="−a/c, the same at every pixel: one addition per pixel along a scan line.")
+
+
+@_define("ch22_split_edge", (
+    "Depth sort and BSP trees split a polygon by a plane (X − Q)·N = 0. Show where an edge P0 P1 "
+    "crosses it: give the parameter t of P0 + t (P1 − P0) on the plane in terms of the coordinates "
+    "p01, p02, p03 (P0), p11, p12, p13 (P1), q1, q2, q3, n1, n2, n3 (Goldman §22.6.1)."),
+    "p01 p02 p03 p11 p12 p13 q1 q2 q3 n1 n2 n3", "Check the parameter where the edge crosses the plane.")
+def _(p01, p02, p03, p11, p12, p13, q1, q2, q3, n1, n2, n3):
+    P0, P1, Q, N = [p01, p02, p03], [p11, p12, p13], [q1, q2, q3], [n1, n2, n3]
+    d0 = _dot([a - b for a, b in zip(P0, Q)], N)
+    d1 = _dot([a - b for a, b in zip(P1, Q)], N)
+    return dict(expected=d0 / (d0 - d1), what="t",
+                slips=[(d1 / (d1 - d0), "is measured from P1: at t = 0 the point is P0."),
+                       (d0 / (d0 + d1), "adds the two signed distances: they have opposite signs across the plane, "
+                        "so the denominator is their difference."),
+                       (-d0 / (d0 - d1), "differs by a sign: check which signed distance "
+                        "goes in the numerator and the order of the difference below.")],
+                success="t = d0/(d0 − d1) with the signed distances d0, d1: between 0 and 1 exactly when they have "
+                        "opposite signs.")
+
+
+# == Chapter 23: radiosity =========================================================================
+
+@_define("ch23_two_patches", (
+    "Two patches see each other: B1 = E1 + ρ1 F12 B2 and B2 = E2 + ρ2 F21 B1. Show that the light "
+    "bouncing back and forth sums to a closed form: solve for B1 in terms of E1, E2, rho1, rho2, F12, "
+    "F21 (Goldman §23.2.3)."),
+    "E1 E2 rho1 rho2 F12 F21", "Check the radiosity B1 of the first patch.")
+def _(E1, E2, rho1, rho2, F12, F21):
+    den = 1 - rho1 * rho2 * F12 * F21
+    return dict(expected=(E1 + rho1 * F12 * E2) / den, what="B1",
+                slips=[(E1 + rho1 * F12 * E2, "stops after one bounce: the light keeps bouncing "
+                        "between the patches (a geometric series of bounces)."),
+                       ((E1 + rho1 * F21 * E2) / den, "uses F21 in the first equation: patch 1 gathers through F12."),
+                       ((E1 + rho1 * F12 * E2) / (1 + rho1 * rho2 * F12 * F21), "adds in the denominator: the "
+                        "geometric series 1 + x + x² + ... is 1/(1 − x).")],
+                success="a geometric series of bounces, ratio ρ1ρ2F12F21 < 1: what gathering and shooting add up.")
+
+
+@_define("ch23_reciprocity", (
+    "A small flat patch of area A1 sits inside a closed sphere of area A2. In a closed scene each "
+    "patch's form factors sum to 1, a flat patch does not see itself (F11 = 0), and form factors satisfy "
+    "reciprocity A_i F_ij = A_j F_ji. Show how much the sphere sees of the patch and of itself: give "
+    "[F21, F22] in terms of A1, A2 (Goldman §23.3)."),
+    "A1 A2", "Check the sphere's form factors [F21, F22].", positive=True)
+def _(A1, A2):
+    return dict(expected=sympy.Matrix([[A1 / A2, 1 - A1 / A2]]), what="[F21, F22]",
+                slips=[(sympy.Matrix([[A2 / A1, 1 - A2 / A1]]), "uses the areas upside down: A1 F12 = A2 F21 with "
+                        "F12 = 1."),
+                       (sympy.Matrix([[1, 0]]), "assumes F21 = F12: that holds only for equal areas."),
+                       (sympy.Matrix([[A1 / A2, 0]]), "forgets that the sphere sees itself: its form factors sum to 1.")],
+                success="F12 = 1, so F21 = A1/A2 and F22 = 1 − A1/A2: a small patch sees the sphere fully, the sphere "
+                        "barely sees it.")
+
+
 # == Chapter 24: Bezier curves =====================================================================
 
 def _bernstein(n, k, t):

@@ -275,6 +275,8 @@ def _same(a, b, syms, count=8) -> bool:
     ea, eb = _entries(a), _entries(b)
     if len(ea) != len(eb):
         return False
+    # every symbol either side uses gets a value (a slip form may use symbols the answer does not)
+    syms = sorted(set(syms).union(*(x.free_symbols for x in ea + eb)), key=str)
     for x, y in zip(ea, eb):
         used, differ = _spot_diff(x, y, syms, count, seed=_SEED + 1)
         if used == 0 or differ:
