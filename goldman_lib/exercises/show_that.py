@@ -106,6 +106,9 @@ def _scalar(x):
         if isinstance(x, (sympy.Eq, sympy.Ne)) or x in (sympy.true, sympy.false):
             raise AnswerError("is an equation or a truth value; give the expression itself (for an identity "
                               "lhs = rhs, the expression the exercise asks for)")
+        floats = x.atoms(sympy.Float)
+        if floats:  # decimals typed by the learner (0.5*x) are read as the fractions they stand for
+            x = x.xreplace({f: sympy.Rational(repr(float(f))) for f in floats})
         return x
     if isinstance(x, (bool, np.bool_)):
         raise AnswerError("is True or False: `==` compares sympy expressions by their form, not their value; "
