@@ -50,6 +50,12 @@ def test_slips_are_named(answer, words):
     assert "2*x*y" not in r.message and "x**2" not in r.message, "never print the expected expression"
 
 
+def test_python_floats_are_read_as_the_fractions_they_stand_for():
+    assert check((4 / 3) * x**2, sympy.Rational(4, 3) * x**2).correct
+    assert check(0.1 * x + 0.2 * y, (x + 2 * y) / 10).correct
+    assert not check(1.3333 * x**2, sympy.Rational(4, 3) * x**2).correct
+
+
 def test_an_exercise_slip_is_named_before_the_generic_ones():
     r = check(-(x + y)**2, slips=[((-(x + y)**2), "subtracts where the rule adds.")])
     assert "subtracts where the rule adds" in r.message

@@ -100,6 +100,17 @@ def _has_text(obj) -> bool:
     return False
 
 
+def _fraction(v: float):
+    """The fraction a float stands for: the simplest one within 1e-12 (Python's 4/3 is 4/3), else the
+    float's exact decimal."""
+    if not math.isfinite(v):
+        raise AnswerError("contains an infinite or NaN number")
+    exact = Fraction(repr(v)) if abs(v) < 1e15 else Fraction(v)
+    simple = exact.limit_denominator(10**6)
+    chosen = simple if abs(simple - exact) <= 1e-12 * max(1.0, abs(v)) else exact
+    return sympy.Rational(chosen.numerator, chosen.denominator)
+
+
 def _scalar(x):
     """One entry of an answer as a sympy object, without ever reading text."""
     if isinstance(x, sympy.Basic):
@@ -107,8 +118,8 @@ def _scalar(x):
             raise AnswerError("is an equation or a truth value; give the expression itself (for an identity "
                               "lhs = rhs, the expression the exercise asks for)")
         floats = x.atoms(sympy.Float)
-        if floats:  # decimals typed by the learner (0.5*x) are read as the fractions they stand for
-            x = x.xreplace({f: sympy.Rational(repr(float(f))) for f in floats})
+        if floats:  # decimals (0.5*x, or Python's 4/3) are read as the fractions they stand for
+            x = x.xreplace({f: _fraction(float(f)) for f in floats})
         return x
     if isinstance(x, (bool, np.bool_)):
         raise AnswerError("is True or False: `==` compares sympy expressions by their form, not their value; "
@@ -121,7 +132,7 @@ def _scalar(x):
         v = float(x)
         if not math.isfinite(v):
             raise AnswerError("contains an infinite or NaN number")
-        return sympy.Rational(repr(v)) if abs(v) < 1e15 else sympy.Rational(v)
+        return _fraction(v)
     raise AnswerError(f"should be built from the exercise's sympy symbols; it contains a {type(x).__name__}")
 
 
