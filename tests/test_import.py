@@ -1,11 +1,12 @@
-"""goldman_lib and its algorithm modules import without the heavy view libraries."""
+"""goldman_lib and its algorithm modules import without the heavy view libraries (nor sympy, which
+only the "show that" checkers import)."""
 
 import subprocess
 import sys
 
 import pytest
 
-HEAVY = ("matplotlib", "pythreejs", "ipywidgets")
+HEAVY = ("matplotlib", "pythreejs", "ipywidgets", "sympy")
 
 
 @pytest.mark.parametrize("module", ["goldman_lib", "goldman_lib.turtle", "goldman_lib.bezier",
