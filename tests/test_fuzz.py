@@ -462,9 +462,15 @@ def _call_with(key, param, value):
     return fn(*args, **kwargs)
 
 
-def _call_with_built(key, param, build):
+def _call_with_built(key, param, build, baseline):
     """``_call_with`` with the value of ``param`` built in the worker (a constructor given a huge input
-    may itself refuse it, with a message the judge reads)."""
+    may itself refuse it, with a message the judge reads).  The call must be valid with the object
+    built from its constructor's example unchanged (``baseline``): a method example recorded on
+    another instance (a 32-pixel camera) may not fit the constructor's example (a 16-pixel one)."""
+    try:
+        _call_with(key, param, baseline())
+    except Exception:  # noqa: BLE001 - the example does not fit this object: nothing to judge
+        return None
     return _call_with(key, param, build())
 
 
@@ -483,6 +489,13 @@ def _class_key(obj) -> str | None:
         return None
     key = f"{cls.__module__[len('goldman_lib.'):]}.{cls.__name__}"
     return key if key in FUNCTIONS and key in EXAMPLES else None
+
+
+def _baseline(obj):
+    """A builder of ``obj``'s class from its constructor's example."""
+    cls = FUNCTIONS[_class_key(obj)]
+    args, kwargs = EXAMPLES[_class_key(obj)]
+    return lambda: cls(*copy.deepcopy(args), **copy.deepcopy(kwargs))
 
 
 def huge_objects(obj, depth: int = 0) -> list[tuple[str, str, object]]:
@@ -585,7 +598,7 @@ def _tasks() -> list[tuple[str, str, object]]:
             objects = [(p, bound.arguments.get(p)) for p in ["self", *params] if p in bound.arguments]
             for param, value in objects:
                 for label, blame, build in huge_objects(value):
-                    call = functools.partial(_call_with_built, key, param, build)
+                    call = functools.partial(_call_with_built, key, param, build, _baseline(value))
                     tasks.append((key.split(".")[0], f"{key}({param}={label})", call, blame, param, finite))
     for label, call, param in PROBES:
         tasks.append(("probe", label, call, param, None, True))
