@@ -209,7 +209,7 @@ def _unit(v):
     """Unchecked: rows of ``v`` scaled to length 1 (zero rows stay zero)."""
     with np.errstate(over="ignore", under="ignore"):
         length = np.sqrt(np.einsum("...i,...i->...", v, v))[..., None]
-    if not np.all(np.isfinite(length) & ((length > 1e-150) | (length == 0))) and np.all(np.isfinite(v)):
+    if not np.all(np.isfinite(length) & (length > 1e-150)) and np.all(np.isfinite(v)):
         length = _norm(v, keepdims=True)     # |v|^2 overflowed or underflowed: scale before squaring
     return np.divide(v, length, out=np.zeros_like(v), where=length > 0)
 

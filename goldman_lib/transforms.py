@@ -339,7 +339,7 @@ def apply(points, M) -> np.ndarray:
     A = check_finite(as_float_array(M, "M"), "M")
     if A.shape != (4, 4):
         raise ValueError(f"M must be a 4x4 matrix; got shape {A.shape}")
-    h = P @ A[:3] + A[3]
+    h = finite_result(P @ A[:3] + A[3], "points or M is", why="too large in magnitude")
     w = h[..., 3]
     scale_ = np.maximum(1.0, np.abs(h[..., :3]).max(axis=-1))
     if np.any(np.abs(w) <= 1e-12 * scale_):

@@ -48,7 +48,7 @@ def _not_huge(v: np.ndarray, name: str) -> None:
 
 def _nonzero(v: np.ndarray, name: str, what: str) -> np.ndarray:
     n = _norm(v, axis=-1)
-    if np.any(n <= _EPS):
+    if np.any(n == 0):                   # any other length is a direction (1e-170 and 1e300 included)
         raise ValueError(f"{name} must be nonzero: {what}")
     return n
 
@@ -124,7 +124,11 @@ def point_line_distance(points, line_point, direction):
     Q = _vec(points, "points")
     P = _vec(line_point, "line_point", Q.shape[-1], like="points")
     v = _vec(direction, "direction", Q.shape[-1], like="points")
-    vv = _nonzero(v, "direction", "a line needs a direction") ** 2
+    nv = _nonzero(v, "direction", "a line needs a direction")
+    with np.errstate(over="ignore", under="ignore"):
+        vv = nv ** 2
+    if not np.all((vv > 1e-290) & (vv < 1e290)):      # v·v over- or underflows: use the unit direction
+        v, vv = v / nv[..., None], 1.0
     w = Q - P
     perp = w - (_dot(w, v) / vv)[..., None] * v
     out = _norm(perp, axis=-1)
@@ -156,8 +160,14 @@ def foot_on_plane(points, plane_point, normal) -> np.ndarray:
     Q = _vec(points, "points", 3)
     P = _vec(plane_point, "plane_point", 3)
     N = _vec(normal, "normal", 3)
-    nn = _nonzero(N, "normal", "a plane needs a normal direction") ** 2
-    return Q - (_dot(Q - P, N) / nn)[..., None] * N
+    n = _nonzero(N, "normal", "a plane needs a normal direction")
+    with np.errstate(over="ignore", under="ignore"):
+        nn = n ** 2
+    if not np.all((nn > 1e-290) & (nn < 1e290)):      # N·N over- or underflows: use the unit normal
+        N, nn = N / n[..., None], 1.0
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = Q - (_dot(Q - P, N) / nn)[..., None] * N
+    return finite_result(out, "points or plane_point", why="is too large in magnitude")
 
 
 def line_line_distance(p1, d1, p2, d2):

@@ -344,10 +344,9 @@ def det(u, v, w):
     >>> float(det([1, 0, 0], [0, 2, 0], [0, 0, 3]))
     6.0
     """
-    c = cross(u, v)
-    w = _vector3(w, "w")
+    u, v, w = _vector3(u, "u"), _vector3(v, "v"), _vector3(w, "w")
     try:
-        return dot(c, w)
+        return dot(cross(u, v), w)
     except ValueError:
         raise ValueError("u, v and w are too large in magnitude: the result overflows float64") from None
 

@@ -534,8 +534,9 @@ def huge_objects(obj, depth: int = 0) -> list[tuple[str, str, object]]:
 
 def _probe_cases():
     """The issue's adversarial probe, kept: ``(label, call, parameter the message must name)``."""
-    from goldman_lib import (bezier, blossom, bspline, codo, fractals, ifs, knot_insertion,
-                             subdivision_matrices, subdivision_surfaces, turtle)
+    from goldman_lib import (bezier, blossom, bspline, codo, fractals, ifs, knot_insertion, lighting, quaternions,
+                             ray_tracing, simple_surfaces, subdivision_matrices, subdivision_surfaces, transforms,
+                             turtle)
     C = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
     polygon = [[0, 0], [1, 2], [2, 2], [3, 0], [4, 1]]
     knots = [0, 0, 0, 0, 1, 2, 2, 2, 2]
@@ -572,6 +573,19 @@ def _probe_cases():
         ("codo.run('REPEAT 20000 [ REPEAT 20000 [ ] ]')",
          lambda: codo.run("REPEAT 20000 [ REPEAT 20000 [ ] ]"), None),
         ("turtle.circle(1e308)", lambda: turtle.circle(1e308), "radius"),
+        # issue 20 section 4: overflow in Parts II-III (their values are checked in test_bad_input_part23.py)
+        ("transforms.compose(*[scaling(2.0)] * 2000)",
+         lambda: transforms.compose(*[transforms.scaling(2.0)] * 2000), "matrices"),
+        ("simple_surfaces.Sphere((0, 0, 0), 1e160).intersect(...)",
+         lambda: simple_surfaces.Sphere((0, 0, 0), 1e160).intersect([[0, 0, -5]], [[0, 0, 1]]), "radius"),
+        ("bspline.de_boor(knots at ±1e308)",
+         lambda: bspline.de_boor(polygon[:4], [-1e308] * 4 + [1e308] * 4, 3, 0.0), "knots"),
+        ("ray_tracing.trace(light intensity 1e300 x diffuse 1e300)",
+         lambda: ray_tracing.trace(ray_tracing.Scene(
+             [simple_surfaces.Sphere([0, 0, 0], 1, material=lighting.Material(diffuse=1e300))],
+             [lighting.Light((0, 0, 5), intensity=1e300)]), [[0, 0, 5]], [[0, 0, -1]]), "intensity"),
+        ("quaternions.rotate([0, 0, 0, 1e160], [1, 0, 0])",
+         lambda: quaternions.rotate([0, 0, 0, 1e160], [1, 0, 0]), "q"),
     ]
 
 
