@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
-from goldman_lib.validation import norm as _norm
+from goldman_lib._kernels import norm as _norm
 
 __all__ = ["Light", "Material", "unit_rows", "reflect", "ambient", "diffuse", "specular", "intensity",
            "to_image", "light_direction", "default_lights", "shade_faces", "highlight_half_width"]

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
-from goldman_lib.validation import norm as _norm   # np.linalg.norm, right where v·v over/underflows
+from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 
 __all__ = ["mass_point", "vector", "add", "scale", "mass_of", "point_of", "center_of_mass", "same_projective_point",
            "perspective_mass", "pseudoperspective", "pseudoperspective_matrix", "pseudodepth"]
@@ -211,14 +211,15 @@ def pseudoperspective_matrix(eye, plane_point, normal) -> np.ndarray:
     [[1.0, 2.0, 1.5]]
     """
     E, Q, N, c = _frame(eye, plane_point, normal)
-    eN = float(E @ N)
-    M = np.zeros((4, 4))
-    # numerator = s E + c (P - E) + c (s - c) N with s = P.N - E.N
-    M[:3, :3] = np.outer(N, E) + c * np.eye(3) + c * np.outer(N, N)
-    M[3, :3] = -eN * E - c * E - c * eN * N - c * c * N
-    M[:3, 3] = N
-    M[3, 3] = -eN
-    return M
+    with np.errstate(over="ignore", invalid="ignore"):
+        eN = float(E @ N)
+        M = np.zeros((4, 4))
+        # numerator = s E + c (P - E) + c (s - c) N with s = P.N - E.N
+        M[:3, :3] = np.outer(N, E) + c * np.eye(3) + c * np.outer(N, N)
+        M[3, :3] = -eN * E - c * E - c * eN * N - c * c * N
+        M[:3, 3] = N
+        M[3, 3] = -eN
+    return finite_result(M, "eye or plane_point", why="is too large in magnitude")
 
 
 def pseudoperspective(points, eye, plane_point, normal) -> np.ndarray:
@@ -231,6 +232,8 @@ def pseudoperspective(points, eye, plane_point, normal) -> np.ndarray:
     P = as_points(points, "points", ndim=None, dim=3)
     E, Q, N, c = _frame(eye, plane_point, normal)
     delta = pseudodepth(P, E, Q, N)
-    s = (P - E) @ N
-    persp = E + (c / s)[..., None] * (P - E)
-    return persp + (c * delta)[..., None] * N
+    with np.errstate(over="ignore", invalid="ignore"):
+        s = (P - E) @ N
+        persp = E + (c / s)[..., None] * (P - E)
+        out = persp + (c * delta)[..., None] * N
+    return finite_result(out, "points, eye or plane_point", why="is too large in magnitude")

@@ -43,7 +43,7 @@ import numpy as np
 from goldman_lib import lighting, shading
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Plane, Sphere
-from goldman_lib.validation import norm as _norm
+from goldman_lib._kernels import norm as _norm
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
                                     within_budget)
 

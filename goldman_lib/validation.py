@@ -20,8 +20,7 @@ import numbers
 import numpy as np
 
 __all__ = ["as_points", "as_parameter", "as_int", "as_float", "as_float_array", "check_finite", "within_budget",
-           "largest_within", "MAX_ITEMS", "MAX_ITERATIONS", "as_tolerance", "finite_result",
-           "norm", "unit"]
+           "largest_within", "MAX_ITEMS", "MAX_ITERATIONS", "as_tolerance", "finite_result"]
 
 #: The most points, segments, triangles or matrix entries one call may produce or allocate: about
 #: 160 MB of float64 pairs, a second or two of numpy work on a 2-core machine.  Every level, count,
@@ -285,43 +284,3 @@ def finite_result(result, name: str, value=None, *, why: str = "is too large in 
             where = f" at {name}[{', '.join(str(int(i)) for i in idx)}] = {val[idx]:g}"
     raise ValueError(f"{name} {why}: the result overflows float64{where}")
 
-
-def norm(v, axis: int = -1, keepdims: bool = False) -> np.ndarray:
-    """The Euclidean length of ``v`` along ``axis``, right at every finite magnitude: the plain
-    ``sqrt(v · v)`` (bit for bit :func:`numpy.linalg.norm`) where ``v · v`` is a normal float, and
-    ``m sqrt((v/m) · (v/m))`` with ``m = max |v_i|`` where it overflows or underflows (entries over
-    about 1e154 or under 1e-154), so a vector of length 1e300 has length 1e300, not inf.
-
-    >>> float(norm([3 * 2.0 ** 900, 4 * 2.0 ** 900])) == 5 * 2.0 ** 900
-    True
-    >>> float(norm([3e-200, 4e-200]))
-    5e-200
-    """
-    v = np.asarray(v, dtype=float)
-    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
-        out = np.linalg.norm(v, axis=axis, keepdims=keepdims)
-        tiny = np.finfo(float).tiny ** 0.5
-        redo = ~np.isfinite(out) | (out < tiny)
-        if not np.any(redo & np.any(v != 0, axis=axis, keepdims=keepdims)):
-            return out
-        m = np.max(np.abs(v), axis=axis, keepdims=True)
-        safe = np.ldexp(1.0, np.frexp(np.where(m > 0, m, 1.0))[1])     # a power of two: scaling is exact
-        scaled = np.linalg.norm(v / safe, axis=axis, keepdims=True) * safe
-        if not keepdims:
-            scaled = np.squeeze(scaled, axis=axis)
-        return np.where(redo, scaled, out)
-
-
-def unit(v, name: str, axis: int = -1, what: str = "has no direction") -> np.ndarray:
-    """``v / |v|`` along ``axis`` for vectors of any finite length (the length by :func:`norm`, so a
-    vector of length 1e300 or 1e-300 still has its direction); ValueError naming ``name`` for a zero
-    vector.
-
-    >>> unit([0, 0, 1e300], "axis").tolist()
-    [0.0, 0.0, 1.0]
-    """
-    v = np.asarray(v, dtype=float)
-    n = norm(v, axis=axis, keepdims=True)
-    if np.any(n == 0):
-        raise ValueError(f"{name} must be nonzero: the zero vector {what}")
-    return v / n

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib.validation import as_float, as_parameter, as_points, check_finite, as_float_array, finite_result
-from goldman_lib.validation import norm as _norm   # np.linalg.norm, right where v·v over/underflows
+from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 from goldman_lib.vectors import cross
 
 __all__ = ["law_of_cosines", "law_of_sines", "plane_through", "point_line_distance", "point_plane_distance",
@@ -226,7 +226,12 @@ def newell_normal(polygon) -> np.ndarray:
     """
     pts = _polygon(polygon, dims=(3,))
     nxt = np.roll(pts, -1, axis=0)
-    return finite_result(cross(pts, nxt).sum(axis=0), "polygon")
+    try:
+        terms = cross(pts, nxt)
+    except ValueError:
+        raise ValueError("polygon is too large in magnitude: the cross products of its vertices overflow float64") from None
+    with np.errstate(over="ignore", invalid="ignore"):
+        return finite_result(terms.sum(axis=0), "polygon")
 
 
 def polygon_area(polygon) -> float:

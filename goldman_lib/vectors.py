@@ -32,7 +32,7 @@ import numbers
 import numpy as np
 
 from goldman_lib.validation import as_float_array, as_tolerance, check_finite, finite_result
-from goldman_lib.validation import norm as _norm   # np.linalg.norm, right where v·v over/underflows
+from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 
 __all__ = ["Point", "Vector", "affine_combination", "combination_kind", "weighted_sum_from_origin", "dot", "cross",
            "det", "det_cofactor_terms", "length", "angle_between", "dot_from_lengths", "cross_from_geometry",
@@ -72,7 +72,7 @@ def _moderate(arr: np.ndarray) -> np.ndarray:
     m = np.abs(arr).max(axis=-1, keepdims=True)
     if np.all((m == 0) | ((m > 1e-100) & (m < 1e100))):
         return arr
-    return arr / np.ldexp(1.0, np.frexp(np.where(m > 0, m, 1.0))[1])
+    return arr / np.ldexp(1.0, np.frexp(np.where(m > 0, m, 1.0))[1] - 1)
 
 
 def _scalar(c, name: str) -> float | np.ndarray:
