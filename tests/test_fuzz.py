@@ -17,7 +17,11 @@ and III adds a doctest (or an entry there) and is then fuzzed like the rest.
 Then every parameter, in turn, gets a battery of bad values (NaN, +-inf, +-1e308, 10**12, 0, -1, an
 empty list, a ragged list, a complex number, a string, None, and, for an array, a NaN inside,
 all-equal points, a single point, wrong shapes and complex entries) with the other parameters at the
-example's values.  Each call runs in a worker subprocess with a wall-clock limit of
+example's values.  In Parts II and III (:data:`PART23`) every parameter also gets magnitudes 1e160-1e308
+(where a squared length or a product of two inputs overflows though the input is finite), and every
+object a function or method is given (``self``, a scene, a camera, a light) is rebuilt by its
+constructor with one input at those magnitudes (:func:`huge_objects`): a sphere of radius 1e160, a
+light of intensity 1e300 inside a scene.  Each call runs in a worker subprocess with a wall-clock limit of
 :data:`TIME_LIMIT` seconds and a memory limit (``RLIMIT_AS``, :data:`MEMORY_LIMIT` bytes more than
 the parent uses) and must either return a finite result (no NaN or infinity anywhere in what it
 returns) or raise ``ValueError``/``TypeError`` whose message names the parameter (a
@@ -341,8 +345,10 @@ def _as_array(value):
 
 #: The modules of Parts II and III (chapters 9-23): their parameters also get magnitudes 1e160-1e308, where a
 #: squared length or a product of two inputs overflows although the input itself is finite.
+#: (hidden_surfaces and solid_modeling are not in it yet: a camera with near = 1e160 and an octree of size
+#: 1e160 still fail there; issue 20 section 2 reworks the camera's near plane.)
 PART23 = ("vectors", "vector_geometry", "transforms", "quaternions", "mass_points", "lighting", "ray_tracing",
-          "surfaces", "simple_surfaces", "shading")
+          "surfaces", "simple_surfaces", "shading", "radiosity")
 HUGE = [("1e160", 1e160), ("-1e160", -1e160), ("1e200", 1e200), ("3e250", 3e250)]
 
 
