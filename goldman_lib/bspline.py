@@ -87,6 +87,12 @@ def check_knots(knots, degree, n_ctrl=None, name: str = "knots", *, degree_name:
     if t.ndim != 1:
         raise ValueError(f"{name} must be a 1-D array of knots; got shape {t.shape}")
     check_finite(t, name)
+    with np.errstate(over="ignore"):
+        spread = t[-1] - t[0] if t.size else 0.0
+    if not np.isfinite(spread) and np.all(t[1:] >= t[:-1]):
+        # de Boor's weights (u - t_i) / (t_j - t_i) would be inf / inf: the curve is not computable
+        raise ValueError(f"{name} is too large in magnitude: {name}[-1] - {name}[0] = {_fmt(t[-1])} - {_fmt(t[0])} "
+                         f"overflows float64 (knots must span less than about 1.8e308)")
     dec = np.flatnonzero(t[1:] < t[:-1])
     if dec.size:
         i = int(dec[0]) + 1

@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
+from goldman_lib._kernels import norm as _norm
 
 __all__ = ["Light", "Material", "unit_rows", "reflect", "ambient", "diffuse", "specular", "intensity",
            "to_image", "light_direction", "default_lights", "shade_faces", "highlight_half_width"]
@@ -128,9 +129,7 @@ def unit_rows(vectors, name: str = "vectors") -> np.ndarray:
     [[0.6, 0.0, 0.8], [0.0, 0.0, 0.0]]
     """
     v = as_points(vectors, name, ndim=None, dim=3)
-    with np.errstate(over="ignore", invalid="ignore"):
-        length = finite_result(np.sqrt(np.einsum("...i,...i->...", v, v)), name)[..., None]
-    return np.divide(v, length, out=np.zeros_like(v), where=length > 0)
+    return _unit(v)
 
 
 def _dot(a, b):
@@ -162,7 +161,8 @@ def _scale(cosines, k, light_intensity, k_name, i_name):
         check_finite(arr, name)
         if np.any(arr < 0):
             raise ValueError(f"{name} must be >= 0; got {arr.tolist()}")
-    s = k * i
+    with np.errstate(over="ignore"):
+        s = finite_result(k * i, f"{k_name} and {i_name}", why="are too large in magnitude")
     return cosines * s if s.ndim == 0 else cosines[..., None] * s
 
 
@@ -207,15 +207,20 @@ def ambient(ka, ambient_intensity) -> np.ndarray:
 
 def _unit(v):
     """Unchecked: rows of ``v`` scaled to length 1 (zero rows stay zero)."""
-    length = np.sqrt(np.einsum("...i,...i->...", v, v))[..., None]
+    with np.errstate(over="ignore", under="ignore"):
+        length = np.sqrt(np.einsum("...i,...i->...", v, v))[..., None]
+    if not np.all(np.isfinite(length) & (length > 1e-150)) and np.all(np.isfinite(v)):
+        length = _norm(v, keepdims=True)     # |v|^2 overflowed or underflowed: scale before squaring
     return np.divide(v, length, out=np.zeros_like(v), where=length > 0)
 
 
-def _cosines(P, N, light_position, V=None, exponent=None):
+def _cosines(P, N, light_position, V=None, exponent=None, name="light_position"):
     """Unchecked kernel of the three terms for one light: ``max(L . N, 0)`` and, given unit ``V``,
     ``(R . V)^n`` (0 where ``L . N <= 0`` or ``R . V <= 0``), using ``R . V = 2 (L . N)(N . V) - L . V``
-    so ``R`` itself is never formed.  P, N (unit), V: (..., 3)."""
-    L = _unit(light_position - P)
+    so ``R`` itself is never formed.  P, N (unit), V: (..., 3).  ``name``: the light's position, blamed
+    (with points) if ``light_position - P`` overflows."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        L = _unit(finite_result(light_position - P, f"{name} or points", why="is too large in magnitude"))
     ln = _dot(L, N)
     cos_d = np.maximum(ln, 0.0)
     if V is None:
@@ -252,7 +257,8 @@ def specular(points, normals, light_position, eye, ks, exponent, light_intensity
     """
     P, N = _geometry(points, normals)
     light = as_points(light_position, "light_position", ndim=1, dim=3)
-    V = unit_rows(_eye(eye, P) - P, "eye - points")
+    with np.errstate(over="ignore", invalid="ignore"):
+        V = unit_rows(finite_result(_eye(eye, P) - P, "eye or points", why="is too large in magnitude"), "eye - points")
     _, power = _cosines(P, N, light, V, _non_negative(exponent, "exponent"))
     return _scale(power, ks, light_intensity, "ks", "light_intensity")
 
@@ -291,15 +297,25 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
     C, S = np.asarray(material.colour), np.asarray(material.specular_colour)
     ia = _scale(np.float64(1.0), material.ambient, ambient_light, "material.ambient", "ambient_light")
     total = np.broadcast_to(ia * C, P.shape).copy()
-    V = unit_rows(E - P, "eye - points") if material.specular > 0 else None     # once for all lights
+    if material.specular > 0:                                                     # once for all lights
+        with np.errstate(over="ignore", invalid="ignore"):
+            V = unit_rows(finite_result(E - P, "eye or points", why="is too large in magnitude"), "eye - points")
+    else:
+        V = None
     for k, light in enumerate(lights):
-        cos_d, power = _cosines(P, N, np.asarray(light.position), V, material.exponent)
-        term = cos_d[..., None] * (material.diffuse * C * light.rgb)
-        if power is not None:
-            term += power[..., None] * (material.specular * S * light.rgb)
-        if shadowed is not None:
-            term[shadowed[..., k]] = 0.0
-        total += term
+        cos_d, power = _cosines(P, N, np.asarray(light.position), V, material.exponent, f"lights[{k}].position")
+        with np.errstate(over="ignore", invalid="ignore"):
+            term = cos_d[..., None] * finite_result(material.diffuse * C * light.rgb,
+                                                    f"lights[{k}].intensity and material.diffuse",
+                                                    why="are too large in magnitude")
+            if power is not None:
+                term += power[..., None] * finite_result(material.specular * S * light.rgb,
+                                                         f"lights[{k}].intensity and material.specular",
+                                                         why="are too large in magnitude")
+            if shadowed is not None:
+                term[shadowed[..., k]] = 0.0
+            total += term
+        finite_result(total, f"lights (up to lights[{k}]) and material", why="are too bright together")
     return total
 
 

@@ -21,6 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
+from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 
 __all__ = ["mass_point", "vector", "add", "scale", "mass_of", "point_of", "center_of_mass", "same_projective_point",
            "perspective_mass", "pseudoperspective", "pseudoperspective_matrix", "pseudodepth"]
@@ -132,7 +133,7 @@ def same_projective_point(a, b, tol: float = 1e-12):
     if x.shape[-1] != y.shape[-1]:
         raise ValueError(f"a and b must have the same number of coordinates; got shapes {x.shape} and {y.shape}")
     tol = as_float(tol, "tol", positive=True)
-    nx, ny = np.linalg.norm(x, axis=-1), np.linalg.norm(y, axis=-1)
+    nx, ny = _norm(x, axis=-1), _norm(y, axis=-1)
     if np.any(nx == 0) or np.any(ny == 0):
         raise ValueError("a and b must be nonzero: (0, ..., 0) is no point of projective space")
     ux, uy = x / nx[..., None], y / ny[..., None]
@@ -150,8 +151,8 @@ def _frame(eye, plane_point, normal):
         if arr.shape != (3,):
             raise ValueError(f"{name} must be a 3D point or vector (shape (3,)); got shape {arr.shape}")
     with np.errstate(over="ignore", invalid="ignore"):
-        n = np.linalg.norm(N)
-        gap = np.linalg.norm(Q - E)
+        n = _norm(N)
+        gap = _norm(Q - E)
     finite_result(np.asarray(n), "normal")
     finite_result(np.asarray(gap), "plane_point", why="is too far from eye")
     if n == 0:
@@ -210,14 +211,15 @@ def pseudoperspective_matrix(eye, plane_point, normal) -> np.ndarray:
     [[1.0, 2.0, 1.5]]
     """
     E, Q, N, c = _frame(eye, plane_point, normal)
-    eN = float(E @ N)
-    M = np.zeros((4, 4))
-    # numerator = s E + c (P - E) + c (s - c) N with s = P.N - E.N
-    M[:3, :3] = np.outer(N, E) + c * np.eye(3) + c * np.outer(N, N)
-    M[3, :3] = -eN * E - c * E - c * eN * N - c * c * N
-    M[:3, 3] = N
-    M[3, 3] = -eN
-    return M
+    with np.errstate(over="ignore", invalid="ignore"):
+        eN = float(E @ N)
+        M = np.zeros((4, 4))
+        # numerator = s E + c (P - E) + c (s - c) N with s = P.N - E.N
+        M[:3, :3] = np.outer(N, E) + c * np.eye(3) + c * np.outer(N, N)
+        M[3, :3] = -eN * E - c * E - c * eN * N - c * c * N
+        M[:3, 3] = N
+        M[3, 3] = -eN
+    return finite_result(M, "eye or plane_point", why="is too large in magnitude")
 
 
 def pseudoperspective(points, eye, plane_point, normal) -> np.ndarray:
@@ -230,6 +232,8 @@ def pseudoperspective(points, eye, plane_point, normal) -> np.ndarray:
     P = as_points(points, "points", ndim=None, dim=3)
     E, Q, N, c = _frame(eye, plane_point, normal)
     delta = pseudodepth(P, E, Q, N)
-    s = (P - E) @ N
-    persp = E + (c / s)[..., None] * (P - E)
-    return persp + (c * delta)[..., None] * N
+    with np.errstate(over="ignore", invalid="ignore"):
+        s = (P - E) @ N
+        persp = E + (c / s)[..., None] * (P - E)
+        out = persp + (c * delta)[..., None] * N
+    return finite_result(out, "points, eye or plane_point", why="is too large in magnitude")

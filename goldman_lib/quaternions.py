@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_parameter, as_points, check_finite, finite_result
+from goldman_lib._kernels import norm as _length
 
 __all__ = ["complex_rotation", "complex_polar", "complex_multiply", "multiply", "conjugate", "norm", "inverse", "normalize",
            "from_axis_angle", "to_axis_angle", "rotate", "conformal_map", "to_matrix", "from_matrix", "slerp",
@@ -42,8 +43,17 @@ def _scale_rows(q: np.ndarray, c: np.ndarray) -> np.ndarray:
     return np.ascontiguousarray(np.moveaxis(np.moveaxis(q, -1, 0) * c, 0, -1))
 
 
+def _magnitude(q: np.ndarray) -> np.ndarray:
+    """``|q|``, right at every magnitude (a quaternion of norm 1e160 has norm 1e160, not inf)."""
+    with np.errstate(over="ignore", under="ignore"):
+        n = np.sqrt(np.einsum("...i,...i->...", q, q))
+    if not np.all(np.isfinite(n) & (n > 1e-150)):
+        n = _length(q)                   # |q|^2 overflowed or underflowed: scale before squaring
+    return n
+
+
 def _nonzero(q: np.ndarray, name: str) -> np.ndarray:
-    n = np.sqrt(np.einsum("...i,...i->...", q, q))
+    n = _magnitude(q)
     if np.any(n == 0):
         raise ValueError(f"{name} must be nonzero: the zero quaternion has no inverse and is no rotation")
     return n
@@ -124,9 +134,11 @@ def multiply(p, q) -> np.ndarray:
     q = _quaternions(q, "q")
     a, u = p[..., :1], p[..., 1:]
     b, v = q[..., :1], q[..., 1:]
-    w = a * b - np.sum(u * v, axis=-1, keepdims=True)
-    vec = a * v + b * u + np.cross(u, v)
-    return _join(w, vec)
+    with np.errstate(over="ignore", invalid="ignore"):
+        w = a * b - np.sum(u * v, axis=-1, keepdims=True)
+        vec = a * v + b * u + np.cross(u, v)
+        out = _join(w, vec)
+    return finite_result(out, "p and q", why="are too large in magnitude")
 
 
 def conjugate(q) -> np.ndarray:
@@ -146,7 +158,7 @@ def norm(q) -> np.ndarray:
     5.0
     """
     q = _quaternions(q, "q")
-    return finite_result(np.sqrt(np.einsum("...i,...i->...", q, q)), "q")
+    return finite_result(_magnitude(q), "q")
 
 
 def inverse(q) -> np.ndarray:
@@ -157,7 +169,13 @@ def inverse(q) -> np.ndarray:
     """
     q = _quaternions(q, "q")
     n = _nonzero(q, "q")
-    return conjugate(q) / (n * n)[..., None]
+    with np.errstate(over="ignore", under="ignore"):
+        n2 = n * n
+    if np.all(np.isfinite(n2) & (n2 > 1e-300)):
+        return conjugate(q) / n2[..., None]
+    # |q|^2 overflows or underflows: divide by |q| twice; refuse an inverse too large to represent
+    with np.errstate(over="ignore"):
+        return finite_result(conjugate(q) / n[..., None] / n[..., None], "q", why="is too small in magnitude")
 
 
 def normalize(q) -> np.ndarray:
@@ -167,7 +185,10 @@ def normalize(q) -> np.ndarray:
     [0.0, 0.0, 0.0, 1.0]
     """
     q = _quaternions(q, "q")
-    return _scale_rows(q, 1.0 / _nonzero(q, "q"))
+    n = _nonzero(q, "q")
+    if np.all(n > 1e-300):
+        return _scale_rows(q, 1.0 / n)
+    return q / n[..., None]              # 1/|q| would overflow: divide
 
 
 # -- §15.3.2: rotations and conformal maps -----------------------------------------------------
@@ -184,7 +205,7 @@ def from_axis_angle(axis, angle) -> np.ndarray:
     ax = check_finite(as_float_array(axis, "axis"), "axis")
     if ax.ndim == 0 or ax.shape[-1] != 3:
         raise ValueError(f"axis must be a 3D vector (last axis of length 3); got shape {ax.shape}")
-    length = np.linalg.norm(ax, axis=-1, keepdims=True)
+    length = _length(ax, keepdims=True)
     if np.any(length == 0):
         raise ValueError("axis must be nonzero: a rotation needs a direction to turn about")
     half = np.radians(as_parameter(angle, "angle"))[..., None] / 2
@@ -306,7 +327,7 @@ def from_matrix(M, tol: float = 1e-6) -> np.ndarray:
     ]
     q = np.choose(k[..., None], options)
     q = np.where(q[..., :1] < 0, -q, q)
-    return q / np.linalg.norm(q, axis=-1, keepdims=True)
+    return q / _length(q, keepdims=True)
 
 
 # -- §15.3.4-15.3.5: interpolation without distortion; key frames -------------------------------------
@@ -325,13 +346,12 @@ def slerp(q0, q1, t) -> np.ndarray:
     a = _quaternions(q0, "q0")
     b = _quaternions(q1, "q1")
     tt = as_parameter(t, "t")
-    with np.errstate(over="ignore"):
-        na, nb = _nonzero(a, "q0"), _nonzero(b, "q1")      # normalised through the weights below
-    if not np.all(np.isfinite(na)):                        # |q|^2 overflowed: rescale first (rare)
-        a = a / np.abs(a).max(axis=-1, keepdims=True)
+    na, nb = _nonzero(a, "q0"), _nonzero(b, "q1")      # normalised through the weights below
+    if np.any((na > 1e150) | (na < 1e-150)):             # a·b or na·nb would overflow or underflow:
+        a = a / na[..., None]                            # normalise first (rare)
         na = _nonzero(a, "q0")
-    if not np.all(np.isfinite(nb)):
-        b = b / np.abs(b).max(axis=-1, keepdims=True)
+    if np.any((nb > 1e150) | (nb < 1e-150)):
+        b = b / nb[..., None]
         nb = _nonzero(b, "q1")
     lead = np.broadcast_shapes(a.shape[:-1], b.shape[:-1], tt.shape)
     a, b, tt = np.broadcast_to(a, lead + (4,)), np.broadcast_to(b, lead + (4,)), np.broadcast_to(tt, lead)

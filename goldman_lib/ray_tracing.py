@@ -43,6 +43,7 @@ import numpy as np
 from goldman_lib import lighting, shading
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Plane, Sphere
+from goldman_lib._kernels import norm as _norm
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
                                     within_budget)
 
@@ -61,7 +62,7 @@ OFFSET = 1e-7
 
 def _unit(v, name):
     v = as_points(v, name, ndim=1, dim=3)
-    length = float(np.linalg.norm(v))
+    length = float(_norm(v))
     if length == 0 or not np.isfinite(length):
         raise ValueError(f"{name} must be a nonzero vector of finite length; got {v.tolist()}")
     return v / length
@@ -90,6 +91,11 @@ class Camera:
             self._camera = shading.Camera(eye=eye, target=look_at, up=up, fov=fov, width=1, height=1)
         except (TypeError, ValueError) as exc:
             raise type(exc)(str(exc).replace("target", "look_at")) from None
+        from goldman_lib.simple_surfaces import MAX_COORDINATE
+        for name, value in (("eye", self._camera.eye), ("look_at", self._camera.target)):
+            if np.abs(value).max() > MAX_COORDINATE:
+                raise ValueError(f"{name} must have coordinates at most {MAX_COORDINATE:g} in magnitude (the bound on "
+                                 f"ray origins: their squares must not overflow); got {np.abs(value).max():g}")
         self.eye = np.array(self._camera.eye)
         self.look_at = np.array(self._camera.target)
         self.up_hint = np.array(self._camera.up)
@@ -148,6 +154,12 @@ class Scene:
             raise TypeError("lights must be a sequence of goldman_lib.lighting.Light")
         for k, obj in enumerate(objects):
             _index(obj.material.index, f"objects[{k}].material.index")
+        from goldman_lib.simple_surfaces import MAX_COORDINATE
+        for k, light in enumerate(lights):
+            if np.abs(light.position).max() > MAX_COORDINATE:
+                raise ValueError(f"lights[{k}].position must have coordinates at most {MAX_COORDINATE:g} in magnitude "
+                                 f"(its shadow rays' directions must square without overflow); got "
+                                 f"{np.abs(light.position).max():g}")
         self.objects = objects
         self.lights = lights
         a = check_finite(as_float_array(ambient_light, "ambient_light"), "ambient_light")
@@ -465,8 +477,27 @@ def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | N
         colour = _trace(scene, np.array(o, dtype=float), d, depth, record, miss_length,
                         {} if counts is None else counts)
     if not np.all(np.isfinite(colour)):
-        raise ValueError("origins are too large in magnitude: the traced colour overflows float64")
+        raise ValueError(f"{_brightest(scene)} too large: the traced colour overflows float64")
     return colour
+
+
+def _brightest(scene: Scene) -> str:
+    """The scene's inputs to blame for a traced colour that overflows: the largest product of a
+    material's coefficient and a light's (or the ambient) intensity.  (Origins and directions cannot
+    be: :func:`goldman_lib.simple_surfaces.rays` bounds them, and the reflected and refracted
+    weights are at most 1.)"""
+    best, what = -1.0, "the scene's light intensities and material coefficients are"
+    for j, obj in enumerate(scene.objects):
+        m = obj.material
+        terms = [(m.ambient * float(np.max(scene.ambient_light)), f"objects[{j}].material.ambient and ambient_light are")]
+        for k, light in enumerate(scene.lights):
+            for coef in ("diffuse", "specular"):
+                terms.append((getattr(m, coef) * light.intensity,
+                              f"objects[{j}].material.{coef} and lights[{k}].intensity are"))
+        for value, name in terms:
+            if value > best:
+                best, what = value, name
+    return what
 
 
 def _trace(scene, o, d, depth, record, miss_length, counts):

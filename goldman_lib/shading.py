@@ -223,7 +223,7 @@ class Camera:
             raise ValueError("target must differ from eye: the camera needs a direction to look in")
         n = d / dist
         with np.errstate(over="ignore", invalid="ignore"):
-            right = np.cross(n, U)
+            right = np.cross(n, U / np.abs(U).max() if np.abs(U).max() > 1e150 else U)   # only up's direction counts
             rl = np.linalg.norm(right)
         if not np.isfinite(rl) or rl <= 1e-9 * max(np.linalg.norm(U), 1e-300):
             raise ValueError("up must not be parallel to the view direction (target - eye)")

@@ -192,7 +192,7 @@ class Plane(Surface):
     """
 
     def __init__(self, point, normal, material: Material | None = None):
-        self.point = as_points(point, "point", ndim=1, dim=3)
+        self.point = _position(point, "point")
         n = as_points(normal, "normal", ndim=1, dim=3)
         if not np.any(n != 0):
             raise ValueError("normal must be a nonzero vector")
@@ -227,8 +227,8 @@ class Sphere(Surface):
     """
 
     def __init__(self, center, radius, material: Material | None = None):
-        self.center = as_points(center, "center", ndim=1, dim=3)
-        self.radius = as_float(radius, "radius", positive=True)
+        self.center = _position(center, "center")
+        self.radius = _length(radius, "radius")
         self._set_material(material)
 
     def _hits(self, o, d):
@@ -481,6 +481,16 @@ def _bounded_height(height, name="height"):
     return h
 
 
+def _position(x, name):
+    """A point of a surface's geometry (a centre, a base, an apex): within :data:`MAX_COORDINATE`, the
+    bound on ray origins, so the squared distances of the intersection stay representable."""
+    P = as_points(x, name, ndim=1, dim=3)
+    if np.abs(P).max() > MAX_COORDINATE:
+        raise ValueError(f"{name} must have coordinates at most {MAX_COORDINATE:g} in magnitude "
+                         f"(their squares must not overflow); got {np.abs(P).max():g}")
+    return P
+
+
 def _length(x, name):
     v = as_float(x, name, positive=True)
     if v > MAX_COORDINATE:
@@ -514,6 +524,9 @@ class Polygon(Surface):
             V = V[:-1]
         if len(V) < 3:
             raise ValueError(f"vertices must hold at least 3 distinct points; got {len(V)}")
+        if np.abs(V).max() > MAX_COORDINATE:
+            raise ValueError(f"vertices must have coordinates at most {MAX_COORDINATE:g} in magnitude "
+                             f"(their squares must not overflow); got {np.abs(V).max():g}")
         size = np.abs(V - V[0]).max()
         if size == 0 or size > MAX_COORDINATE:
             raise ValueError("vertices must span a polygon of positive, representable size")
@@ -619,7 +632,7 @@ class _AxialQuadric(Surface):
     _kind = ""
 
     def _setup(self, origin, axis, scales, height, major, capped, material):
-        self.origin = as_points(origin, "base" if self._kind == "cylinder" else "apex", ndim=1, dim=3)
+        self.origin = _position(origin, "base" if self._kind == "cylinder" else "apex")
         self.axis = _unit_vector(axis, "axis")
         m = None if major is None else _unit_vector(major, "major")
         if m is not None and abs(float(m @ self.axis)) > 1 - 1e-9:
@@ -849,7 +862,7 @@ class Ellipsoid(Surface):
     """
 
     def __init__(self, center, radii, axes=None, material: Material | None = None):
-        self.center = as_points(center, "center", ndim=1, dim=3)
+        self.center = _position(center, "center")
         r = as_points(radii, "radii", ndim=1, dim=3)
         self.radii = tuple(_length(r[k], f"radii[{k}]") for k in range(3))
         if axes is None:
@@ -1041,7 +1054,7 @@ class Torus(Surface):
     """
 
     def __init__(self, center, axis, R, r, bound: bool = True, material: Material | None = None):
-        self.center = as_points(center, "center", ndim=1, dim=3)
+        self.center = _position(center, "center")
         self.axis = _unit_vector(axis, "axis")
         self.R = _length(R, "R")
         self.r = _length(r, "r")
@@ -1156,7 +1169,7 @@ class SurfaceOfRevolution(Surface):
     """
 
     def __init__(self, base, axis, profile, height, capped: bool = True, material: Material | None = None):
-        self.base = as_points(base, "base", ndim=1, dim=3)
+        self.base = _position(base, "base")
         self.axis = _unit_vector(axis, "axis")
         c = as_float_array(profile, "profile")
         if c.ndim != 1 or len(c) == 0:

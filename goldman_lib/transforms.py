@@ -21,13 +21,29 @@ Each transformation exists twice: as a function on points written with dot and c
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
+from goldman_lib._kernels import norm as _norm
 
 __all__ = ["translation", "rotation", "mirror", "scaling", "nonuniform_scaling", "orthogonal_projection",
            "perspective", "apply", "homogeneous", "apply_to_vectors", "compose", "translate", "rotate", "reflect", "scale", "scale_along",
            "project_orthogonal", "project_perspective"]
+
+
+def _refuses_overflow(names: str):
+    """The rule of every function here: a result float64 cannot hold is a ValueError naming the
+    inputs that made it (``names``), never an inf or NaN (as in :mod:`goldman_lib.affine`)."""
+    def decorate(fn):
+        @functools.wraps(fn)
+        def checked(*args, **kwargs):
+            with np.errstate(over="ignore", invalid="ignore"):
+                out = fn(*args, **kwargs)
+            return finite_result(out, names, why="too large in magnitude")
+        return checked
+    return decorate
 
 
 def _point(x, name: str) -> np.ndarray:
@@ -39,8 +55,8 @@ def _point(x, name: str) -> np.ndarray:
 
 def _unit(x, name: str, what: str) -> np.ndarray:
     v = _point(x, name)
-    n = np.linalg.norm(v)
-    if n <= 1e-300 or not np.isfinite(n):
+    n = _norm(v)                       # right at any magnitude: only the direction matters
+    if n == 0:
         raise ValueError(f"{name} must be a nonzero vector: {what}")
     return v / n
 
@@ -64,6 +80,7 @@ def _cross_matrix(w: np.ndarray) -> np.ndarray:
 
 # -- Chapter 12: the formulas on points -------------------------------------------------------------
 
+@_refuses_overflow("points or v is")
 def translate(points, v) -> np.ndarray:
     """``P + v`` (Goldman §12.3.1).
 
@@ -73,6 +90,7 @@ def translate(points, v) -> np.ndarray:
     return _points(points) + _point(v, "v")
 
 
+@_refuses_overflow("points or point is")
 def rotate(points, axis, angle, point=None) -> np.ndarray:
     """Rotate points by ``angle`` degrees about the line through ``point`` (default the origin) along
     ``axis``, counterclockwise looking down the axis (Goldman §12.3.2, Rodrigues' formula):
@@ -90,6 +108,7 @@ def rotate(points, axis, angle, point=None) -> np.ndarray:
     return Q + c * v + (1 - c) * (v @ w)[..., None] * w + s * np.cross(w, v)
 
 
+@_refuses_overflow("points or plane_point is")
 def reflect(points, plane_point, normal) -> np.ndarray:
     """Mirror points in the plane through ``plane_point`` with ``normal`` (Goldman §12.3.3):
     ``P - 2 ((P - Q)·N) N`` for the unit normal N.
@@ -103,6 +122,7 @@ def reflect(points, plane_point, normal) -> np.ndarray:
     return P - 2 * ((P - Q) @ N)[..., None] * N
 
 
+@_refuses_overflow("points, s or center is")
 def scale(points, s, center=None) -> np.ndarray:
     """Uniform scaling by ``s`` about ``center`` (default the origin): ``Q + s (P - Q)`` (Goldman §12.4).
 
@@ -115,6 +135,7 @@ def scale(points, s, center=None) -> np.ndarray:
     return Q + s * (P - Q)
 
 
+@_refuses_overflow("points, s or center is")
 def scale_along(points, s, direction, center=None) -> np.ndarray:
     """Nonuniform scaling by ``s`` along ``direction`` about ``center`` (Goldman §12.4):
     ``P + (s - 1)((P - Q)·w) w`` for the unit direction w; directions perpendicular to w are kept.
@@ -129,6 +150,7 @@ def scale_along(points, s, direction, center=None) -> np.ndarray:
     return P + (s - 1) * ((P - Q) @ w)[..., None] * w
 
 
+@_refuses_overflow("points or plane_point is")
 def project_orthogonal(points, plane_point, normal) -> np.ndarray:
     """Orthogonal projection onto the plane (Goldman §12.5): ``P - ((P - Q)·N) N`` for the unit N.
 
@@ -143,13 +165,14 @@ def project_orthogonal(points, plane_point, normal) -> np.ndarray:
 
 def _check_perspective(eye, Q, N):
     with np.errstate(over="ignore", invalid="ignore"):
-        gap = np.linalg.norm(Q - eye)
+        gap = _norm(Q - eye)
     finite_result(np.asarray(gap), "plane_point", why="is too far from eye")
     if abs((Q - eye) @ N) <= 1e-12 * (1 + gap):
         raise ValueError("eye must not lie on the plane of projection (the plane through plane_point with normal "
                          "normal): every line through it would meet the plane at the eye itself")
 
 
+@_refuses_overflow("points, eye or plane_point is")
 def project_perspective(points, eye, plane_point, normal) -> np.ndarray:
     """Perspective projection from ``eye`` onto the plane (Goldman §12.5): the point where the line
     from the eye through P meets the plane, ``E + [(Q - E)·N / (P - E)·N] (P - E)``.
@@ -166,7 +189,7 @@ def project_perspective(points, eye, plane_point, normal) -> np.ndarray:
     N = _unit(normal, "normal", "a plane needs a normal direction")
     _check_perspective(E, Q, N)
     d = (P - E) @ N
-    if np.any(np.abs(d) <= 1e-12 * (1 + np.linalg.norm(P - E, axis=-1))):
+    if np.any(np.abs(d) <= 1e-12 * (1 + _norm(P - E))):
         raise ValueError("points must not lie on the plane through the eye parallel to the projection plane: "
                          "their images are at infinity")
     return E + (((Q - E) @ N) / d)[..., None] * (P - E)
@@ -185,6 +208,7 @@ def translation(v) -> np.ndarray:
     return M
 
 
+@_refuses_overflow("point is")
 def rotation(axis, angle, point=None) -> np.ndarray:
     """The 4x4 matrix of the rotation of :func:`rotate` (Goldman §13.3): linear part
     ``cos θ I + (1 - cos θ) wᵀw + sin θ A_w`` with ``v A_w = w × v``, and the translation row that
@@ -201,6 +225,7 @@ def rotation(axis, angle, point=None) -> np.ndarray:
     return _affine(linear, Q)
 
 
+@_refuses_overflow("plane_point is")
 def mirror(plane_point, normal) -> np.ndarray:
     """The 4x4 matrix of the mirror of :func:`reflect` (Goldman §13.3): linear part ``I - 2 NᵀN``,
     translation row ``2 (Q·N) N``.  An involution with determinant -1.
@@ -213,6 +238,7 @@ def mirror(plane_point, normal) -> np.ndarray:
     return _affine(np.eye(3) - 2 * np.outer(N, N), Q)
 
 
+@_refuses_overflow("s or center is")
 def scaling(s, center=None) -> np.ndarray:
     """The 4x4 matrix of uniform scaling about ``center`` (Goldman §13.4).
 
@@ -224,6 +250,7 @@ def scaling(s, center=None) -> np.ndarray:
     return _affine(s * np.eye(3), Q)
 
 
+@_refuses_overflow("s or center is")
 def nonuniform_scaling(s, direction, center=None) -> np.ndarray:
     """The 4x4 matrix of scaling by ``s`` along ``direction`` about ``center`` (Goldman §13.4):
     linear part ``I + (s - 1) wᵀw``.
@@ -237,6 +264,7 @@ def nonuniform_scaling(s, direction, center=None) -> np.ndarray:
     return _affine(np.eye(3) + (s - 1) * np.outer(w, w), Q)
 
 
+@_refuses_overflow("plane_point is")
 def orthogonal_projection(plane_point, normal) -> np.ndarray:
     """The 4x4 matrix of orthogonal projection onto a plane (Goldman §13.5): ``I - NᵀN`` and the
     translation row ``(Q·N) N``; singular (determinant 0).
@@ -249,6 +277,7 @@ def orthogonal_projection(plane_point, normal) -> np.ndarray:
     return _affine(np.eye(3) - np.outer(N, N), Q)
 
 
+@_refuses_overflow("eye or plane_point is")
 def perspective(eye, plane_point, normal) -> np.ndarray:
     """The 4x4 matrix of perspective projection from ``eye`` onto the plane (Goldman §13.5):
 
@@ -289,10 +318,13 @@ def compose(*matrices) -> np.ndarray:
         A = check_finite(as_float_array(m, f"matrices[{k}]"), f"matrices[{k}]")
         if A.shape != (4, 4):
             raise ValueError(f"matrices[{k}] must be a 4x4 matrix; got shape {A.shape}")
-        out = out @ A
+        with np.errstate(over="ignore", invalid="ignore"):
+            out = out @ A
+        finite_result(out, f"matrices (up to matrices[{k}]) are", why="too large in magnitude")
     return out
 
 
+@_refuses_overflow("points or M is")
 def apply(points, M) -> np.ndarray:
     """Apply a 4x4 matrix to points in the row convention, ``[P 1] @ M``, and divide by the
     homogeneous coordinate (Goldman §13.1).  Raises ValueError for a point sent to infinity
@@ -307,7 +339,7 @@ def apply(points, M) -> np.ndarray:
     A = check_finite(as_float_array(M, "M"), "M")
     if A.shape != (4, 4):
         raise ValueError(f"M must be a 4x4 matrix; got shape {A.shape}")
-    h = P @ A[:3] + A[3]
+    h = finite_result(P @ A[:3] + A[3], "points or M is", why="too large in magnitude")
     w = h[..., 3]
     scale_ = np.maximum(1.0, np.abs(h[..., :3]).max(axis=-1))
     if np.any(np.abs(w) <= 1e-12 * scale_):
@@ -316,6 +348,7 @@ def apply(points, M) -> np.ndarray:
     return h[..., :3] / w[..., None]
 
 
+@_refuses_overflow("points or M is")
 def homogeneous(points, M) -> np.ndarray:
     """The homogeneous coordinates ``[P 1] @ M`` of the images of points, before the divide
     (Goldman §13.1, §13.5): the last coordinate is the weight ``w`` that :func:`apply` divides by.
@@ -332,6 +365,7 @@ def homogeneous(points, M) -> np.ndarray:
     return P @ A[:3] + A[3]
 
 
+@_refuses_overflow("vectors or M is")
 def apply_to_vectors(vectors, M) -> np.ndarray:
     """Apply an affine 4x4 matrix to vectors, ``[v 0] @ M`` (Goldman §13.1): a vector has
     homogeneous coordinate 0, so the translation row does not act on it and only the upper-left

@@ -283,3 +283,4 @@ def finite_result(result, name: str, value=None, *, why: str = "is too large in 
             idx = np.unravel_index(flat, arr.shape)[:val.ndim]
             where = f" at {name}[{', '.join(str(int(i)) for i in idx)}] = {val[idx]:g}"
     raise ValueError(f"{name} {why}: the result overflows float64{where}")
+

@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib.validation import as_float, as_parameter, as_points, check_finite, as_float_array, finite_result
+from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 from goldman_lib.vectors import cross
 
 __all__ = ["law_of_cosines", "law_of_sines", "plane_through", "point_line_distance", "point_plane_distance",
@@ -46,8 +47,8 @@ def _not_huge(v: np.ndarray, name: str) -> None:
 
 
 def _nonzero(v: np.ndarray, name: str, what: str) -> np.ndarray:
-    n = np.linalg.norm(v, axis=-1)
-    if np.any(n <= _EPS):
+    n = _norm(v, axis=-1)
+    if np.any(n == 0):                   # any other length is a direction (1e-170 and 1e300 included)
         raise ValueError(f"{name} must be nonzero: {what}")
     return n
 
@@ -105,8 +106,8 @@ def plane_through(P, Q, R) -> tuple[np.ndarray, np.ndarray]:
     """
     P, Q, R = (_vec(x, n, 3) for x, n in ((P, "P"), (Q, "Q"), (R, "R")))
     N = cross(Q - P, R - P)
-    n = np.linalg.norm(N, axis=-1)
-    if np.any(n <= _EPS * (1 + np.linalg.norm(Q - P, axis=-1) * np.linalg.norm(R - P, axis=-1))):
+    n = _norm(N, axis=-1)
+    if np.any(n <= _EPS * (1 + _norm(Q - P, axis=-1) * _norm(R - P, axis=-1))):
         raise ValueError("P, Q, R must not be collinear: collinear points lie on many planes")
     return P, N / n[..., None]
 
@@ -123,10 +124,14 @@ def point_line_distance(points, line_point, direction):
     Q = _vec(points, "points")
     P = _vec(line_point, "line_point", Q.shape[-1], like="points")
     v = _vec(direction, "direction", Q.shape[-1], like="points")
-    vv = _nonzero(v, "direction", "a line needs a direction") ** 2
+    nv = _nonzero(v, "direction", "a line needs a direction")
+    with np.errstate(over="ignore", under="ignore"):
+        vv = nv ** 2
+    if not np.all((vv > 1e-290) & (vv < 1e290)):      # v·v over- or underflows: use the unit direction
+        v, vv = v / nv[..., None], 1.0
     w = Q - P
     perp = w - (_dot(w, v) / vv)[..., None] * v
-    out = np.linalg.norm(perp, axis=-1)
+    out = _norm(perp, axis=-1)
     return _out(finite_result(out, "points", why="(or line_point) is too large in magnitude"))
 
 
@@ -155,8 +160,14 @@ def foot_on_plane(points, plane_point, normal) -> np.ndarray:
     Q = _vec(points, "points", 3)
     P = _vec(plane_point, "plane_point", 3)
     N = _vec(normal, "normal", 3)
-    nn = _nonzero(N, "normal", "a plane needs a normal direction") ** 2
-    return Q - (_dot(Q - P, N) / nn)[..., None] * N
+    n = _nonzero(N, "normal", "a plane needs a normal direction")
+    with np.errstate(over="ignore", under="ignore"):
+        nn = n ** 2
+    if not np.all((nn > 1e-290) & (nn < 1e290)):      # N·N over- or underflows: use the unit normal
+        N, nn = N / n[..., None], 1.0
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = Q - (_dot(Q - P, N) / nn)[..., None] * N
+    return finite_result(out, "points or plane_point", why="is too large in magnitude")
 
 
 def line_line_distance(p1, d1, p2, d2):
@@ -171,12 +182,12 @@ def line_line_distance(p1, d1, p2, d2):
     _nonzero(d1, "d1", "a line needs a direction")
     _nonzero(d2, "d2", "a line needs a direction")
     c = cross(d1, d2)
-    nc = np.linalg.norm(c, axis=-1)
+    nc = _norm(c, axis=-1)
     w = p2 - p1
-    parallel = nc <= 1e-12 * np.linalg.norm(d1, axis=-1) * np.linalg.norm(d2, axis=-1)
+    parallel = nc <= 1e-12 * _norm(d1, axis=-1) * _norm(d2, axis=-1)
     skew = np.abs(_dot(w, c)) / np.where(parallel, 1, nc)
     vv = _dot(d1, d1)
-    perp = np.linalg.norm(w - (_dot(w, d1) / vv)[..., None] * d1, axis=-1)
+    perp = _norm(w - (_dot(w, d1) / vv)[..., None] * d1, axis=-1)
     return _out(np.where(parallel, perp, skew))
 
 
@@ -193,7 +204,7 @@ def triangle_area(P, Q, R):
     if P.shape[-1] == 2:
         u, v = Q - P, R - P
         return _out(np.abs(u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]) / 2)
-    return _out(np.linalg.norm(cross(Q - P, R - P), axis=-1) / 2)
+    return _out(_norm(cross(Q - P, R - P), axis=-1) / 2)
 
 
 def _polygon(polygon, name="polygon", dims=(2, 3)) -> np.ndarray:
@@ -215,7 +226,12 @@ def newell_normal(polygon) -> np.ndarray:
     """
     pts = _polygon(polygon, dims=(3,))
     nxt = np.roll(pts, -1, axis=0)
-    return finite_result(cross(pts, nxt).sum(axis=0), "polygon")
+    try:
+        terms = cross(pts, nxt)
+    except ValueError:
+        raise ValueError("polygon is too large in magnitude: the cross products of its vertices overflow float64") from None
+    with np.errstate(over="ignore", invalid="ignore"):
+        return finite_result(terms.sum(axis=0), "polygon")
 
 
 def polygon_area(polygon) -> float:
@@ -230,7 +246,7 @@ def polygon_area(polygon) -> float:
         x, y = pts[:, 0], pts[:, 1]
         area = abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))) / 2
     else:
-        area = np.linalg.norm(newell_normal(pts)) / 2
+        area = _norm(newell_normal(pts)) / 2
     return float(finite_result(np.asarray(area), "polygon"))
 
 
@@ -289,8 +305,8 @@ def intersect_lines(p1, d1, p2, d2) -> tuple[np.ndarray, np.ndarray, float]:
     t = (a * (d2 @ w) - b * (d1 @ w)) / denom
     A, B = p1 + s * d1, p2 + t * d2
     finite_result(np.concatenate([A, B, [s, t]]), "p1, d1, p2 and d2", why="are too large in magnitude")
-    dist = float(np.linalg.norm(A - B))
-    if dist <= 1e-12 * (1 + np.linalg.norm(A)):
+    dist = float(_norm(A - B))
+    if dist <= 1e-12 * (1 + _norm(A)):
         B, dist = A.copy(), 0.0
     return A, B, dist
 
@@ -318,8 +334,8 @@ def intersect_two_planes(plane1, plane2) -> tuple[np.ndarray, np.ndarray]:
     P1, N1 = _plane(plane1, "plane1")
     P2, N2 = _plane(plane2, "plane2")
     v = cross(N1, N2)
-    nv = np.linalg.norm(v)
-    if nv <= 1e-12 * np.linalg.norm(N1) * np.linalg.norm(N2):
+    nv = _norm(v)
+    if nv <= 1e-12 * _norm(N1) * _norm(N2):
         raise ValueError("plane1 and plane2 must not be parallel: parallel planes do not meet in a line")
     # the point on the line closest to the origin: the three planes N1, N2 and v through the origin
     point = intersect_three_planes((P1, N1), (P2, N2), (np.zeros(3), v))
@@ -336,7 +352,7 @@ def intersect_three_planes(plane1, plane2, plane3) -> np.ndarray:
     """
     (P1, N1), (P2, N2), (P3, N3) = (_plane(p, n) for p, n in ((plane1, "plane1"), (plane2, "plane2"), (plane3, "plane3")))
     d = float(np.dot(cross(N1, N2), N3))
-    scale = np.linalg.norm(N1) * np.linalg.norm(N2) * np.linalg.norm(N3)
+    scale = _norm(N1) * _norm(N2) * _norm(N3)
     if abs(d) <= 1e-12 * scale:
         raise ValueError("the three normals must be independent (det(N1, N2, N3) != 0): otherwise two planes are "
                          "parallel or all three share a line, and there is no single common point")
@@ -388,8 +404,8 @@ def nlerp(v0, v1, t) -> np.ndarray:
     _nonzero(b, "v1", "nlerp needs directions")
     tt = as_parameter(t, "t")[..., None]
     chord = (1 - tt) * a + tt * b
-    n = np.linalg.norm(chord, axis=-1, keepdims=True)
-    if np.any(n <= 1e-12 * (np.linalg.norm(a, axis=-1, keepdims=True) + np.linalg.norm(b, axis=-1, keepdims=True))):
+    n = _norm(chord, axis=-1, keepdims=True)
+    if np.any(n <= 1e-12 * (_norm(a, axis=-1, keepdims=True) + _norm(b, axis=-1, keepdims=True))):
         raise ValueError("v0 and v1 must not point in opposite directions: the chord between them passes through "
                          "the origin, which has no direction")
     return chord / n

@@ -32,6 +32,7 @@ import numbers
 import numpy as np
 
 from goldman_lib.validation import as_float_array, as_tolerance, check_finite, finite_result
+from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 
 __all__ = ["Point", "Vector", "affine_combination", "combination_kind", "weighted_sum_from_origin", "dot", "cross",
            "det", "det_cofactor_terms", "length", "angle_between", "dot_from_lengths", "cross_from_geometry",
@@ -62,6 +63,16 @@ def _not_huge(arr: np.ndarray, name: str) -> None:
     with np.errstate(over="ignore", invalid="ignore"):
         sq = np.einsum("...i,...i->...", arr, arr)
     finite_result(sq, name, why="is too large in magnitude (its squared length)")
+
+
+def _moderate(arr: np.ndarray) -> np.ndarray:
+    """``arr`` with each vector scaled by a power of two (exactly) into a range where products of
+    two coordinates neither overflow nor underflow, if any is outside it: for results that depend only
+    on directions (angles)."""
+    m = np.abs(arr).max(axis=-1, keepdims=True)
+    if np.all((m == 0) | ((m > 1e-100) & (m < 1e100))):
+        return arr
+    return arr / np.ldexp(1.0, np.frexp(np.where(m > 0, m, 1.0))[1] - 1)
 
 
 def _scalar(c, name: str) -> float | np.ndarray:
@@ -150,7 +161,7 @@ class Vector(_Affine):
 
     def length(self):
         """The length |v| (Goldman §9.4)."""
-        out = np.linalg.norm(self.coords, axis=-1)
+        out = finite_result(_norm(self.coords, axis=-1), "v")
         return float(out) if out.ndim == 0 else out
 
     def dot(self, other):
@@ -305,7 +316,8 @@ def dot(u, v):
     a, b = _coords(u, "u"), _coords(v, "v")
     if a.shape[-1] != b.shape[-1]:
         raise ValueError(f"u and v must have the same dimension; got {a.shape[-1]} and {b.shape[-1]}")
-    out = np.einsum("...i,...i->...", a, b)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = finite_result(np.einsum("...i,...i->...", a, b), "u and v", why="are too large in magnitude")
     return float(out) if out.ndim == 0 else out
 
 
@@ -318,9 +330,11 @@ def cross(u, v) -> np.ndarray:
     """
     a, b = _vector3(u, "u"), _vector3(v, "v")
     a, b = np.broadcast_arrays(a, b)
-    return np.stack([a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
-                     a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
-                     a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]], axis=-1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = np.stack([a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
+                        a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
+                        a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]], axis=-1)
+    return finite_result(out, "u and v", why="are too large in magnitude")
 
 
 def det(u, v, w):
@@ -330,8 +344,11 @@ def det(u, v, w):
     >>> float(det([1, 0, 0], [0, 2, 0], [0, 0, 3]))
     6.0
     """
-    c = cross(u, v)
-    return dot(c, _vector3(w, "w"))
+    u, v, w = _vector3(u, "u"), _vector3(v, "v"), _vector3(w, "w")
+    try:
+        return dot(cross(u, v), w)
+    except ValueError:
+        raise ValueError("u, v and w are too large in magnitude: the result overflows float64") from None
 
 
 def det_cofactor_terms(u, v, w) -> np.ndarray:
@@ -344,9 +361,11 @@ def det_cofactor_terms(u, v, w) -> np.ndarray:
     """
     a, b, c = _vector3(u, "u"), _vector3(v, "v"), _vector3(w, "w")
     a, b, c = np.broadcast_arrays(a, b, c)
-    return np.stack([a[..., 0] * (b[..., 1] * c[..., 2] - b[..., 2] * c[..., 1]),
-                     -a[..., 1] * (b[..., 0] * c[..., 2] - b[..., 2] * c[..., 0]),
-                     a[..., 2] * (b[..., 0] * c[..., 1] - b[..., 1] * c[..., 0])], axis=-1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = np.stack([a[..., 0] * (b[..., 1] * c[..., 2] - b[..., 2] * c[..., 1]),
+                        -a[..., 1] * (b[..., 0] * c[..., 2] - b[..., 2] * c[..., 0]),
+                        a[..., 2] * (b[..., 0] * c[..., 1] - b[..., 1] * c[..., 0])], axis=-1)
+    return finite_result(out, "u, v and w", why="are too large in magnitude")
 
 
 def length(v):
@@ -357,7 +376,7 @@ def length(v):
     """
     if isinstance(v, Point):
         raise TypeError("a point has no length (Goldman §9.3): take the length of a vector P - Q")
-    out = finite_result(np.linalg.norm(_coords(v, "v"), axis=-1), "v")
+    out = finite_result(_norm(_coords(v, "v"), axis=-1), "v")
     return float(out) if out.ndim == 0 else out
 
 
@@ -370,12 +389,13 @@ def angle_between(u, v):
     45.0
     """
     a, b = _coords(u, "u"), _coords(v, "v")
-    if np.any(np.linalg.norm(a, axis=-1) == 0) or np.any(np.linalg.norm(b, axis=-1) == 0):
+    if np.any(_norm(a, axis=-1) == 0) or np.any(_norm(b, axis=-1) == 0):
         raise ValueError("u and v must be nonzero: the zero vector has no direction")
+    a, b = _moderate(a), _moderate(b)
     if a.shape[-1] == 3 and b.shape[-1] == 3:
-        out = np.degrees(np.arctan2(np.linalg.norm(cross(a, b), axis=-1), np.einsum("...i,...i->...", *np.broadcast_arrays(a, b))))
+        out = np.degrees(np.arctan2(_norm(cross(a, b), axis=-1), np.einsum("...i,...i->...", *np.broadcast_arrays(a, b))))
     else:
-        c = dot(a, b) / (np.linalg.norm(a, axis=-1) * np.linalg.norm(b, axis=-1))
+        c = dot(a, b) / (_norm(a, axis=-1) * _norm(b, axis=-1))
         out = np.degrees(np.arccos(np.clip(c, -1, 1)))
     return float(out) if np.ndim(out) == 0 else out
 
@@ -393,7 +413,7 @@ def dot_from_lengths(u, v):
         raise ValueError(f"u and v must have the same dimension; got {a.shape[-1]} and {b.shape[-1]}")
     _not_huge(a, "u")
     _not_huge(b, "v")
-    la, lb, lab = (np.linalg.norm(x, axis=-1) for x in (a, b, a - b))
+    la, lb, lab = (_norm(x, axis=-1) for x in (a, b, a - b))
     out = finite_result((la ** 2 + lb ** 2 - lab ** 2) / 2, "u and v", why="are too large in magnitude")
     return float(out) if np.ndim(out) == 0 else out
 
@@ -411,16 +431,16 @@ def cross_from_geometry(u, v, normal) -> np.ndarray:
     _not_huge(a, "u")
     _not_huge(b, "v")
     _not_huge(n, "normal")
-    la, lb = np.linalg.norm(a, axis=-1), np.linalg.norm(b, axis=-1)
+    la, lb = _norm(a, axis=-1), _norm(b, axis=-1)
     if np.any(la == 0) or np.any(lb == 0):
         return np.zeros(np.broadcast_shapes(a.shape, b.shape))
     e1 = a / la[..., None]
     b_perp = b - np.einsum("...i,...i->...", b, e1)[..., None] * e1
-    lperp = np.linalg.norm(b_perp, axis=-1)
+    lperp = _norm(b_perp, axis=-1)
     sin = lperp / lb
     e2 = np.where(lperp[..., None] > 0, b_perp / np.where(lperp > 0, lperp, 1)[..., None], 0.0)
     m = n - np.einsum("...i,...i->...", n, e1)[..., None] * e1 - np.einsum("...i,...i->...", n, e2)[..., None] * e2
-    lm = np.linalg.norm(m, axis=-1)
+    lm = _norm(m, axis=-1)
     if np.any((lm == 0) & (sin > 0)):
         raise ValueError("normal must not lie in the plane of u and v: it must say which side is 'up'")
     unit = m / np.where(lm > 0, lm, 1)[..., None]
@@ -436,4 +456,8 @@ def cross_associator(u, v, w) -> np.ndarray:
     [0.0, 1.0, 0.0]
     """
     a, b, c = _vector3(u, "u"), _vector3(v, "v"), _vector3(w, "w")
-    return cross(cross(a, b), c) - cross(a, cross(b, c))
+    try:
+        with np.errstate(over="ignore", invalid="ignore"):
+            return finite_result(cross(cross(a, b), c) - cross(a, cross(b, c)), "u, v and w")
+    except ValueError:
+        raise ValueError("u, v and w are too large in magnitude: the result overflows float64") from None

@@ -17,7 +17,11 @@ and III adds a doctest (or an entry there) and is then fuzzed like the rest.
 Then every parameter, in turn, gets a battery of bad values (NaN, +-inf, +-1e308, 10**12, 0, -1, an
 empty list, a ragged list, a complex number, a string, None, and, for an array, a NaN inside,
 all-equal points, a single point, wrong shapes and complex entries) with the other parameters at the
-example's values.  Each call runs in a worker subprocess with a wall-clock limit of
+example's values.  In Parts II and III (:data:`PART23`) every parameter also gets magnitudes 1e160-1e308
+(where a squared length or a product of two inputs overflows though the input is finite), and every
+object a function or method is given (``self``, a scene, a camera, a light) is rebuilt by its
+constructor with one input at those magnitudes (:func:`huge_objects`): a sphere of radius 1e160, a
+light of intensity 1e300 inside a scene.  Each call runs in a worker subprocess with a wall-clock limit of
 :data:`TIME_LIMIT` seconds and a memory limit (``RLIMIT_AS``, :data:`MEMORY_LIMIT` bytes more than
 the parent uses) and must either return a finite result (no NaN or infinity anywhere in what it
 returns) or raise ``ValueError``/``TypeError`` whose message names the parameter (a
@@ -339,10 +343,23 @@ def _as_array(value):
     return arr if arr.ndim >= 1 and arr.size > 0 else None
 
 
-def battery(value) -> list[tuple[str, object]]:
-    """Bad values for a parameter whose valid value is ``value``."""
-    out = list(GENERIC)
+#: The modules of Parts II and III (chapters 9-23): their parameters also get magnitudes 1e160-1e308, where a
+#: squared length or a product of two inputs overflows although the input itself is finite.
+#: (hidden_surfaces and solid_modeling are not in it yet: a camera with near = 1e160 and an octree of size
+#: 1e160 still fail there; issue 20 section 2 reworks the camera's near plane.)
+PART23 = ("vectors", "vector_geometry", "transforms", "quaternions", "mass_points", "lighting", "ray_tracing",
+          "surfaces", "simple_surfaces", "shading", "radiosity")
+HUGE = [("1e160", 1e160), ("-1e160", -1e160), ("1e200", 1e200), ("3e250", 3e250)]
+
+
+def battery(value, huge: bool = False) -> list[tuple[str, object]]:
+    """Bad values for a parameter whose valid value is ``value``; with ``huge`` (Parts II and III), also
+    magnitudes 1e160-1e308 (scalars, and the valid array scaled by 1e160, 1e200 and 1e300)."""
+    out = list(GENERIC) + (HUGE if huge else [])
     arr = _as_array(value)
+    if huge and arr is not None:
+        for label, k in (("scaled 1e160", 1e160), ("scaled 1e200", 1e200), ("scaled 1e300", 1e300)):
+            out.append((label, arr * k))
     if arr is not None:
         nan_inside = arr.copy()
         nan_inside.flat[-1] = math.nan
@@ -451,10 +468,81 @@ def _call_with(key, param, value):
     return fn(*args, **kwargs)
 
 
+def _call_with_built(key, param, build, baseline):
+    """``_call_with`` with the value of ``param`` built in the worker (a constructor given a huge input
+    may itself refuse it, with a message the judge reads).  The call must be valid with the object
+    built from its constructor's example unchanged (``baseline``): a method example recorded on
+    another instance (a 32-pixel camera) may not fit the constructor's example (a 16-pixel one)."""
+    try:
+        _call_with(key, param, baseline())
+    except Exception:  # noqa: BLE001 - the example does not fit this object: nothing to judge
+        return None
+    return _call_with(key, param, build())
+
+
+def _huge_array_values(value) -> list[tuple[str, object]]:
+    arr = _as_array(value)
+    if isinstance(value, (bool, int, float)) and not isinstance(value, bool):
+        return [(label, v if float(value) >= 0 else -v) for label, v in HUGE if label[0] != "-"]
+    if arr is None:
+        return []
+    return [(label, arr * k) for label, k in (("scaled 1e160", 1e160), ("scaled 1e200", 1e200), ("scaled 1e300", 1e300))]
+
+
+def _class_key(obj) -> str | None:
+    cls = type(obj)
+    if not cls.__module__.startswith("goldman_lib."):
+        return None
+    key = f"{cls.__module__[len('goldman_lib.'):]}.{cls.__name__}"
+    return key if key in FUNCTIONS and key in EXAMPLES else None
+
+
+def _baseline(obj):
+    """A builder of ``obj``'s class from its constructor's example."""
+    cls = FUNCTIONS[_class_key(obj)]
+    args, kwargs = EXAMPLES[_class_key(obj)]
+    return lambda: cls(*copy.deepcopy(args), **copy.deepcopy(kwargs))
+
+
+def huge_objects(obj, depth: int = 0) -> list[tuple[str, str, object]]:
+    """Objects of ``obj``'s class built, by its constructor's example, with one input at magnitudes
+    1e160-1e308 (and, one level down, with such an object among its inputs: a scene whose light is
+    huge): ``[(label, parameter to blame, builder)]``.  A method of an object, or a function given one
+    (``trace(scene, ...)``), must refuse what the object cannot represent, or compute it right."""
+    key = _class_key(obj) if depth <= 1 else None
+    if key is None:
+        return []
+    cls = FUNCTIONS[key]
+    args, kwargs = EXAMPLES[key]
+    bound = inspect.signature(cls).bind(*copy.deepcopy(args), **copy.deepcopy(kwargs))
+    short = key.split(".", 1)[1]
+    out = []
+
+    def builder(p, value):
+        def build():
+            arguments = dict(bound.arguments)
+            arguments[p] = value() if callable(value) and not inspect.isclass(value) and p != "f" else value
+            return cls(**arguments)
+        return build
+
+    for p, value in bound.arguments.items():
+        for label, bad in _huge_array_values(value):
+            out.append((f"{short}({p}={label})", p, builder(p, bad)))
+        inner = value if _class_key(value) else None
+        items = value if isinstance(value, (list, tuple)) and value and _class_key(value[0]) else None
+        for label, blame, build in (huge_objects(inner, depth + 1) if inner is not None else []):
+            out.append((f"{short}({p}={label})", blame, builder(p, build)))
+        for label, blame, build in (huge_objects(items[0], depth + 1) if items is not None else []):
+            out.append((f"{short}({p}=[{label}, ...])", blame,
+                        builder(p, lambda build=build, rest=list(items[1:]): [build(), *rest])))
+    return out
+
+
 def _probe_cases():
     """The issue's adversarial probe, kept: ``(label, call, parameter the message must name)``."""
-    from goldman_lib import (bezier, blossom, bspline, codo, fractals, ifs, knot_insertion,
-                             subdivision_matrices, subdivision_surfaces, turtle)
+    from goldman_lib import (bezier, blossom, bspline, codo, fractals, ifs, knot_insertion, lighting, quaternions,
+                             ray_tracing, simple_surfaces, subdivision_matrices, subdivision_surfaces, transforms,
+                             turtle)
     C = [[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]
     polygon = [[0, 0], [1, 2], [2, 2], [3, 0], [4, 1]]
     knots = [0, 0, 0, 0, 1, 2, 2, 2, 2]
@@ -491,6 +579,19 @@ def _probe_cases():
         ("codo.run('REPEAT 20000 [ REPEAT 20000 [ ] ]')",
          lambda: codo.run("REPEAT 20000 [ REPEAT 20000 [ ] ]"), None),
         ("turtle.circle(1e308)", lambda: turtle.circle(1e308), "radius"),
+        # issue 20 section 4: overflow in Parts II-III (their values are checked in test_bad_input_part23.py)
+        ("transforms.compose(*[scaling(2.0)] * 2000)",
+         lambda: transforms.compose(*[transforms.scaling(2.0)] * 2000), "matrices"),
+        ("simple_surfaces.Sphere((0, 0, 0), 1e160).intersect(...)",
+         lambda: simple_surfaces.Sphere((0, 0, 0), 1e160).intersect([[0, 0, -5]], [[0, 0, 1]]), "radius"),
+        ("bspline.de_boor(knots at ±1e308)",
+         lambda: bspline.de_boor(polygon[:4], [-1e308] * 4 + [1e308] * 4, 3, 0.0), "knots"),
+        ("ray_tracing.trace(light intensity 1e300 x diffuse 1e300)",
+         lambda: ray_tracing.trace(ray_tracing.Scene(
+             [simple_surfaces.Sphere([0, 0, 0], 1, material=lighting.Material(diffuse=1e300))],
+             [lighting.Light((0, 0, 5), intensity=1e300)]), [[0, 0, 5]], [[0, 0, -1]]), "intensity"),
+        ("quaternions.rotate([0, 0, 0, 1e160], [1, 0, 0])",
+         lambda: quaternions.rotate([0, 0, 0, 1e160], [1, 0, 0]), "q"),
     ] + _part3_probes()
 
 
@@ -557,10 +658,16 @@ def _tasks() -> list[tuple[str, str, object]]:
         finite = key not in NONFINITE_BY_CONTRACT and ("inf allowed" if key.rsplit(".", 1)[-1] in INF_BY_CONTRACT
                                                         else True)
         for param in params:
-            for label, value in battery(bound.arguments.get(param)):
+            for label, value in battery(bound.arguments.get(param), huge=key.split(".")[0] in PART23):
                 call = functools.partial(_call_with, key, param, value)
                 tasks.append((key.split(".")[0], f"{key}({param}={label})", call, param,
                               alias if param != "name" else None, finite))
+        if key.split(".")[0] in PART23:     # objects (an instance, a scene, a light) holding a huge input
+            objects = [(p, bound.arguments.get(p)) for p in ["self", *params] if p in bound.arguments]
+            for param, value in objects:
+                for label, blame, build in huge_objects(value):
+                    call = functools.partial(_call_with_built, key, param, build, _baseline(value))
+                    tasks.append((key.split(".")[0], f"{key}({param}={label})", call, blame, param, finite))
     for label, call, param in PROBES:
         tasks.append(("probe", label, call, param, None, True))
     return tasks

@@ -273,8 +273,11 @@ class InteractiveView(widgets.VBox):
 def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping) -> None:
     """Raise ValueError/TypeError naming the control if a value is one its widget cannot hold: a
     number outside a slider's range (or not a finite real number), an option a picker does not
-    offer.  Values set through the widgets always pass; values passed to ``update`` by code (a
-    notebook, a test, a saved state) are checked here before any work starts (issue 10).
+    offer, anything but True or False for a checkbox or toggle, a string that is no colour for a
+    colour picker, anything but a string for a text field (and, for a control of any other kind,
+    a value of another type than its current one).  Values set through the widgets always pass;
+    values passed to ``update`` by code (a notebook, a test, a saved state) are checked here
+    before any work starts (issues 10 and 20).  The message is short whatever the value.
 
     >>> check_control_values({"t": float_slider("t", 0.5, 0.0, 1.0)}, {"t": 2.0})
     Traceback (most recent call last):
@@ -293,6 +296,14 @@ def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping
             _checks.number(value, name, w.min, w.max)
         elif isinstance(w, (widgets.Dropdown, widgets.ToggleButtons, widgets.RadioButtons, widgets.SelectionSlider)):
             _checks.option([v for _, v in _options(w)], value, name)
+        elif isinstance(w, (widgets.Checkbox, widgets.ToggleButton)):
+            _checks.boolean(value, name)
+        elif isinstance(w, widgets.ColorPicker):
+            _checks.colour(value, name)
+        elif isinstance(w, (widgets.Text, widgets.Textarea)):
+            _checks.text(value, name)
+        else:
+            _checks.same_kind(value, getattr(w, "value", None), name)
 
 
 def _checked(update: Callable[..., dict], controls: Mapping[str, widgets.Widget]) -> Callable[..., dict]:
