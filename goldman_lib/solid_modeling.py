@@ -36,7 +36,7 @@ from typing import Callable
 import numpy as np
 
 from goldman_lib.lighting import Material
-from goldman_lib.simple_surfaces import EPS, Sphere, Surface, rays
+from goldman_lib.simple_surfaces import EPS, MAX_COORDINATE, Sphere, Surface, rays
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_int, as_points, as_tolerance, as_float_array,
                                     within_budget)
 
@@ -455,6 +455,12 @@ class Octree:
         test = _inside_function(inside)
         c = as_points(center, "center", ndim=1, dim=3)
         size = as_float(size, "size", positive=True)
+        if size > MAX_COORDINATE or (c.size and np.abs(c).max() > MAX_COORDINATE):
+            # the rule of every surface (simple_surfaces.MAX_COORDINATE): cell volumes size**3 and the
+            # sample points' coordinates stay representable
+            name = "size" if size > MAX_COORDINATE else "center"
+            raise ValueError(f"{name} must be at most {MAX_COORDINATE:g} in magnitude (the octree's volumes "
+                             f"are cubes of its sizes); got {size if name == 'size' else c.tolist()}")
         depth = within_budget(depth, "depth", cost=_octree_cost, what="the octree (every cell split)",
                               unit="sample points")
         min_depth = min(depth, 2) if min_depth is None else as_int(min_depth, "min_depth", minimum=0, maximum=depth)
