@@ -62,7 +62,7 @@ def _non_negative(value, name: str) -> float:
 
 @dataclass(frozen=True)
 class Light:
-    """A point light source (Goldman §16.1): where it is, its colour and its intensity ``I_p``.
+    """A point light source (Goldman §16.4-16.5): where it is, its colour and its intensity ``I_p``.
 
     >>> Light((0, 0, 5)).rgb.tolist()
     [1.0, 1.0, 1.0]

@@ -167,7 +167,7 @@ def _frame(eye, plane_point, normal):
 
 def perspective_mass(points, eye, plane_point, normal) -> np.ndarray:
     """Perspective projection as a mass-point (Goldman §14.4.1): the image of P from eye E onto the
-    plane is the sum of the mass-points ``(P, c)`` and ``(E, s - c)``, that is ``(c (P - E) + s E, s)``,
+    plane is the sum of the mass-points ``(cP, c)`` and ``((s - c)E, s - c)``, that is ``(c (P - E) + s E, s)``,
     with ``s = (P - E)·N`` and ``c = (Q - E)·N``.  By the law of the lever the sum sits on the line EP
     at the balance point of the two masses, which is on the plane.  Points with ``s = 0`` go to
     vectors (points at infinity).

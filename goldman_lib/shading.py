@@ -187,7 +187,7 @@ def _image_size(width, height) -> tuple[int, int]:
 @dataclass(frozen=True)
 class Camera:
     """A pinhole camera: eye, target, up, vertical field of view ``fov`` (degrees), image size and
-    near distance.  Projection is the perspective matrix of Goldman §13.5
+    near distance.  Projection is the perspective matrix of Goldman §13.6.2
     (:func:`goldman_lib.transforms.perspective`, from the eye onto the plane one unit in front of it);
     the plane's point is mapped to pixels (x to the right, y down the rows, pixel (i, j) centred at
     ``(j + 0.5, i + 0.5)``).  Each projected vertex gets a depth ``z = 1 - near / w`` with ``w`` its
@@ -242,7 +242,7 @@ class Camera:
         return 0.5 * self.height / np.tan(np.radians(self.fov) / 2)
 
     def project(self, points) -> np.ndarray:
-        """Screen coordinates of points (Goldman §13.5): ``(n, 4)`` rows ``(x, y, z, w)``, x and y in
+        """Screen coordinates of points (Goldman §13.6.2): ``(n, 4)`` rows ``(x, y, z, w)``, x and y in
         pixels, ``z = 1 - near / w`` the depth the rasteriser compares and ``w`` the distance along
         the view direction (``z < 0`` in front of the near plane, which the rasteriser clips)."""
         P = as_points(points, "points", dim=3)

@@ -198,7 +198,7 @@ def project_perspective(points, eye, plane_point, normal) -> np.ndarray:
 # -- Chapter 13: the same maps as 4x4 matrices --------------------------------------------------------
 
 def translation(v) -> np.ndarray:
-    """The 4x4 matrix of translation by ``v`` (Goldman §13.2): the identity with ``v`` in the last row.
+    """The 4x4 matrix of translation by ``v`` (Goldman §13.3.1): the identity with ``v`` in the last row.
 
     >>> translation([1, 2, 3])[3].tolist()
     [1.0, 2.0, 3.0, 1.0]
@@ -279,7 +279,7 @@ def orthogonal_projection(plane_point, normal) -> np.ndarray:
 
 @_refuses_overflow("eye or plane_point is")
 def perspective(eye, plane_point, normal) -> np.ndarray:
-    """The 4x4 matrix of perspective projection from ``eye`` onto the plane (Goldman §13.5):
+    """The 4x4 matrix of perspective projection from ``eye`` onto the plane (Goldman §13.6.2):
 
         | c I + Nᵀ E    Nᵀ    |        c = (Q - E)·N,  N the unit normal
         | -(Q·N) E    -(E·N)  |
@@ -351,7 +351,7 @@ def apply(points, M) -> np.ndarray:
 @_refuses_overflow("points or M is")
 def homogeneous(points, M) -> np.ndarray:
     """The homogeneous coordinates ``[P 1] @ M`` of the images of points, before the divide
-    (Goldman §13.1, §13.5): the last coordinate is the weight ``w`` that :func:`apply` divides by.
+    (Goldman §13.1, §13.6): the last coordinate is the weight ``w`` that :func:`apply` divides by.
 
     points: (..., 3).  M: (4, 4).  Returns (..., 4).
 

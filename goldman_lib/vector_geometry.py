@@ -368,13 +368,28 @@ def slerp(v0, v1, t) -> np.ndarray:
     the result moves along the great arc at constant speed.  Linear interpolation when θ is 0;
     opposite vectors raise ValueError (the arc between them is not unique).
 
+    v0 and v1 must have the same length r (to a relative 1e-9): the result then stays on the sphere of
+    radius r about the origin.  Vectors of different lengths raise ValueError naming the rule: the
+    formula would return points on no sphere (neither radius, nor a blend of the two), so normalise
+    them first, or interpolate the directions with slerp and the lengths separately.
+
     >>> np.round(slerp([1, 0], [0, 1], 0.5), 12).tolist()
     [0.707106781187, 0.707106781187]
+    >>> np.round(slerp([2, 0], [0, 2], 0.5), 12).tolist()      # equal lengths: on the circle of radius 2
+    [1.414213562373, 1.414213562373]
     """
     a = _vec(v0, "v0")
     b = _vec(v1, "v1", a.shape[-1], like="v0")
     la = _nonzero(a, "v0", "slerp needs directions")
     lb = _nonzero(b, "v1", "slerp needs directions")
+    unequal = np.abs(la - lb) > 1e-9 * np.maximum(la, lb)
+    if np.any(unequal):
+        k = int(np.flatnonzero(np.broadcast_to(unequal, np.broadcast_shapes(np.shape(la), np.shape(lb))))[0])
+        l0, l1 = np.broadcast_to(la, unequal.shape).flat[k], np.broadcast_to(lb, unequal.shape).flat[k]
+        where = "" if unequal.ndim == 0 else f" (at index {k})"
+        raise ValueError(f"v0 and v1 must have the same length for slerp, which moves on a sphere about the origin; "
+                         f"|v0| = {l0:.6g} and |v1| = {l1:.6g}{where}: normalise them, or interpolate the lengths "
+                         f"separately")
     tt = as_parameter(t, "t")[..., None]
     cos = np.clip(_dot(a, b) / (la * lb), -1, 1)[..., None]
     theta = np.arccos(cos)

@@ -305,7 +305,7 @@ def weighted_sum_from_origin(points, weights, origin) -> np.ndarray:
 
 
 def dot(u, v):
-    """The dot product ``Σ u_i v_i`` in rectangular coordinates (Goldman §10.2), vectorised over
+    """The dot product ``Σ u_i v_i`` in rectangular coordinates (Goldman §10.3.1), vectorised over
     leading axes.  Points are refused: the dot product is defined for vectors.
 
     >>> float(dot([1, 2, 3], [4, -5, 6]))

@@ -34,10 +34,11 @@ def test_right_answers_worked_by_hand(name):
     assert r.correct, r
 
 
-def test_rounded_answers_and_the_sign_of_h_are_accepted():
+def test_rounded_answers_are_accepted_and_a_negative_abs_h_is_not():
     assert ch18.check_implicit_normal([0.378, 0.7559, -0.5345]).correct
     assert ch18.check_deformed_normal([0.6882, 0.2294, -0.6882]).correct
-    assert ch18.check_cylinder_curvature([0, -0.2]).correct          # either sign of H
+    r = ch18.check_cylinder_curvature([0, -0.2])                     # |H| asked for: never negative
+    assert r.answered and not r.correct and "cannot be negative" in r.message, r
 
 
 SLIP_MESSAGES = {
@@ -45,7 +46,7 @@ SLIP_MESSAGES = {
     "check_parametric_normal": ["X_v × X_u", "divide it by its length", "middle component"],
     "check_deformed_normal": ["like a tangent", "not transposed", "not inverted", "before normalising"],
     "check_newton_step": ["converges", "added the step", "-X_u"],
-    "check_cylinder_curvature": ["sphere's values", "around the cylinder alone", "product"],
+    "check_cylinder_curvature": ["sphere's values", "around the cylinder alone", "product", "cannot be negative"],
     "check_torus_curvature": ["lost the sign", "R + r cos v", "radians"],
 }
 

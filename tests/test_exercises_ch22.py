@@ -8,7 +8,8 @@ import pytest
 from goldman_lib.exercises import ch22
 
 # Worked by hand:
-# 1. farthest vertices 5, 6, 4.6, 7: paint 3 (7), 1 (6), 0 (5), 2 (4.6).
+# 1. farthest vertices 5, 6, 4.6, 7: paint 3 (7), 1 (6), 0 (5), 2 (4.6).  (Nearest vertices 3, 1, 4, 2
+#    give 2, 0, 3, 1; averages 4, 3, 4.367, 4.5 give 3, 2, 0, 1: three different orders.)
 # 2. depth 1: (3, 0.8) written; (1, 0.6) written; (2, 0.75) no; (0, 0.35) written; (4, 0.35) no (not
 #    strictly nearer); (2, 0.5) no: polygon 0, three writes.
 # 3. the edges crossing y = 3.5 are (9, 2)-(7, 7.5): x = 9 - 2 * 1.5 / 5.5 = 8.454545, and
@@ -26,7 +27,7 @@ RIGHT = {
 }
 
 SLIP_WORDS = {
-    "check_painter_order": ["nearest first", "nearest vertex"],
+    "check_painter_order": ["nearest first", "nearest vertex", "average depth"],
     "check_z_buffer_pixel": ["(<=)", "not every fragment", "last fragment"],
     "check_scan_line_span": ["y = row", "swapped", "whole polygon"],
     "check_split_points": ["midpoints"],
@@ -109,3 +110,13 @@ def test_project_unanswered():
     def starter(tree, eye):
         ...
     assert not ch22.check_bsp_project(starter).answered
+
+
+def test_painter_data_separate_farthest_nearest_and_average():
+    """Exercise 1's depths must give different orders for the three sort keys (and their reverses),
+    or a learner who sorts by one key is told they used another."""
+    depths = ch22.PAINTER_DEPTHS
+    orders = {key.__name__: sorted(range(len(depths)), key=lambda k: -key(depths[k])) for key in (max, min, np.mean)}
+    all_orders = [tuple(o) for o in orders.values()] + [tuple(o[::-1]) for o in orders.values()]
+    assert len(set(all_orders)) == 6, orders
+    assert orders["max"] == RIGHT["check_painter_order"]

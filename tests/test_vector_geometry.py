@@ -93,7 +93,20 @@ def test_slerp_moves_at_constant_angular_speed():
     ang = np.degrees(np.arctan2(v[:, 2], v[:, 0]))
     assert np.allclose(ang, np.linspace(0, 90, 7)) and np.allclose(np.linalg.norm(v, axis=1), 1)
     with pytest.raises(ValueError, match="opposite directions"):
-        vg.slerp([1, 0], [-2, 0], 0.5)
+        vg.slerp([1, 0], [-1, 0], 0.5)
+
+
+def test_slerp_of_equal_lengths_stays_on_their_sphere_and_refuses_unequal_lengths():
+    # equal lengths r = 3: on the circle of radius 3, at the angle t * 90 degrees (closed form, arctan2)
+    v = vg.slerp([3, 0, 0], [0, 0, 3], np.linspace(0, 1, 7))
+    assert np.allclose(np.linalg.norm(v, axis=1), 3)
+    assert np.allclose(np.degrees(np.arctan2(v[:, 2], v[:, 0])), np.linspace(0, 90, 7))
+    # different lengths: the sine weights would give points on no sphere; refused, naming the rule and lengths
+    with pytest.raises(ValueError, match=r"same length.*\|v0\| = 1 and \|v1\| = 2"):
+        vg.slerp([1, 0, 0], [0, 2, 0], 0.5)
+    with pytest.raises(ValueError, match=r"same length.*at index 1"):
+        vg.slerp([[1, 0], [1, 0]], [[0, 1], [0, 1.5]], 0.5)
+    vg.slerp([1, 0], [0, 1 + 1e-12], 0.5)      # rounding-level differences are accepted
 
 
 def _angle_sum_winding(poly, q):

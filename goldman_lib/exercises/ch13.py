@@ -66,11 +66,11 @@ PROBLEMS = {
     "check_composite_matrix": (
         f"Give the 4x4 matrix (row convention) of the map that first translates by {fmt(COMPOSE_SHIFT)} and then "
         f"rotates by {fmt(COMPOSE_ANGLE)} degrees about the z axis (through the origin), as four rows "
-        f"(Goldman §13.6)."),
+        f"(Goldman §13.3; composition)."),
     "check_perspective_image": (
         f"The perspective projection from the eye E = {fmt(PERSP_EYE)} onto the plane z = 0 has the 4x4 matrix "
         f"M = {_rows(transforms.perspective(PERSP_EYE, PERSP_PLANE_POINT, PERSP_NORMAL))} in the row "
-        f"convention. Apply it to P = {fmt(PERSP_POINT)} and give the image point [x, y, z] (Goldman §13.5)."),
+        f"convention. Apply it to P = {fmt(PERSP_POINT)} and give the image point [x, y, z] (Goldman §13.6.2)."),
     "check_point_and_vector": (
         f"The affine map with the 4x4 matrix M = {_rows(AFFINE_MATRIX)} (row convention) is applied to the "
         f"coordinates {fmt(AFFINE_COORDS)}, once read as a point P and once as a vector v. Give "
@@ -212,7 +212,7 @@ def _parts():
 
 
 def check_composite_matrix(answer) -> Result:
-    """Check the matrix of "first translate, then rotate" (Goldman §13.6); recognises the wrong order,
+    """Check the matrix of "first translate, then rotate" (Goldman §13.3, composed); recognises the wrong order,
     the transposed matrix (column convention) and the rotation the other way.
     """
     got, err = _read(answer, "the 4x4 matrix as four rows", (4, 4), "your matrix")
@@ -245,7 +245,7 @@ def _perspective():
 
 
 def check_perspective_image(answer) -> Result:
-    """Check the image of ``PERSP_POINT`` under the perspective matrix (Goldman §13.5); recognises
+    """Check the image of ``PERSP_POINT`` under the perspective matrix (Goldman §13.6.2); recognises
     the homogeneous divide left out, the transposed matrix, and the divide by -w.
 
     >>> check_perspective_image([-10, -20, 0])

@@ -94,8 +94,8 @@ PROBLEMS = {
         f"The eye is E = {_tuple(PERSPECTIVE_EYE)} and the plane of projection passes through Q = "
         f"{_tuple(PERSPECTIVE_PLANE[0])} with normal N = {_tuple(PERSPECTIVE_PLANE[1])}. With c = (Q - E)·N and "
         f"s = (P - E)·N, the perspective image of P = {_tuple(PERSPECTIVE_POINT)} is the sum of the mass-points "
-        f"(P, c) and (E, s - c): mass c at P, mass s - c at E. Compute it by the law of the lever and give the "
-        f"image point [x, y, z] (Goldman §14.4)."),
+        f"(cP, c) and ((s - c)E, s - c), written (mP, m) as in §14.3: mass c at P, mass s - c at E. Compute it "
+        f"by the law of the lever and give the image point [x, y, z] (Goldman §14.4)."),
     "check_pseudodepth": (
         f"The eye is E = {_tuple(DEPTH_EYE)}, looking at the plane through Q = {_tuple(DEPTH_PLANE[0])} with "
         f"normal N = {_tuple(DEPTH_PLANE[1])} (towards the plane). With c = (Q - E)·N and s = (P - E)·N, the "
@@ -337,7 +337,7 @@ def _perspective_answers():
 
 def check_perspective_by_lever(answer) -> Result:
     """Exercise 5: the perspective image of :data:`PERSPECTIVE_POINT` as the sum of the
-    mass-points ``(P, c)`` and ``(E, s - c)`` (Goldman §14.4).  answer: ``[x, y, z]``.
+    mass-points ``(cP, c)`` and ``((s - c)E, s - c)`` (Goldman §14.4).  answer: ``[x, y, z]``.
     """
     got, problem = read_points(answer, "your point", ask="the image point as [x, y, z]")
     if problem is not None:

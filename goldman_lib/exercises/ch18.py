@@ -229,7 +229,8 @@ def check_cylinder_curvature(answer) -> Result:
     """Check [K, |H|], the Gauss and mean curvature of the cylinder of the exercise (Goldman §18.4).
 
     Recognises the sphere's values (1/r^2, 1/r), |H| = 1/r (a principal curvature, not the mean),
-    and K = 1/r^2 with the right H.
+    K = 1/r^2 with the right H, and a negative |H| (an absolute value is never negative: rejected,
+    naming the rule, even when its size is right).
     """
     got, err = _read_vector(answer, "your [K, |H|]", 2, "[K, |H|]")
     if err is not None:
@@ -239,7 +240,9 @@ def check_cylinder_curvature(answer) -> Result:
     H, K = c.curvature(0.3, 0.1)
     expected = np.array([float(K), abs(float(H))])
     tol = 1e-4
-    got = np.array([got[0], abs(got[1])])
+    if got[1] < 0:
+        return wrong("|H| is an absolute value, so it cannot be negative: H itself has a sign that depends on the "
+                     "choice of normal, |H| does not.")
     if _close(got, expected, tol):
         return correct("K = 0 and |H| = 1/(2r): the principal curvatures are 1/r around the cylinder and 0 along it; "
                        "K is their product, H their average.")
@@ -289,7 +292,7 @@ SLIPS = {
     "check_deformed_normal": [[0.68825, 0.68825, 0.22942], [-0.68825, 0.22942, 0.68825], [0.22942, 0.68825, 0.68825],
                               [1, 1 / 3, -1]],
     "check_newton_step": [[2, 0, 0], [0.5, 1, 1], [1.5, 1, 1]],
-    "check_cylinder_curvature": [[0.16, 0.4], [0, 0.4], [0.16, 0.2]],
+    "check_cylinder_curvature": [[0.16, 0.4], [0, 0.4], [0.16, 0.2], [0, -0.2]],
     "check_torus_curvature": [0.2, -0.125, 0.2135],
 }
 

@@ -28,7 +28,9 @@ __all__ = ["PROBLEMS", "SLIPS", "PAINTER_DEPTHS", "FRAGMENTS", "SCAN_POLYGON", "
            "exercise_bsp_tree"]
 
 #: Exercise 1 (§22.2): the depths (distances along the view direction) of each polygon's vertices.
-PAINTER_DEPTHS = ((3.0, 5.0, 4.0), (6.0, 1.0, 2.0), (4.5, 4.6, 4.0), (2.0, 7.0, 2.5))
+#: Chosen so that sorting by the farthest vertex (3, 1, 0, 2), the nearest vertex (2, 0, 3, 1) and the
+#: average depth (3, 2, 0, 1) give three different orders, so the checker can tell each slip apart.
+PAINTER_DEPTHS = ((3.0, 5.0, 4.0), (6.0, 1.0, 2.0), (4.5, 4.6, 4.0), (2.0, 7.0, 4.5))
 #: Exercise 2 (§22.3): fragments arriving at one pixel, in order: (polygon, depth); the buffer starts at 1.
 FRAGMENTS = ((3, 0.8), (1, 0.6), (2, 0.75), (0, 0.35), (4, 0.35), (2, 0.5))
 #: Exercise 3 (§22.4): a polygon in screen coordinates and the scan line (row).
@@ -90,7 +92,8 @@ PROBLEMS = {
 def check_painter_order(answer) -> Result:
     """Check the heedless painter's order, farthest vertex first (Goldman §22.2).
 
-    Recognises nearest first (the reverse) and a sort by each polygon's nearest vertex.
+    Recognises nearest first (the reverse), a sort by each polygon's nearest vertex and a sort by its
+    average depth.
     """
     got, err = _read_list(answer, "your order", len(PAINTER_DEPTHS), "the painting order as a list of polygon numbers")
     if err is not None:
@@ -108,6 +111,10 @@ def check_painter_order(answer) -> Result:
     near = [min(d) for d in PAINTER_DEPTHS]
     if got == sorted(range(len(near)), key=lambda k: -near[k]):
         return wrong("you sorted by each polygon's nearest vertex; the heedless painter sorts by the farthest one.")
+    mean = [sum(d) / len(d) for d in PAINTER_DEPTHS]
+    if got == sorted(range(len(mean)), key=lambda k: -mean[k]):
+        return wrong("you sorted by each polygon's average depth (its centroid); the heedless painter sorts by the "
+                     "farthest vertex.")
     if sorted(got) != list(range(len(far))):
         return wrong("list each polygon number 0-3 exactly once.")
     return wrong("that order is not sorted by the farthest vertex: find each polygon's largest depth, then paint "
@@ -406,7 +413,7 @@ def check_bsp_project(function) -> Result:
 
 
 SLIPS = {
-    "check_painter_order": [[2, 0, 1, 3], [2, 0, 3, 1]],
+    "check_painter_order": [[2, 0, 1, 3], [2, 0, 3, 1], [3, 2, 0, 1]],
     "check_z_buffer_pixel": [[4, 4], [0, 6], [2, 3]],
     "check_scan_line_span": [[1.4545, 8.6364], [8.4545, 1.5455], [1.0, 9.0]],
     "check_split_points": [[[3, 0, 0], [0, 2, 0]]],

@@ -368,7 +368,7 @@ MAPS = {
 
 def composition_view(first="translate by (t, 0, 0)", second="rotate about the vertical line through (1, 0, 0)",
                      angle=90.0, m=1.0, s=1.5, t=1.0) -> InteractiveView:
-    """Two transformations composed in order (Goldman §13.6): the F moved by ``first`` and then by
+    """Two transformations composed in order (our section of chapter 13; the book has none): the F moved by ``first`` and then by
     ``second``, whose matrix in the row convention is ``A @ B`` (:func:`goldman_lib.transforms.compose`),
     beside the F moved in the other order ``B @ A`` (faded).  The three matrices A, B and A B are shown
     as tables, the translation row shaded.  Each map reads its own slider: the angle for the
@@ -410,12 +410,12 @@ def composition_view(first="translate by (t, 0, 0)", second="rotate about the ve
 
     legend = _legend(("F", _GREY), ("first A, then B", COLOURS["image"]), ("first B, then A", COLOURS["w"]))
     return InteractiveView(controls=controls, views=[scene.widget, legend, tables], update=update,
-                           static=scene.to_png, title="composing transformations: first A, then B is A B (§13.6)",
+                           static=scene.to_png, title="composing transformations: first A, then B is A B (ch. 13)",
                            side=True)
 
 
 def perspective_matrix_view(eye=(0.6, -3.6, 1.6), plane_y=-1.2, tilt=0.0, corner=8) -> InteractiveView:
-    """The perspective matrix of Goldman §13.5 (:func:`goldman_lib.transforms.perspective`) at work:
+    """The perspective matrix of Goldman §13.6.2 (:func:`goldman_lib.transforms.perspective`) at work:
     the F projected by ``[P 1] M`` and the homogeneous divide (:func:`goldman_lib.transforms.apply`),
     the matrix shown as a table (its last column, the normal and -E·N, shaded), and for one corner
     of the F its homogeneous coordinates before the divide and its image after it, with its line of
@@ -468,5 +468,5 @@ def perspective_matrix_view(eye=(0.6, -3.6, 1.6), plane_y=-1.2, tilt=0.0, corner
     legend = _legend(("F", _GREY), ("image: [P 1] M, divided by w", COLOURS["image"]), ("the chosen corner", COLOURS["v"]),
                      ("lines of sight", _SIGHT))
     return InteractiveView(controls=controls, views=[scene.widget, legend, table], update=update,
-                           static=scene.to_png, title="the perspective matrix and the homogeneous divide (§13.5)",
+                           static=scene.to_png, title="the perspective matrix and the homogeneous divide (§13.6.2)",
                            side=True)
