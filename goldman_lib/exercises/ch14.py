@@ -156,6 +156,9 @@ def check_center_of_mass(answer) -> Result:
     for why, value in slips.items():
         if np.allclose(got, value, atol=1e-6, rtol=1e-4):
             return wrong(f"your answer {why}")
+    if np.allclose(got, np.r_[right[2], right[:2]], atol=1e-6, rtol=1e-4) and not np.allclose(got, right):
+        return wrong("your numbers are in the order [M, x, y]: the answer is [x, y, M], the centre of mass first "
+                     "and the total mass last.")
     for why, value in slips.items():          # the same slip in the point, with another mass
         if np.allclose(got[:2], value[:2], atol=1e-6, rtol=1e-4):
             return wrong(f"your point {why}")
@@ -451,7 +454,7 @@ def check_depth_order(answer) -> Result:
 
 SLIPS = {
     "check_center_of_mass": [[11 / 6, 1.5, 6], [7 / 3, 1.0, 4], [1 / 3, 13 / 3, 4], [1 / 6, 13 / 6, 4], [1, 13, 4],
-                             [0.25, 3.25, 6]],
+                             [0.25, 3.25, 6], [4, 0.25, 3.25]],
     "check_point_or_vector": [["point", "vector", "point", "point", "point", "vector"],
                               ["vector", "point", "point", "point", "vector", "point"],
                               ["vector", "point", "vector", "vector", "point", "vector"],
