@@ -239,6 +239,9 @@ def _same_answers():
     positive_only = [bool(mp.same_projective_point(a, b)) and float(np.dot(a, b)) > 0 for a, b in TUPLE_PAIRS]
     ignore_w = [bool(mp.same_projective_point(a[:3], b[:3])) for a, b in TUPLE_PAIRS]
     identical = [tuple(a) == tuple(b) for a, b in TUPLE_PAIRS]
+    # the mass-point reading of w = 0: two vectors, equal only if identical (not the projective reading)
+    vectors_apart = [bool(mp.same_projective_point(a, b)) if a[3] != 0 or b[3] != 0 else tuple(a) == tuple(b)
+                     for a, b in TUPLE_PAIRS]
     slips = {
         "you allowed only positive scale factors: (x, y, z, w) and c (x, y, z, w) are the same projective point "
         "for EVERY c ≠ 0, negative too (a mass-point with mass -1 is the same point as with mass 1).": positive_only,
@@ -246,6 +249,9 @@ def _same_answers():
         "proportional, with the same factor (divide by w first when w ≠ 0).": ignore_w,
         "you asked for equal coordinates: that is equality in the space of mass-points (same point AND same mass); "
         "projective space forgets the mass, so proportional tuples are one point.": identical,
+        "you compared the tuples with w = 0 as mass-points, that is as vectors, which are equal only when they are "
+        "identical; in projective space a tuple with w = 0 is a point at infinity, and the same rule holds there: "
+        "proportional tuples (any nonzero factor) are one point.": vectors_apart,
     }
     return right, slips
 
