@@ -59,7 +59,9 @@ def test_same_projective_point():
     _assert_wrong(ch14.check_same_projective_point([False, False, False, True, False]), "positive scale")
     _assert_wrong(ch14.check_same_projective_point([True, True, True, True, True]), "ignored w")
     _assert_wrong(ch14.check_same_projective_point([False] * 5), "space of mass-points")
-    _assert_wrong(ch14.check_same_projective_point([True, False, False, True, False]), "answers not right: 1 of 5")
+    # the key confusion (same mass-point vs same projective point at w = 0) is named, not counted
+    _assert_wrong(ch14.check_same_projective_point([True, False, False, True, False]), "point at infinity")
+    _assert_wrong(ch14.check_same_projective_point([True, True, True, True, False]), "answers not right: 1 of 5")
     _assert_wrong(ch14.check_same_projective_point([1, 0, 1, 1, 0]), "booleans")
 
 

@@ -49,10 +49,12 @@ def test_rounded_answers_are_accepted():
 SLIP_MESSAGES = {
     "check_complex_factor": ["the product", "upside down", "instead of its conjugate", "one by one"],
     "check_quaternion_product": ["that is q p", "lacks the cross product", "adds u·v", "coordinate by coordinate"],
-    "check_rotated_vector": ["twice the angle", "that is q* v q", "q v q:", "not a unit quaternion"],
+    "check_rotated_vector": ["twice the angle", "that is q* v q", "q v q:", "not a unit quaternion", "as if it were radians"],
     "check_conformal_image": ["rotation alone", "scaled by |q|", "that is q* v q", "q v q:"],
-    "check_rotation_matrix": ["transposed matrix", "off-diagonal entries are half", "diagonal entries lack"],
-    "check_slerp_angle": ["longer way round", "half angle", "measured t from q1", "normalised linear interpolation"],
+    "check_rotation_matrix": ["transposed matrix", "off-diagonal entries are half", "diagonal entries lack",
+                              "order (x, y, z, w)"],
+    "check_slerp_angle": ["longer way round", "half angle", "measured t from q1", "normalised linear interpolation",
+                          "as if it were radians"],
     "check_lerp_distortion": ["not a rotation", "the scale factor", "σ^2", "halfway"],
 }
 

@@ -10,6 +10,8 @@ accepted to a relative 1e-4 (2/3 typed as 0.6667 is right).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from goldman_lib import transforms
@@ -141,6 +143,9 @@ def check_rotation_about_point(answer) -> Result:
                      "sin θ (w × v) term, w × v and not v × w.")
     if _close(got, expected - Q):
         return wrong("that is R(P - Q), the rotated vector; the rotated point is Q + R(P - Q).")
+    if _close(got, transforms.rotate(P[None], w, math.degrees(th), point=Q)[0]):
+        return wrong("you took cos and sin of 120 as if it were radians: the angle is in degrees (np.cos and "
+                     "math.cos take radians; convert with np.radians first, cos 120° = -1/2).")
     if _close(got, Q + _rodrigues_unnormalised(P - Q, w, th)):
         return wrong("the axis direction was not normalised: Rodrigues' formula needs the unit vector "
                      "w = (1, 1, 1)/|(1, 1, 1)| in (v·w) w and in w × v.")
@@ -270,6 +275,9 @@ SLIPS = {
         [2, -1, 4],           # the other way: v -> (1, -1, 2)
         [-1, 2, 1],           # Q not added back
         [3 - 3 ** 0.5, 2.5 + 1.5 * 3 ** 0.5, 5.5 - 3 ** 0.5 / 2],   # the axis (1, 1, 1) not normalised
+        list(ROTATE_THROUGH + _rodrigues_unnormalised(ROTATE_POINT - ROTATE_THROUGH,
+                                                      ROTATE_AXIS / np.linalg.norm(ROTATE_AXIS),
+                                                      math.degrees(120.0))),  # 120 taken as radians
     ],
     "check_mirror_point": [
         [3, -1, 1],           # factor 1: the projection

@@ -10,6 +10,8 @@ accepted to a relative 1e-4.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from goldman_lib import transforms
@@ -132,6 +134,9 @@ def check_rotation_block(answer) -> Result:
             if _close(got, transforms.rotation(other, sign * ROT_ANGLE)[:3, :3]):
                 return wrong("that rotates about another coordinate axis: the y axis is the one whose row stays "
                              "(0, 1, 0).")
+    if _close(got, transforms.rotation(ROT_AXIS, math.degrees(ROT_ANGLE))[:3, :3]):
+        return wrong("you took cos and sin of 90 as if it were radians: the angle is in degrees (np.cos and math.cos "
+                     "take radians; convert with np.radians first, cos 90° = 0).")
     if np.isclose(abs(np.linalg.det(got)), 1, atol=1e-3) and not np.allclose(got @ got.T, np.eye(3), atol=1e-3):
         return wrong("the rows of a rotation block are perpendicular unit vectors; yours are not.")
     return _entry(got, L, "your block", "apply Rodrigues' formula (§12.3) to (1, 0, 0), (0, 1, 0), (0, 0, 1) and "
@@ -317,6 +322,7 @@ SLIPS = {
         [[0, 0, 1], [0, 1, 0], [-1, 0, 0]],          # transposed
         [[1, 0, 0], [0, 0, 1], [0, -1, 0]],          # about x
         [[0, 1, 0], [-1, 0, 0], [0, 0, 1]],          # about z
+        [[math.cos(90), 0, -math.sin(90)], [0, 1, 0], [math.sin(90), 0, math.cos(90)]],   # 90 taken as radians
     ],
     "check_translation_row": [
         [1, 0, -3],          # Q L - Q

@@ -156,6 +156,9 @@ def check_center_of_mass(answer) -> Result:
     for why, value in slips.items():
         if np.allclose(got, value, atol=1e-6, rtol=1e-4):
             return wrong(f"your answer {why}")
+    if np.allclose(got, np.r_[right[2], right[:2]], atol=1e-6, rtol=1e-4) and not np.allclose(got, right):
+        return wrong("your numbers are in the order [M, x, y]: the answer is [x, y, M], the centre of mass first "
+                     "and the total mass last.")
     for why, value in slips.items():          # the same slip in the point, with another mass
         if np.allclose(got[:2], value[:2], atol=1e-6, rtol=1e-4):
             return wrong(f"your point {why}")
@@ -236,6 +239,9 @@ def _same_answers():
     positive_only = [bool(mp.same_projective_point(a, b)) and float(np.dot(a, b)) > 0 for a, b in TUPLE_PAIRS]
     ignore_w = [bool(mp.same_projective_point(a[:3], b[:3])) for a, b in TUPLE_PAIRS]
     identical = [tuple(a) == tuple(b) for a, b in TUPLE_PAIRS]
+    # the mass-point reading of w = 0: two vectors, equal only if identical (not the projective reading)
+    vectors_apart = [bool(mp.same_projective_point(a, b)) if a[3] != 0 or b[3] != 0 else tuple(a) == tuple(b)
+                     for a, b in TUPLE_PAIRS]
     slips = {
         "you allowed only positive scale factors: (x, y, z, w) and c (x, y, z, w) are the same projective point "
         "for EVERY c ≠ 0, negative too (a mass-point with mass -1 is the same point as with mass 1).": positive_only,
@@ -243,6 +249,9 @@ def _same_answers():
         "proportional, with the same factor (divide by w first when w ≠ 0).": ignore_w,
         "you asked for equal coordinates: that is equality in the space of mass-points (same point AND same mass); "
         "projective space forgets the mass, so proportional tuples are one point.": identical,
+        "you compared the tuples with w = 0 as mass-points, that is as vectors, which are equal only when they are "
+        "identical; in projective space a tuple with w = 0 is a point at infinity, and the same rule holds there: "
+        "proportional tuples (any nonzero factor) are one point.": vectors_apart,
     }
     return right, slips
 
@@ -451,7 +460,7 @@ def check_depth_order(answer) -> Result:
 
 SLIPS = {
     "check_center_of_mass": [[11 / 6, 1.5, 6], [7 / 3, 1.0, 4], [1 / 3, 13 / 3, 4], [1 / 6, 13 / 6, 4], [1, 13, 4],
-                             [0.25, 3.25, 6]],
+                             [0.25, 3.25, 6], [4, 0.25, 3.25]],
     "check_point_or_vector": [["point", "vector", "point", "point", "point", "vector"],
                               ["vector", "point", "point", "point", "vector", "point"],
                               ["vector", "point", "vector", "vector", "point", "vector"],

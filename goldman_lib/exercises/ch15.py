@@ -206,6 +206,9 @@ def check_rotated_vector(answer) -> Result:
     if _close(got, _sandwich(q, v, q), tol):
         return wrong("that is (the vector part of) q v q: the right side must be the conjugate q*, otherwise the "
                      "result is not even a pure vector.")
+    if _close(got, qt.rotate(qt.from_axis_angle(ROTATION_AXIS, math.degrees(ROTATION_ANGLE)), v), tol):
+        return wrong("you took cos and sin of the angle in degrees as if it were radians: np.cos and math.cos take "
+                     "radians, so convert first (θ/2 = 45°, cos 45° = sin 45° = √2/2).")
     raw = np.r_[math.cos(math.radians(ROTATION_ANGLE) / 2), math.sin(math.radians(ROTATION_ANGLE) / 2) * np.array(ROTATION_AXIS)]
     if _close(got, _sandwich(raw, v, qt.conjugate(raw)), tol):
         return wrong("your q is not a unit quaternion: the axis (1, 0, 1) has length √2, so normalise it to "
@@ -272,6 +275,10 @@ def check_rotation_matrix(answer) -> Result:
     if _close(got, expected.T, tol):
         return wrong("that is the transposed matrix, for column vectors (v' = R v), which is also the matrix of the "
                      "rotation q*: in the row convention v' = v M, the first row is the image of (1, 0, 0).")
+    xyzw = qt.to_matrix((MATRIX_Q[3], MATRIX_Q[0], MATRIX_Q[1], MATRIX_Q[2]))[:3, :3]
+    if _close(got, xyzw, tol) or _close(got, xyzw.T, tol):
+        return wrong("you read q in the order (x, y, z, w): the course writes quaternions (w, x, y, z) = "
+                     "w + x i + y j + z k, the scalar part first (some libraries, scipy among them, put it last).")
     half = expected.copy()
     off = ~np.eye(3, dtype=bool)
     half[off] = expected[off] / 2
@@ -296,6 +303,12 @@ def _z_angle(q) -> float:
     q = np.asarray(q, float)
     ang = math.degrees(2 * math.atan2(q[3], q[0]))
     return (ang + 180.0) % 360.0 - 180.0 if ang != 180.0 else 180.0
+
+
+def _slerp_degrees_as_radians(q0, q1, t):
+    """The slerp weights computed with the angle between q0 and q1 in degrees fed to a radian sine."""
+    th = math.degrees(math.acos(float(np.clip(q0 @ q1, -1, 1))))
+    return (math.sin((1 - t) * th) * q0 + math.sin(t * th) * q1) / math.sin(th)
 
 
 def check_slerp_angle(answer) -> Result:
@@ -327,6 +340,9 @@ def check_slerp_angle(answer) -> Result:
     if abs(value - _z_angle(qt.slerp(q0, q1, 1 - SLERP_T))) <= tol:
         return wrong(f"you measured t from q1: slerp(q0, q1, t) starts at q0 for t = 0, so q0 gets the weight "
                      f"sin((1 - t)θ)/sin θ.")
+    if abs(value - _z_angle(_slerp_degrees_as_radians(q0, -q1, SLERP_T))) <= tol:
+        return wrong("your slerp weights took θ in degrees as if it were radians: sin((1 - t)θ)/sin θ needs θ in "
+                     "radians for np.sin and math.sin (θ, the angle between q0 and -q1, is the half angle).")
     nlerp = qt.normalize((1 - SLERP_T) * q0 - SLERP_T * q1)
     if abs(value - _z_angle(nlerp)) <= tol:
         return wrong("that is normalised linear interpolation: the right arc, but not at constant speed; slerp "
@@ -517,14 +533,23 @@ SLIPS = {
     "check_complex_factor": [[-5, 5], [0.1, -0.7], [-1, 1], [-0.5, 3]],
     "check_quaternion_product": [[7, 2, 6, -1], [7, 3, 1, 1], [-3, 4, -4, 3], [2, -2, 0, -3]],
     "check_rotated_vector": [[0, -2, 1], [0.5 + math.sqrt(2), -math.sqrt(0.5), 0.5 - math.sqrt(2)],
-                             [0.5, 2, -0.5], [-1.5, 0, 3]],
+                             [0.5, 2, -0.5], [-1.5, 0, 3],
+                             # 90 taken as radians: v cos θ + (1 - cos θ)(v·u) u + sin θ (u × v), u = (1, 0, 1)/√2
+                             list(np.array(ROTATION_V) * math.cos(90) + (1 - math.cos(90)) * 0.5 * np.array([1, 0, 1])
+                                  + math.sin(90) * np.cross([1, 0, 1], ROTATION_V) / math.sqrt(2))],
     "check_conformal_image": [[-4 / 9, -7 / 9, 4 / 9], [-4 / 3, -7 / 3, 4 / 3], [4, -7, -4], [0, 9, 0]],
     "check_rotation_matrix": [
         [[-0.28, -0.768, 0.576], [0.768, 0.1808, 0.6144], [-0.576, 0.6144, 0.5392]],
         [[-0.28, 0.384, -0.288], [-0.384, 0.1808, 0.3072], [0.288, 0.3072, 0.5392]],
         [[0.36, 0.768, -0.576], [-0.768, 0.5904, 0.6144], [0.576, 0.6144, 0.7696]],
+        # read as (x, y, z, w): w = 0.64, x = 0.6, y = 0, z = 0.48 (row convention)
+        [[1 - 2 * 0.48 ** 2, 2 * (0.6 * 0 + 0.64 * 0.48), 2 * (0.6 * 0.48 - 0.64 * 0)],
+         [2 * (0.6 * 0 - 0.64 * 0.48), 1 - 2 * (0.6 ** 2 + 0.48 ** 2), 2 * (0 * 0.48 + 0.64 * 0.6)],
+         [2 * (0.6 * 0.48 + 0.64 * 0), 2 * (0 * 0.48 - 0.64 * 0.6), 1 - 2 * 0.6 ** 2]],
     ],
-    "check_slerp_angle": [118.0, 5.0, -30.0, 11.13],
+    "check_slerp_angle": [118.0, 5.0, -30.0, 11.13,
+                          # the weights' angle taken in degrees as radians
+                          _z_angle(_slerp_degrees_as_radians(np.array(SLERP_Q0), -np.array(SLERP_Q1), SLERP_T))],
     "check_lerp_distortion": [0.0, math.sqrt(7) / 4, 0.5625, 0.5],
 }
 
