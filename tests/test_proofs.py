@@ -555,9 +555,9 @@ def test_text_none_and_docstrings(name, monkeypatch):
 def test_a_huge_answer_returns_quickly():
     w, x, y, z, v1, v2, v3 = S("ch15_sandwich_is_pure")
     huge = [(w + x + y + z + v1 + v2 + v3)**60] * 4
-    t0 = time.perf_counter()
+    t0 = time.process_time()     # CPU time: the suite runs beside two browsers
     r = proofs.ch15_sandwich_is_pure(huge)
-    assert time.perf_counter() - t0 < 5 and not r.correct and "too large" in r.message
+    assert time.process_time() - t0 < 5 and not r.correct and "too large" in r.message
 
 
 def test_the_rodrigues_exercise_is_the_real_expansion():

@@ -117,9 +117,9 @@ def test_other_answers_are_explained(answer, words):
     sympy.Mul(*[(x + i * y + z) / (x - i * z + 1) for i in range(14)]),  # inside the bounds, still checked
 ])
 def test_huge_answers_return_quickly(answer):
-    t0 = time.perf_counter()
+    t0 = time.process_time()     # CPU time: the suite runs beside two browsers
     r = check(answer)
-    assert time.perf_counter() - t0 < 8 and r.answered and not r.correct
+    assert time.process_time() - t0 < 8 and r.answered and not r.correct
 
 
 def test_spot_checks_and_simplification_must_both_agree(monkeypatch):
@@ -141,9 +141,9 @@ def test_the_symbolic_step_is_bounded_in_time(monkeypatch):
 
     monkeypatch.setattr(st, "_symbolic_zero", slow)
     monkeypatch.setattr(st, "TIME_LIMIT", 0.3)
-    t0 = time.perf_counter()
+    t0 = time.process_time()     # CPU time: the limit is ITIMER_PROF, CPU time too
     r = check((x + y)**2)
-    assert time.perf_counter() - t0 < 3
+    assert time.process_time() - t0 < 3
     assert not r.correct and "could not confirm" in r.message
 
 

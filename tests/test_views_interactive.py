@@ -80,3 +80,46 @@ def test_display_bundle_has_widget_view_png_fallback_and_short_text():
     assert base64.b64decode(bundle["image/png"]).startswith(PNG_MAGIC)
     assert bundle["text/plain"] == "[interactive view: line; run the notebook to use it]"
     assert figure_png(view.figure).startswith(PNG_MAGIC)
+
+
+def test_covering_corners_meet_every_three_controls_in_every_combination():
+    import itertools
+
+    import numpy as np
+
+    from goldman_lib.views.interactive import covering_corners
+
+    for k in (3, 5, 9, 17):
+        for strength in (2, 3):
+            rows = covering_corners(k, strength)
+            assert rows.shape[1] == k and set(np.unique(rows)) <= {0, 1}
+            for group in itertools.combinations(range(k), strength):
+                assert len({tuple(r[list(group)]) for r in rows}) == 2 ** strength, (k, strength, group)
+    # few rows: far fewer than the 2**17 corners, and deterministic
+    assert len(covering_corners(17)) < 40
+    assert (covering_corners(17) == covering_corners.__wrapped__(17)).all()
+
+
+def test_covering_corners_refuse_bad_sizes():
+    import pytest
+
+    from goldman_lib.views.interactive import covering_corners
+
+    for bad in (-1, 2.5, True):
+        with pytest.raises(ValueError, match="k must be"):
+            covering_corners(bad)
+    with pytest.raises(ValueError, match="strength must be"):
+        covering_corners(5, 7)
+
+
+def test_the_sweep_of_a_view_with_many_controls_reaches_every_triple_of_extremes():
+    import itertools
+
+    import ipywidgets as widgets
+
+    controls = {f"c{i}": widgets.FloatSlider(value=0.5, min=0.0, max=1.0) for i in range(12)}
+    combos = control_grid(controls, n=3)
+    assert len(combos) < 400
+    for group in itertools.combinations(controls, 3):
+        seen = {tuple(c[name] for name in group) for c in combos if all(c[name] in (0.0, 1.0) for name in group)}
+        assert len(seen) == 8, group

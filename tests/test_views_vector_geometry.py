@@ -4,7 +4,6 @@ polygon (also when its points are dragged with the mouse) and slerp beside nlerp
 positions are reported in the status line, never raised."""
 
 import inspect
-import time
 
 import numpy as np
 import pytest
@@ -149,13 +148,3 @@ def test_slerp_view_dots_are_evenly_spaced_and_nlerp_is_not():
     assert "opposite" in r["status"] and view.last_error is None
 
 
-@pytest.mark.parametrize("factory", [vgv.point_plane_view, vgv.skew_lines_view, vgv.three_planes_view,
-                                     vgv.volume_view, vgv.inside_outside_view, vgv.slerp_view])
-def test_callbacks_are_fast_at_the_default_size(factory):
-    view = factory()
-    values = view.values()
-    view.update(**values)
-    start = time.perf_counter()
-    for _ in range(10):
-        view.update(**values)
-    assert (time.perf_counter() - start) / 10 < 0.05

@@ -125,7 +125,7 @@ def test_out_of_range_values_give_a_status_message(factory):
     for name in _swept(view.controls):
         for bad in _bad_values(view.controls[name]):
             values = {**defaults, name: bad}
-            start = time.perf_counter()
+            start = time.process_time()     # CPU time: the suite runs beside two browsers
             raised = False
             try:
                 result = view.update(**values)
@@ -137,7 +137,7 @@ def test_out_of_range_values_give_a_status_message(factory):
                 assert isinstance(result, dict) and result.get("status"), (name, bad)
                 for arr in _finite(result):
                     assert np.all(np.isfinite(arr)), f"{name}={bad!r} drew a non-finite value"
-            elapsed = time.perf_counter() - start
+            elapsed = time.process_time() - start
             assert elapsed < LIMIT, f"update({name}={str(bad)[:40]!r}) took {elapsed:.2f} s"
             huge = isinstance(bad, (int, float)) and not isinstance(bad, bool) and abs(bad) >= 1e6
             if raised or huge:

@@ -36,8 +36,11 @@ class PointDrag:
     ``ax``) draggable; ``on_drag(index, x, y)`` is called for each mouse motion while a point is held.
 
     radius: how close (in display pixels) a press must be to grab a point.  ``enabled`` switches
-    dragging off and on.  :meth:`disconnect` removes the callbacks.
+    dragging off and on.  :meth:`disconnect` removes the callbacks.  ``sliders`` is None, or (set by
+    :func:`drag_sliders`) point k's x and y slider names at index k: the controls a drag moves.
     """
+
+    sliders: list[tuple[str, str]] | None = None
 
     def __init__(self, ax, get_points: Callable[[], np.ndarray], on_drag: Callable[[int, float, float], None],
                  radius: float = 12.0, on_release: Callable[[int], None] | None = None):
@@ -215,6 +218,7 @@ def drag_sliders(view, ax, pairs: Sequence[tuple[str, str]], radius: float = 12.
         view.set_values(**{x_name: _snap(view.controls[x_name], x), y_name: _snap(view.controls[y_name], y)})
 
     drag = PointDrag(ax, points, on_drag, radius=radius)
+    drag.sliders = [(x_name, y_name) for x_name, y_name in pairs]
     view.drag = drag
     return drag
 

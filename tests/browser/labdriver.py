@@ -80,6 +80,62 @@ def wait_for(predicate, timeout: float, interval: float = 0.25, message: str = "
         time.sleep(interval)
 
 
+# -- awaiting in the page --------------------------------------------------------------------------
+# ``page.evaluate("async () => { await ... }")`` hands Chromium a promise that the DevTools protocol
+# holds only weakly; under memory pressure V8 may collect it while the page still works on it, and
+# Playwright fails with "Resulting promise was garbage collected" (seen once in a CI run, in a
+# fixture that awaited ``jupyterapp.restored``).  So nothing here awaits across the protocol: the
+# async work starts in the page, its promise is kept on ``window`` (a strong reference), and the
+# test polls a plain flag until the work has settled.
+_JS_START = """
+([source, arg, key]) => {
+  const store = (window.__goldmanAsync = window.__goldmanAsync || {});
+  const fn = (0, eval)('(' + source + ')');
+  const entry = {done: false};
+  entry.promise = Promise.resolve().then(() => fn(arg)).then(
+    v => { entry.value = v; entry.ok = true; entry.done = true; },
+    e => { entry.error = String((e && e.stack) || e); entry.ok = false; entry.done = true; });
+  store[key] = entry;
+  return true;
+}
+"""
+_JS_SETTLED = """
+(key) => {
+  const store = window.__goldmanAsync;
+  if (!store || !store[key]) return 'lost';
+  return store[key].done ? 'done' : '';
+}
+"""
+_JS_TAKE = """
+(key) => {
+  const e = window.__goldmanAsync[key];
+  delete window.__goldmanAsync[key];
+  return {ok: e.ok, value: e.ok ? e.value : null, error: e.ok ? null : e.error};
+}
+"""
+_async_keys = iter(range(1, 1 << 62))
+
+
+def await_js(page, source: str, arg=None, timeout: float = 120, what: str = "the page's work"):
+    """Run the async JavaScript function ``source`` (``async (arg) => ...``) in ``page`` and return
+    its value, without handing its promise to the DevTools protocol (see above).  A rejection raises
+    RuntimeError with the page's message; a page that navigated away meanwhile raises too."""
+    key = f"k{next(_async_keys)}"
+    page.evaluate(_JS_START, [source, arg, key])
+
+    def settled():
+        state = page.evaluate(_JS_SETTLED, key)
+        if state == "lost":
+            raise RuntimeError(f"the page reloaded or navigated while waiting for {what}")
+        return state == "done"
+
+    wait_for(settled, timeout, interval=0.1, message=what)
+    out = page.evaluate(_JS_TAKE, key)
+    if not out["ok"]:
+        raise RuntimeError(f"{what} failed in the page: {out['error'][:2000]}")
+    return out["value"]
+
+
 # -- JupyterLab --------------------------------------------------------------------------------------
 # Runs code in the current notebook's kernel and returns what it printed.
 _JS_KERNEL = """
@@ -185,15 +241,17 @@ class Lab:
         url, token = self.server["url"], self.server["token"]
         self.page.goto(f"{url}/lab?reset&token={token}", wait_until="domcontentloaded")
         self.page.wait_for_function("() => window.jupyterapp !== undefined", timeout=90_000)
-        self.page.evaluate("async () => { await window.jupyterapp.started; await window.jupyterapp.restored; }")
+        await_js(self.page, "async () => { await window.jupyterapp.started; await window.jupyterapp.restored; }",
+                 timeout=120, what="JupyterLab to start and restore its layout")
 
     def command(self, name: str, args: dict | None = None):
-        return self.page.evaluate("async ([n, a]) => { const r = await window.jupyterapp.commands.execute(n, a || {}); "
-                                  "return (r === undefined || r === null || typeof r !== 'object') ? r : true; }", [name, args])
+        return await_js(self.page, "async ([n, a]) => { const r = await window.jupyterapp.commands.execute(n, a || {}); "
+                        "return (r === undefined || r === null || typeof r !== 'object') ? r : true; }", [name, args],
+                        what=f"the command {name}")
 
     def open(self, relpath: str) -> str:
         """Open a notebook (path relative to the server root) and wait for its kernel."""
-        opened = self.page.evaluate(_JS_OPEN, relpath)
+        opened = await_js(self.page, _JS_OPEN, relpath, what=f"{relpath} to open with its kernel")
         # A deck left running (by a test that failed half-way) would hide most cells.
         if self.page.evaluate("() => !!document.querySelector('.jp-Deck')"):
             self.command("deck:stop")
@@ -205,7 +263,7 @@ class Lab:
     def run_all(self, timeout: float = 240) -> dict:
         """Clear outputs, run every cell, wait until each non-empty code cell has an execution count
         and the kernel is idle (or a cell failed); then wait for widget views to render."""
-        self.page.evaluate(_JS_RUN_ALL)
+        await_js(self.page, _JS_RUN_ALL, what="Run All to start")
         idle_polls = 0
 
         def done():
@@ -226,7 +284,7 @@ class Lab:
     def kernel(self, code: str) -> str:
         """Run ``code`` in the open notebook's kernel (not in a cell) and return what it printed;
         an exception comes back as the text ``ERROR name: message``."""
-        return self.page.evaluate(_JS_KERNEL, code)
+        return await_js(self.page, _JS_KERNEL, code, timeout=120, what="code run in the kernel")
 
     def dom_problems(self) -> list[str]:
         return self.page.evaluate(_JS_DOM_PROBLEMS)

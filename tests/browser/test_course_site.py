@@ -34,6 +34,7 @@ import nbformat
 import pytest
 
 from .conftest import REPO, SCREENSHOTS
+from .labdriver import await_js
 
 pytestmark = pytest.mark.browser
 
@@ -178,7 +179,7 @@ PAGE_FACTS = """async () => {
 def test_site_page(browser_page, site, stem):
     page = browser_page
     outside = _open(page, f"{site['url']}/{stem}.html")
-    facts = page.evaluate(PAGE_FACTS)
+    facts = await_js(page, PAGE_FACTS, what="the page's images and formulas")
     problems: list[str] = []
     if outside:
         problems.append(f"requests outside 127.0.0.1 (the site must work offline): {outside[:5]}")

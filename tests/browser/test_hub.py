@@ -38,7 +38,7 @@ from pathlib import Path
 import pytest
 
 from .conftest import REPO, SCREENSHOTS, _free_port
-from .labdriver import Lab, wait_changed, wait_for, wait_nonblank
+from .labdriver import Lab, await_js, wait_changed, wait_for, wait_nonblank
 
 pytestmark = pytest.mark.browser
 
@@ -229,7 +229,8 @@ def _follow_link(page, hub, learner: str, link: str, lab: bool = True):
     if not lab:
         return
     page.wait_for_function("() => window.jupyterapp !== undefined", timeout=90_000)
-    page.evaluate("async () => { await window.jupyterapp.started; await window.jupyterapp.restored; }")
+    await_js(page, "async () => { await window.jupyterapp.started; await window.jupyterapp.restored; }",
+             what="JupyterLab to start and restore its layout")
 
 
 def _note(learner: str) -> str:
@@ -276,7 +277,7 @@ def test_class_on_one_hub(hub, browser_page):
         (SCREENSHOTS / f"hub-{learner}-editor.png").write_bytes(after)
         assert frac > CHANGE_TOLERANCE, f"{learner}: the IFS map editor's slider changed {frac:.2%} of its picture"
         # the learner writes a note into the chapter's first cell and saves the notebook
-        page.evaluate("""async (note) => {
+        await_js(page, """async (note) => {
             const w = window.__goldmanNotebook;
             const cell = w.content.widgets[0].model.sharedModel;
             cell.setSource(cell.getSource() + '\\n\\n' + note);

@@ -1,7 +1,8 @@
 """Every chapter in real JupyterLab (headless Chromium): it runs without an error, its widgets and
 three.js canvases render (non-blank pixels), moving a slider changes each interactive view,
 moving the light of a view with the light-position control changes its picture, and in every view
-whose points the mouse drags, a real mouse drag moves a point and changes the picture.
+whose points the mouse drags, a real mouse drag moves a point, changes the picture, and the point's
+sliders show its new place (chapter 24's de Casteljau explorer among them).
 
 Screenshots of every canvas and of each view before/after its slider moved are written to
 tests/browser/screenshots/ on every run, so a person can look at what the test saw.
@@ -15,7 +16,7 @@ import numpy as np
 import pytest
 
 from .conftest import SCREENSHOTS, course_notebooks
-from .labdriver import drag_until, pixel_stats, wait_changed, wait_nonblank
+from .labdriver import drag_until, pixel_stats, wait_changed, wait_for, wait_nonblank
 
 pytestmark = pytest.mark.browser
 
@@ -42,6 +43,33 @@ del _goldman_plan
 """
 # Where point K of view UID is now (data coordinates).
 _WHERE = "import json as _json; print(_json.dumps(_IV.find(UID).drag.position(K)))"
+# The label and the readout (as the slider formats it) of the sliders that point K of view UID
+# moves, or null if its drag moves no slider.
+_SLIDERS = """
+import json as _json
+def _goldman_sliders(v, k):
+    names = v.drag.sliders[k] if v.drag.sliders else []
+    out = []
+    for n in names:
+        c = v.controls[n]
+        out.append([c.description, format(c.value, getattr(c, "readout_format", None) or "")])
+    return out or None
+print(_json.dumps(_goldman_sliders(_IV.find(UID), K)))
+del _goldman_sliders
+"""
+# The readout a slider shows in the page, found by its label (exact text) in one view.
+_JS_READOUT = """
+([view, label]) => {
+  for (const s of view.querySelectorAll('.widget-slider')) {
+    const l = s.querySelector('.widget-label');
+    if (l && l.textContent.trim() === label) {
+      const r = s.querySelector('.widget-readout');
+      return r ? (r.value !== undefined && r.tagName === 'INPUT' ? r.value : r.textContent).trim() : null;
+    }
+  }
+  return null;
+}
+"""
 
 # ipympl draws its figure in .jupyter-matplotlib-canvas-div; pythreejs renderers are .jupyter-threejs.
 MPL = ".jupyter-matplotlib-canvas-div"
@@ -159,6 +187,24 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             along, off = drag_until(page, canvas, replan, followed, timeout=45,
                                     on_miss=missed, message=f"point {plan['index']} of view {i} to follow the mouse")
             drag_after, drag_frac = wait_changed(canvas, drag_before, CHANGE_TOLERANCE, timeout=20)
+            # The sliders that place the point show where it went (the mouse and the keyboard drive
+            # the same controls): their readouts in the page read what the kernel holds.
+            sliders = json.loads(lab.kernel(_SLIDERS.replace("UID", uid).replace("K", str(plan["index"]))).strip())
+            if sliders:
+                handle_view = view.element_handle()
+
+                def readouts():
+                    shown = [page.evaluate(_JS_READOUT, [handle_view, label]) for label, _ in sliders]
+                    return shown if shown == [text for _, text in sliders] else None
+
+                try:
+                    wait_for(readouts, 20, interval=0.25, message="the point's sliders to show the drag")
+                except TimeoutError:
+                    shown = [page.evaluate(_JS_READOUT, [handle_view, label]) for label, _ in sliders]
+                    raise AssertionError(f"{rel}: after dragging point {plan['index']} of view {i}, its sliders "
+                                         f"{[label for label, _ in sliders]} read {shown} in the page, not "
+                                         f"{[text for _, text in sliders]} as in the kernel") from None
+                report.append(f"  view {i}: the sliders {', '.join(f'{a} = {b}' for a, b in sliders)} followed the drag")
             (SCREENSHOTS / f"{stem}-view{i}-drag.png").write_bytes(drag_after)
             report.append(f"  view {i}: dragging point {plan['index']} {length:.0f} px moved it {along:.0f} px "
                           f"({off:.1f} px from the mouse) and changed {drag_frac:.1%} of the canvas")
