@@ -10,7 +10,7 @@ wherever the shared folder sits beside the clone).  This file reads it and check
   `scripts/`, in the tests (other than this file) and in README/CONTRIBUTING names a section of
   the book.  Ranges ("§2.2-2.3", "§§8.2–8.5", "§7.2 to 7.3") must have both ends in the book,
   in one chapter, in increasing order; in lists ("§10.3.1, §10.4", "§9.4 and 10.3") every
-  item is checked.
+  item is checked.  "issue 20 §1" names a section of one of the project's issues and is skipped.
 * **Numbered headings.**  A notebook heading that starts with a section number ("## 13.3.1
   Translation") carries the book's title for that number, and the number belongs to the
   notebook's chapter.  "Carries" means: after normalising both sides (HTML tags dropped,
@@ -77,6 +77,7 @@ LIST_SEP = r"\s*(?:,|;|\band\b|\bor\b|&)\s*"
 # A bare list item must be dotted ("§9.4 and 10.3"), so "§2.3, 3 levels" reads as §2.3 alone.
 CITATION = re.compile(
     rf"§§?\s*(?P<first>{NUM})(?P<rest>(?:{RANGE_SEP}§?{NUM}|{LIST_SEP}(?:§§?\s*{NUM}|{DOTTED}))*)")
+ISSUE = re.compile(r"\bissues?\s+\d+(?:'s)?,?\s*$", re.I)
 TOKEN = re.compile(rf"(?P<sep>{RANGE_SEP}|{LIST_SEP})§?§?\s*(?P<num>{NUM})")
 
 
@@ -93,6 +94,8 @@ def citations(text, bare=True):
     ``None`` (the tests and the contributors' guide write "§{chapter}", "§NN.k" as templates)."""
     found = []
     for m in CITATION.finditer(text):
+        if ISSUE.search(text, max(0, m.start() - 24), m.start()):
+            continue  # "issue 20 §1" is a section of one of the project's issues, not of the book
         items = [m.group("first")]
         for t in TOKEN.finditer(m.group("rest")):
             if re.fullmatch(RANGE_SEP, t.group("sep")):
@@ -285,6 +288,7 @@ def test_citations_are_parsed_with_ranges_and_lists():
     assert items_of("§9.3, Appendix B and §2.3, 3 levels") == [["9.3"], ["2.3"]]
     assert items_of("§ 13.6.2") == [["13.6.2"]]
     assert items_of("§§15.3.4-15.3.5 and §16.3-16.6") == [[("15.3.4", "15.3.5"), ("16.3", "16.6")]]
+    assert items_of("(issue 20 §1; issue 17's §2) and §16.5") == [["16.5"]]
     assert items_of("cite §NN.k here") == [[None]]
     assert citations("cite §NN.k here", bare=False) == []
     assert [line for line, _, _ in citations("a\nb §1.2\n\nc §3")] == [2, 4]
