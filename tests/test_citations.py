@@ -32,6 +32,7 @@ matcher are tested first on small inline examples, including wrong numbers, a re
 and headings with the wrong title, so the whole-repository checks can fail.
 """
 
+import functools
 import json
 import re
 import unicodedata
@@ -156,6 +157,60 @@ def check_text(text, where, toc=None, bare=True):
     return failures
 
 
+# A label right after a citation ("# -- §13.5 perspective", a view title "§20.2 CSG by ...") whose
+# first word opens the title of another section of the same chapter names that other section:
+# "§13.5 perspective" is §13.6's, "§10.2 dot product" is §10.3.1's.
+LABEL_SKIP = {"the", "a", "an", "and", "of", "in", "on", "for", "to", "with", "by", "from", "its", "our"}
+
+
+def family(number, toc=None):
+    """The section, its ancestors and its descendants."""
+    toc = TOC if toc is None else toc
+    return [k for k in toc if k == number or k.startswith(number + ".") or number.startswith(k + ".")]
+
+
+def first_word(text):
+    words = [w for w in re.findall(r"[a-z]+", normal_words(text)) if w not in LABEL_SKIP]
+    return words[0] if words else None
+
+
+@functools.lru_cache(maxsize=None)
+def _label_index(number, toc_id):
+    """(stems of the family's title words, {stem of another section's first title word: that section})."""
+    toc = TOC if toc_id == id(TOC) else _TOCS[toc_id]
+    own = family(number, toc)
+    stems = {w[:5] for k in own for w in re.findall(r"[a-z]+", normal_words(toc[k]))}
+    others = {}
+    for k, title in toc.items():
+        if k.split(".")[0] == number.split(".")[0] and k not in own and first_word(title):
+            others.setdefault(first_word(title)[:5], k)
+    return stems, others
+
+
+_TOCS = {}
+
+
+def label_problems(text, toc=None):
+    """(line, citation, label word, other section) for labels that name another section of the chapter."""
+    toc = TOC if toc is None else toc
+    found = []
+    for m in CITATION.finditer(text):
+        if ISSUE.search(text, max(0, m.start() - 24), m.start()):
+            continue
+        items = citations(m.group(0))[0][2]
+        label = re.match(r"[ \t]*:?[ \t]+([A-Za-z][\w -]{0,40})", text[m.end():m.end() + 48])
+        if len(items) != 1 or not isinstance(items[0], str) or items[0] not in toc or not label:
+            continue
+        word, number = first_word(label.group(1)), items[0]
+        if word is None:
+            continue
+        _TOCS.setdefault(id(toc), toc)
+        stems, others = _label_index(number, id(toc))
+        if word[:5] not in stems and word[:5] in others:
+            found.append((text.count("\n", 0, m.start()) + 1, m.group(0).strip(), word, others[word[:5]]))
+    return found
+
+
 # --------------------------------------------------------------------------------------------
 # Numbered headings
 
@@ -163,13 +218,18 @@ SPELLING = [("colour", "color"), ("labell", "label"), ("modell", "model"), ("cen
             ("behaviour", "behavior")]
 
 
-def normal(text):
-    """Letters and digits only, lower case, no accents or HTML tags, the book's spelling."""
+def normal_words(text):
+    """Lower case words without accents or HTML tags (the book's spelling), spaces kept."""
     text = re.sub(r"<[^>]+>", "", text)
     text = unicodedata.normalize("NFKD", text).encode("ascii", "ignore").decode().lower()
     for ours, book in SPELLING:
         text = text.replace(ours, book)
-    return re.sub(r"[^a-z0-9]", "", text)
+    return text
+
+
+def normal(text):
+    """Letters and digits only, lower case, no accents or HTML tags, the book's spelling."""
+    return re.sub(r"[^a-z0-9]", "", normal_words(text))
 
 
 def title_forms(book_title):
@@ -236,11 +296,17 @@ SOURCES = sorted(
     + [ROOT / "README.md", ROOT / "CONTRIBUTING.md"])
 
 
+@functools.lru_cache(maxsize=None)
 def notebook_cells(path):
+    """[(index, cell type, source)] of a notebook's cells (read once per run)."""
     cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
-    for i, cell in enumerate(cells):
-        src = cell.get("source", "")
-        yield i, cell.get("cell_type"), "".join(src) if isinstance(src, list) else src
+    return [(i, cell.get("cell_type"), "".join(src) if isinstance(src, list) else src)
+            for i, cell in enumerate(cells) for src in [cell.get("source", "")]]
+
+
+@functools.lru_cache(maxsize=None)
+def source_text(path):
+    return path.read_text(encoding="utf-8")
 
 
 def chapter_of(path):
@@ -352,6 +418,14 @@ def test_heading_checks_on_examples():
     assert check_headings("## 13.5 Perspective", where, 13)
 
 
+def test_labels_after_citations_on_examples():
+    assert label_problems("# -- §13.5 perspective ----") == [(1, "§13.5", "perspective", "13.6")]
+    assert label_problems('x\ntitle="§10.2 the dot product"') == [(2, "§10.2", "dot", "10.3.1")]
+    assert label_problems("# -- §13.6 perspective\n# -- §13.5 projections\n§10.3.1 dot product") == []
+    assert label_problems("§13.5: orthogonal projection; (§13.5), perspective; §13.3.2 rotation") == []
+    assert label_problems("§16.5 halfway vector, §20.2 CSG by ray classification") == []
+
+
 # --------------------------------------------------------------------------------------------
 # The repository
 
@@ -368,7 +442,7 @@ def test_every_library_benchmark_script_and_test_citation_names_a_section_of_the
     for path in SOURCES:
         # A bare "§" is a template in the tests, scripts and guides ("§{chapter}", "§NN.k").
         bare = rel(path).startswith(("goldman_lib/", "benchmarks/"))
-        failures += check_text(path.read_text(encoding="utf-8"), lambda line, path=path: f"{rel(path)}:{line}",
+        failures += check_text(source_text(path), lambda line, path=path: f"{rel(path)}:{line}",
                                bare=bare)
     assert not failures, report(failures)
 
@@ -380,6 +454,18 @@ def test_every_numbered_notebook_heading_carries_the_book_title():
             if kind == "markdown":
                 failures += check_headings(src, lambda line, i=i: f"{rel(path)} cell {i} line {line}",
                                            chapter_of(path))
+    assert not failures, report(failures)
+
+
+def test_labels_after_citations_name_the_cited_section():
+    """"§13.5 perspective" in a comment header or a view title names §13.6: the label's first word
+    opens another section's title of the chapter and is in no title of the cited section's family."""
+    failures = []
+    places = [(f"{rel(p)} cell {i}", src) for p in NOTEBOOKS for i, _, src in notebook_cells(p)]
+    places += [(rel(p), source_text(p)) for p in SOURCES]
+    for where, text in places:
+        failures += [f"{where} line {line}: '{cited} {word}...': '{word}' is the book's {k} '{TOC[k]}', not "
+                     f"{cited}'s '{TOC[cited.lstrip('§ ')]}'" for line, cited, word, k in label_problems(text)]
     assert not failures, report(failures)
 
 
