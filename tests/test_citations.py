@@ -25,6 +25,12 @@ wherever the shared folder sits beside the clone).  This file reads it and check
   is checked with the words that follow it.  A heading of our own has no number.  The chapter
   title ("# Chapter 13 — ...") is the course's short name for the chapter; only its number is
   checked (it must be the notebook's).
+* **Labels.**  A number can exist and still be the wrong section.  Where a label follows a
+  citation directly (a comment header "# -- §13.5 perspective", a view title "§20.2 CSG by ray
+  classification"), its first word must not open the title of another section of the same chapter
+  while appearing in no title of the cited section, its parents or its subsections: "§13.5
+  perspective" names §13.6, "§10.2 dot product" names §10.3.1.  A few citations that were wrong in
+  this way (issue 18) are pinned in `PINNED`.
 
 Each check collects every failure and reports them all in one assertion (file, line or cell,
 the citation, and what the book has), so one run lists everything to fix.  The parser and the
@@ -174,10 +180,9 @@ def first_word(text):
     return words[0] if words else None
 
 
-@functools.lru_cache(maxsize=None)
-def _label_index(number, toc_id):
-    """(stems of the family's title words, {stem of another section's first title word: that section})."""
-    toc = TOC if toc_id == id(TOC) else _TOCS[toc_id]
+def _label_index(number, toc):
+    """(stems of the title words of the section's family, {stem of the first title word of another
+    section of the chapter: that section})."""
     own = family(number, toc)
     stems = {w[:5] for k in own for w in re.findall(r"[a-z]+", normal_words(toc[k]))}
     others = {}
@@ -187,7 +192,7 @@ def _label_index(number, toc_id):
     return stems, others
 
 
-_TOCS = {}
+_book_label_index = functools.lru_cache(maxsize=None)(lambda number: _label_index(number, TOC))
 
 
 def label_problems(text, toc=None):
@@ -204,8 +209,7 @@ def label_problems(text, toc=None):
         word, number = first_word(label.group(1)), items[0]
         if word is None:
             continue
-        _TOCS.setdefault(id(toc), toc)
-        stems, others = _label_index(number, id(toc))
+        stems, others = _book_label_index(number) if toc is TOC else _label_index(number, toc)
         if word[:5] not in stems and word[:5] in others:
             found.append((text.count("\n", 0, m.start()) + 1, m.group(0).strip(), word, others[word[:5]]))
     return found
