@@ -29,7 +29,7 @@ This module gives:
   ceiling, and the display step of §23.4: radiosities averaged at the vertices for smooth (Gouraud)
   display (:func:`vertex_radiosities`) and mapped to colours (:func:`to_colours`).
 
-The formulation is ours where the book is not at hand: residuals are measured in the max norm, the
+These choices are ours, not the book's: residuals are measured in the max norm, the
 hemi-cube is sampled at cell centres (a ray per cell, which is what projecting the patches and
 keeping the nearest in each cell computes), and the iterations start from ``B = E``.
 

@@ -61,7 +61,7 @@ def _out(x):
     return float(x) if np.ndim(x) == 0 else x
 
 
-# -- §11.2 triangles -------------------------------------------------------------------------------
+# -- §11.2 trigonometric laws: triangles -------------------------------------------------------------
 
 def law_of_cosines(a, b, gamma):
     """The third side ``c`` of a triangle from sides ``a``, ``b`` and the angle ``gamma`` (degrees)

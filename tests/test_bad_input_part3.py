@@ -44,7 +44,7 @@ def raises_fast(call, pattern, seconds=3.0, exc=ValueError):
     return info, time.process_time() - start
 
 
-# -- §2 hidden surfaces: the near plane -----------------------------------------------------------------
+# -- issue 20 §2 hidden surfaces: the near plane --------------------------------------------------------
 
 CAMERA = shading.Camera(eye=(0.0, -7.0, 0.6), target=(0.0, 0.0, 0.1), up=(0.0, 0.0, 1.0), fov=36.0, width=64,
                         height=48, near=0.5)
@@ -199,7 +199,7 @@ def test_the_guard_band_keeps_screen_coordinates_near_the_image_and_every_pixel_
         camera.clip_polygon(P, guard=0.5)
 
 
-# -- §2 hidden surfaces: the work budget -------------------------------------------------------------------
+# -- issue 20 §2 hidden surfaces: the work budget ----------------------------------------------------------
 
 BIG = shading.Camera(eye=(0, -7, 0.6), target=(0, 0, 0.1), up=(0, 0, 1), fov=36, width=1000, height=1000)
 SCREEN_FILLING = [[[-50, k * 0.01, -50], [50, k * 0.01, -50], [50, k * 0.01, 50], [-50, k * 0.01, 50]]
@@ -229,7 +229,7 @@ def test_300_coincident_polygons_are_no_longer_pathological_for_depth_sort():
     assert np.array_equal(r.ids >= 0, hs.z_buffer([square], camera).ids >= 0)
 
 
-# -- §3 solvers: systems without a solution --------------------------------------------------------------
+# -- issue 20 §3 solvers: systems without a solution -----------------------------------------------------
 
 def closed_box(n):
     """n patches that see each other equally, rows of F summing to 1: a closed box."""
@@ -290,7 +290,7 @@ def test_a_tolerance_below_round_off_is_a_stall_not_a_million_iterations(solver)
                 seconds=5.0)
 
 
-# -- §3 budgets: lights, patches, intervals, tree depth ------------------------------------------------------
+# -- issue 20 §3 budgets: lights, patches, intervals, tree depth ---------------------------------------------
 
 def test_3000_lights_are_refused_before_tracing():
     scene = rt.default_scene(lights=[lighting.Light((0, 0, 5 + k * 1e-3)) for k in range(3000)])

@@ -108,7 +108,7 @@ def _far(got, expected, what, hint) -> Result:
     return wrong(f"{what} is {far_off(got, expected)} from where it should be; {hint}.")
 
 
-# -- §13.3 rotation -------------------------------------------------------------------------------------------
+# -- §13.3.2 rotation -----------------------------------------------------------------------------------------
 
 def _rotation():
     return transforms.rotation(ROT_AXIS, ROT_ANGLE, point=ROT_POINT)
@@ -174,7 +174,7 @@ def check_translation_row(answer) -> Result:
     return _far(got, expected, "your row", "Q lies on the axis, so [Q 1] M = [Q 1]: solve Q L + t = Q for t")
 
 
-# -- §13.3 mirror ---------------------------------------------------------------------------------------------
+# -- §13.3.3 mirror image ------------------------------------------------------------------------------------
 
 def check_mirror_matrix(answer) -> Result:
     """Check the 4x4 mirror matrix in the plane x + y = 2 (Goldman §13.3); recognises the projection
@@ -210,7 +210,7 @@ def check_mirror_matrix(answer) -> Result:
                                          "(2 (Q·n) n, 1), the last column (0, 0, 0, 1)")
 
 
-# -- §13.6 composition ------------------------------------------------------------------------------------------
+# -- composition (our formulation: the book has no section on it) ----------------------------------------------
 
 def _parts():
     return transforms.translation(COMPOSE_SHIFT), transforms.rotation([0, 0, 1], COMPOSE_ANGLE)
@@ -243,7 +243,7 @@ def check_composite_matrix(answer) -> Result:
     return _entry(got, M, "your matrix", "multiply the translation matrix by the rotation matrix, in that order")
 
 
-# -- §13.5 perspective ---------------------------------------------------------------------------------------------
+# -- §13.6.2 perspective -------------------------------------------------------------------------------------------
 
 def _perspective():
     return transforms.perspective(PERSP_EYE, PERSP_PLANE_POINT, PERSP_NORMAL)
