@@ -93,8 +93,11 @@ def test_every_dealt_instance_is_well_posed_and_its_slips_are_told_apart(module,
     seen = set()
     for seed in range(SEEDS + 1):
         params = ex.instance(seed)
-        assert ex.instance(seed) == params or _same_params(ex.instance(seed), params), (name, seed)
-        seen.add(repr(sorted(params.items())))
+        assert _same_params(ex.instance(seed), params), f"{name}: seed {seed} deals two different instances"
+        key = repr(sorted(params.items()))
+        if key in seen:
+            continue          # an instance already checked (exercises with few instances repeat them)
+        seen.add(key)
         answer = ex.answer(params)
         assert _finite(answer), f"{name} seed {seed}: the answer is not finite: {answer!r}"
         assert ex.well_posed is None or ex.well_posed(params) is None, (name, seed, ex.well_posed(params))
