@@ -122,9 +122,16 @@ def test_every_dealt_instance_is_well_posed_and_its_slips_are_told_apart(module,
                 f"'{next(k for k, v in messages.items() if v == text)}' get the same message: {r}")
             messages[slip] = text
             given = statement + " " + repr(wrong) + " " + " ".join(str(x) for x in np.ravel(wrong))
-            assert not leaked(r.message, answer, given), (
+            found = [v for v in leaked(r.message, answer, given) if not _small_int(v)]
+            assert not found, (
                 f"{name} seed {seed} {params}: the slip '{slip}' gives the answer away: {r}")
     assert len(seen) >= 2, f"{name}: {SEEDS} seeds deal only one instance"
+
+
+def _small_int(value: float) -> bool:
+    """A small whole number (a coordinate 0, 1, 2 or the "2" of "2x2") is in too many words and data
+    to count as the answer given away (the rule of ``tests/test_exercises_leaks.py`` for docstrings)."""
+    return abs(value - round(value)) <= 1e-9 and abs(value) <= 12
 
 
 def _same_params(a: dict, b: dict) -> bool:

@@ -49,7 +49,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-__all__ = ["Deck", "Exercise", "Steps", "IllPosed", "fresh_seed"]
+__all__ = ["Deck", "Exercise", "Steps", "IllPosed", "fresh_seed", "memo"]
 
 #: Seeds dealt when none is given lie in 1 .. SEED_RANGE - 1 (short enough to read and type).
 SEED_RANGE = 100_000
@@ -57,6 +57,22 @@ SEED_RANGE = 100_000
 
 class IllPosed(RuntimeError):
     """No well-posed instance was found in ``max_tries`` draws (a generator that needs fixing)."""
+
+
+def memo(function):
+    """Cache ``function(params)`` by the instance's parameters (a plain dict): a checker, its slips
+    and its steps ask for the same answer many times.  The results are shared: do not modify them."""
+    cache: dict = {}
+
+    @functools.wraps(function)
+    def cached(params):
+        key = repr(sorted(params.items()))
+        if key not in cache:
+            if len(cache) >= 512:
+                cache.clear()
+            cache[key] = function(params)
+        return cache[key]
+    return cached
 
 
 def fresh_seed() -> int:
