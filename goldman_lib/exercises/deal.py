@@ -253,8 +253,10 @@ class Deck:
             self.set(name, 0)
 
     def button(self, name):
-        """A "Deal another" button for exercise ``name`` with a seed box and the new statement
-        (an ipywidgets box, not displayed).  Its callback is :meth:`deal` (a plain function)."""
+        """A "Deal another" button for exercise ``name``, with a seed box, a "Deal this seed" button
+        and the new statement (an ipywidgets box, not displayed).  Its callbacks are :meth:`set` and
+        :meth:`describe`, plain functions.  In a stored notebook it leaves a small static image of
+        itself and a line of text saying how to deal by keyboard."""
         self._get(name)
         import ipywidgets as widgets   # lazy: the library imports without ipywidgets
 
@@ -274,4 +276,49 @@ class Deck:
 
         again.on_click(lambda _: show(fresh_seed()))
         by_seed.on_click(lambda _: show(int(seed_box.value)))
-        return widgets.VBox([widgets.HBox([again, seed_box, by_seed]), out])
+        box = _deal_box_class()([widgets.HBox([again, seed_box, by_seed]), out])
+        box.keyboard = f"{self.chapter}.deal({name!r})"
+        return box
+
+
+@functools.lru_cache(maxsize=1)
+def _deal_box_class():
+    """The button's box class (built on first use: ipywidgets is imported lazily)."""
+    import base64
+
+    import ipywidgets as widgets
+
+    class DealBox(widgets.VBox):
+        keyboard = ""
+
+        def _repr_mimebundle_(self, **kwargs):
+            data = super()._repr_mimebundle_(**kwargs)
+            data["image/png"] = base64.b64encode(_button_png()).decode("ascii")
+            data["text/plain"] = (f"[Deal another: run the notebook to use the button, or {self.keyboard} "
+                                  f"with an optional seed=]")
+            return data
+
+    return DealBox
+
+
+@functools.lru_cache(maxsize=1)
+def _button_png() -> bytes:
+    """A small picture of the button for static pages (the same for every exercise)."""
+    import io
+
+    import matplotlib
+    from matplotlib.figure import Figure
+    from matplotlib.patches import FancyBboxPatch
+
+    with matplotlib.rc_context({"font.size": 9}):
+        fig = Figure(figsize=(3.6, 0.32), dpi=80)
+        ax = fig.add_axes((0, 0, 1, 1))
+        ax.set_axis_off()
+        for x, w, text in ((0.01, 0.3, "Deal another"), (0.34, 0.28, "seed 0"), (0.65, 0.33, "Deal this seed")):
+            ax.add_patch(FancyBboxPatch((x, 0.12), w, 0.76, boxstyle="round,pad=0,rounding_size=0.05",
+                                                           facecolor="#eeeeee" if x != 0.34 else "white",
+                                                           edgecolor="#999999", transform=ax.transAxes))
+            ax.text(x + w / 2, 0.5, text, ha="center", va="center", transform=ax.transAxes)
+        buf = io.BytesIO()
+        fig.savefig(buf, format="png", metadata={"Software": None})
+    return buf.getvalue()
