@@ -8,7 +8,8 @@
   checker's own tolerance (``same``); each slip fed to the checker is rejected, answered, with a
   message of its own (the messages of the slips differ pairwise, the learner's quoted answer
   removed) that gives neither the answer's numbers away (the rule of ``tests/test_solutions.py``);
-- reproducible: the same seed twice gives the same instance; seed 0 is the stored instance.
+- reproducible: the same seed twice gives the same instance (checked on every tenth seed); seed 0 is
+  the stored instance.
 
 Dealing is per chapter module and reversible: ``chNN.deal(name, seed=0)`` puts the stored instance
 back, and the stored notebooks' outputs do not depend on it (``pytest --nbval-lax course/0[2-6]_*.ipynb``).
@@ -93,7 +94,8 @@ def test_every_dealt_instance_is_well_posed_and_its_slips_are_told_apart(module,
     seen = set()
     for seed in range(SEEDS + 1):
         params = ex.instance(seed)
-        assert _same_params(ex.instance(seed), params), f"{name}: seed {seed} deals two different instances"
+        if seed % 10 == 0:   # (every tenth seed: dealing twice doubles the cost of the draw)
+            assert _same_params(ex.instance(seed), params), f"{name}: seed {seed} deals two different instances"
         key = repr(sorted(params.items()))
         if key in seen:
             continue          # an instance already checked (exercises with few instances repeat them)
@@ -122,7 +124,8 @@ def test_every_dealt_instance_is_well_posed_and_its_slips_are_told_apart(module,
                 f"'{next(k for k, v in messages.items() if v == text)}' get the same message: {r}")
             messages[slip] = text
             given = statement + " " + repr(wrong) + " " + " ".join(str(x) for x in np.ravel(wrong))
-            found = [v for v in leaked(r.message, answer, given) if not _small_int(v)]
+            found = [v for v in leaked(r.message, answer, "") if not _small_int(v)]   # (cheap first pass)
+            found = found and [v for v in leaked(r.message, answer, given) if not _small_int(v)]
             assert not found, (
                 f"{name} seed {seed} {params}: the slip '{slip}' gives the answer away: {r}")
     assert len(seen) >= 2, f"{name}: {SEEDS} seeds deal only one instance"
