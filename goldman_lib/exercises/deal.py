@@ -229,7 +229,16 @@ class Deck:
 
     def deal(self, name, seed: int | None = None) -> None:
         """Deal a new instance of exercise ``name`` (a fresh seed, or ``seed``; 0 is the stored
-        instance) and print its statement and the seed that deals it again."""
+        instance) and print its statement and the seed that deals it again.
+
+        >>> from goldman_lib.exercises import ch02
+        >>> ch02.deal("check_c_curve_commands", seed=7)    # doctest: +ELLIPSIS
+        The C-curve: ... How many turtle commands ... does level 10 execute? (Goldman §2.3)
+        seed 7: ch02.deal('check_c_curve_commands', seed=7) gives it again; check your answer with ...
+        >>> ch02.deal("check_c_curve_commands", seed=0)    # doctest: +ELLIPSIS
+        The C-curve: ... does level 6 execute? (Goldman §2.3)
+        seed 0: the stored instance; ch02.deal('check_c_curve_commands') deals another; ...
+        """
         seed = fresh_seed() if seed is None else _seed(seed)
         self.set(name, seed)
         print(self.describe(name))
