@@ -185,5 +185,9 @@ def test_the_button_deals_through_the_same_function():
     seed_box.value = 77
     by_seed.click()
     assert ch02.current("check_star_angle")[0] == 77
+    text = ch02.DECK.describe("check_star_angle")      # what the button prints (its Output needs a kernel)
+    assert ch02.PROBLEMS["check_star_angle"] in text and "seed 77: ch02.deal('check_star_angle', seed=77)" in text
     again.click()
-    assert ch02.current("check_star_angle")[0] == seed_box.value != 77 or seed_box.value == 77
+    assert ch02.current("check_star_angle")[0] == seed_box.value > 0
+    bundle = box._repr_mimebundle_()
+    assert "image/png" in bundle and "ch02.deal('check_star_angle')" in bundle["text/plain"]
