@@ -31,6 +31,11 @@ and fails if a message gives the expected value away).  A right answer may confi
 solutions are not printed by code: they sit in collapsed ``<details>`` blocks of the notebook
 (``tests/test_solutions.py`` runs their code and checks each one passes its checker), and the
 programming projects' checker is :mod:`goldman_lib.exercises.projects`.
+
+Numeric exercises deal new instances (issue 17 §3): a chapter registers them on a
+:class:`goldman_lib.exercises.deal.Deck`, whose module-level checkers check the current instance;
+``chNN.deal("check_...")`` deals another, ``chNN.steps("check_...")`` shows its worked steps, and seed 0
+is the stored instance.
 """
 
 from __future__ import annotations

@@ -13,17 +13,19 @@ A + C does not run: line 1, column 3, at '+': A + C is neither a point nor a vec
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
 
 from goldman_lib import codo
 from goldman_lib.exercises import far_off, guard_checkers, quote, clip
+from goldman_lib.exercises.deal import Deck, memo
 from goldman_lib.exercises import (Result, correct, fmt, is_unanswered, off_by, read_number, read_points,
                                    unanswered, wrong)
 
 __all__ = ["PROBLEMS", "SLIPS", "HEXAGON_SIDES", "PARALLELOGRAM_TRIPLES", "TYPE_EXPRESSIONS", "IMAGE_SRC",
-           "IMAGE_DST", "UNIT_SQUARE", "TURTLE_DOTS", "SEGMENT_TOL",
+           "IMAGE_DST", "UNIT_SQUARE", "TURTLE_DOTS", "SEGMENT_TOL", "DECK", "deal", "steps", "current", "deal_button",
            "check_hexagon_program", "check_parallelogram_vertex", "check_expression_types",
            "check_image_program", "check_sheared_turn", "check_turtle_through_dots", "segments_of"]
 
@@ -48,29 +50,6 @@ def _pts(points) -> str:
     return ", ".join(fmt(p) for p in points)
 
 
-PROBLEMS = {
-    "check_hexagon_program": (
-        f"Write a CODO program that draws the regular hexagon with centre (0, 0) and a vertex at (1, 0): its "
-        f"{HEXAGON_SIDES} sides and nothing else (Goldman §5.2.2). Dots are compared to 1e-4, so sqrt(3)/2 or "
-        f"decimals to four places are both fine."),
-    "check_parallelogram_vertex": (
-        "A, B, C are three consecutive vertices of the parallelogram ABCD. Write a CODO expression in A, B and C "
-        "for the fourth vertex D (Goldman §5.2.1: affine combinations)."),
-    "check_expression_types": (
-        "P, Q, R are points and v is a vector. For each expression say whether it is a 'point', a 'vector' or "
-        "'illegal': " + ", ".join(TYPE_EXPRESSIONS) + ". Answer with a dict {expression: word} (Goldman §5.2.1)."),
-    "check_image_program": (
-        f"Write a CODO program that draws the image of the unit square {_pts(UNIT_SQUARE)} under the affine map "
-        f"sending {_pts(IMAGE_SRC)} to {_pts(IMAGE_DST)} (Goldman §5.2, §4.7.3)."),
-    "check_sheared_turn": (
-        "The turtle draws the unit square with REPEAT 4 [FORWARD 1 TURN 90]. Its image under the shear "
-        "(x, y) -> (x + y, y) is the parallelogram (0, 0), (1, 0), (2, 1), (1, 1). By how many degrees must a turtle "
-        "that has just drawn the side from (0, 0) to (1, 0) TURN at (1, 0) to draw the next side (Goldman §5.1)?"),
-    "check_turtle_through_dots": (
-        f"A turtle stands at {fmt(TURTLE_DOTS[0])} heading along (1, 0). Which TURN and FORWARD commands make it "
-        f"draw the polyline {_pts(TURTLE_DOTS)}? Answer [turn 1, forward 1, turn 2, forward 2], angles in degrees "
-        f"counterclockwise, to 0.01 degree (Goldman §5.1)."),
-}
 
 
 # -- drawings, compared segment by segment within a tolerance ------------------------------------
@@ -275,14 +254,83 @@ def check_expression_types(answer) -> Result:
                    f"0 (vector) or something else (illegal).")
 
 
-def _image_square() -> np.ndarray:
+DECK = Deck("ch05")
+
+
+def _ints(rng, lo, hi, size):
+    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
+
+
+def _connect(points) -> str:
+    """A CODO program that connects ``points`` and closes the polygon."""
+    pts = [tuple(float(c) for c in q) for q in points]
+    return "CONNECT " + ", ".join(f"point({fmt(x, 12)}, {fmt(y, 12)})" for x, y in pts + pts[:1])
+
+
+@functools.lru_cache(maxsize=1024)
+def _program_segments(text: str) -> tuple:
+    return tuple(_segment_list(codo.run(text)))
+
+
+def _same_drawing(a: str, b: str) -> bool:
+    """Whether two CODO programs draw the same segments (within SEGMENT_TOL), both ways."""
+    da, db = _program_segments(a), _program_segments(b)
+    return len(da) == len(db) and all(any(_gap(e, d) <= SEGMENT_TOL for d in db) for e in da)
+
+
+# -- exercise 4: the image of the unit square -----------------------------------------------------
+
+_STORED_IMAGE = {"dst": IMAGE_DST}
+
+
+@memo
+def _image_square(p) -> np.ndarray:
     from goldman_lib import affine
-    return affine.apply(np.array(UNIT_SQUARE), affine.affine_from_points(IMAGE_SRC, IMAGE_DST))
+    return affine.apply(np.array(UNIT_SQUARE), affine.affine_from_points(IMAGE_SRC, p["dst"]))
 
 
-def check_image_program(answer) -> Result:
+def _image_guess(dst) -> np.ndarray:
+    dst = np.array(dst, dtype=float)
+    return np.array([dst[0], dst[1], np.array([dst[1][0], dst[2][1]]), dst[2]])
+
+
+def _image_slips(p) -> dict:
+    return {"the square itself": _connect(UNIT_SQUARE), "the image of the triangle": _connect(p["dst"]),
+            "the fourth corner read off": _connect(_image_guess(p["dst"]))}
+
+
+def _image_generate(rng) -> dict:
+    return {"dst": tuple(_ints(rng, -3, 4, 2) for _ in range(3))}
+
+
+def _image_ok(p):
+    B = np.array(p["dst"])
+    if abs(np.linalg.det(B[1:] - B[0])) < 0.5:
+        return "the image points are collinear: the map is singular"
+    return None
+
+
+def _image_statement(p) -> str:
+    return (f"Write a CODO program that draws the image of the unit square {_pts(UNIT_SQUARE)} under the affine map "
+            f"sending {_pts(IMAGE_SRC)} to {_pts(p['dst'])} (Goldman §5.2, §4.7.3).")
+
+
+def _image_steps(p) -> str:
+    Q = np.array(p["dst"])
+    four = Q[1] + Q[2] - Q[0]
+    return (f"1. The map sends (0, 0), (1, 0), (0, 1) to Q1, Q2, Q3 = {_pts(Q)}.\n"
+            f"2. (1, 1) = (1, 0) + (0, 1) - (0, 0) is an affine combination, so its image is Q2 + Q3 - Q1 = "
+            f"{fmt(four)}.\n"
+            f"3. One program: `{_connect([Q[0], Q[1], four, Q[2]])}` (or in CODO: M = affine(...); DRAW M(square)).")
+
+
+@DECK.exercise(stored=_STORED_IMAGE, generate=_image_generate, answer=lambda p: _connect(_image_square(p)),
+               slips=_image_slips, statement=_image_statement, steps=_image_steps, same=_same_drawing,
+               well_posed=_image_ok)
+def check_image_program(answer, p) -> Result:
     """Exercise 4: a CODO program that draws the image of :data:`UNIT_SQUARE` under the affine map
-    sending :data:`IMAGE_SRC` to :data:`IMAGE_DST` (Goldman §5.2, §4.7.3).  answer: program text.
+    sending :data:`IMAGE_SRC` to the statement's three points (Goldman §5.2, §4.7.3).  answer:
+    program text.
     """
     lines, problem = _run(answer, "a CODO program (in quotes) that draws the image of the square")
     if problem is not None:
@@ -290,25 +338,73 @@ def check_image_program(answer) -> Result:
     drawn = _segment_list(lines)
 
     def same(vertices):
-        exp = _polygon(vertices)
-        return len(drawn) == len(exp) and all(any(_gap(e, d) <= SEGMENT_TOL for d in drawn) for e in exp)
+        exp = _polygon(vertices)      # both ways: a degenerate guess's segments may all be sides of the answer
+        return (all(any(_gap(e, d) <= SEGMENT_TOL for d in drawn) for e in exp)
+                and all(any(_gap(d, e) <= SEGMENT_TOL for e in exp) for d in drawn))
 
-    dst = np.array(IMAGE_DST)
+    dst = np.array(p["dst"])
     if same(UNIT_SQUARE):
         return wrong("that is the square itself: apply the map to it, as M(F) for a figure F.")
     if same(dst):
         return wrong("that is the image of the triangle (0, 0), (1, 0), (0, 1); the square has a fourth corner, "
                      "(1, 1), and its image is needed too.")
-    guesses = [np.array([dst[0], dst[1], np.array([dst[1][0], dst[2][1]]), dst[2]])]
-    if any(same(g) for g in guesses):
+    if same(_image_guess(dst)):
         return wrong("the image of (1, 1) is not a corner you can read off: an affine map keeps the square a "
                      "parallelogram, so it is Q1 + (Q2 - Q1) + (Q3 - Q1).")
-    return _compare(lines, _polygon(_image_square()), "the image of the square",
+    return _compare(lines, _polygon(_image_square(p)), "the image of the square",
                     "the images of (0, 0), (1, 0), (0, 1) are given; (1, 1) = (1, 0) + (0, 1) - (0, 0) goes to the "
                     "same combination of the images")
 
 
-def check_sheared_turn(answer) -> Result:
+# -- exercise 5: the turn of a sheared square -----------------------------------------------------
+
+def _shear_text(k: float) -> str:
+    if k == 1:
+        return "x + y"
+    if k == -1:
+        return "x - y"
+    return f"x {'+' if k > 0 else '-'} {fmt(abs(k))}y"
+
+
+def _corner(k: float) -> str:
+    return f"({fmt(1 + k)}, 1)"
+
+
+def _shear_answer(p) -> float:
+    return math.degrees(math.atan2(1.0, p["k"]))
+
+
+def _shear_slips(p) -> dict:
+    right = _shear_answer(p)
+    return {"the square's turn": 90.0, "the interior angle": 180.0 - right, "clockwise": -right,
+            "radians": math.radians(right)}
+
+
+def _same_turn(a, b) -> bool:
+    d = (float(a) - float(b)) % 360.0
+    return min(d, 360.0 - d) <= 0.01 or abs(float(a) - float(b)) <= 1e-3
+
+
+def _shear_statement(p) -> str:
+    k = p["k"]
+    return (f"The turtle draws the unit square with REPEAT 4 [FORWARD 1 TURN 90]. Its image under the shear "
+            f"(x, y) -> ({_shear_text(k)}, y) is the parallelogram (0, 0), (1, 0), {_corner(k)}, ({fmt(k)}, 1). By "
+            f"how many degrees must a turtle that has just drawn the side from (0, 0) to (1, 0) TURN at (1, 0) to "
+            f"draw the next side (Goldman §5.1)?")
+
+
+def _shear_steps(p) -> str:
+    k = p["k"]
+    return (f"1. The next side goes from (1, 0) to {_corner(k)}: its direction is ({fmt(k)}, 1).\n"
+            f"2. The turtle arrives heading along (1, 0), at 0 degrees; the new heading is atan2(1, {fmt(k)}) = "
+            f"{fmt(_shear_answer(p))} degrees.\n"
+            f"3. TURN is the change of heading: {fmt(_shear_answer(p))} degrees (counterclockwise).")
+
+
+@DECK.exercise(stored={"k": 1.0}, generate=lambda rng: {"k": float(rng.choice([2.0, 3.0, 0.5, -1.0, -2.0, -0.5, 1.0]))},
+               answer=_shear_answer, slips=_shear_slips, statement=_shear_statement, steps=_shear_steps,
+               same=_same_turn)
+def check_sheared_turn(answer, p) -> Result:
     """Exercise 5: the turtle's TURN at ``(1, 0)`` for the sheared square (Goldman §5.1: the
     turtle cannot draw the affine image of its drawing by changing only its initial state).
 
@@ -320,17 +416,19 @@ def check_sheared_turn(answer) -> Result:
     if problem is not None:
         return problem
     r = a % 360.0
-    right = math.degrees(math.atan2(1.0, 1.0))
+    right = _shear_answer(p)
+    corner = _corner(p["k"])
 
     def near(x):
-        return min(abs(r - x), 360.0 - abs(r - x)) <= 0.01
+        d = (r - x) % 360.0
+        return min(d, 360.0 - d) <= 0.01
 
     if near(right):
         return correct(f"the turtle turns by {fmt(right)} degrees at (1, 0). The program itself must change, not only "
                        f"the turtle's initial state: affine maps do not preserve angles.")
     if near(90.0):
-        return wrong("90 degrees is the square's turn; the shear changes the angles, which is exactly why the turtle "
-                     "program has to change: find the direction of the side from (1, 0) to (2, 1).")
+        return wrong(f"90 degrees is the square's turn; the shear changes the angles, which is exactly why the turtle "
+                     f"program has to change: find the direction of the side from (1, 0) to {corner}.")
     if near(180.0 - right):
         return wrong(f"{fmt(a)} degrees is the interior angle of the parallelogram at (1, 0); the turtle turns by the "
                      f"exterior angle, 180 minus the interior one.")
@@ -339,11 +437,17 @@ def check_sheared_turn(answer) -> Result:
     if abs(a - math.radians(right)) <= 1e-3:
         return wrong(f"{fmt(a)} looks like radians; TURN takes degrees.")
     return wrong(f"{what} is {off_by(r if r <= 180 else r - 360, right)}. Hint: the turtle arrives heading "
-                 f"along (1, 0); it must turn to the direction of the side from (1, 0) to (2, 1).")
+                 f"along (1, 0); it must turn to the direction of the side from (1, 0) to {corner}.")
 
 
-def _turtle_answer() -> np.ndarray:
-    P = np.array(TURTLE_DOTS)
+# -- exercise 6: turtle commands through three dots ------------------------------------------------
+
+_STORED_DOTS = {"dots": TURTLE_DOTS}
+
+
+@memo
+def _turtle_answer(p) -> np.ndarray:
+    P = np.array(p["dots"])
     seg = np.diff(P, axis=0)
     headings = np.degrees(np.arctan2(seg[:, 1], seg[:, 0]))
     turns = np.diff(np.concatenate([[0.0], headings]))
@@ -351,9 +455,74 @@ def _turtle_answer() -> np.ndarray:
     return np.array([turns[0], np.hypot(*seg[0]), turns[1], np.hypot(*seg[1])])
 
 
-def check_turtle_through_dots(answer) -> Result:
+def _dots_slips(p) -> dict:
+    right = _turtle_answer(p)
+    seg = np.diff(np.array(p["dots"]), axis=0)
+    d = seg[0]
+    heading2 = math.degrees(math.atan2(seg[1][1], seg[1][0]))
+
+    def with_(k, v):
+        out = right.copy()
+        out[k] = v
+        return out
+    return {"atan of |dy/dx|": with_(0, math.degrees(math.atan(abs(d[1] / d[0])))),
+            "atan(dy/dx)": with_(0, math.degrees(math.atan(d[1] / d[0]))),
+            "radians": with_(0, math.radians(right[0])),
+            "|dx| + |dy|": with_(1, abs(d[0]) + abs(d[1])),
+            "the squared length": with_(1, float(d @ d)),
+            "the heading, not the turn": with_(2, heading2),
+            "the turn the wrong way": with_(2, -right[2])}
+
+
+def _same_commands(a, b) -> bool:
+    a, b = np.asarray(a, float), np.asarray(b, float)
+
+    def angle_ok(x, y):
+        d = (x - y) % 360.0
+        return min(d, 360.0 - d) <= 0.01 or abs(x - y) <= 1e-3
+    return (angle_ok(a[0], b[0]) and angle_ok(a[2], b[2]) and abs(a[1] - b[1]) <= 1e-3
+            and abs(a[3] - b[3]) <= 1e-3)
+
+
+def _dots_generate(rng) -> dict:
+    P0 = _ints(rng, -3, 3, 2)
+    d1 = (-float(rng.integers(1, 6)), float(rng.integers(1, 6)))
+    d2 = _ints(rng, -5, 5, 2)
+    P1 = (P0[0] + d1[0], P0[1] + d1[1])
+    return {"dots": (P0, P1, (P1[0] + d2[0], P1[1] + d2[1]))}
+
+
+def _dots_ok(p):
+    t2 = _turtle_answer(p)[2]
+    if not 20 <= t2 <= 160:
+        return "the second turn is not a clear left bend (the messages say the polyline bends left)"
+    return None
+
+
+def _dots_statement(p) -> str:
+    dots = p["dots"]
+    return (f"A turtle stands at {fmt(dots[0])} heading along (1, 0). Which TURN and FORWARD commands make it "
+            f"draw the polyline {_pts(dots)}? Answer [turn 1, forward 1, turn 2, forward 2], angles in degrees "
+            f"counterclockwise, to 0.01 degree (Goldman §5.1).")
+
+
+def _dots_steps(p) -> str:
+    P = np.array(p["dots"])
+    seg = np.diff(P, axis=0)
+    h = np.degrees(np.arctan2(seg[:, 1], seg[:, 0]))
+    r = _turtle_answer(p)
+    return (f"1. The segments are {fmt(seg[0])} and {fmt(seg[1])}; their headings are atan2(dy, dx) = "
+            f"{fmt(h[0])} and {fmt(h[1])} degrees.\n"
+            f"2. turn 1 = {fmt(h[0])} - 0 = {fmt(r[0])}; forward 1 = sqrt(dx^2 + dy^2) = {fmt(r[1])}.\n"
+            f"3. turn 2 = {fmt(h[1])} - {fmt(h[0])} = {fmt(r[2])} (mod 360, between -180 and 180); forward 2 = "
+            f"{fmt(r[3])}.")
+
+
+@DECK.exercise(stored=_STORED_DOTS, generate=_dots_generate, answer=_turtle_answer, slips=_dots_slips,
+               statement=_dots_statement, steps=_dots_steps, same=_same_commands, well_posed=_dots_ok)
+def check_turtle_through_dots(answer, p) -> Result:
     """Exercise 6: the turtle commands ``[turn 1, forward 1, turn 2, forward 2]`` that draw the
-    polyline :data:`TURTLE_DOTS` from the first dot, heading ``(1, 0)`` (Goldman §5.1: the turtle
+    polyline of the statement from its first dot, heading ``(1, 0)`` (Goldman §5.1: the turtle
     needs arc tangents and square roots to connect dots).  Turns are compared modulo 360 to 0.01
     degree, distances to 1e-3.
     """
@@ -363,8 +532,8 @@ def check_turtle_through_dots(answer) -> Result:
         return problem
     if got.shape != (4,):
         return wrong(f"give four numbers [turn 1, forward 1, turn 2, forward 2]; yours has shape {got.shape}.")
-    right = _turtle_answer()
-    P = np.array(TURTLE_DOTS)
+    right = _turtle_answer(p)
+    P = np.array(p["dots"])
     seg = np.diff(P, axis=0)
     headings = np.degrees(np.arctan2(seg[:, 1], seg[:, 0]))
 
@@ -390,8 +559,9 @@ def check_turtle_through_dots(answer) -> Result:
     if not turns_ok[0]:
         d = seg[0]
         if angle_ok(got[0], math.degrees(math.atan(abs(d[1] / d[0])))):
-            return wrong("turn 1 is the arc tangent of 3/4 without its quadrant: the segment goes left (x decreases), "
-                         "so its heading is between 90 and 180 degrees; use atan2(dy, dx).")
+            return wrong(f"turn 1 is the arc tangent of {fmt(abs(d[1]))}/{fmt(abs(d[0]))} without its quadrant: the "
+                         f"segment goes left (x decreases), so its heading is between 90 and 180 degrees; use "
+                         f"atan2(dy, dx).")
         if angle_ok(got[0], math.degrees(math.atan(d[1] / d[0]))):
             return wrong("turn 1 is atan(dy/dx), which loses the quadrant: the segment goes left and up; use "
                          "atan2(dy, dx).")
@@ -407,6 +577,27 @@ def check_turtle_through_dots(answer) -> Result:
                      "at the second dot.")
     return wrong(f"turn 2 is {off_by(right[2] + (got[2] - right[2] + 180) % 360 - 180, right[2])}: it is "
                  f"the change of heading at the second dot, from the first segment's direction to the second's.")
+
+
+
+
+#: Deal another instance of an exercise (``deal("check_sheared_turn")``, or with ``seed=``; 0 is the
+#: stored one), show the worked steps of the current one, read it, or get a button.
+deal, steps, current, deal_button = DECK.deal, DECK.steps, DECK.current, DECK.button
+#: Exercises 1-3 ask for a program, an expression and a table of types, fixed by design (exercise 2
+#: is already checked on two triples of points): they do not deal.
+PROBLEMS = DECK.problems({
+    "check_hexagon_program": (
+        f"Write a CODO program that draws the regular hexagon with centre (0, 0) and a vertex at (1, 0): its "
+        f"{HEXAGON_SIDES} sides and nothing else (Goldman §5.2.2). Dots are compared to 1e-4, so sqrt(3)/2 or "
+        f"decimals to four places are both fine."),
+    "check_parallelogram_vertex": (
+        "A, B, C are three consecutive vertices of the parallelogram ABCD. Write a CODO expression in A, B and C "
+        "for the fourth vertex D (Goldman §5.2.1: affine combinations)."),
+    "check_expression_types": (
+        "P, Q, R are points and v is a vector. For each expression say whether it is a 'point', a 'vector' or "
+        "'illegal': " + ", ".join(TYPE_EXPRESSIONS) + ". Answer with a dict {expression: word} (Goldman §5.2.1)."),
+})
 
 
 #: Wrong answers of the kinds each checker recognises (tests feed them and check the message).
