@@ -294,13 +294,17 @@ def jacobi_factor(A) -> float:
     0.4
     """
     A = np.abs(check_finite(as_float_array(A, "A"), "A"))
-    if A.ndim != 2 or A.shape[0] != A.shape[1]:
-        raise ValueError(f"A must be a square matrix (n, n); got shape {A.shape}")
+    if A.ndim != 2 or A.shape[0] != A.shape[1] or A.shape[0] == 0:
+        raise ValueError(f"A must be a non-empty square matrix (n, n); got shape {A.shape}")
     d = np.diag(A)
     if np.any(d == 0):
         i = int(np.argmin(d))
         raise ValueError(f"A must have no zero on its diagonal (Jacobi divides by it); A[{i}, {i}] = 0")
-    return float(((A.sum(axis=1) - d) / d).max())
+    with np.errstate(over="ignore", invalid="ignore"):
+        R = A / d[:, None]                    # row i divided by |a_ii| first, so huge rows do not overflow
+        np.fill_diagonal(R, 0.0)
+        off = R.sum(axis=1)
+    return float(finite_result(off, "A", why="has off-diagonal entries too large against its diagonal").max())
 
 
 def _relax(A, b, x0, tol, max_iter, full_output, method):
