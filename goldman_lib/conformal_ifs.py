@@ -73,7 +73,7 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
 __all__ = [
     "STANDARD_POINT", "STANDARD_DIRECTION", "state_map", "initial_state_map", "state_after",
     "transform_polylines", "TurtleIFS", "rons_algorithm", "tao_algorithm", "polyline_commands",
-    "move_commands", "ifs_polylines", "segment_set", "same_drawing", "drawing_distance",
+    "move_commands", "ifs_polylines", "segment_set", "same_drawing", "shared_segments", "drawing_distance",
     "equivalence_distance", "contraction_ratio", "base_case_gaps",
     "BUMPS", "bump_ifs", "bump_program", "bump_of",
 ]
@@ -284,6 +284,21 @@ def same_drawing(first, second, tol: float = 1e-9) -> bool:
     if a.shape != b.shape:
         return False
     return bool(a.size == 0 or np.abs(a - b).max() <= tol * max(1.0, float(np.abs(a).max())))
+
+
+def shared_segments(first, second, decimals: int = 9) -> tuple[int, int, int]:
+    """How many distinct segments each drawing has and how many they share, endpoints rounded to
+    ``decimals`` (Goldman §8.3: a turtle program and its IFS draw the same segments, so all three
+    counts agree).  Returns ``(in first, in second, in both)``; segments count once whatever
+    their direction or repeats.
+
+    >>> shared_segments([[[0, 0], [1, 0], [1, 1]]], [[[1, 1], [1, 0]], [[0, 0], [2, 0]]])
+    (2, 2, 1)
+    """
+    decimals = as_int(decimals, "decimals", minimum=-300, maximum=300)
+    a = {tuple(row) for row in _segment_set(first, decimals, "first").tolist()}
+    b = {tuple(row) for row in _segment_set(second, decimals, "second").tolist()}
+    return len(a), len(b), len(a & b)
 
 
 def _vertices(polylines, name: str = "polylines") -> np.ndarray:

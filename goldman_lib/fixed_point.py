@@ -35,7 +35,7 @@ from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as
                          check_finite, finite_result, within_budget)
 
 __all__ = ["MAX_PAIRS", "Convergence", "ConvergenceError", "fixed_point_iteration", "newton", "newton_steps", "jacobi",
-           "gauss_seidel", "is_diagonally_dominant", "contraction_factor", "hausdorff_distance",
+           "gauss_seidel", "is_diagonally_dominant", "jacobi_factor", "contraction_factor", "hausdorff_distance",
            "directed_hausdorff", "fractal_theorem", "FractalTheorem"]
 
 
@@ -282,6 +282,29 @@ def is_diagonally_dominant(A) -> bool:
         raise ValueError(f"A must be a square matrix (n, n); got shape {A.shape}")
     d = np.diag(A)
     return bool(np.all(d > A.sum(axis=1) - d))
+
+
+def jacobi_factor(A) -> float:
+    """The contraction factor of Jacobi's map ``x -> D^-1 (b - R x)`` in the max norm (Goldman §7.3.2):
+    ``max_i sum_{j != i} |A[i, j]| / |A[i, i]|``.  It is below 1 exactly when ``A`` is strictly
+    diagonally dominant, and then each Jacobi sweep shrinks the error ``||x_n - x||_inf`` at least
+    by this factor.  Raises ValueError for a non-square ``A`` or a zero on the diagonal.
+
+    >>> jacobi_factor([[4, 1], [2, 5]])
+    0.4
+    """
+    A = np.abs(check_finite(as_float_array(A, "A"), "A"))
+    if A.ndim != 2 or A.shape[0] != A.shape[1] or A.shape[0] == 0:
+        raise ValueError(f"A must be a non-empty square matrix (n, n); got shape {A.shape}")
+    d = np.diag(A)
+    if np.any(d == 0):
+        i = int(np.argmin(d))
+        raise ValueError(f"A must have no zero on its diagonal (Jacobi divides by it); A[{i}, {i}] = 0")
+    with np.errstate(over="ignore", invalid="ignore"):
+        R = A / d[:, None]                    # row i divided by |a_ii| first, so huge rows do not overflow
+        np.fill_diagonal(R, 0.0)
+        off = R.sum(axis=1)
+    return float(finite_result(off, "A", why="has off-diagonal entries too large against its diagonal").max())
 
 
 def _relax(A, b, x0, tol, max_iter, full_output, method):

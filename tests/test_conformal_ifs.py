@@ -432,3 +432,18 @@ def test_drawing_distance_of_many_strokes_is_checked_at_once_and_still_names_a_b
     bad[1234] = np.zeros((0, 2))
     with pytest.raises(ValueError, match=r"first\[1234\]"):
         cf.drawing_distance(bad, strokes)
+
+
+def test_shared_segments_counts_each_segment_once_whatever_its_direction():
+    # worked by hand: the square's four sides drawn as one stroke, and as four reversed strokes
+    # plus the diagonal and a repeat; the first has 4, the second 5, and they share the 4 sides
+    square = [[[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]]
+    pieces = [[[1, 0], [0, 0]], [[1, 1], [1, 0]], [[0, 1], [1, 1]], [[0, 0], [0, 1]], [[0, 0], [1, 1]],
+              [[1, 0], [0, 0]]]
+    assert cf.shared_segments(square, pieces) == (4, 5, 4)
+    assert cf.shared_segments(pieces, square) == (5, 4, 4)
+    nudged = [[[0, 0], [1, 0], [1, 1], [0, 1], [0, 1e-6]]]      # the last side ends 1e-6 off
+    assert cf.shared_segments(square, nudged) == (4, 4, 3)
+    assert cf.shared_segments(square, nudged, decimals=4) == (4, 4, 4)
+    with pytest.raises(TypeError):
+        cf.shared_segments(square, square, decimals=1.5)

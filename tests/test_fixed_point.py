@@ -192,3 +192,24 @@ def test_hausdorff_distance_is_scipys_exactly_on_every_path(case):
         assert used, f"{case}: the grid-neighbour bounds were not used"
     if case == "apart":
         assert len(used) <= 1, "sets apart should mostly scan at random"
+
+
+def test_jacobi_factor_is_the_max_norm_contraction_of_jacobis_map():
+    # worked by hand: the rows give 1/4 and 2/5
+    assert fp.jacobi_factor([[4, 1], [2, 5]]) == pytest.approx(0.4)
+    assert fp.jacobi_factor([[1, 2], [3, 4]]) == pytest.approx(2.0)       # not dominant: factor above 1
+    rng = np.random.default_rng(7)
+    A = rng.uniform(-1, 1, (5, 5)) + np.diag([4.0, 5, 3, 6, 4])
+    D, R = np.diag(A), A - np.diag(np.diag(A))
+    step = lambda x: -(R @ x) / D                                          # Jacobi's map with b = 0
+    k = fp.jacobi_factor(A)
+    ratios = [np.abs(step(x)).max() / np.abs(x).max() for x in rng.normal(size=(200, 5))]
+    assert max(ratios) <= k + 1e-12
+    i = int(np.argmax((np.abs(R).sum(1)) / np.abs(D)))                    # the worst row, attained
+    x = -np.sign(R[i]) * np.sign(D[i])
+    x[i] = 1.0
+    assert np.abs(step(x)).max() == pytest.approx(k)
+    with pytest.raises(ValueError, match="diagonal"):
+        fp.jacobi_factor([[0, 1], [1, 2]])
+    with pytest.raises(ValueError, match="square"):
+        fp.jacobi_factor([[1, 2, 3]])
