@@ -20,8 +20,10 @@ each level costs a few numpy calls per object, not a Python loop per ray.
 Conventions: the scene's objects follow the :mod:`goldman_lib.simple_surfaces` contract (``.hit(o,
 d) -> (t, normals)`` with outward normals for solids, and ``.material``).  A ray is entering an object
 where ``d . N < 0`` (it goes from the outside medium, index 1, into the object's ``index``) and
-leaving where ``d . N > 0``.  Objects that transmit light still cast full shadows (a shadow ray is
-not refracted).  Angles are in degrees.  The camera is a pinhole with a vertical field of view;
+leaving where ``d . N > 0``.  A shadow ray is not refracted: by default (``Scene(...,
+shadow_transmission=True)``, Whitted's simple model of 1980) each transparent object it passes
+multiplies the light by its transmission coefficient ``k_t``, and an opaque object (``k_t = 0``) stops
+it; with ``shadow_transmission=False`` every object casts a full shadow.  Angles are in degrees.  The camera is a pinhole with a vertical field of view;
 pixel ``(px, py)`` counts columns from the left and rows from the top, as an image does.
 
 >>> scene, camera = default_scene(), default_camera()
@@ -48,7 +50,7 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
                                     within_budget)
 
 __all__ = ["Camera", "Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
-           "trace", "render", "ray_tree", "in_shadow", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
+           "trace", "render", "ray_tree", "in_shadow", "light_fraction", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
            "OFFSET", "INDEX_RANGE", "MATERIALS"]
 
 #: The deepest recursion a render may ask for (a ray tree of depth d holds up to 2^(d+1) - 1 rays).
@@ -128,13 +130,17 @@ class Scene:
     (t, normals)`` and a ``.material``, as in :mod:`goldman_lib.simple_surfaces`), point ``lights``
     (:class:`goldman_lib.lighting.Light`), the ambient intensity ``I_a`` (a number or RGB triple)
     and the ``background`` colour a ray that hits nothing sees.
+    shadow_transmission: True (the default) lets a shadow ray pass transparent objects, each
+    multiplying the light by its ``material.transmit`` (Whitted 1980: attenuated, not refracted); False
+    makes every object cast a full shadow, as an opaque one does.
 
     >>> s = Scene([Sphere((0, 0, 0), 1)], [Light((0, 0, 5))], ambient_light=0.3)
-    >>> len(s.objects), s.background.tolist()
-    (1, [0.0, 0.0, 0.0])
+    >>> len(s.objects), s.background.tolist(), s.shadow_transmission
+    (1, [0.0, 0.0, 0.0], True)
     """
 
-    def __init__(self, objects, lights, ambient_light=0.2, background=(0.0, 0.0, 0.0)):
+    def __init__(self, objects, lights, ambient_light=0.2, background=(0.0, 0.0, 0.0),
+                 shadow_transmission: bool = True):
         try:
             objects = tuple(objects)
         except TypeError:
@@ -170,6 +176,9 @@ class Scene:
         if b.shape != (3,) or np.any(b < 0) or np.any(b > 1):
             raise ValueError(f"background must be an RGB triple in [0, 1]; got {b.tolist()}")
         self.background = b
+        if not isinstance(shadow_transmission, (bool, np.bool_)):
+            raise TypeError(f"shadow_transmission must be True or False; got {type(shadow_transmission).__name__}")
+        self.shadow_transmission = bool(shadow_transmission)
 
 
 # -- refraction (§17.5) ------------------------------------------------------------------------------
@@ -374,18 +383,22 @@ def _nearest(objects, bounds, o, d):
     return best, which, normals
 
 
-def _blocked(objects, bounds, P, N_f, owner, entering, lights):
-    """Shadow rays (§17.3): True where something lies between each point and each light, (N, L).
-    A light behind the surface (``L . N <= 0``) is blocked by the surface itself; otherwise a plane
-    cannot shadow its own points, nor a sphere the points on its outside."""
-    out = np.zeros((len(P), len(lights)), dtype=bool)
+def _light_fraction(objects, bounds, P, N_f, owner, entering, lights, transmission=True):
+    """Shadow rays (§17.3): the fraction of each light that reaches each point, (N, L), and whether
+    an object lies between, (N, L) bool.  A light behind the surface (``L . N <= 0``) is blocked by
+    the surface itself (fraction 0); otherwise a plane cannot shadow its own points, nor a sphere the
+    points on its outside.  Each object the shadow ray meets before the light multiplies the
+    fraction by its ``material.transmit`` if ``transmission`` (Whitted's attenuation: 0 for an
+    opaque object), else by 0."""
+    fraction = np.ones((len(P), len(lights)))
+    between = np.zeros((len(P), len(lights)), dtype=bool)
     for j, light in enumerate(lights):
         to_light = np.asarray(light.position) - P
         distance = np.sqrt(_dot(to_light, to_light))
-        out[:, j] = _dot(to_light, N_f) <= 0
+        fraction[_dot(to_light, N_f) <= 0, j] = 0.0
         unit = to_light / np.where(distance > 0, distance, 1.0)[:, None]
         for k, obj in enumerate(objects):
-            test = ~out[:, j] & (distance > 0)
+            test = (fraction[:, j] > 0) & (distance > 0)
             if isinstance(obj, Plane):
                 test &= owner != k
             elif isinstance(obj, Sphere):
@@ -398,22 +411,13 @@ def _blocked(objects, bounds, P, N_f, owner, entering, lights):
                 continue
             intersect = getattr(obj, "intersect", None)
             t = intersect(P[rows], to_light[rows]) if intersect is not None else obj.hit(P[rows], to_light[rows])[0]
-            out[rows[t < 1.0], j] = True
-    return out
+            crossed = rows[t < 1.0]
+            between[crossed, j] = True
+            fraction[crossed, j] *= float(obj.material.transmit) if transmission else 0.0
+    return fraction, between | (fraction == 0)
 
 
-def in_shadow(scene: Scene, points, normals) -> np.ndarray:
-    """Shadow rays (Goldman §17.3): True where light ``j`` does not reach point ``i``, shape (N, L).
-
-    points: (N, 3) points on the scene's surfaces; normals: (N, 3) their normals on the side the
-    point is seen from.  A shadow ray leaves each point (nudged off the surface by :data:`OFFSET`)
-    towards each light; the light is blocked if an object lies between, or if the light is behind
-    the surface (``L . N <= 0``: the surface itself is in the way).
-
-    >>> s = Scene([Sphere((0, 0, 1), 0.5)], [Light((0, 0, 5)), Light((4, 0, 5))])
-    >>> in_shadow(s, [[0, 0, 0]], [[0, 0, 1]]).tolist()      # under the sphere: only the first is blocked
-    [[True, False]]
-    """
+def _shadow_rays(scene, points, normals):
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
     P = as_points(points, "points", dim=3)
@@ -426,8 +430,40 @@ def in_shadow(scene: Scene, points, normals) -> np.ndarray:
         raise ValueError("points must have coordinates at most 1e15 in magnitude")
     bounds = [_bounding_sphere(obj) for obj in scene.objects]
     with np.errstate(over="ignore", invalid="ignore", under="ignore"):
-        return _blocked(scene.objects, bounds, P + OFFSET * N, N, np.full(len(P), -1), np.ones(len(P), dtype=bool),
-                        scene.lights)
+        return _light_fraction(scene.objects, bounds, P + OFFSET * N, N, np.full(len(P), -1),
+                               np.ones(len(P), dtype=bool), scene.lights, scene.shadow_transmission)
+
+
+def in_shadow(scene: Scene, points, normals) -> np.ndarray:
+    """Shadow rays (Goldman §17.3): True where an object lies between point ``i`` and light ``j``
+    (opaque or transparent), or the light is behind the surface, shape (N, L).
+
+    points: (N, 3) points on the scene's surfaces; normals: (N, 3) their normals on the side the
+    point is seen from.  A shadow ray leaves each point (nudged off the surface by :data:`OFFSET`)
+    towards each light; the light is blocked if an object lies between, or if the light is behind
+    the surface (``L . N <= 0``: the surface itself is in the way).  How much of the light still
+    arrives through transparent objects: :func:`light_fraction`.
+
+    >>> s = Scene([Sphere((0, 0, 1), 0.5)], [Light((0, 0, 5)), Light((4, 0, 5))])
+    >>> in_shadow(s, [[0, 0, 0]], [[0, 0, 1]]).tolist()      # under the sphere: only the first is blocked
+    [[True, False]]
+    """
+    return _shadow_rays(scene, points, normals)[1]
+
+
+def light_fraction(scene: Scene, points, normals) -> np.ndarray:
+    """The fraction of light ``j`` that reaches point ``i`` along its shadow ray (Goldman §17.3 with
+    Whitted's attenuation), shape (N, L): 1 unobstructed, the product of the ``material.transmit`` of
+    the transparent objects the shadow ray passes (it is not refracted), 0 behind an opaque object or
+    a light behind the surface.  With ``scene.shadow_transmission`` False every object stops it (0).
+    points, normals: as in :func:`in_shadow`.
+
+    >>> glass = Material(transmit=0.8, index=1.5)
+    >>> s = Scene([Sphere((0, 0, 1), 0.5, glass), Sphere((0, 0, 3), 0.5, glass)], [Light((0, 0, 5))])
+    >>> round(float(light_fraction(s, [[0, 0, 0]], [[0, 0, 1]])[0, 0]), 12)     # through both: 0.8 x 0.8
+    0.64
+    """
+    return _shadow_rays(scene, points, normals)[0]
 
 
 def _check_lights(scene, rays: int) -> None:
@@ -535,7 +571,8 @@ def _trace(scene, o, d, depth, record, miss_length, counts):
         entering = _dot(d_h, N) < 0
         N_f = np.where(entering[:, None], N, -N)      # the normal on the side the ray arrives from
         outside = P + OFFSET * N_f
-        blocked = _blocked(objects, bounds, outside, N_f, obj_h, entering, lights)
+        fraction, blocked = _light_fraction(objects, bounds, outside, N_f, obj_h, entering, lights,
+                                            scene.shadow_transmission)
         counts["shadow"] += blocked.size
         if record is not None:
             _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level)
@@ -545,7 +582,7 @@ def _trace(scene, o, d, depth, record, miss_length, counts):
         for sel in np.split(order, firsts[1:]):      # the hits on each object, as row indices
             m = objects[obj_h[sel[0]]].material
             local = lighting.intensity(P[sel], N_f[sel], eye_h[sel], lights, m, scene.ambient_light,
-                                       shadowed=blocked[sel])
+                                       light_fraction=fraction[sel])
             brought[hit_rows[sel]] = w[sel, None] * local
             if level == depth or (m.reflect == 0 and m.transmit == 0):
                 continue
@@ -664,11 +701,12 @@ def default_lights() -> tuple[Light, ...]:
     return (Light((-2.5, -1.5, 5.0), intensity=1.0),)
 
 
-def default_scene(index: float = 1.5, lights=None, ambient_light=0.3) -> Scene:
+def default_scene(index: float = 1.5, lights=None, ambient_light=0.3, shadow_transmission: bool = True) -> Scene:
     """The chapter's scene: a floor (the plane z = 0) under four spheres, a red and a blue matte one,
     a mirror (``reflect = 0.8``) and a glass one (``transmit = 0.88``, index of refraction ``index``)
     in front, under :func:`default_lights` (or ``lights``), with a sky-blue background.  The camera
     :func:`default_camera` looks along +x, so the x-z plane is a side view of the scene.
+    shadow_transmission: as in :class:`Scene` (True: the glass sphere's shadow lets ``k_t`` of the light through).
 
     >>> [type(o).__name__ for o in default_scene().objects]
     ['Plane', 'Sphere', 'Sphere', 'Sphere', 'Sphere']
@@ -683,7 +721,7 @@ def default_scene(index: float = 1.5, lights=None, ambient_light=0.3) -> Scene:
         Sphere((0.6, 0.35, 0.45), 0.45, MATERIALS["blue"]),
     ]
     return Scene(objects, default_lights() if lights is None else lights, ambient_light=ambient_light,
-                 background=(0.62, 0.76, 0.92))
+                 background=(0.62, 0.76, 0.92), shadow_transmission=shadow_transmission)
 
 
 def default_camera(fov: float = 45.0) -> Camera:
