@@ -304,8 +304,10 @@ class RaySegment(NamedTuple):
     """One segment of a ray tree (:func:`ray_tree`): ``kind`` (``"primary"``, ``"reflected"``,
     ``"refracted"`` or ``"shadow"``), ``start`` and ``end`` (3,), the recursion ``level`` (0 for the
     primary ray; a shadow ray has its parent's level), ``weight`` (the fraction of its light that
-    reaches the pixel) and ``hit``: whether it ends on an object (for a shadow ray: the light is
-    blocked; a ray that hits nothing ends ``miss_length`` along its direction)."""
+    reaches the pixel) and ``hit``: whether it ends on an object (for a shadow ray: an object lies
+    between the point and the light; a ray that hits nothing ends ``miss_length`` along its
+    direction).  ``light``: for a shadow ray, the fraction of the light that arrives (1 unobstructed,
+    the product of the ``transmit`` of the transparent objects passed, 0 blocked); 1 for other rays."""
 
     kind: str
     start: np.ndarray
@@ -313,6 +315,7 @@ class RaySegment(NamedTuple):
     level: int
     weight: float
     hit: bool
+    light: float = 1.0
 
 
 def _image_size(width, height, depth):
@@ -575,7 +578,7 @@ def _trace(scene, o, d, depth, record, miss_length, counts):
                                             scene.shadow_transmission)
         counts["shadow"] += blocked.size
         if record is not None:
-            _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level)
+            _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level, fraction)
         next_o, next_d, next_w, next_p, next_k = [], [], [], [], []
         order = np.argsort(obj_h, kind="stable")
         firsts = np.flatnonzero(np.diff(obj_h[order], prepend=-1))
@@ -623,8 +626,9 @@ def _accumulate(colour, pixel, brought, level):
             colour[:, c] += np.bincount(pixel, brought[:, c], minlength=len(colour))
 
 
-def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level):
-    """Append the shadow rays of one level to ``record``: to the light, or to the blocker."""
+def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level, fraction):
+    """Append the shadow rays of one level to ``record``: to the light, or to the first object in
+    the way, with the fraction of the light that arrives."""
     for j, light in enumerate(lights):
         end = np.broadcast_to(np.asarray(light.position, dtype=float), P.shape).copy()
         rows = np.flatnonzero(blocked[:, j])
@@ -635,7 +639,8 @@ def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, lev
             t, _, _ = _nearest(objects, bounds, outside[rows], np.where(distance[:, None] > 0, unit, [[0, 0, 1.0]]))
             end[rows] = outside[rows] + np.minimum(t, distance)[:, None] * unit
         for i in range(len(P)):
-            record.append(RaySegment("shadow", P[i].copy(), end[i], level, float(w[i]), bool(blocked[i, j])))
+            record.append(RaySegment("shadow", P[i].copy(), end[i], level, float(w[i]), bool(blocked[i, j]),
+                                     float(fraction[i, j])))
 
 
 def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3, *,

@@ -151,6 +151,11 @@ def test_shadow_rays_are_attenuated_by_transmission():
     assert rt.light_fraction(_shadow_scene(0.7, 0.5), P, N)[:, 0] == pytest.approx([0.35, 1.0], abs=1e-15)
     assert rt.in_shadow(_shadow_scene(0.7, 0.5), P, N)[:, 0].tolist() == [True, False]
     assert rt.light_fraction(_shadow_scene(0.7, attenuate=False), P, N)[:, 0].tolist() == [0.0, 1.0]
+    # the ray tree records it: the shadow ray ends on the first sphere and carries t1 t2 of the light
+    tree = rt.ray_tree(_shadow_scene(0.7, 0.5), rt.Camera((-2, 0, 2), (0, 0, 0)), 0, 0, depth=0, width=1, height=1)
+    shadow = [s for s in tree if s.kind == "shadow"]
+    assert len(shadow) == 1 and shadow[0].hit and shadow[0].light == pytest.approx(0.35, abs=1e-15)
+    assert shadow[0].end == pytest.approx([0, 0, 1.1], abs=1e-6)
     with pytest.raises(TypeError, match="shadow_transmission must be True or False"):
         rt.Scene([], [], shadow_transmission="yes")
 
