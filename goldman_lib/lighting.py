@@ -264,7 +264,7 @@ def specular(points, normals, light_position, eye, ks, exponent, light_intensity
 
 
 def intensity(points, normals, eye, lights, material: Material, ambient_light=0.2, shadowed=None,
-              two_sided: bool = False) -> np.ndarray:
+              two_sided: bool = False, light_fraction=None) -> np.ndarray:
     """The total RGB intensity ``I_a k_a C + sum over lights of I_p (k_d C (L . N) + k_s S (R . V)^n)``
     at each point (Goldman §16.6), ``C`` the material's colour and ``S`` its specular colour.
 
@@ -273,7 +273,9 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
     ambient_light: ``I_a``, a number or RGB triple.  shadowed: optional boolean (..., len(lights)),
     True where a light is blocked (chapter 17's shadow rays): that light adds nothing there.
     two_sided: flip each normal to face the eye first (for open surfaces and static pictures).
-    Returns (..., 3), unclipped.
+    light_fraction: optional (..., len(lights)) in [0, 1], the fraction of each light that reaches
+    each point (chapter 17's shadow rays through transparent objects): it multiplies that light's
+    diffuse and specular terms.  Returns (..., 3), unclipped.
 
     >>> m = Material(colour=(1, 0, 0), ambient=0.1, diffuse=0.5, specular=0.0)
     >>> intensity([[0, 0, 0]], [[0, 0, 1]], [0, 0, 5], Light((0, 0, 5)), m, ambient_light=1.0).tolist()
@@ -294,6 +296,13 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
         if shadowed.shape != P.shape[:-1] + (len(lights),):
             raise ValueError(f"shadowed must have shape {P.shape[:-1] + (len(lights),)} (points x lights); "
                              f"got {shadowed.shape}")
+    if light_fraction is not None:
+        light_fraction = check_finite(as_float_array(light_fraction, "light_fraction"), "light_fraction")
+        if light_fraction.shape != P.shape[:-1] + (len(lights),):
+            raise ValueError(f"light_fraction must have shape {P.shape[:-1] + (len(lights),)} (points x lights); "
+                             f"got {light_fraction.shape}")
+        if np.any(light_fraction < 0) or np.any(light_fraction > 1):
+            raise ValueError("light_fraction must lie in [0, 1] (the fraction of a light that reaches a point)")
     C, S = np.asarray(material.colour), np.asarray(material.specular_colour)
     ia = _scale(np.float64(1.0), material.ambient, ambient_light, "material.ambient", "ambient_light")
     total = np.broadcast_to(ia * C, P.shape).copy()
@@ -314,6 +323,8 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
                                                          why="are too large in magnitude")
             if shadowed is not None:
                 term[shadowed[..., k]] = 0.0
+            if light_fraction is not None:
+                term *= light_fraction[..., k, None]
             total += term
         finite_result(total, f"lights (up to lights[{k}]) and material", why="are too bright together")
     return total

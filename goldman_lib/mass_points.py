@@ -24,6 +24,7 @@ from goldman_lib.validation import as_float, as_float_array, as_points, check_fi
 from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 
 __all__ = ["mass_point", "vector", "add", "scale", "mass_of", "point_of", "center_of_mass", "same_projective_point",
+           "projective_factor",
            "perspective_mass", "pseudoperspective", "pseudoperspective_matrix", "pseudodepth"]
 
 
@@ -141,6 +142,29 @@ def same_projective_point(a, b, tol: float = 1e-12):
     c = np.einsum("...i,...i->...", ux, uy)
     out = 1 - c * c <= tol
     return bool(out) if np.ndim(out) == 0 else out
+
+
+def projective_factor(a, b, tol: float = 1e-12):
+    """The factor λ with ``b = λ a`` when two nonzero tuples ``(x, w)`` are the same projective
+    point (Goldman §14.2), else None: what :func:`same_projective_point` decides, with the scale shown.
+
+    a, b: (d+1,) tuples, or (..., d+1) arrays of them; for arrays the result is an array with NaN
+    where the pair is not proportional.  λ = ±|b| / |a|, with the sign of a·b.
+    Raises ValueError for zero tuples or tuples of different lengths.
+
+    >>> projective_factor([1, -2, 4, 1], [3, -6, 12, 3]), projective_factor([1, 0, 1], [1, 0, 2])
+    (3.0, None)
+    """
+    same = same_projective_point(a, b, tol)
+    x, y = _mp(a, "a"), _mp(b, "b")
+    nx, ny = _norm(x, axis=-1), _norm(y, axis=-1)
+    c = np.einsum("...i,...i->...", x / nx[..., None], y / ny[..., None])
+    with np.errstate(over="ignore"):
+        lam = np.sign(c) * (ny / nx)      # |λ| = |b| / |a|, its sign that of a·b: no overflow in a·a
+    finite_result(np.asarray(lam), "b", why="is too large relative to a")
+    if np.ndim(lam) == 0:
+        return float(lam) if same else None
+    return np.where(same, lam, np.nan)
 
 
 def _frame(eye, plane_point, normal):

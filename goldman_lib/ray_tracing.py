@@ -3,8 +3,9 @@
 A ray leaves the eye through each pixel (§17.2).  Where it first meets an object the tracer adds
 
 * the **local** light of the point, by :func:`goldman_lib.lighting.intensity` (the one lighting
-  model: ambient, Lambert diffuse and Phong specular), where each light counts only if a
-  **shadow ray** from the point to the light meets no object first (§17.3);
+  model: ambient, Lambert diffuse and Phong specular), where each light counts by what its
+  **shadow ray** from the point lets through (§17.3): all of it if the ray meets no object, ``k_t``
+  for each transparent object it passes, none past an opaque one;
 * ``k_r`` times the light arriving along the **reflected** ray ``reflect(-d, N)`` (§17.4), the
   mirror image of the incoming direction about the normal, traced recursively;
 * ``k_t`` times the light arriving along the **refracted** (transmitted) ray, bent by Snell's law
@@ -20,8 +21,10 @@ each level costs a few numpy calls per object, not a Python loop per ray.
 Conventions: the scene's objects follow the :mod:`goldman_lib.simple_surfaces` contract (``.hit(o,
 d) -> (t, normals)`` with outward normals for solids, and ``.material``).  A ray is entering an object
 where ``d . N < 0`` (it goes from the outside medium, index 1, into the object's ``index``) and
-leaving where ``d . N > 0``.  Objects that transmit light still cast full shadows (a shadow ray is
-not refracted).  Angles are in degrees.  The camera is a pinhole with a vertical field of view;
+leaving where ``d . N > 0``.  A shadow ray is not refracted: by default (``Scene(...,
+shadow_transmission=True)``, Whitted's simple model of 1980) each transparent object it passes
+multiplies the light by its transmission coefficient ``k_t``, and an opaque object (``k_t = 0``) stops
+it; with ``shadow_transmission=False`` every object casts a full shadow.  Angles are in degrees.  The camera is a pinhole with a vertical field of view;
 pixel ``(px, py)`` counts columns from the left and rows from the top, as an image does.
 
 >>> scene, camera = default_scene(), default_camera()
@@ -48,7 +51,7 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
                                     within_budget)
 
 __all__ = ["Camera", "Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
-           "trace", "render", "ray_tree", "in_shadow", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
+           "trace", "render", "ray_tree", "in_shadow", "light_fraction", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
            "OFFSET", "INDEX_RANGE", "MATERIALS"]
 
 #: The deepest recursion a render may ask for (a ray tree of depth d holds up to 2^(d+1) - 1 rays).
@@ -128,13 +131,17 @@ class Scene:
     (t, normals)`` and a ``.material``, as in :mod:`goldman_lib.simple_surfaces`), point ``lights``
     (:class:`goldman_lib.lighting.Light`), the ambient intensity ``I_a`` (a number or RGB triple)
     and the ``background`` colour a ray that hits nothing sees.
+    shadow_transmission: True (the default) lets a shadow ray pass transparent objects, each
+    multiplying the light by its ``material.transmit`` (Whitted 1980: attenuated, not refracted); False
+    makes every object cast a full shadow, as an opaque one does.
 
     >>> s = Scene([Sphere((0, 0, 0), 1)], [Light((0, 0, 5))], ambient_light=0.3)
-    >>> len(s.objects), s.background.tolist()
-    (1, [0.0, 0.0, 0.0])
+    >>> len(s.objects), s.background.tolist(), s.shadow_transmission
+    (1, [0.0, 0.0, 0.0], True)
     """
 
-    def __init__(self, objects, lights, ambient_light=0.2, background=(0.0, 0.0, 0.0)):
+    def __init__(self, objects, lights, ambient_light=0.2, background=(0.0, 0.0, 0.0),
+                 shadow_transmission: bool = True):
         try:
             objects = tuple(objects)
         except TypeError:
@@ -170,6 +177,9 @@ class Scene:
         if b.shape != (3,) or np.any(b < 0) or np.any(b > 1):
             raise ValueError(f"background must be an RGB triple in [0, 1]; got {b.tolist()}")
         self.background = b
+        if not isinstance(shadow_transmission, (bool, np.bool_)):
+            raise TypeError(f"shadow_transmission must be True or False; got {type(shadow_transmission).__name__}")
+        self.shadow_transmission = bool(shadow_transmission)
 
 
 # -- refraction (§17.5) ------------------------------------------------------------------------------
@@ -295,8 +305,10 @@ class RaySegment(NamedTuple):
     """One segment of a ray tree (:func:`ray_tree`): ``kind`` (``"primary"``, ``"reflected"``,
     ``"refracted"`` or ``"shadow"``), ``start`` and ``end`` (3,), the recursion ``level`` (0 for the
     primary ray; a shadow ray has its parent's level), ``weight`` (the fraction of its light that
-    reaches the pixel) and ``hit``: whether it ends on an object (for a shadow ray: the light is
-    blocked; a ray that hits nothing ends ``miss_length`` along its direction)."""
+    reaches the pixel) and ``hit``: whether it ends on an object (for a shadow ray: an object lies
+    between the point and the light; a ray that hits nothing ends ``miss_length`` along its
+    direction).  ``light``: for a shadow ray, the fraction of the light that arrives (1 unobstructed,
+    the product of the ``transmit`` of the transparent objects passed, 0 blocked); 1 for other rays."""
 
     kind: str
     start: np.ndarray
@@ -304,6 +316,7 @@ class RaySegment(NamedTuple):
     level: int
     weight: float
     hit: bool
+    light: float = 1.0
 
 
 def _image_size(width, height, depth):
@@ -374,18 +387,22 @@ def _nearest(objects, bounds, o, d):
     return best, which, normals
 
 
-def _blocked(objects, bounds, P, N_f, owner, entering, lights):
-    """Shadow rays (§17.3): True where something lies between each point and each light, (N, L).
-    A light behind the surface (``L . N <= 0``) is blocked by the surface itself; otherwise a plane
-    cannot shadow its own points, nor a sphere the points on its outside."""
-    out = np.zeros((len(P), len(lights)), dtype=bool)
+def _light_fraction(objects, bounds, P, N_f, owner, entering, lights, transmission=True):
+    """Shadow rays (§17.3): the fraction of each light that reaches each point, (N, L), and whether
+    an object lies between, (N, L) bool.  A light behind the surface (``L . N <= 0``) is blocked by
+    the surface itself (fraction 0); otherwise a plane cannot shadow its own points, nor a sphere the
+    points on its outside.  Each object the shadow ray meets before the light multiplies the
+    fraction by its ``material.transmit`` if ``transmission`` (Whitted's attenuation: 0 for an
+    opaque object), else by 0."""
+    fraction = np.ones((len(P), len(lights)))
+    between = np.zeros((len(P), len(lights)), dtype=bool)
     for j, light in enumerate(lights):
         to_light = np.asarray(light.position) - P
         distance = np.sqrt(_dot(to_light, to_light))
-        out[:, j] = _dot(to_light, N_f) <= 0
+        fraction[_dot(to_light, N_f) <= 0, j] = 0.0
         unit = to_light / np.where(distance > 0, distance, 1.0)[:, None]
         for k, obj in enumerate(objects):
-            test = ~out[:, j] & (distance > 0)
+            test = (fraction[:, j] > 0) & (distance > 0)
             if isinstance(obj, Plane):
                 test &= owner != k
             elif isinstance(obj, Sphere):
@@ -398,22 +415,13 @@ def _blocked(objects, bounds, P, N_f, owner, entering, lights):
                 continue
             intersect = getattr(obj, "intersect", None)
             t = intersect(P[rows], to_light[rows]) if intersect is not None else obj.hit(P[rows], to_light[rows])[0]
-            out[rows[t < 1.0], j] = True
-    return out
+            crossed = rows[t < 1.0]
+            between[crossed, j] = True
+            fraction[crossed, j] *= float(obj.material.transmit) if transmission else 0.0
+    return fraction, between | (fraction == 0)
 
 
-def in_shadow(scene: Scene, points, normals) -> np.ndarray:
-    """Shadow rays (Goldman §17.3): True where light ``j`` does not reach point ``i``, shape (N, L).
-
-    points: (N, 3) points on the scene's surfaces; normals: (N, 3) their normals on the side the
-    point is seen from.  A shadow ray leaves each point (nudged off the surface by :data:`OFFSET`)
-    towards each light; the light is blocked if an object lies between, or if the light is behind
-    the surface (``L . N <= 0``: the surface itself is in the way).
-
-    >>> s = Scene([Sphere((0, 0, 1), 0.5)], [Light((0, 0, 5)), Light((4, 0, 5))])
-    >>> in_shadow(s, [[0, 0, 0]], [[0, 0, 1]]).tolist()      # under the sphere: only the first is blocked
-    [[True, False]]
-    """
+def _shadow_rays(scene, points, normals):
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
     P = as_points(points, "points", dim=3)
@@ -426,8 +434,40 @@ def in_shadow(scene: Scene, points, normals) -> np.ndarray:
         raise ValueError("points must have coordinates at most 1e15 in magnitude")
     bounds = [_bounding_sphere(obj) for obj in scene.objects]
     with np.errstate(over="ignore", invalid="ignore", under="ignore"):
-        return _blocked(scene.objects, bounds, P + OFFSET * N, N, np.full(len(P), -1), np.ones(len(P), dtype=bool),
-                        scene.lights)
+        return _light_fraction(scene.objects, bounds, P + OFFSET * N, N, np.full(len(P), -1),
+                               np.ones(len(P), dtype=bool), scene.lights, scene.shadow_transmission)
+
+
+def in_shadow(scene: Scene, points, normals) -> np.ndarray:
+    """Shadow rays (Goldman §17.3): True where an object lies between point ``i`` and light ``j``
+    (opaque or transparent), or the light is behind the surface, shape (N, L).
+
+    points: (N, 3) points on the scene's surfaces; normals: (N, 3) their normals on the side the
+    point is seen from.  A shadow ray leaves each point (nudged off the surface by :data:`OFFSET`)
+    towards each light; the light is blocked if an object lies between, or if the light is behind
+    the surface (``L . N <= 0``: the surface itself is in the way).  How much of the light still
+    arrives through transparent objects: :func:`light_fraction`.
+
+    >>> s = Scene([Sphere((0, 0, 1), 0.5)], [Light((0, 0, 5)), Light((4, 0, 5))])
+    >>> in_shadow(s, [[0, 0, 0]], [[0, 0, 1]]).tolist()      # under the sphere: only the first is blocked
+    [[True, False]]
+    """
+    return _shadow_rays(scene, points, normals)[1]
+
+
+def light_fraction(scene: Scene, points, normals) -> np.ndarray:
+    """The fraction of light ``j`` that reaches point ``i`` along its shadow ray (Goldman §17.3 with
+    Whitted's attenuation), shape (N, L): 1 unobstructed, the product of the ``material.transmit`` of
+    the transparent objects the shadow ray passes (it is not refracted), 0 behind an opaque object or
+    a light behind the surface.  With ``scene.shadow_transmission`` False every object stops it (0).
+    points, normals: as in :func:`in_shadow`.
+
+    >>> glass = Material(transmit=0.8, index=1.5)
+    >>> s = Scene([Sphere((0, 0, 1), 0.5, glass), Sphere((0, 0, 3), 0.5, glass)], [Light((0, 0, 5))])
+    >>> round(float(light_fraction(s, [[0, 0, 0]], [[0, 0, 1]])[0, 0]), 12)     # through both: 0.8 x 0.8
+    0.64
+    """
+    return _shadow_rays(scene, points, normals)[0]
 
 
 def _check_lights(scene, rays: int) -> None:
@@ -535,17 +575,18 @@ def _trace(scene, o, d, depth, record, miss_length, counts):
         entering = _dot(d_h, N) < 0
         N_f = np.where(entering[:, None], N, -N)      # the normal on the side the ray arrives from
         outside = P + OFFSET * N_f
-        blocked = _blocked(objects, bounds, outside, N_f, obj_h, entering, lights)
+        fraction, blocked = _light_fraction(objects, bounds, outside, N_f, obj_h, entering, lights,
+                                            scene.shadow_transmission)
         counts["shadow"] += blocked.size
         if record is not None:
-            _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level)
+            _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level, fraction)
         next_o, next_d, next_w, next_p, next_k = [], [], [], [], []
         order = np.argsort(obj_h, kind="stable")
         firsts = np.flatnonzero(np.diff(obj_h[order], prepend=-1))
         for sel in np.split(order, firsts[1:]):      # the hits on each object, as row indices
             m = objects[obj_h[sel[0]]].material
             local = lighting.intensity(P[sel], N_f[sel], eye_h[sel], lights, m, scene.ambient_light,
-                                       shadowed=blocked[sel])
+                                       light_fraction=fraction[sel])
             brought[hit_rows[sel]] = w[sel, None] * local
             if level == depth or (m.reflect == 0 and m.transmit == 0):
                 continue
@@ -586,8 +627,9 @@ def _accumulate(colour, pixel, brought, level):
             colour[:, c] += np.bincount(pixel, brought[:, c], minlength=len(colour))
 
 
-def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level):
-    """Append the shadow rays of one level to ``record``: to the light, or to the blocker."""
+def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level, fraction):
+    """Append the shadow rays of one level to ``record``: to the light, or to the first object in
+    the way, with the fraction of the light that arrives."""
     for j, light in enumerate(lights):
         end = np.broadcast_to(np.asarray(light.position, dtype=float), P.shape).copy()
         rows = np.flatnonzero(blocked[:, j])
@@ -598,7 +640,8 @@ def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, lev
             t, _, _ = _nearest(objects, bounds, outside[rows], np.where(distance[:, None] > 0, unit, [[0, 0, 1.0]]))
             end[rows] = outside[rows] + np.minimum(t, distance)[:, None] * unit
         for i in range(len(P)):
-            record.append(RaySegment("shadow", P[i].copy(), end[i], level, float(w[i]), bool(blocked[i, j])))
+            record.append(RaySegment("shadow", P[i].copy(), end[i], level, float(w[i]), bool(blocked[i, j]),
+                                     float(fraction[i, j])))
 
 
 def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3, *,
@@ -664,11 +707,12 @@ def default_lights() -> tuple[Light, ...]:
     return (Light((-2.5, -1.5, 5.0), intensity=1.0),)
 
 
-def default_scene(index: float = 1.5, lights=None, ambient_light=0.3) -> Scene:
+def default_scene(index: float = 1.5, lights=None, ambient_light=0.3, shadow_transmission: bool = True) -> Scene:
     """The chapter's scene: a floor (the plane z = 0) under four spheres, a red and a blue matte one,
     a mirror (``reflect = 0.8``) and a glass one (``transmit = 0.88``, index of refraction ``index``)
     in front, under :func:`default_lights` (or ``lights``), with a sky-blue background.  The camera
     :func:`default_camera` looks along +x, so the x-z plane is a side view of the scene.
+    shadow_transmission: as in :class:`Scene` (True: the glass sphere's shadow lets ``k_t`` of the light through).
 
     >>> [type(o).__name__ for o in default_scene().objects]
     ['Plane', 'Sphere', 'Sphere', 'Sphere', 'Sphere']
@@ -683,7 +727,7 @@ def default_scene(index: float = 1.5, lights=None, ambient_light=0.3) -> Scene:
         Sphere((0.6, 0.35, 0.45), 0.45, MATERIALS["blue"]),
     ]
     return Scene(objects, default_lights() if lights is None else lights, ambient_light=ambient_light,
-                 background=(0.62, 0.76, 0.92))
+                 background=(0.62, 0.76, 0.92), shadow_transmission=shadow_transmission)
 
 
 def default_camera(fov: float = 45.0) -> Camera:

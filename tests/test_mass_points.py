@@ -34,6 +34,19 @@ def test_scaling_a_mass_point_keeps_its_projective_point(P, m, c):
     assert np.allclose(mp.point_of(mp.scale(c, a)), P, atol=1e-9)
 
 
+def test_projective_factor_by_hand():
+    # b = 3 a, b = -a/2 (negative factors count), a point at infinity scaled by -3
+    assert mp.projective_factor([1, -2, 4, 1], [3, -6, 12, 3]) == pytest.approx(3.0, abs=1e-15)
+    assert mp.projective_factor([1, -2, 4, 1], [-0.5, 1, -2, -0.5]) == pytest.approx(-0.5, abs=1e-15)
+    assert mp.projective_factor([0, 1, 1, 0], [0, -3, -3, 0]) == pytest.approx(-3.0, abs=1e-15)
+    # (1, -2, 4) and (1/2, -1, 2) are different affine points: no factor
+    assert mp.projective_factor([1, -2, 4, 1], [1, -2, 4, 2]) is None
+    got = mp.projective_factor([[1, 0, 1], [1, 0, 1]], [[2, 0, 2], [1, 0, 2]])
+    assert got[0] == pytest.approx(2.0) and np.isnan(got[1])
+    with pytest.raises(ValueError, match="nonzero"):
+        mp.projective_factor([0, 0, 0], [1, 0, 1])
+
+
 def test_perspective_by_mass_points_equals_chapter_12():
     rng = np.random.default_rng(2)
     E, Q, N = np.array([0.5, -1, -4.0]), np.array([0, 0, 1.0]), np.array([0.1, 0.2, 1.0])

@@ -124,6 +124,117 @@ def test_shadow_ray_leaves_ambient_only():
     assert shadow[0].end == pytest.approx([0, 0, 0.5], abs=1e-6)
 
 
+def _shadow_scene(*transmits, attenuate=True):
+    """A white matte floor (k_a = 0, k_d = 0.9) under a light at (0, 0, 5), with a sphere of radius 0.4
+    at heights 1.5, 3, ... for each given transmission coefficient (0: opaque)."""
+    floor = Material(colour=(1, 1, 1), ambient=0.0, diffuse=0.9, specular=0.0)
+    spheres = [Sphere((0, 0, 1.5 + 1.5 * k), 0.4, Material(colour=(1, 1, 1), transmit=t, index=1.5))
+               for k, t in enumerate(transmits)]
+    return rt.Scene([Plane((0, 0, 0), (0, 0, 1), floor), *spheres], [Light((0, 0, 5))], ambient_light=0.3,
+                    shadow_transmission=attenuate)
+
+
+def test_shadow_rays_are_attenuated_by_transmission():
+    # the ray from (-2, 0, 2) along (1, 0, -1) meets the floor at the origin, below every sphere; the light
+    # is straight above, L.N = 1, so unshadowed the point gets k_d I = 0.9 in each channel (k_a = 0)
+    o, d = [[-2, 0, 2]], [[1, 0, -1]]
+    lit = 0.9 * np.ones(3)
+    assert rt.trace(_shadow_scene(), o, d, depth=0)[0] == pytest.approx(lit, abs=1e-12)
+    assert rt.trace(_shadow_scene(0.7), o, d, depth=0)[0] == pytest.approx(0.7 * lit, abs=1e-12)     # t
+    assert rt.trace(_shadow_scene(0.7, 0.5), o, d, depth=0)[0] == pytest.approx(0.35 * lit, abs=1e-12)  # t1 t2
+    assert rt.trace(_shadow_scene(0.0), o, d, depth=0)[0] == pytest.approx(np.zeros(3), abs=1e-12)   # opaque
+    assert rt.trace(_shadow_scene(0.7, 0.0), o, d, depth=0)[0] == pytest.approx(np.zeros(3), abs=1e-12)
+    # the old tracer: a transparent object casts a full shadow
+    assert rt.trace(_shadow_scene(0.7, attenuate=False), o, d, depth=0)[0] == pytest.approx(np.zeros(3), abs=1e-12)
+    # light_fraction says the same; in_shadow says that something lies between
+    P, N = [[0, 0, 0], [3, 0, 0]], [[0, 0, 1], [0, 0, 1]]
+    assert rt.light_fraction(_shadow_scene(0.7, 0.5), P, N)[:, 0] == pytest.approx([0.35, 1.0], abs=1e-15)
+    assert rt.in_shadow(_shadow_scene(0.7, 0.5), P, N)[:, 0].tolist() == [True, False]
+    assert rt.light_fraction(_shadow_scene(0.7, attenuate=False), P, N)[:, 0].tolist() == [0.0, 1.0]
+    # the ray tree records it: the shadow ray ends on the first sphere and carries t1 t2 of the light
+    tree = rt.ray_tree(_shadow_scene(0.7, 0.5), rt.Camera((-2, 0, 2), (0, 0, 0)), 0, 0, depth=0, width=1, height=1)
+    shadow = [s for s in tree if s.kind == "shadow"]
+    assert len(shadow) == 1 and shadow[0].hit and shadow[0].light == pytest.approx(0.35, abs=1e-15)
+    assert shadow[0].end == pytest.approx([0, 0, 1.1], abs=1e-6)
+    with pytest.raises(TypeError, match="shadow_transmission must be True or False"):
+        rt.Scene([], [], shadow_transmission="yes")
+
+
+def _independent_pixel(scene, o, d):
+    """A small depth-0 ray tracer written for this test: nearest hit by the quadratic and the plane
+    equation, then I_a k_a C + sum over lights of f (k_d C I (L.N) + k_s S I (R.V)^n), f the product of
+    the transmit coefficients of the spheres the segment to the light crosses (Whitted 1980)."""
+    o, d = np.asarray(o, float), np.asarray(d, float) / np.linalg.norm(d)
+    best, hit = np.inf, None
+    for obj in scene.objects:
+        if isinstance(obj, Plane):
+            n = np.asarray(obj.unit_normal, dtype=float)
+            den = d @ n
+            t = ((obj.point - o) @ n) / den if den != 0 else np.inf
+            normal = n
+        else:
+            oc = o - obj.center
+            b, c = oc @ d, oc @ oc - obj.radius ** 2
+            disc = b * b - c
+            t = -b - math.sqrt(disc) if disc >= 0 else np.inf
+            normal = None
+        if 1e-9 < t < best:
+            best, hit = t, (obj, normal)
+    obj, normal = hit
+    P = o + best * d
+    N = normal if normal is not None else (P - obj.center) / obj.radius
+    if N @ d > 0:
+        N = -N
+    m = obj.material
+    colour = m.ambient * np.asarray(scene.ambient_light) * np.asarray(m.colour)
+    V = -d
+    for light in scene.lights:
+        Lvec = np.asarray(light.position) - P
+        dist = np.linalg.norm(Lvec)
+        L = Lvec / dist
+        if L @ N <= 0:
+            continue
+        f = 1.0
+        for other in scene.objects:
+            if other is obj or isinstance(other, Plane):
+                continue
+            oc = P - other.center
+            b, c = oc @ L, oc @ oc - other.radius ** 2
+            disc = b * b - c
+            if disc >= 0 and any(1e-9 < t < dist for t in (-b - math.sqrt(disc), -b + math.sqrt(disc))):
+                f *= other.material.transmit
+        R = 2 * (L @ N) * N - L
+        spec = max(R @ V, 0.0) ** m.exponent if m.specular > 0 else 0.0
+        colour = colour + f * light.rgb * (m.diffuse * np.asarray(m.colour) * (L @ N)
+                                           + m.specular * np.asarray(m.specular_colour) * spec)
+    return colour
+
+
+def test_glass_shadow_pixel_matches_an_independent_tracer():
+    scene, camera = rt.default_scene(), rt.default_camera()
+    # pixels of a 40 x 30 image whose floor point lies in the glass sphere's shadow
+    o, d = camera.rays(40, 30)
+    colours = rt.trace(scene, o, d, depth=0)
+    glass = scene.objects[1]
+    found = 0
+    for i in range(len(o)):
+        di = d[i] / np.linalg.norm(d[i])
+        if di[2] >= 0:
+            continue
+        P = o[i] - o[i][2] / di[2] * di                      # where the ray meets the floor z = 0
+        to_light = np.asarray(scene.lights[0].position) - P
+        oc = P - glass.center
+        u = to_light / np.linalg.norm(to_light)
+        if (oc @ u) ** 2 - (oc @ oc - glass.radius ** 2) <= 0.01:      # the shadow ray clearly misses the glass
+            continue
+        ours = _independent_pixel(scene, o[i], d[i])
+        assert colours[i] == pytest.approx(ours, abs=1e-9), i
+        found += 1
+    assert found >= 3                                          # the glass ball's shadow is in view
+    # and each of those points gets k_t = 0.88 of the light, not none of it
+    assert rt.MATERIALS["glass"].transmit == 0.88
+
+
 def test_mirror_reflection_angle_and_weight():
     mirror = Material(colour=(0.2, 0.2, 0.2), reflect=0.6)
     scene = rt.Scene([Plane((0, 0, 0), (0, 0, 1), mirror)], [Light((0, 0, 4))])

@@ -3,6 +3,7 @@
 tree of the chosen pixel in the x-z side view, chosen by sliders or a click, with the light dragged."""
 
 import numpy as np
+import pytest
 from matplotlib.backend_bases import MouseEvent
 
 from goldman_lib import ray_tracing as rt
@@ -48,7 +49,10 @@ def test_the_ray_tree_of_the_chosen_pixel():
     assert {"reflected", "refracted", "shadow"} <= {rv.KINDS[k] for k in r["kinds"]}
     tree = rt.ray_tree(rt.default_scene(), rt.default_camera(), 52, 70, 3, rv.WIDTH, rv.HEIGHT, miss_length=4.0)
     assert np.allclose(r["segments"], [[s.start[[0, 2]], s.end[[0, 2]]] for s in tree])
-    assert r["blocked"].tolist() == [s.kind == "shadow" and s.hit for s in tree]
+    assert r["blocked"].tolist() == [s.kind == "shadow" and s.light == 0 for s in tree]
+    # pixel (52, 70)'s tree has shadow rays that pass the glass sphere with k_t = 0.88 of the light
+    assert any(s.kind == "shadow" and s.hit and s.light == pytest.approx(0.88) for s in tree)
+    assert "2 through glass" in r["status"]
     assert "at most 30" in r["status"]
     r = view.set_values(index=1.0)
     assert "none (no total internal reflection)" in r["status"]

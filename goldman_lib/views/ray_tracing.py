@@ -6,7 +6,8 @@ Left, the image :func:`goldman_lib.ray_tracing.render` makes of
 data).  Right, the scene seen from the side (the x-z plane: the camera looks along +x): the floor,
 the spheres' outlines, the eye, the light, and the ray tree of the chosen pixel
 (:func:`goldman_lib.ray_tracing.ray_tree`) -- the primary ray, the reflected and refracted rays
-level by level, and the shadow rays towards the light (dashed; red where blocked).  Choose the
+level by level, and the shadow rays towards the light (dashed; red where blocked, violet where they
+pass the glass sphere, which lets ``k_t`` of the light through).  Choose the
 pixel with its sliders or by clicking the image; drag the light in the side view (or use its
 sliders: the shared :class:`~goldman_lib.views.light_control.LightControl`).  The depth slider
 sets the recursion depth, the index slider the glass sphere's index of refraction.
@@ -42,6 +43,7 @@ KIND_COLOURS = {"primary": "#1f4e9c", "reflected": "#1b7f3b", "refracted": "#8f2
 #: The kinds of rays, in the order of the codes in an update's ``"kinds"``.
 KINDS = tuple(KIND_COLOURS)
 _BLOCKED = "#d1495b"
+_THROUGH_GLASS = "#9b5de5"
 _CACHE = 24
 
 
@@ -86,7 +88,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
     ``update(depth, index, px, py, light0_x, light0_y, light0_z, light0_I, light0_colour)`` returns
     ``{"image" (120, 160, 3), "segments" (n, 2, 2) side-view ends, "kinds" (n,) codes into
     :data:`KINDS`, "blocked" (n,)
-    booleans, "pixel" (3,), "rays", "status"}``.
+    booleans (a shadow ray no light passes), "pixel" (3,), "rays", "status"}``.
 
     >>> r = ray_tracing_view().set_values(depth=2, index=1.0)     # index 1: the glass bends nothing
     >>> "critical angle none" in r["status"]
@@ -146,7 +148,8 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         [f"<span style='color:#c99a00'>&#9679; light (drag it)</span>"]
         + [f"<span style='color:{c}'>{'- -' if k == 'shadow' else '&#9472;&#9472;'} {k}</span>"
            for k, c in KIND_COLOURS.items()]
-        + [f"<span style='color:{_BLOCKED}'>- - blocked shadow</span>"]))
+        + [f"<span style='color:{_BLOCKED}'>- - blocked shadow</span>",
+           f"<span style='color:{_THROUGH_GLASS}'>- - shadow through glass (k_t of the light)</span>"]))
     side_title = ax_side.set_title("", fontsize=9)
 
     images: OrderedDict = OrderedDict()
@@ -172,9 +175,11 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         pixel_mark.set_data([px], [py])
         seg = np.array([[s.start[[0, 2]], s.end[[0, 2]]] for s in tree]).reshape(-1, 2, 2)
         kinds = [s.kind for s in tree]
-        blocked = np.array([s.kind == "shadow" and s.hit for s in tree], dtype=bool)
+        blocked = np.array([s.kind == "shadow" and s.light == 0 for s in tree], dtype=bool)
+        through = np.array([s.kind == "shadow" and s.hit and s.light > 0 for s in tree], dtype=bool)
         lines.set_segments(list(seg))
-        lines.set_color([_BLOCKED if b else KIND_COLOURS[k] for k, b in zip(kinds, blocked)])
+        lines.set_color([_BLOCKED if b else _THROUGH_GLASS if g else KIND_COLOURS[k]
+                         for k, b, g in zip(kinds, blocked, through)])
         lines.set_linestyle(["--" if k == "shadow" else "-" for k in kinds])
         marker = control.marker_positions(light_values)[0]
         light_dot.set_data([marker[0]], [marker[2]])
@@ -185,7 +190,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         status = (f"{WIDTH}x{HEIGHT} image at recursion depth {depth}: {counts['rays']:,} primary, reflected and "
                   f"refracted rays and {counts['shadow']:,} shadow rays.  Pixel ({px}, {py}): {n['primary']} primary, "
                   f"{n['reflected']} reflected, {n['refracted']} refracted and {n['shadow']} shadow rays "
-                  f"({int(blocked.sum())} blocked); at most {rt.ray_tree_size(depth, len(lights))} at this depth.  "
+                  f"({int(blocked.sum())} blocked, {int(through.sum())} through glass); at most {rt.ray_tree_size(depth, len(lights))} at this depth.  "
                   f"Glass index {index:.2f}: critical angle "
                   + (f"{crit:.1f}° (inside the glass)" if crit is not None else "none (no total internal reflection)"))
         pixel = np.asarray(img[py, px], dtype=float)
