@@ -8,13 +8,13 @@ from goldman_lib.views import agreement
 
 def test_a_gap_within_the_bound_prints_the_bound_not_the_noise():
     assert agreement.gap(2.7755575615628914e-17, 1e-12) == "< 1e-12"
-    assert agreement.gap(0.0, 1e-9) == "< 1e-09"
+    assert agreement.gap(0.0, 1e-9) == "< 1e-9"
 
 
 def test_a_gap_over_the_bound_is_shown_and_named():
     assert agreement.gap(3e-3, 1e-3) == "0.003 (over the bound 0.001)"
     text = agreement.side_by_side([0, 1], [1.0, 2.0], [1.0, 2.5], bound=1e-6)
-    assert text.splitlines()[-1] == "largest gap over all 2: 0.5 (over the bound 1e-06)"
+    assert text.splitlines()[-1] == "largest gap over all 2: 0.5 (over the bound 1e-6)"
 
 
 @pytest.mark.parametrize("x, shown", [(-1e-17, "0"), (-0.0, "0"), (1 / 3, "0.3333"), (-2.5, "-2.5"),
@@ -42,3 +42,11 @@ def test_side_by_side_refuses_mismatched_input():
         agreement.side_by_side([0, 1], [[0, 0], [1, 1]], [0, 1], bound=1e-12)
     with pytest.raises(ValueError, match="one label per row"):
         agreement.side_by_side([0], [0, 1], [0, 1], bound=1e-12)
+
+
+def test_the_same_infinity_is_no_gap_but_a_miss_against_a_hit_is():
+    text = agreement.side_by_side(["ray 0", "ray 1"], [[1.0, np.inf], [np.inf, np.inf]],
+                                  [[1.0, np.inf], [np.inf, np.inf]], bound=1e-9)
+    assert text.splitlines()[-1] == "largest gap over all 2: < 1e-9"
+    text = agreement.side_by_side(["ray 0"], [[1.0, np.inf]], [[1.0, 2.0]], bound=1e-9)
+    assert text.splitlines()[-1] == "largest gap over all 1: inf (over the bound 1e-9)"

@@ -16,6 +16,8 @@ largest gap over all 3: < 1e-12
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 
@@ -54,11 +56,16 @@ def gap(g, bound: float) -> str:
     """The gap ``g`` as the learner should read it: ``< bound`` when within it (portable), else the
     gap itself to two digits and the word that it exceeds the bound.
 
-    >>> gap(3.1e-16, 1e-12), gap(0.0123, 0.01)
-    ('< 1e-12', '0.012 (over the bound 0.01)')
+    >>> gap(3.1e-16, 1e-12), gap(0.0123, 0.01), gap(0.0, 1e-9)
+    ('< 1e-12', '0.012 (over the bound 0.01)', '< 1e-9')
     """
     g = float(g)
-    return f"< {bound:g}" if g < bound else f"{g:.2g} (over the bound {bound:g})"
+    return f"< {_short(bound)}" if g < bound else f"{_short(g, 2)} (over the bound {_short(bound)})"
+
+
+def _short(x: float, digits: int = 6) -> str:
+    """``x`` in ``g`` format without a padded exponent: 1e-9, not 1e-09."""
+    return re.sub(r"e\+?(-?)0*(\d)", r"e\1\2", f"{x:.{digits}g}")
 
 
 def table(header, rows) -> str:
@@ -81,7 +88,8 @@ def side_by_side(labels, ours, reference, bound: float, digits: int = 4, rows: i
     line with the largest gap over every row, as a bound.
 
     labels: (N,) what each row is at (a parameter, a point number).  ours, reference: (N,) numbers
-    or (N, d) points.  The gap of a row is the largest coordinate difference.
+    or (N, d) points, ``inf`` for "no hit".  The gap of a row is the largest coordinate difference
+    (0 where both sides are the same infinity).
     """
     ours, reference = np.asarray(ours, dtype=float), np.asarray(reference, dtype=float)
     if ours.shape != reference.shape:
@@ -89,7 +97,9 @@ def side_by_side(labels, ours, reference, bound: float, digits: int = 4, rows: i
     labels = list(labels)
     if len(labels) != len(ours):
         raise ValueError(f"labels must give one label per row; got {len(labels)} for {len(ours)} rows")
-    gaps = np.abs(ours - reference).reshape(len(ours), -1).max(axis=1)
+    with np.errstate(invalid="ignore"):
+        diff = np.where(ours == reference, 0.0, np.abs(ours - reference))
+    gaps = diff.reshape(len(ours), -1).max(axis=1)
     pick = np.unique(np.linspace(0, len(ours) - 1, min(rows, len(ours))).round().astype(int))
     body = [[value(labels[i], digits) if np.ndim(labels[i]) or isinstance(labels[i], (int, float, np.number))
              else labels[i], value(ours[i], digits), value(reference[i], digits), gap(gaps[i], bound)]
