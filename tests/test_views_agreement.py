@@ -1,4 +1,4 @@
-"""goldman_lib.views.agreement: a check printed as the values it compares (issue 18 §5)."""
+"""goldman_lib.views.agreement: a check printed as the values it compares (issue 18, part 5)."""
 
 import numpy as np
 import pytest

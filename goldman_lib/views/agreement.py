@@ -1,4 +1,4 @@
-"""Print a check as the values it compares: ours, the reference, the gap and the bound (issue 18 §5).
+"""Print a check as the values it compares: ours, the reference, the gap and the bound (issue 18, part 5).
 
 A check a learner reads shows the objects, not "...: True".  These helpers format a few rows of
 values side by side, rounded to the digits that matter, and the largest gap *as a bound*
