@@ -4,6 +4,8 @@
 - ``views.interactive``  the widget pattern: :class:`InteractiveView` (controls + view + a plain
                          ``update`` callback + a static fallback image)
 - ``views.three``        every use of pythreejs goes through :class:`SceneView`
+- ``views.agreement``    a check printed as the values it compares (ours | reference | gap, the
+                         gap as a portable bound), not as "...: True"
 - ``views.turtle``       chapter 1 views and widgets
 - ``views.bezier``       chapter 24 views and widgets
 - ``views.agreement``    a check printed as claim | ours | reference | gap ("show, don't print True")
