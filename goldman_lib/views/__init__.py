@@ -8,7 +8,6 @@
                          gap as a portable bound), not as "...: True"
 - ``views.turtle``       chapter 1 views and widgets
 - ``views.bezier``       chapter 24 views and widgets
-- ``views.agreement``    a check printed as claim | ours | reference | gap ("show, don't print True")
 
 Importing this package imports matplotlib (Agg unless the notebook chose ``%matplotlib widget``);
 ipywidgets and pythreejs are imported by the modules that need them.
