@@ -135,3 +135,15 @@ def test_deck_metadata_and_checked_key_results(path):
     assert all(c["slide"] != "-" for c in cells), "leave slide_type out instead of '-'"
     checked = [c for c in cells if "nbval-check-output" in c["tags"] and "solution" not in c["tags"]]
     assert len(checked) >= 8, "key results are printed in cells tagged nbval-check-output"
+
+
+@pytest.mark.parametrize("path", sorted((ROOT / "course").glob("*.ipynb")), ids=lambda p: p.stem)
+def test_no_stored_output_holds_a_memory_address(path):
+    """Stored outputs are the same on every run: an object's repr with its address (``<contextlib.
+    ExitStack at 0x7f…>``, left by a cell ending in ``plt.ioff()``) changes each time."""
+    import re
+
+    nb = json.loads(path.read_text())
+    found = [f"cell {c.get('id')}: {m.group(0)}" for c in nb["cells"] if c["cell_type"] == "code"
+             for o in c.get("outputs", []) for m in re.finditer(r"<[\w.]+ (?:object )?at 0x[0-9a-f]+>", json.dumps(o))]
+    assert not found, f"{path.name}: outputs that change on every run: {found}"

@@ -2,7 +2,9 @@
 three.js canvases render (non-blank pixels), moving a slider changes each interactive view,
 moving the light of a view with the light-position control changes its picture, and in every view
 whose points the mouse drags, a real mouse drag moves a point, changes the picture, and the point's
-sliders show its new place (chapter 24's de Casteljau explorer among them).
+sliders show its new place (chapter 24's de Casteljau explorer among them).  A chapter with checks
+of its own (chapter_checks.EXTRAS: chapter 11's query-point drag, chapter 15's Play button, the live
+decks of chapters 6 and 24) gets them right after it has run, so no chapter runs twice.
 
 Screenshots of every canvas and of each view before/after its slider moved are written to
 tests/browser/screenshots/ on every run, so a person can look at what the test saw.
@@ -15,6 +17,7 @@ import json
 import numpy as np
 import pytest
 
+from .chapter_checks import EXTRAS
 from .conftest import SCREENSHOTS, course_notebooks
 from .labdriver import drag_until, pixel_stats, wait_changed, wait_for, wait_nonblank
 
@@ -102,6 +105,9 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             (SCREENSHOTS / f"{stem}-{kind}{i}.png").write_bytes(png)
             report.append(f"  {kind} canvas {i}: {st}")
             assert st.nonblank(), f"{rel}: {kind} canvas {i} looks blank ({st}); see screenshots/{stem}-{kind}{i}.png"
+
+    for extra in EXTRAS.get(stem, []):      # the chapter's own interactions (chapter_checks.py)
+        report.append(extra(lab, nb))
 
     views = nb.locator(".goldman-interactive")
     for i in range(views.count()):

@@ -1,9 +1,11 @@
-"""Live decks (jupyterlab-slideshow): run a chapter, start its deck, walk forward until a slide
-shows a given live view, move that view's first slider and check its canvas changes, then stop the
-deck.  Cells stay live inside the deck, so pythreejs and ipympl work there.
+"""Live decks (jupyterlab-slideshow): in a chapter that has just run, start its deck, walk forward
+until a slide shows a given live view, move that view's first slider and check its canvas changes,
+then stop the deck.  Cells stay live inside the deck, so pythreejs and ipympl work there.
 
-Two decks: chapter 24 up to its three.js patch editor, and chapter 6 up to the IFS map editor (an
-ipympl figure, the shared Part I component an instructor edits live).
+Two decks (:data:`DECKS`; test_notebooks_in_lab makes these checks right after it has run the
+chapter, through chapter_checks.EXTRAS, so no chapter runs twice): chapter 24 up to its three.js
+patch editor, and chapter 6 up to the IFS map editor (an ipympl figure, the shared Part I component
+an instructor edits live).
 """
 
 from __future__ import annotations
@@ -12,18 +14,16 @@ import sys
 
 import pytest
 
-from .conftest import LAB_ROOT, SCREENSHOTS
+from .conftest import SCREENSHOTS
 from .labdriver import changed_fraction, wait_changed, wait_for, wait_nonblank
-
-pytestmark = pytest.mark.browser
 
 CHANGE_TOLERANCE = 0.001
 
-# (notebook, what to look for, the title of the view that holds it or "" for any view)
-DECKS = [
-    ("course/24_bezier_curves_and_surfaces.ipynb", ".jupyter-threejs canvas", ""),
-    ("course/06_ifs_fractals.ipynb", ".jupyter-matplotlib-canvas-div", "IFS map editor"),
-]
+# notebook stem: (what to look for, the title of the view that holds it or "" for any view)
+DECKS = {
+    "24_bezier_curves_and_surfaces": (".jupyter-threejs canvas", ""),
+    "06_ifs_fractals": (".jupyter-matplotlib-canvas-div", "IFS map editor"),
+}
 
 # Per canvas of the wanted kind (in a view with the wanted title): is it inside the window and on
 # top at its centre (what a viewer sees)?
@@ -62,14 +62,11 @@ _JS_SLIDE = """
 """
 
 
-@pytest.mark.parametrize("notebook,selector,title", DECKS, ids=["24-three.js", "06-ifs-editor"])
-def test_live_deck_view_responds(request, notebook, selector, title):
-    assert (LAB_ROOT / notebook).exists(), f"{notebook} is missing: the live-deck test needs it"
-    lab = request.getfixturevalue("lab")
+def live_deck_view_responds(lab, notebook: str) -> str:
+    """In the notebook (stem) that has just run: start its deck, walk to the view of DECKS, move its
+    slider, stop the deck; returns the report line."""
+    selector, title = DECKS[notebook]
     page = lab.page
-    lab.open(notebook)
-    state = lab.run_all()
-    assert not state["errors"], "cells raised:\n" + "\n".join(state["errors"])
     page.evaluate("() => { const w = window.__goldmanNotebook; w.content.activeCellIndex = 0; "
                   "w.content.deselectAll(); }")
     lab.command("deck:start")
@@ -82,14 +79,14 @@ def test_live_deck_view_responds(request, notebook, selector, title):
         except Exception:
             pytest.fail("code in the live deck does not wrap: binder/overrides.json is not installed as "
                         f"{sys.prefix}/share/jupyter/lab/settings/overrides.json (make venv installs it)")
-        _walk_and_move(lab, page, notebook, selector, title)
+        return _walk_and_move(lab, page, notebook, selector, title)
     finally:
         lab.command("deck:stop")
         page.wait_for_function("() => !document.querySelector('.jp-Deck')", timeout=30_000)
 
 
 def _walk_and_move(lab, page, notebook, selector, title):
-    stem = "live-deck-" + notebook.split("/")[-1][:2]
+    stem = "live-deck-" + notebook[:2]
     on_screen = lambda: page.evaluate(_JS_ON_SCREEN, [selector, title])  # noqa: E731
     page.wait_for_function("() => !!document.querySelector('.jp-Deck')", timeout=30_000)
 
@@ -145,8 +142,8 @@ def _walk_and_move(lab, page, notebook, selector, title):
     # focusing the slider may make its code cell the active one, but the slide must stay, in view
     still_here = (page.evaluate(_JS_SLIDE)["slide"] == slide["slide"]
                   and on_screen()[found]["onTop"])
-    print(f"\nlive deck of {notebook}: {steps} deck steps over {walked} slides {seen}; slide {walked} "
-          f"({slide['heading']!r}) holds {what} #{found} ({st}); moving its slider changed "
-          f"{frac:.1%} of the canvas pixels (changed_fraction={changed_fraction(before, after):.4f})")
     assert still_here, "pressing keys on the slider moved the deck to another slide"
     assert frac > CHANGE_TOLERANCE, f"moving the slider changed only {frac:.2%} of the canvas pixels"
+    return (f"  live deck: {steps} deck steps over {walked} slides; slide {walked} ({slide['heading']!r}) holds "
+            f"{what} #{found} ({st}); moving its slider changed {frac:.1%} of the canvas pixels "
+            f"(changed_fraction={changed_fraction(before, after):.4f})")
