@@ -93,11 +93,14 @@ def play_moves_the_key_frame_animation(lab, nb) -> str:
     return f"  key frames: Play moved the frame from {frame0} to {frame1}; {frac:.1%} of the view changed"
 
 
-#: The chapter's own checks, by notebook stem, run after the chapter has run and before its
-#: sliders move (the query point's winding number assumes the polygon as the notebook built it).
+#: The chapter's own checks, by notebook stem: ``first`` ones run right after the chapter has run,
+#: before its sliders move (the query point's winding number assumes the polygon as the notebook
+#: built it); ``last`` ones after every view has been checked (a deck re-lays the notebook out, so
+#: it comes after the drags, which measure where a point is on the screen).
 EXTRAS = {
-    "11_vector_geometry_applications": [drag_the_query_point_of_the_inside_outside_map],
-    "15_quaternions": [play_moves_the_key_frame_animation],
+    "11_vector_geometry_applications": {"first": [drag_the_query_point_of_the_inside_outside_map]},
+    "15_quaternions": {"first": [play_moves_the_key_frame_animation]},
 }
 for _stem in DECKS:        # the live deck of chapters 24 and 6 (live_deck.py)
-    EXTRAS.setdefault(_stem, []).append(lambda lab, nb, _stem=_stem: live_deck_view_responds(lab, _stem))
+    EXTRAS.setdefault(_stem, {}).setdefault("last", []).append(
+        lambda lab, nb, _stem=_stem: live_deck_view_responds(lab, _stem))

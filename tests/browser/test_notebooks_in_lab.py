@@ -106,7 +106,7 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             report.append(f"  {kind} canvas {i}: {st}")
             assert st.nonblank(), f"{rel}: {kind} canvas {i} looks blank ({st}); see screenshots/{stem}-{kind}{i}.png"
 
-    for extra in EXTRAS.get(stem, []):      # the chapter's own interactions (chapter_checks.py)
+    for extra in EXTRAS.get(stem, {}).get("first", []):    # the chapter's own interactions (chapter_checks.py)
         report.append(extra(lab, nb))
 
     views = nb.locator(".goldman-interactive")
@@ -263,6 +263,8 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             assert lit_frac > CHANGE_TOLERANCE, (
                 f"{rel}: moving the light of interactive view {i} changed only {lit_frac:.2%} of its {kind} "
                 f"(see screenshots/{stem}-view{i}-light.png)")
+    for extra in EXTRAS.get(stem, {}).get("last", []):     # the live decks (chapter_checks.py)
+        report.append(extra(lab, nb))
     problems = lab.dom_problems()
     assert not problems, f"{rel}: errors after moving sliders and dragging points:\n" + "\n".join(problems)
     print("\n".join(report))
