@@ -239,7 +239,9 @@ def transform_explorer(kind: str = "rotation", figure: str = "letter F") -> Inte
                                                                    "direction", "shear") if n not in KINDS[kind]]
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="Affine maps: a figure and its image", side=True,
-                           arrange=[controls[n] for n in names], extra=[legend])
+                           arrange=[controls[n] for n in names], extra=[legend],
+                           acts={n: {"kind": [k for k, used in KINDS.items() if n in used]}
+                                 for n in ("tx", "ty", "angle", "cx", "cy", "factor", "direction", "shear")})
 
     # The mouse drags the point the chosen map has: the tip of v for a translation, else the centre.
     def grips():
