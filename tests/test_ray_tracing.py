@@ -347,8 +347,10 @@ def test_work_budgets():
     scene, cam = rt.default_scene(), rt.default_camera()
     with pytest.raises(ValueError, match="width|height"):
         rt.render(scene, cam, 100_000, 1_000, depth=0)
-    with pytest.raises(ValueError, match="depth"):
-        rt.render(scene, cam, 1000, 1000, depth=4)
+    with pytest.raises(ValueError, match="max_rays = 10,000,000"):
+        rt.render(scene, cam, 3000, 3000, depth=4)      # 9 million primary rays and their shadow rays
+    with pytest.raises(ValueError, match="max_rays"):
+        rt.render(scene, cam, 4, 4, depth=1, max_rays=0)
     with pytest.raises(ValueError, match="depth"):
         rt.render(scene, cam, 4, 4, depth=rt.MAX_DEPTH + 1)
     with pytest.raises(TypeError, match="objects"):
@@ -379,3 +381,39 @@ def test_the_bounding_sphere_cull_changes_no_pixel(monkeypatch):
     plain = rt.render(scene, cam, 48, 36, depth=3)
     assert np.abs(culled - plain).max() < 1e-9
     assert len(np.unique(culled.reshape(-1, 3).round(3), axis=0)) > 50     # a picture, not a blank
+
+
+def test_640x480_at_depth_5_of_the_default_scene_is_within_the_budget():
+    """Issue 18: the budget counts the rays traced, not a full binary tree per pixel (640 * 480 * 63
+    = 19.4 million, which the old budget refused): the default scene spawns secondary rays at few
+    pixels."""
+    counts = {}
+    img = rt.render(rt.default_scene(), rt.default_camera(), 640, 480, depth=5, counts=counts)
+    assert img.shape == (480, 640, 3)
+    pixels = 640 * 480
+    assert pixels <= counts["rays"] < 2 * pixels                 # primary rays, and a few secondary ones
+    assert counts["rays"] + counts["shadow"] <= rt.MAX_ITEMS < pixels * (2 ** 6 - 1)
+
+
+def _mirror_corridor():
+    """Two mirrors facing each other (the planes x = -1 and x = 1) and a camera between them looking
+    along +x: every ray hits a mirror and spawns one reflected ray, on every level."""
+    mirror = Material(colour=(0.9, 0.9, 0.9), ambient=0.1, diffuse=0.1, specular=0.0, reflect=0.9)
+    scene = rt.Scene([Plane((-1.0, 0.0, 0.0), (1.0, 0.0, 0.0), mirror),
+                      Plane((1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), mirror)],
+                     [Light((0.0, 0.0, 5.0))], background=(0.0, 0.0, 0.0))
+    camera = rt.Camera((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), up=(0.0, 0.0, 1.0), fov=40.0)
+    return scene, camera
+
+
+def test_a_hall_of_mirrors_is_refused_at_the_level_that_passes_the_budget():
+    scene, camera = _mirror_corridor()
+    counts = {}
+    # 32 x 24 = 768 rays on every level, each with one shadow ray: 1,536 per level; a budget of
+    # 5,000 holds levels 0-2 (4,608) and refuses level 3 before tracing it
+    with pytest.raises(ValueError, match=r"max_rays: tracing level 3 .* over the budget max_rays = 5,000"):
+        rt.render(scene, camera, 32, 24, depth=12, counts=counts, max_rays=5000)
+    assert counts == {"rays": 3 * 768, "shadow": 3 * 768}           # it stopped there
+    full = {}
+    rt.render(scene, camera, 32, 24, depth=12, counts=full)         # the default budget holds all 13 levels
+    assert full == {"rays": 13 * 768, "shadow": 13 * 768}

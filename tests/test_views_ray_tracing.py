@@ -1,12 +1,14 @@
 """Chapter 17's view draws what goldman_lib.ray_tracing computes: the image of the chapter's scene
 (the same pixels as render), updated in place by the depth, index and light sliders, and the ray
-tree of the chosen pixel in the x-z side view, chosen by sliders or a click, with the light dragged."""
+tree of the chosen pixel in the plane of its rays (spheres cut by that plane, no ray drawn across a sphere
+it misses), chosen by sliders or a click, with the light dragged."""
 
 import numpy as np
 import pytest
 from matplotlib.backend_bases import MouseEvent
 
 from goldman_lib import ray_tracing as rt
+from goldman_lib.simple_surfaces import Sphere
 from goldman_lib.views import ray_tracing as rv
 
 
@@ -42,13 +44,20 @@ def test_the_ray_tree_of_the_chosen_pixel():
     r = view.set_values(depth=0, px=80, py=60)
     kinds = [rv.KINDS[k] for k in r["kinds"]]
     assert kinds[0] == "primary" and set(kinds) <= {"primary", "shadow"}
-    # the primary ray starts at the eye, seen from the side: (x, z) = (-7, 2.2)
-    assert np.allclose(r["segments"][0, 0], [-7.0, 2.2])
+    # the primary ray starts at the eye, the origin of the drawing's plane, and runs along its first axis
+    eye = rt.default_camera().eye
+    tree0 = rt.ray_tree(rt.default_scene(), rt.default_camera(), 80, 60, 0, rv.WIDTH, rv.HEIGHT, miss_length=4.0)
+    length = np.linalg.norm(tree0[0].end - eye)
+    assert np.allclose(r["segments"][0], [[0.0, 0.0], [length, 0.0]])
     # a pixel on the glass sphere has reflected and refracted rays at depth 3
     r = view.set_values(depth=3, px=52, py=70)
     assert {"reflected", "refracted", "shadow"} <= {rv.KINDS[k] for k in r["kinds"]}
     tree = rt.ray_tree(rt.default_scene(), rt.default_camera(), 52, 70, 3, rv.WIDTH, rv.HEIGHT, miss_length=4.0)
-    assert np.allclose(r["segments"], [[s.start[[0, 2]], s.end[[0, 2]]] for s in tree])
+    # the rays of the first hit (primary, first reflected and refracted) lie in the plane: drawn at full length
+    for s, (a, b), off in zip(tree, r["segments"], r["off_plane"]):
+        if s.kind != "shadow" and s.level <= 1:
+            assert not off
+            assert np.linalg.norm(b - a) == pytest.approx(np.linalg.norm(s.end - s.start), rel=1e-9)
     assert r["blocked"].tolist() == [s.kind == "shadow" and s.light == 0 for s in tree]
     # pixel (52, 70)'s tree has shadow rays that pass the glass sphere with k_t = 0.88 of the light
     assert any(s.kind == "shadow" and s.hit and s.light == pytest.approx(0.88) for s in tree)
@@ -67,7 +76,7 @@ def test_clicking_the_image_chooses_the_pixel():
     event = MouseEvent("button_press_event", fig.canvas, x, y, button=1)
     fig.canvas.callbacks.process("button_press_event", event)
     assert (view.values()["px"], view.values()["py"]) == (120, 31)
-    assert view.last_result["segments"][0, 0].tolist() == [-7.0, 2.2]
+    assert np.allclose(view.last_result["segments"][0, 0], [0.0, 0.0])     # the eye
 
 
 def test_dragging_the_light_in_the_side_view():
@@ -75,8 +84,50 @@ def test_dragging_the_light_in_the_side_view():
     before = view.last_result["image"].copy()
     _, ax_side = view.axes
     ax_side.figure.canvas.draw()
-    view.drag.press_at(-2.5, 5.0)
-    view.drag.move_to(1.0, 3.0)
+    a, b = view.drag.position(0)
+    origin, U, V = view.last_result["plane"]
+    lamp = np.array(rt.default_lights()[0].position)
+    view.drag.press_at(a, b)
+    view.drag.move_to(a + 1.0, b - 1.0)
     view.drag.release()
-    assert view.values()["light0_x"] == 1.0 and view.values()["light0_z"] == 3.0
+    moved = np.array([view.values()[f"light0_{k}"] for k in "xyz"])
+    # the light moved by U - V (to the sliders' 0.1 steps) and kept its distance from the plane
+    assert np.allclose(moved, lamp + U - V, atol=0.051 * 3)
     assert not np.allclose(view.last_result["image"], before)
+
+
+@pytest.mark.parametrize("px,py", [(52, 70), (80, 60), (30, 90), (110, 40), (140, 75)])
+def test_a_ray_that_misses_a_sphere_is_not_drawn_across_its_disc(px, py):
+    """Issue 18: in the x-z side view a reflected ray of pixel (52, 70) seemed to pass through a sphere
+    it misses.  Here every ray that misses a sphere in space (closest approach of the segment to the
+    centre beyond the radius, computed directly) has no drawn point inside that sphere's disc."""
+    view = rv.ray_tracing_view(px=px, py=py)
+    r = view.last_result
+    origin, U, V = r["plane"]
+    N = np.cross(U, V)
+    spheres = [o for o in rt.default_scene().objects if isinstance(o, Sphere)]
+    tree = rt.ray_tree(rt.default_scene(), rt.default_camera(), px, py, 3, rv.WIDTH, rv.HEIGHT, miss_length=4.0)
+    for obj, disc, cut in zip(spheres, r["discs"], r["cut"]):
+        c, radius = np.asarray(obj.center, float), obj.radius
+        d = float(np.dot(c - origin, N))
+        assert cut == (abs(d) < radius)
+        if not cut:
+            continue
+        centre2 = [np.dot(c - origin, U), np.dot(c - origin, V)]
+        assert np.allclose(disc, [*centre2, np.sqrt(radius ** 2 - d ** 2)])      # where the plane cuts it
+        for i, s in enumerate(tree):
+            seg = s.end - s.start
+            t = np.clip(np.dot(c - s.start, seg) / np.dot(seg, seg), 0.0, 1.0)
+            if np.linalg.norm(s.start + t * seg - c) <= radius * (1 + 1e-6):
+                continue                                                     # this ray meets the sphere
+            for j, pts in zip(r["piece_rays"], r["pieces"]):
+                if j == i:
+                    assert np.all(np.hypot(pts[:, 0] - disc[0], pts[:, 1] - disc[1]) >= disc[2] * (1 - 1e-9)), \
+                        f"ray {i} ({s.kind}) is drawn across the disc of the sphere at {obj.center} it misses"
+
+
+def test_the_legend_is_in_the_static_picture():
+    view = rv.ray_tracing_view()
+    _, ax_side = view.axes
+    labels = [t.get_text() for t in ax_side.get_legend().get_texts()]
+    assert {"primary ray", "reflected ray", "refracted ray", "shadow ray", "blocked shadow ray"} <= set(labels)

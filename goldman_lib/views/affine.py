@@ -6,10 +6,14 @@ under a map.  Three widget factories return an
 returning what it drew:
 
 * :func:`transform_explorer`: pick translation, rotation, uniform scaling, nonuniform scaling,
-  shear or mirror; sliders for its parameters (centre, angle, factor, direction);
+  shear or mirror; sliders for its parameters (centre, angle, factor, direction); the mouse drags
+  the centre (the tip of v for a translation);
 * :func:`three_point_explorer`: sliders for the images of three points, the map
-  :func:`goldman_lib.affine.affine_from_points` (§4.7.3);
-* :func:`rotation_about_point_view`: rotation about ``Q`` as ``T(-Q) R T(Q)``, step by step (§4.4).
+  :func:`goldman_lib.affine.affine_from_points` (§4.7.3); the mouse drags the three images;
+* :func:`rotation_about_point_view`: rotation about ``Q`` as ``T(-Q) R T(Q)``, step by step (§4.4); the mouse drags Q.
+
+Each point a learner places can be dragged (``view.drag``, the shared
+:class:`~goldman_lib.views.drag.PointDrag`); a drag sets the point's sliders.
 
 >>> view = transform_explorer()
 >>> sorted(view.update(**view.values()))
@@ -24,6 +28,7 @@ from goldman_lib import affine
 from goldman_lib.angles import cos_sin_degrees
 from goldman_lib.validation import as_points
 from goldman_lib.views import style
+from goldman_lib.views.drag import PointDrag, _snap, drag_sliders
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
 from goldman_lib.views.turtle import stroke_data
 
@@ -196,7 +201,7 @@ def transform_explorer(kind: str = "rotation", figure: str = "letter F") -> Inte
     (guide,) = ax.plot([], [], color=style.PALETTE["accent"], linewidth=1.2, zorder=1)
     pal = style.PALETTE
     legend = _legend([(pal["control"], "- - -", "the figure"), (pal["curve"], "&#9473;&#9473;", "its image"),
-                      (pal["point"], "&#9679;", "the centre"),
+                      (pal["point"], "&#9679;", "the centre (drag it)"),
                       (pal["accent"], "&#9473;&#9473;", "the direction (or the vector v)")])
 
     def show_relevant(change=None):
@@ -232,9 +237,25 @@ def transform_explorer(kind: str = "rotation", figure: str = "letter F") -> Inte
     # The default map's sliders first: the first slider on the page is one that moves the picture.
     names = ["kind", "figure"] + list(KINDS[kind]) + [n for n in ("tx", "ty", "angle", "cx", "cy", "factor",
                                                                    "direction", "shear") if n not in KINDS[kind]]
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="Affine maps: a figure and its image", side=True,
-                           arrange=[controls[n] for n in names], extra=[legend])
+                           arrange=[controls[n] for n in names], extra=[legend],
+                           acts={n: {"kind": [k for k, used in KINDS.items() if n in used]}
+                                 for n in ("tx", "ty", "angle", "cx", "cy", "factor", "direction", "shear")})
+
+    # The mouse drags the point the chosen map has: the tip of v for a translation, else the centre.
+    def grips():
+        vals = view.values()
+        if vals["kind"] == "translation":
+            return np.array([[vals["tx"], vals["ty"]]])
+        return np.array([[vals["cx"], vals["cy"]]])
+
+    def on_drag(k, x, y):
+        xs, ys = ("tx", "ty") if view.controls["kind"].value == "translation" else ("cx", "cy")
+        view.set_values(**{xs: _snap(controls[xs], x), ys: _snap(controls[ys], y)})
+
+    view.drag = PointDrag(ax, grips, on_drag)
+    return view
 
 
 #: The source triangle of :func:`three_point_explorer`.
@@ -243,7 +264,8 @@ SOURCE_TRIANGLE = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
 
 def three_point_explorer(images=((1.0, 0.5), (3.0, 1.0), (1.5, 2.5)), figure: str = "letter F") -> InteractiveView:
     """Sliders for the images ``Q1, Q2, Q3`` of the points ``(0, 0), (1, 0), (0, 1)``; the
-    unique affine map sending them there moves the figure (Goldman §4.7.3).
+    unique affine map sending them there moves the figure (Goldman §4.7.3).  Drag the images with
+    the mouse (``view.drag``) or set them on their sliders.
 
     images: the initial ``(3, 2)`` images.  If the images are collinear the map is singular and
     the image of the figure collapses onto a line (the status says so).  ``update(figure, x1, y1,
@@ -271,7 +293,7 @@ def three_point_explorer(images=((1.0, 0.5), (3.0, 1.0), (1.5, 2.5)), figure: st
     for k, p in enumerate(SOURCE_TRIANGLE, start=1):
         ax.annotate(f"$P_{k}$", p, textcoords="offset points", xytext=(-12, -12), fontsize=9, color=pal["control"])
     legend = _legend([(pal["control"], "- - -", "the figure and P1 = (0, 0), P2 = (1, 0), P3 = (0, 1)"),
-                      (pal["curve"], "&#9473;&#9473;", "its image"), (pal["point"], "&#9679;", "Q1, Q2, Q3")])
+                      (pal["curve"], "&#9473;&#9473;", "its image"), (pal["point"], "&#9679;", "Q1, Q2, Q3 (drag them)")])
 
     def update(figure, x1, y1, x2, y2, x3, y3):
         polys = _figure(figure)
@@ -295,8 +317,10 @@ def three_point_explorer(images=((1.0, 0.5), (3.0, 1.0), (1.5, 2.5)), figure: st
         return {"original": polys, "image": img, "source": SOURCE_TRIANGLE.copy(), "target": T, "matrix": M,
                 "status": status}
 
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="The affine map of three points", side=True, extra=[legend])
+    drag_sliders(view, ax, [("x1", "y1"), ("x2", "y2"), ("x3", "y3")])   # drag Q1, Q2, Q3 with the mouse
+    return view
 
 
 def rotation_about_point_view(angle: float = 60.0, qx: float = 2.0, qy: float = 1.0) -> InteractiveView:
@@ -319,7 +343,7 @@ def rotation_about_point_view(angle: float = 60.0, qx: float = 2.0, qy: float = 
     (qdot,) = ax.plot([], [], "o", color=pal["point"], markersize=6, zorder=5)
     symbols = {"--": "- - -", ":": "&middot;&middot;&middot;&middot;", "-.": "-&middot;-&middot;",
                "-": "&#9473;&#9473;"}
-    legend = _legend([(c, symbols[ls], lab) for c, ls, lab in styles] + [(pal["point"], "&#9679;", "Q")])
+    legend = _legend([(c, symbols[ls], lab) for c, ls, lab in styles] + [(pal["point"], "&#9679;", "Q (drag it)")])
     polys = FIGURES["letter F"]
 
     def update(angle, qx, qy):
@@ -338,5 +362,7 @@ def rotation_about_point_view(angle: float = 60.0, qx: float = 2.0, qy: float = 
                   f"applied directly: {gap:.1e}")
         return {"steps": steps, "direct": direct, "matrix": M, "status": status}
 
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="Rotation about Q = T(-Q) R T(Q)", side=True, extra=[legend])
+    drag_sliders(view, ax, [("qx", "qy")])       # drag Q with the mouse
+    return view

@@ -462,6 +462,7 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
                 "level": int_slider("level", level, 0, 4),
                 "height": float_slider("plane z", height, 0.05, 0.6, 0.05)}
     view = InteractiveView(controls=controls, views=[scene.widget], update=update, static=scene.to_png,
-                           title="patch subdivision and intersection", side=True)
+                           title="patch subdivision and intersection", side=True,
+                           acts={"height": {"mode": ["intersection"]}})     # the cutting plane: intersection only
     view.scene = scene
     return view

@@ -35,6 +35,7 @@ from goldman_lib import conformal_ifs as cf
 from goldman_lib.validation import as_float, as_int
 from goldman_lib.views import style
 from goldman_lib.views import _checks
+from goldman_lib.views.drag import drag_sliders
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.turtle import stroke_data
 
@@ -163,7 +164,8 @@ def initial_state_view(fractal: str = "Koch curve", level: int = 2, x: float = 0
     """Changing the turtle's initial state (Goldman §8.2): the drawing from the standard state
     ``((0, 0), (1, 0))`` in grey, the drawing from ``P = (x, y)``, ``w = scale (cos angle, sin
     angle)`` in blue, and the standard drawing mapped by the similarity ``M =
-    state_map(P, w)`` as orange dots on top: they land exactly on the blue drawing.
+    state_map(P, w)`` as orange dots on top: they land exactly on the blue drawing.  P can be
+    dragged with the mouse (``view.drag``).
 
     ``update(fractal, level, x, y, angle, scale)`` returns ``{"standard", "moved", "mapped"
     (lists of strokes), "matrix" (3, 3), "error" (largest distance between moved and mapped
@@ -193,6 +195,7 @@ def initial_state_view(fractal: str = "Koch curve", level: int = 2, x: float = 0
     std_arrow = _state_arrow(ax, "#888888")
     new_arrow = _state_arrow(ax, style.PALETTE["point"])
     title = ax.set_title("", fontsize=10)
+    frame: dict = {}
 
     def update(fractal, level, x, y, angle, scale):
         program = fractals.PROGRAMS[_checks.option(fractals.PROGRAMS, fractal, "fractal")]()
@@ -213,7 +216,8 @@ def initial_state_view(fractal: str = "Koch curve", level: int = 2, x: float = 0
         mapped_dots.set_data(dots[:, 0], dots[:, 1])
         _set_arrow(std_arrow, (0.0, 0.0), (1.0, 0.0))
         _set_arrow(new_arrow, (x, y), w)
-        _fit(ax, standard + moved, extra=[[0, 0], [1, 0], [x, y], [x + w[0], y + w[1]]])
+        if not frame.get("hold"):
+            _fit(ax, standard + moved, extra=[[0, 0], [1, 0], [x, y], [x + w[0], y + w[1]]])
         title.set_text(f"{program.name}, level {lev}: from ((0,0),(1,0)) and from (P, w)")
         status = (f"M = rotate {angle:.0f}°, scale {scale:.2f}, translate ({x:.2f}, {y:.2f});  "
                   f"largest |turtle from (P,w) − M(turtle from standard)| = {error:.1e}")
@@ -222,8 +226,28 @@ def initial_state_view(fractal: str = "Koch curve", level: int = 2, x: float = 0
         return {"standard": standard, "moved": moved, "mapped": mapped, "matrix": M,
                 "error": error if np.isfinite(error) else -1.0, "status": status}
 
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="§8.2 Changing the turtle's initial state", side=True)
+    _drag_start(view, ax, frame)
+    return view
+
+
+def _drag_start(view, ax, frame):
+    """Let the mouse drag the turtle's start P (the sliders ``x``, ``y``) in ``ax``; while P is held
+    the axes keep their limits (``frame["hold"]``), so P stays under the mouse, and refit on release."""
+    drag = drag_sliders(view, ax, [("x", "y")])
+    grab = drag.on_drag
+
+    def on_drag(k, x, y):
+        frame["hold"] = True
+        grab(k, x, y)
+
+    def on_release(k):
+        if frame.pop("hold", False):
+            view.refresh()
+
+    drag.on_drag, drag.on_release = on_drag, on_release
+    return drag
 
 
 # ---------------------------------------------------------------------------------------------
@@ -247,7 +271,8 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
     angle, sin angle)``, into a conformal IFS; the left panel is the turtle's level, the right
     the deterministic algorithm's level of the IFS (each top-level copy ``T_i(G_{n-1})`` in its
     own colour, the condensation set in grey).  The status line gives the Hausdorff distance
-    between the two drawings (zero up to rounding: the equivalence theorem).
+    between the two drawings (zero up to rounding: the equivalence theorem).  P can be dragged
+    with the mouse in the left panel (``view.drag``).
 
     ``update(fractal, level, x, y, angle, scale)`` returns ``{"turtle", "ifs" (lists of
     strokes), "pieces" (strokes per map), "maps" (k, 3, 3), "distance", "level", "status"}``.
@@ -278,6 +303,7 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
     left_title = left.set_title("", fontsize=10, y=1.0)
     right_title = right.set_title("", fontsize=10, y=1.0)
     cache: dict = {}
+    frame: dict = {}
 
     def update(fractal, level, x, y, angle, scale):
         program = fractals.PROGRAMS[_checks.option(fractals.PROGRAMS, fractal, "fractal")]()
@@ -302,8 +328,9 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
         cond_line.set_data(*stroke_data(cond))
         drawn = [p for piece in pieces for p in piece] + cond
         box = _bounds(strokes + drawn, extra=[[x, y], [x + w[0], y + w[1]]])
-        for ax in (left, right):
-            _fit(ax, (), bounds=box)
+        if not frame.get("hold"):
+            for ax in (left, right):
+                _fit(ax, (), bounds=box)
         distance = cf.drawing_distance(strokes, drawn)
         k = len(conv.maps)
         scales = sorted({round(float(f), 4) for f in fixed_point.contraction_factor(conv.maps)})
@@ -319,8 +346,10 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
         return {"turtle": strokes, "ifs": drawn, "pieces": pieces, "maps": conv.maps, "distance": distance,
                 "level": lev, "status": status}
 
-    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="Chapter 8: the turtle's drawing and the IFS's drawing, side by side")
+    _drag_start(view, left, frame)
+    return view
 
 
 # ---------------------------------------------------------------------------------------------

@@ -319,7 +319,9 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
                controls["algorithm"], controls["points"], controls["levels"], controls["condensation"]]
 
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="IFS map editor", side=True, arrange=arrange)
+                           title="IFS map editor", side=True, arrange=arrange,
+                           # a map's probability is the chaos game's: the deterministic algorithm ignores it
+                           acts={f"p{i}": {"algorithm": ["chaos game"]} for i in range(MAX_MAPS)})
 
     def show_rows(_=None):
         k = controls["maps"].value

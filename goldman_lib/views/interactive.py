@@ -184,6 +184,16 @@ class InteractiveView(widgets.VBox):
     side: put the controls to the right of the view instead of below it.  arrange: the widgets
     of the control area if not simply the controls in order (e.g. sliders in a grid).  extra:
     more widgets under the controls (a program editor's help text, a reset button).
+    acts: which controls act in which mode, ``{control: {mode_control: allowed values}}``: the
+    control acts only while every named mode control holds one of its allowed values (or, for a
+    rule that is a function, while ``rule(values)`` is true), and is
+    disabled (greyed, ``disabled=True``) otherwise, enabled again when the mode changes (issue 18:
+    a slider that changes nothing in the current mode must not look as if it could).
+
+    >>> v = InteractiveView(controls={"mode": dropdown("mode", ["a", "b"]), "k": int_slider("k", 1, 0, 5)},
+    ...                     views=[], update=lambda mode, k: {}, acts={"k": {"mode": ["b"]}})
+    >>> v.controls["k"].disabled, v.set_values(mode="b") is not None, v.controls["k"].disabled
+    (True, True, False)
     """
 
     #: Every live view by its number (``uid``), which its box also carries as the CSS class
@@ -193,9 +203,21 @@ class InteractiveView(widgets.VBox):
 
     def __init__(self, *, controls: Mapping[str, widgets.Widget], views: list, update: Callable[..., dict],
                  figure=None, static: Callable[[], bytes] | None = None, title: str = "",
-                 side: bool = False, extra: list | None = None, arrange: list | None = None):
+                 side: bool = False, extra: list | None = None, arrange: list | None = None,
+                 acts: Mapping[str, Mapping[str, object]] | None = None):
         self.uid = next(InteractiveView._count)
         self.controls = dict(controls)
+        self.acts = {}
+        for name, modes in (acts or {}).items():
+            if name not in self.controls:
+                raise KeyError(f"acts names a control {name!r} the view does not have; controls are {sorted(self.controls)}")
+            if callable(modes):
+                self.acts[name] = modes
+                continue
+            for mode, allowed in modes.items():
+                if mode not in self.controls:
+                    raise KeyError(f"acts[{name!r}] names a mode control {mode!r} the view does not have")
+            self.acts[name] = {mode: tuple(allowed) for mode, allowed in modes.items()}
         self.update = _checked(update, self.controls)
         self.figure = figure
         self._static = static
@@ -263,8 +285,31 @@ class InteractiveView(widgets.VBox):
         return control_grid(self.controls, n=n, max_full=max_full)
 
     # -- the widget side -----------------------------------------------------------------------
+    def acting(self, values: Mapping | None = None) -> dict:
+        """``{control: True/False}``: whether each control acts in the mode ``values`` (default the
+        controls' current values) holds, by the view's ``acts`` (a control it does not name always acts)."""
+        values = self.values() if values is None else values
+
+        def acts(rule):
+            try:
+                if callable(rule):
+                    return bool(rule(values))
+                return all(any(_equal(values.get(mode), a) for a in allowed) for mode, allowed in rule.items())
+            except Exception:  # noqa: BLE001 - a mode value no option has (set by code): leave the control on
+                return True
+
+        return {name: acts(self.acts.get(name, {})) for name in self.controls}
+
+    def _apply_modes(self):
+        if not self.acts:
+            return
+        for name, on in self.acting().items():
+            if name in self.acts:
+                self.controls[name].disabled = not on
+
     def refresh(self):
         """Call ``update`` with the current values; show a message instead of a traceback."""
+        self._apply_modes()
         try:
             result = self.update(**self.values()) or {}
         except Exception as exc:  # noqa: BLE001 - a widget must never show a traceback
@@ -313,6 +358,14 @@ class InteractiveView(widgets.VBox):
             data["image/png"] = base64.b64encode(png).decode("ascii")
         data["text/plain"] = f"[interactive view{': ' + self.title if self.title else ''}; run the notebook to use it]"
         return data
+
+
+def _equal(a, b) -> bool:
+    """``a == b`` as one truth value (False for values, such as arrays, that give no single one)."""
+    try:
+        return bool(a == b)
+    except Exception:  # noqa: BLE001
+        return False
 
 
 def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping) -> None:

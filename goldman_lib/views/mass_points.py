@@ -187,7 +187,8 @@ def pseudoperspective_view(eye_y: float = 1.0, eye_z: float = 0.0, plane_z: floa
 
     ``update(eye_y, eye_z, plane_z)`` returns the scene, the perspective images, the
     pseudoperspective pairs ``(δ, height)`` and the labelled points' depths and pseudodepths.
-    Degenerate positions give messages, never exceptions.
+    Degenerate positions give messages, never exceptions.  The eye can be dragged with the mouse in
+    the left panel (``view.drag``).
     """
     fig = style.new_figure(figsize=style.WIDE_FIGSIZE)
     left = style.style_axes(fig.add_subplot(1, 2, 1), equal=False)
@@ -306,5 +307,6 @@ def pseudoperspective_view(eye_y: float = 1.0, eye_z: float = 0.0, plane_z: floa
                 "plane_z": float_slider("plane z", plane_z, -3.0, 10.0, 0.1)}
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="perspective versus pseudoperspective (side view)")
+    drag_sliders(view, left, [("eye_z", "eye_y")])     # drag the eye in the side view (z across, y up)
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
     return view

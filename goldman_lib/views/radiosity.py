@@ -99,7 +99,8 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     current iteration marked.  Left of it, the ceiling in the x, y plane with the emission of its patches:
     drag the light's marker there (the shared drag helper) or use its sliders.
 
-    ``update(...)`` returns ``{"radiosities" (n, 3), "colours" (4n, 3), "iteration", "residual",
+    Only the chosen solver's step slider is enabled (the other two are greyed out: they would change
+    nothing).  ``update(...)`` returns ``{"radiosities" (n, 3), "colours" (4n, 3), "iteration", "residual",
     "emission" (n, 3), "status"}``.
     """
     if solver not in SOLVERS:
@@ -219,7 +220,10 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
 
     view = InteractiveView(controls=controls, views=[widgets.HBox([scene.widget, figure_widget(fig)]), legend],
                            update=update, figure=fig, static=static,
-                           title="§23.5 radiosity of a Cornell box, iteration by iteration")
+                           title="§23.5 radiosity of a Cornell box, iteration by iteration",
+                           # each solver's step slider acts only while that solver is shown
+                           acts={"shots": {"solver": ["progressive"]}, "jacobi_k": {"solver": ["jacobi"]},
+                                 "gs_k": {"solver": ["gauss_seidel"]}})
     light.drag_in(view, ax_map, plane="xy")
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
     view.scene, view.light = scene, light

@@ -99,6 +99,20 @@ def make_surface(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
                                  [radius, -1.2 * radius / height, radius / height ** 2], height, material=m)
 
 
+#: The shape sliders each surface of the gallery reads (measured: each other slider leaves its picture
+#: unchanged); the others are disabled while it is shown.
+USES = {"plane": (), "polygon (non-convex)": ("radius",), "sphere": ("radius",), "cylinder": ("radius", "height"),
+        "cone": ("height", "half_angle"), "ellipsoid": ("radius", "height"), "elliptic cylinder": ("radius", "height"),
+        "elliptic cone": ("height", "half_angle"), "quadric (hyperboloid)": ("radius",), "torus": ("R", "r"),
+        "surface of revolution": ("radius", "height")}
+
+
+def _acts():
+    """The gallery's ``acts`` rule: each shape slider acts for the surfaces that read it."""
+    return {name: {"kind": [k for k, used in USES.items() if name in used]}
+            for name in ("R", "r", "radius", "height", "half_angle")}
+
+
 def _controls(kind, radius, height, half_angle, R, r):
     # the torus (the default surface) first: its sliders are the ones that move the default picture
     return {
@@ -168,7 +182,7 @@ def gallery_view(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
         return {"image": image, "status": _describe(surface, kind)}
 
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
-                           title="§19 simple surfaces, ray traced", side=True)
+                           title="§19 simple surfaces, ray traced", side=True, acts=_acts())
     view.light_control = light
     style.pin_layout(fig)       # the title need not be placed again at each redraw
     return view
@@ -257,7 +271,7 @@ def surface_scene_view(kind: str = "torus", radius: float = 0.8, height: float =
                 "status": f"{kind} ({SURFACES[kind]}): {len(triangles):,} triangles; drag to orbit"}
 
     view = InteractiveView(controls=controls, views=[scene.widget], update=update, static=scene.to_png,
-                           title="§19 simple surfaces in three.js", side=True)
+                           title="§19 simple surfaces in three.js", side=True, acts=_acts())
     view.scene = scene
     view.light_control = light
     return view

@@ -250,7 +250,8 @@ def scaling_view(s=1.6, kind="nonuniform", direction=(1.0, 0.0, 0.6), center=(0.
     legend = _legend(("F", _GREY), ("scaled F", COLOURS["image"]), ("centre", COLOURS["point"]),
                      ("direction (nonuniform)", COLOURS["w"]))
     return InteractiveView(controls=controls, views=[scene.widget, legend], update=update, static=scene.to_png,
-                           title="uniform and nonuniform scaling (§12.4)", side=True)
+                           title="uniform and nonuniform scaling (§12.4)", side=True,
+                           acts={k: {"kind": ["nonuniform"]} for k in ("dx", "dy", "dz")})   # the direction: nonuniform only
 
 
 # -- §12.5 projections -----------------------------------------------------------------------------------------
@@ -334,7 +335,8 @@ def projection_view(kind="perspective", eye=(0.6, -3.6, 1.6), plane_y=-1.2, tilt
     legend = _legend(("F", _GREY), ("image on the plane", COLOURS["image"]), ("lines of sight", _SIGHT),
                      ("eye", COLOURS["point"]))
     return InteractiveView(controls=controls, views=[scene.widget, legend], update=update, static=scene.to_png,
-                           title="orthogonal and perspective projection (§12.5)", side=True)
+                           title="orthogonal and perspective projection (§12.5)", side=True,
+                           acts={k: {"kind": ["perspective"]} for k in ("ex", "ey", "ez")})   # the eye: perspective only
 
 
 # -- chapter 13: the matrices ------------------------------------------------------------------------------
@@ -411,7 +413,10 @@ def composition_view(first="translate by (t, 0, 0)", second="rotate about the ve
     legend = _legend(("F", _GREY), ("first A, then B", COLOURS["image"]), ("first B, then A", COLOURS["w"]))
     return InteractiveView(controls=controls, views=[scene.widget, legend, tables], update=update,
                            static=scene.to_png, title="composing transformations: first A, then B is A B (ch. 13)",
-                           side=True)
+                           side=True,
+                           # a parameter acts while one of the two chosen maps uses it
+                           acts={name: (lambda v, name=name: name in (MAPS.get(v["first"], ("",))[0], MAPS.get(v["second"], ("",))[0]))
+                                 for name in ("angle", "m", "s", "t")})
 
 
 def perspective_matrix_view(eye=(0.6, -3.6, 1.6), plane_y=-1.2, tilt=0.0, corner=8) -> InteractiveView:
