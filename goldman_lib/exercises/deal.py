@@ -33,7 +33,7 @@ an :class:`Exercise`:
 - ``well_posed(params) -> str | None``: why an instance is not well posed (degenerate,
   ill-conditioned), or None; on top of it every draw must keep the answer and its slips pairwise
   apart (no slip equals the answer, no two slips coincide, by ``same``);
-- ``statement(params)``, ``steps(params)``: the problem text (with its Goldman §) and the worked
+- ``statement(params)``, ``steps(params)``: the problem text (citing the book's section) and the worked
   steps (markdown text).
 
 ``tests/test_exercise_generators.py`` draws a few hundred seeds of every exercise that deals and

@@ -67,7 +67,8 @@ _JS_READOUT = """
     const l = s.querySelector('.widget-label');
     if (l && l.textContent.trim() === label) {
       const r = s.querySelector('.widget-readout');
-      return r ? (r.value !== undefined && r.tagName === 'INPUT' ? r.value : r.textContent).trim() : null;
+      // d3-format writes a minus as U+2212; Python's format writes '-'
+      return r ? (r.value !== undefined && r.tagName === 'INPUT' ? r.value : r.textContent).trim().replace(/\u2212/g, '-') : null;
     }
   }
   return null;
