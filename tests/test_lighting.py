@@ -144,3 +144,49 @@ def test_one_eye_per_point_matches_one_call_per_point():
     assert specular(P, N, light.position, eyes, 0.8, 4, 1.0)[0] == pytest.approx(0.8)
     with pytest.raises(ValueError, match="eye"):
         intensity(P, N, eyes[:1].repeat(3, axis=0), light, m)
+
+
+# -- Blinn's halfway vector (§16.5) ------------------------------------------------------------------------
+
+
+def test_blinn_term_is_cos_of_half_the_phong_angle_in_the_plane():
+    # N = z; L at angle a from N on one side, V at angle b on the other (both in the x-z plane).
+    # Then R . V = cos(a - b) and H, the bisector of L and V, makes (a - b)/2 with N: N . H = cos((a - b)/2)
+    # (sum-to-product: sin a - sin b = 2 cos((a+b)/2) sin((a-b)/2), cos a + cos b = 2 cos((a+b)/2) cos((a-b)/2)).
+    rng = np.random.default_rng(165)
+    a = rng.uniform(0.0, 1.5, 300)
+    b = rng.uniform(0.0, 1.5, 300)
+    P = np.zeros((300, 3))
+    N = np.tile([0.0, 0.0, 1.0], (300, 1))
+    eyes = 4.0 * np.stack([-np.sin(b), np.zeros(300), np.cos(b)], axis=1)
+    for k in range(300):
+        light = 3.0 * np.array([np.sin(a[k]), 0.0, np.cos(a[k])])
+        blinn = lighting.blinn_specular(P[k:k + 1], N[k:k + 1], light, eyes[k], 1.0, 1, 1.0)[0]
+        phong = lighting.specular(P[k:k + 1], N[k:k + 1], light, eyes[k], 1.0, 1, 1.0)[0]
+        assert blinn == pytest.approx(np.cos((a[k] - b[k]) / 2), abs=1e-12)
+        assert phong == pytest.approx(max(np.cos(a[k] - b[k]), 0.0), abs=1e-12)
+
+
+def test_blinn_term_with_four_times_the_exponent_has_nearly_phongs_half_width():
+    # in the plane, Phong's term falls to 1/2 at phi = arccos(2^(-1/n)), Blinn's (exponent m) at
+    # phi = 2 arccos(2^(-1/m)); with m = 4n the two agree to within 1% for n >= 10
+    for n in (10, 50, 200):
+        phong = np.degrees(np.arccos(0.5 ** (1 / n)))
+        blinn = 2 * np.degrees(np.arccos(0.5 ** (1 / (4 * n))))
+        assert phong == pytest.approx(lighting.highlight_half_width(n), rel=1e-12)
+        assert blinn == pytest.approx(phong, rel=0.01)
+
+
+def test_blinn_term_is_zero_behind_the_surface_and_at_a_grazing_halfway_vector():
+    P, N = [[0.0, 0.0, 0.0]], [[0.0, 0.0, 1.0]]
+    assert lighting.blinn_specular(P, N, [1.0, 0.0, -1.0], [0.0, 0.0, 5.0], 1.0, 10, 1.0).tolist() == [0.0]
+    assert lighting.blinn_specular(P, N, [1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], 1.0, 10, 1.0).tolist() == [0.0]
+    rgb = lighting.blinn_specular(P, N, [0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [1.0, 0.5, 0.0], 3, 2.0)
+    assert rgb.round(12).tolist() == [[2.0, 1.0, 0.0]]
+
+
+def test_blinn_term_refuses_bad_input_naming_it():
+    with pytest.raises(ValueError, match="exponent"):
+        lighting.blinn_specular([[0, 0, 0]], [[0, 0, 1]], [0, 0, 1], [0, 0, 1], 1.0, -1, 1.0)
+    with pytest.raises((ValueError, TypeError), match="light_position"):
+        lighting.blinn_specular([[0, 0, 0]], [[0, 0, 1]], [0, 0], [0, 0, 1], 1.0, 1, 1.0)
