@@ -373,3 +373,40 @@ def test_surface_of_revolution_against_numpy_roots_with_the_bound():
         assert len(mine) == len(keep) and np.allclose(mine, keep, rtol=1e-7, atol=1e-7), k
         checked += 1
     assert checked > 280 and np.isfinite(got).any(axis=1).sum() > 50
+
+
+# -- §19.4.1 the geometric line-sphere method -----------------------------------------------------------------
+
+
+def test_the_geometric_line_sphere_method_finds_the_quadratics_roots():
+    rng = np.random.default_rng(1941)
+    o = rng.uniform(-5, 5, (400, 3))
+    d = rng.normal(size=(400, 3)) * rng.uniform(0.1, 3.0, (400, 1))
+    c, r = np.array([0.5, -1.0, 2.0]), 2.5
+    geo = S.line_sphere_geometric(o, d, c, r)
+    alg = S.Sphere(c, r).hits(o, d)
+    both = np.isfinite(alg[:, 0])
+    assert both.sum() > 50 and (~both).sum() > 50                # hits and misses both tried
+    assert np.array_equal(np.isfinite(geo["t"][:, 0]), both)
+    assert np.allclose(geo["t"][both], alg[both], rtol=1e-9, atol=1e-9)
+    # the foot is the nearest point: its distance is the line's distance to the centre
+    foot = o + geo["foot"][:, None] * d
+    assert np.allclose(np.einsum("ij,ij->i", c - foot, d), 0.0, atol=1e-9)
+    # miss exactly when the distance exceeds the radius
+    assert np.array_equal(geo["distance"] <= r, both)
+
+
+def test_the_geometric_method_by_hand():
+    # the line y = 1.2 and a circle of radius 2 about the origin: q = 1.2, half-chord sqrt(4 - 1.44) = 1.6
+    r = S.line_sphere_geometric([-5.0, 1.2, 0.0], [2.0, 0.0, 0.0], [0.0, 0.0, 0.0], 2.0)
+    assert r["foot"].tolist() == [2.5] and r["distance"].tolist() == pytest.approx([1.2])
+    assert r["t"].tolist()[0] == pytest.approx([(5 - 1.6) / 2, (5 + 1.6) / 2])
+    tangent = S.line_sphere_geometric([-5.0, 2.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0], 2.0)
+    assert tangent["t"].tolist() == [[5.0, 5.0]]
+
+
+def test_the_geometric_method_refuses_bad_input():
+    with pytest.raises(ValueError, match="radius"):
+        S.line_sphere_geometric([0, 0, 0], [1, 0, 0], [0, 0, 0], -1.0)
+    with pytest.raises(ValueError, match="directions"):
+        S.line_sphere_geometric([0, 0, 0], [0, 0, 0], [0, 0, 0], 1.0)
