@@ -316,7 +316,7 @@ CONFIGURATION = {
 }
 #: Functions and methods (by their last name) whose result may hold +-inf by contract, never NaN: a
 #: ray's parameter is inf where it misses (Part III's ``hits``/``intersect``/``intervals``).
-INF_BY_CONTRACT = {"hits", "hit", "intersect", "intervals", "quadratic_roots", "real_roots",
+INF_BY_CONTRACT = {"hits", "hit", "intersect", "intervals", "quadratic_roots", "real_roots", "line_sphere_geometric",
                    # chapter 20: a ray's first cell and the intervals' ends are inf on a miss
                    "first_hit", "combine_intervals"}
 #: Functions whose result may hold NaN or infinity by contract (what the docstring says).
