@@ -53,3 +53,20 @@ def test_the_saddle_has_negative_gaussian_curvature():
     view = sv.curvature_view(resolution=16)
     r = view.set_values(surface="saddle", curvature="Gaussian K", amount=0.0)
     assert np.all(r["values"] < 0)
+
+
+def test_terrain_png_draws_one_panel_per_roughness():
+    import io
+
+    from PIL import Image
+
+    one = Image.open(io.BytesIO(sv.terrain_png((0.5,), level=4)))
+    three = Image.open(io.BytesIO(sv.terrain_png((0.35, 0.5, 0.7), level=4)))
+    assert three.size[0] == 3 * one.size[0] and three.size[1] == one.size[1]
+    import numpy as np
+
+    assert len(np.unique(np.asarray(three.convert("RGB")).reshape(-1, 3), axis=0)) > 100   # shaded, not flat
+    import pytest
+
+    with pytest.raises(ValueError, match="roughnesses"):
+        sv.terrain_png(())

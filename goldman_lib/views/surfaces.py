@@ -23,7 +23,7 @@ from goldman_lib import surfaces as sf
 from goldman_lib.views.interactive import InteractiveView, dropdown, float_slider, int_slider  # noqa: F401
 from goldman_lib.views.three import SceneView
 
-__all__ = ["curvature_view", "SURFACES", "CURVATURES", "DEFORMATIONS", "curvature_colours"]
+__all__ = ["curvature_view", "SURFACES", "CURVATURES", "DEFORMATIONS", "curvature_colours", "terrain_png"]
 
 #: The surfaces of the picker (parametric forms from goldman_lib.surfaces), and what their curvature is.
 SURFACES = {
@@ -125,3 +125,38 @@ def curvature_view(surface: str = "torus", curvature: str = "Gaussian K", deform
                            title="§18.4 curvature of a (deformed) surface", side=True)
     view.scene = scene
     return view
+
+
+def terrain_png(roughnesses=(0.35, 0.5, 0.7), level: int = 6, seed: int = 18) -> bytes:
+    """The procedural surfaces of Goldman §18.1.4 drawn: one fractal terrain
+    (:func:`goldman_lib.surfaces.fractal_heights` at ``level`` from ``seed``) per roughness, side by
+    side, hill-shaded as if lit from the north-west (matplotlib's ``LightSource``) over a terrain
+    colour map, with each panel's height range in its title.  A static picture (PNG bytes).
+
+    >>> terrain_png((0.5,), level=3)[:4]
+    b'\\x89PNG'
+    """
+    from matplotlib.colors import LightSource
+    from matplotlib.figure import Figure
+
+    from goldman_lib.views.interactive import figure_png
+
+    roughnesses = [float(r) for r in roughnesses]
+    if not 1 <= len(roughnesses) <= 6:
+        raise ValueError(f"roughnesses must hold 1 to 6 values; got {len(roughnesses)}")
+    fig = Figure(figsize=(3.2 * len(roughnesses), 3.4), dpi=100)
+    light = LightSource(azdeg=315, altdeg=40)
+    import matplotlib
+
+    cmap = matplotlib.colormaps["terrain"]
+    for k, r in enumerate(roughnesses):
+        h = sf.fractal_heights(level, r, rng=seed)
+        ax = fig.add_subplot(1, len(roughnesses), k + 1)
+        span = float(h.max() - h.min()) or 1.0
+        ax.imshow(light.shade(h, cmap=cmap, vert_exag=40.0 / span, blend_mode="soft"), origin="lower")
+        ax.set_title(f"roughness {r:g}\nheights {h.min():.2f} to {h.max():.2f}", fontsize=9)
+        ax.set_xticks([]), ax.set_yticks([])
+    fig.suptitle(f"Fractal terrains (diamond-square, level {level}, seed {seed})", fontsize=10)
+    fig.tight_layout()
+    return figure_png(fig)
+
