@@ -52,7 +52,7 @@ __all__ = ["ImplicitSurface", "ParametricSurface", "Deformation", "DeformedSurfa
            "parametric_normal", "deformed_normals", "curvature_implicit", "curvature_parametric",
            "implicit_sphere", "implicit_cylinder", "implicit_torus", "parametric_sphere", "parametric_cylinder",
            "parametric_torus", "parametric_graph", "twist", "taper", "fractal_heights", "height_field_mesh",
-           "MAX_SAMPLES"]
+           "MAX_SAMPLES", "AffineInstance"]
 
 #: Most samples along a ray that the implicit intersection may be asked for.
 MAX_SAMPLES = 4096
@@ -881,6 +881,61 @@ class DeformedSurface(ImplicitSurface):
 
         super().__init__(f, grad, None, bound=((0.0, 0.0, 0.0), radius), samples=base.samples,
                          max_hits=base.max_hits, material=material if material is not None else base.material)
+
+
+class AffineInstance(Surface):
+    """The image of a surface under the affine map ``A(P) = P M + shift`` (row vectors, as in chapter
+    13), intersected by mapping the ray back (Goldman §18.3.3): ``A^{-1}(O + t d) = A^{-1}(O) + t (d M^{-1})``
+    is again a ray, *with the same parameter* ``t``, so the base surface's own intersection answers for
+    the image (one sphere, many ellipsoids: instancing).  Normals are the base's mapped by the inverse
+    transpose (§18.2).  base: any :class:`~goldman_lib.simple_surfaces.Surface`; M: an invertible 3x3
+    matrix; shift: (3,).
+
+    >>> e = AffineInstance(Sphere([0, 0, 0], 1.0), np.diag([3.0, 2.0, 1.0]), [0, 0, 0])
+    >>> e.hits([[-5, 0, 0], [0, 0, -5]], [[1, 0, 0], [0, 0, 1]]).round(12).tolist()
+    [[2.0, 8.0], [4.0, 6.0]]
+    """
+
+    def __init__(self, base: Surface, M, shift=(0.0, 0.0, 0.0), material: Material | None = None):
+        if not isinstance(base, Surface):
+            raise TypeError(f"base must be a goldman_lib.simple_surfaces.Surface; got {type(base).__name__}")
+        M = check_finite(as_float_array(M, "M"), "M")
+        if M.shape != (3, 3):
+            raise ValueError(f"M must be a 3x3 matrix; got shape {M.shape}")
+        scale = float(np.abs(M).max())
+        if not scale > 0 or abs(np.linalg.det(M / scale)) < 1e-12:
+            raise ValueError("M must be invertible (a singular M flattens the surface and has no inverse ray)")
+        self.base, self.M = base, M
+        self.shift = as_points(shift, "shift", ndim=1, dim=3)
+        self.M_inv = np.linalg.inv(M)
+        self._set_material(material if material is not None else base.material)
+
+    def undo(self, points) -> np.ndarray:
+        """``A^{-1}(Q) = (Q - shift) M^{-1}`` for points ``(n, 3)``."""
+        Q = np.atleast_2d(as_points(points, "points", ndim=None, dim=3))
+        return (Q - self.shift) @ self.M_inv
+
+    def _hits(self, o, d):
+        return self.base.hits((o - self.shift) @ self.M_inv, d @ self.M_inv)
+
+    def _normal(self, P):
+        # Q = P M + s, so F(Q) = f((Q - s) M^{-1}) and, as rows, grad F(Q) = grad f(P) (M^{-1})^T
+        return self.base.normal((P - self.shift) @ self.M_inv) @ self.M_inv.T
+
+    def _contains(self, P):
+        return self.base.contains((P - self.shift) @ self.M_inv)
+
+    @property
+    def bounding_sphere(self):
+        b = self.base.bounding_sphere
+        if b is None:
+            return None
+        c, r = b
+        return np.asarray(c, dtype=float) @ self.M + self.shift, float(r) * float(np.linalg.norm(self.M, 2))
+
+    def _mesh(self, n, extent):
+        positions, triangles = self.base.mesh(n, extent)
+        return positions @ self.M + self.shift, triangles
 
 
 # -- §18.1: procedural surfaces -------------------------------------------------------------------------

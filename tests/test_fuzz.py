@@ -258,6 +258,11 @@ def _extra_examples() -> dict:
         "surfaces.Deformation.undo": ((surfaces.taper(0.5), [[1.5, 0.0, 1.0]]), {}),
         "surfaces.Deformation.normals": ((surfaces.taper(0.5), [[1.0, 0.0, 0.0]], [[1.0, 0.0, 0.0]]), {}),
         "surfaces.DeformedSurface": ((surfaces.implicit_sphere(), surfaces.twist(45.0)), {}),
+        # §18.3.3: an affine instance of a sphere (the doctest's Sphere argument is not recorded)
+        "surfaces.AffineInstance": ((simple_surfaces.Sphere([0.0, 0.0, 0.0], 1.0), np.diag([3.0, 2.0, 1.0]),
+                                     [0.0, 0.0, 1.0]), {}),
+        "surfaces.AffineInstance.undo": ((surfaces.AffineInstance(simple_surfaces.Sphere([0.0, 0.0, 0.0], 1.0),
+                                                                  np.diag([3.0, 2.0, 1.0])), [[3.0, 0.0, 0.0]]), {}),
         "vectors.Point": (([1.0, 2.0, 0.0],), {}),
         "vectors.Vector": (([3.0, 4.0, 0.0],), {}),
         "vectors.Vector.dot": ((vectors.Vector([1.0, 2.0, 3.0]), vectors.Vector([4.0, -5.0, 6.0])), {}),

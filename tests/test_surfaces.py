@@ -208,3 +208,47 @@ def test_bad_input_is_named():
         sf.implicit_torus(1.0, 2.0)
     with pytest.raises(ValueError, match=r"X\(u, v\) must return"):
         sf.curvature_parametric(lambda u, v: np.zeros(2), 0.1, 0.2)
+
+
+# -- §18.3.3 deformed surfaces: map the ray back (instancing) ---------------------------------------------------
+
+
+def test_an_affine_instance_of_the_unit_sphere_is_the_ellipsoid():
+    from goldman_lib.simple_surfaces import Ellipsoid, Sphere
+
+    theta = np.radians(30.0)
+    R = np.array([[np.cos(theta), np.sin(theta), 0.0], [-np.sin(theta), np.cos(theta), 0.0], [0.0, 0.0, 1.0]])
+    radii, centre = np.array([3.0, 2.0, 0.5]), np.array([1.0, -0.5, 2.0])
+    inst = sf.AffineInstance(Sphere([0, 0, 0], 1.0), np.diag(radii) @ R, centre)
+    ell = Ellipsoid(centre, radii, axes=R)                    # an independent implementation (§19.4.4)
+    rng = np.random.default_rng(1833)
+    o = rng.uniform(-6, 6, (300, 3))
+    d = centre + rng.uniform(-2, 2, (300, 3)) - o                # aimed near the centre: most rays hit
+    a, b = inst.hits(o, d), ell.hits(o, d)
+    hit = np.isfinite(b[:, 0])
+    assert 40 < hit.sum() < 290 and np.array_equal(np.isfinite(a[:, 0]), hit)
+    assert np.allclose(a[hit], b[hit], rtol=1e-9, atol=1e-9)
+    P = o[hit] + a[hit, :1] * d[hit]
+    assert np.allclose(inst.normal(P), ell.normal(P), atol=1e-9)
+    assert np.array_equal(inst.contains(P + 0.01 * ell.normal(P)), np.zeros(len(P), bool))
+
+
+def test_the_ray_mapped_back_keeps_its_parameter():
+    from goldman_lib.simple_surfaces import Sphere
+
+    M = np.array([[1.0, 0.4, 0.0], [0.0, 1.0, 0.0], [0.2, 0.0, 2.0]])      # a shear and a stretch
+    inst = sf.AffineInstance(Sphere([0.5, 0, 0], 1.0), M, [0.0, 1.0, 0.0])
+    o, d = np.array([[-4.0, 1.2, 0.3]]), np.array([[1.0, 0.0, 0.1]])
+    t = inst.intersect(o, d)[0]
+    Q = o[0] + t * d[0]
+    # the hit lies on the image: its preimage lies on the base sphere
+    assert np.linalg.norm(inst.undo(Q[None])[0] - [0.5, 0, 0]) == pytest.approx(1.0, abs=1e-9)
+
+
+def test_a_singular_map_is_refused():
+    from goldman_lib.simple_surfaces import Sphere
+
+    with pytest.raises(ValueError, match="M must be invertible"):
+        sf.AffineInstance(Sphere([0, 0, 0], 1.0), np.diag([1.0, 1.0, 0.0]))
+    with pytest.raises(TypeError, match="base"):
+        sf.AffineInstance("sphere", np.eye(3))
