@@ -20,12 +20,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
+from goldman_lib.validation import as_float, as_float_array, as_int, as_points, check_finite, finite_result
 from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 
 __all__ = ["mass_point", "vector", "add", "scale", "mass_of", "point_of", "center_of_mass", "same_projective_point",
            "projective_factor",
-           "perspective_mass", "pseudoperspective", "pseudoperspective_matrix", "pseudodepth"]
+           "perspective_mass", "pseudoperspective", "pseudoperspective_matrix", "pseudodepth",
+           "normalized_depth", "depth_resolution"]
 
 
 def _mp(a, name: str) -> np.ndarray:
@@ -221,6 +222,54 @@ def pseudodepth(points, eye, plane_point, normal) -> np.ndarray:
     if np.any(s * np.sign(c) <= 0):
         raise ValueError("points must lie in front of the eye (on the side of the projection plane)")
     return 1 - c / s
+
+
+def normalized_depth(pseudodepths, c, near, far) -> np.ndarray:
+    """The affine change of the pseudodepth ``δ = 1 - c/s`` that sends the depth ``near`` to -1 and
+    ``far`` to +1: ``z = 2 (δ - δ_near) / (δ_far - δ_near) - 1``.  Written in the depth ``s`` it is
+    ``(f + n)/(f - n) - 2 f n / ((f - n) s)``, the depth row of the familiar frustum (OpenGL) matrix:
+    that matrix is pseudoperspective followed by an affine map of the depth coordinate, so it keeps
+    lines straight and the depth order (formulation ours, after Goldman §14.4).  c: the projection
+    plane's depth ``(Q - E)·N`` (nonzero); 0 < near < far, with the signs of ``c``.
+
+    >>> normalized_depth([1 - 1 / 1, 1 - 1 / 10], 1.0, 1.0, 10.0).tolist()
+    [-1.0, 1.0]
+    """
+    d = as_float_array(pseudodepths, "pseudodepths")
+    c = float(as_float(c, "c"))
+    n, f = float(as_float(near, "near", positive=True)), float(as_float(far, "far", positive=True))
+    if c == 0:
+        raise ValueError("c must be nonzero (the projection plane cannot pass through the eye)")
+    if not f > n:
+        raise ValueError(f"far must be greater than near; got near {n:g} and far {f:g}")
+    dn, df = 1 - c / n, 1 - c / f
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = 2 * (d - dn) / (df - dn) - 1
+    return finite_result(out, "pseudodepths, c, near or far", why="are too large or too small in magnitude")
+
+
+def depth_resolution(depths, near, far, bits: int = 24) -> np.ndarray:
+    """The smallest difference in depth ``s`` a ``bits``-bit depth buffer can tell apart at ``s``,
+    when it stores :func:`normalized_depth` in ``2^bits`` equal steps over [-1, 1]: one step
+    divided by the slope ``dz/ds = 2 f n / ((f - n) s^2)``, that is ``s^2 (f - n) / (2^bits f n)``.
+    It grows like ``s^2 / near``: pushing ``near`` out buys precision everywhere, pulling ``far`` in
+    hardly any (our formulation).
+
+    >>> [f"{r:.4e}" for r in depth_resolution([1.0, 10.0], 1.0, 100.0, bits=8)]     # 99 s^2 / 25600
+    ['3.8672e-03', '3.8672e-01']
+    """
+    s = as_float_array(depths, "depths")
+    n, f = float(as_float(near, "near", positive=True)), float(as_float(far, "far", positive=True))
+    if not f > n:
+        raise ValueError(f"far must be greater than near; got near {n:g} and far {f:g}")
+    b = as_int(bits, "bits", minimum=1)
+    if b > 64:
+        raise ValueError(f"bits must be at most 64; got {b}")
+    if np.any(s <= 0):
+        raise ValueError("depths must be positive (in front of the eye)")
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = s * s * (f - n) / (2.0 ** b * f * n)
+    return finite_result(out, "depths, near or far", why="are too large or too small in magnitude")
 
 
 def pseudoperspective_matrix(eye, plane_point, normal) -> np.ndarray:

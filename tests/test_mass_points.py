@@ -79,3 +79,50 @@ def test_general_frame_pseudoperspective_matrix_equals_formula():
     E, Q, N = np.array([1.0, 2, -3]), np.array([0.0, 0, 2]), np.array([0.2, -0.1, 1.0])
     P = rng.uniform(-2, 2, (30, 3)) + [0, 0, 6]
     assert np.allclose(tf.apply(P, mp.pseudoperspective_matrix(E, Q, N)), mp.pseudoperspective(P, E, Q, N))
+
+
+# -- pseudodepth and the frustum matrix's depth ----------------------------------------------------------------
+
+
+def test_normalized_pseudodepth_is_the_frustum_matrix_depth():
+    # OpenGL's frustum matrix maps eye depth s (near n, far f) to z = (f + n)/(f - n) - 2 f n / ((f - n) s)
+    rng = np.random.default_rng(144)
+    for n, f, c in ((0.1, 100.0, 1.0), (1.0, 50.0, 2.5), (2.0, 3.0, 0.5)):
+        s = rng.uniform(n, f, 200)
+        delta = 1 - c / s
+        opengl = (f + n) / (f - n) - 2 * f * n / ((f - n) * s)
+        assert np.allclose(mp.normalized_depth(delta, c, n, f), opengl, rtol=0, atol=1e-12)
+    assert mp.normalized_depth([1 - 1 / 0.5, 1 - 1 / 8.0], 1.0, 0.5, 8.0).tolist() == [-1.0, 1.0]
+
+
+def test_normalized_pseudodepth_comes_from_the_pseudoperspective_points():
+    eye, plane_point, normal = np.array([0.0, 1.0, 0.0]), np.array([0.0, 0.0, 2.0]), np.array([0.0, 0.0, 1.0])
+    P = np.array([[0.3, -1.0, 4.0], [1.0, 2.0, 9.0], [-2.0, 0.5, 30.0]])
+    c = (plane_point - eye) @ normal
+    s = (P - eye) @ normal
+    z = mp.normalized_depth(mp.pseudodepth(P, eye, plane_point, normal), c, 3.0, 40.0)
+    assert np.allclose(z, (40 + 3) / (40 - 3) - 2 * 40 * 3 / ((40 - 3) * s), atol=1e-12)
+    assert np.all(np.diff(z[np.argsort(s)]) > 0)                        # depth order kept
+
+
+def test_depth_resolution_is_one_step_over_the_slope():
+    n, f, bits = 0.5, 200.0, 16
+    s = np.array([1.0, 10.0, 100.0])
+    step = 2.0 / 2 ** bits
+    h = 1e-6
+    slope = (mp.normalized_depth(1 - 1 / (s + h), 1.0, n, f) - mp.normalized_depth(1 - 1 / (s - h), 1.0, n, f)) / (2 * h)
+    assert np.allclose(mp.depth_resolution(s, n, f, bits) * slope, step, rtol=1e-6)
+    # ten times the near distance: ten times finer everywhere (far fixed and large)
+    assert np.allclose(mp.depth_resolution(s, 10 * n, f, bits) / mp.depth_resolution(s, n, f, bits),
+                       (f - 10 * n) / (10 * (f - n)), rtol=1e-12)
+
+
+def test_depth_functions_refuse_bad_input():
+    with pytest.raises(ValueError, match="far must be greater than near"):
+        mp.normalized_depth([0.5], 1.0, 5.0, 2.0)
+    with pytest.raises(ValueError, match="c must be nonzero"):
+        mp.normalized_depth([0.5], 0.0, 1.0, 2.0)
+    with pytest.raises(ValueError, match="depths must be positive"):
+        mp.depth_resolution([-1.0], 1.0, 2.0)
+    with pytest.raises(ValueError, match="bits"):
+        mp.depth_resolution([1.0], 1.0, 2.0, bits=100)
