@@ -97,6 +97,13 @@ def _r(x, digits: int = 6) -> str:
     return fmt(round(float(x), digits) + 0.0, 10)
 
 
+def _decimals(answer) -> str:
+    """" Decimals to 4 places are fine." for an instance whose answer is not a short decimal (the
+    checker's tolerance, 1e-4, takes a 4-place rounding); nothing for one that is (instance 0)."""
+    values = np.ravel(np.asarray(answer, dtype=float))
+    return "" if np.allclose(values, np.round(values, 3), rtol=0, atol=1e-9) else " Decimals to 4 places are fine."
+
+
 # -- §7.2 ------------------------------------------------------------------------------------------
 
 _STORED_LIMIT = {"c": 6.0, "x0": LIMIT_START}
@@ -353,7 +360,7 @@ def _seidel_ok(p):
 
 def _seidel_statement(p) -> str:
     return (f"Do one Gauss-Seidel sweep (x, then y, then z) for {_system_text(_matrix(p['A']), p['b'], 'xyz')} "
-            f"from (x, y, z) = (0, 0, 0): give the new [x, y, z] (Goldman §7.3.2).")
+            f"from (x, y, z) = (0, 0, 0): give the new [x, y, z] (Goldman §7.3.2).{_decimals(_seidel_answers(p)[0])}")
 
 
 def _seidel_steps(p) -> str:
@@ -431,7 +438,8 @@ def _jacobi_ok(p):
 
 def _jacobi_statement(p) -> str:
     return (f"Do {JACOBI_SWEEPS} Jacobi sweeps for {_system_text(_matrix(p['A']), p['b'], 'xy')} from "
-            f"(x, y) = {fmt(p['x0'])}: give [x, y] after the second sweep (Goldman §7.3.2).")
+            f"(x, y) = {fmt(p['x0'])}: give [x, y] after the second sweep (Goldman §7.3.2)."
+            f"{_decimals(_jacobi_answers(p)[0])}")
 
 
 def _jacobi_steps(p) -> str:
@@ -507,7 +515,7 @@ def _hausdorff_ok(p):
 
 def _hausdorff_statement(p) -> str:
     return (f"Compute the Hausdorff distance h(A, B) between A = {_set_text(p['A'])} and "
-            f"B = {_set_text(p['B'])} (Goldman §7.3.3).")
+            f"B = {_set_text(p['B'])} (Goldman §7.3.3).{_decimals(_hausdorff_answers(p)[0])}")
 
 
 def _nearest_lines(X, Y, x_name, y_name) -> str:

@@ -195,6 +195,13 @@ def _pt(v) -> str:
     return fmt(np.round(np.asarray(v, dtype=float), 9) + 0.0, 6)
 
 
+def _decimals(answer) -> str:
+    """" Decimals to 4 places are fine." for an instance whose answer is not a short decimal (the
+    checker's tolerance, 1e-4, takes a 4-place rounding); nothing for one that is (instance 0)."""
+    values = np.ravel(np.asarray(answer, dtype=float))
+    return "" if np.allclose(values, np.round(values, 3), rtol=0, atol=1e-9) else " Decimals to 4 places are fine."
+
+
 # -- §8.2 ----------------------------------------------------------------------------------------------
 
 #: Directions w of exercise 1: (w, its angle in degrees, its length as a learner writes it).
@@ -311,7 +318,7 @@ def _level_generate(rng) -> dict:
 def _level_statement(p) -> str:
     return (f"A recursive turtle program has base case FORWARD 1 and body {_level_body_text(p)}. From the standard "
             f"state ((0, 0), (1, 0)), where is the turtle at the end of level 1? Give P as [x, y], and compare it "
-            f"with where level 0 ends (Goldman §8.3).")
+            f"with where level 0 ends (Goldman §8.3).{_decimals(_level_answers(p)[0])}")
 
 
 def _level_steps(p) -> str:
@@ -411,7 +418,7 @@ def _ron_statement(p) -> str:
     return (f"A recursive turtle program has base case FORWARD 1 and body {p['body']}{root}. By Ron's "
             f"algorithm, call number {c} gives the map T{c} sending the standard state ((0, 0), (1, 0)) "
             f"to the turtle's state at that call. Give T{c} as a 3x3 matrix in the row-vector convention "
-            f"(Q = [x, y, 1] T, translation in the last row) (Goldman §8.4).")
+            f"(Q = [x, y, 1] T, translation in the last row) (Goldman §8.4).{_decimals(_ron_answers(p)[0])}")
 
 
 def _ron_steps(p) -> str:
