@@ -322,12 +322,14 @@ def check_dot_from_lengths(answer, p) -> Result:
 _STORED_CROSS = {"u": tuple(CROSS_U.tolist()), "v_length": CROSS_V_LENGTH, "angle": CROSS_ANGLE}
 
 
+@memo
 def _cross_expected(p) -> np.ndarray:
     theta = math.radians(p["angle"])
     v = p["v_length"] * np.array([math.cos(theta), math.sin(theta), 0.0])
     return vectors.cross_from_geometry(np.array(p["u"]), v, [0.0, 0.0, 1.0])
 
 
+@memo
 def _cross_slips(p) -> dict:
     L = float(np.linalg.norm(_cross_expected(p)))
     lu, lv, angle = float(np.linalg.norm(p["u"])), p["v_length"], p["angle"]

@@ -5,7 +5,7 @@ Every exercise deals new numbers (issue 17 §3, :mod:`goldman_lib.exercises.deal
 the module constants (the stored notebook), ``deal("check_...")`` or ``deal_button("check_...")``
 deals another, each checker checks the current instance, ``PROBLEMS`` states it and
 ``steps("check_...")`` shows its worked steps.  Dealt data are small integers a learner computes
-with by hand (the angle's vectors have whole lengths, the coplanar k is a whole or half number).
+with by hand (the angle's vectors have whole lengths, the coplanar k is a whole number).
 ``SLIPS`` holds wrong answers of the stored instances, of the kinds each checker recognises.  The
 data differ from the chapter's worked examples; the coordinate-free drills (a dot product from
 lengths, a cross product from an angle, the orientation rules of the determinant) are chapter 9's.
@@ -23,7 +23,7 @@ import numpy as np
 from goldman_lib import vectors
 from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, off_by, read_number, read_points, wrong)
-from goldman_lib.exercises.deal import Deck
+from goldman_lib.exercises.deal import Deck, memo
 
 __all__ = ["PROBLEMS", "SLIPS", "DOT_U", "DOT_V", "CROSS_U", "CROSS_V", "DET_ROWS", "ANGLE_U", "ANGLE_V",
            "AREA_POINTS", "COPLANAR_U", "COPLANAR_V", "COPLANAR_W", "DECK", "deal", "steps", "current",
@@ -344,10 +344,12 @@ _WHOLE = ((1.0, 2.0, 2.0), (2.0, 1.0, 2.0), (3.0, 0.0, 4.0), (2.0, 3.0, 6.0), (1
           (2.0, 6.0, 9.0))
 
 
+@memo
 def _angle_answer(p) -> float:
     return float(vectors.angle_between(np.array(p["u"]), np.array(p["v"])))
 
 
+@memo
 def _angle_slips(p) -> dict:
     u, v = np.array(p["u"]), np.array(p["v"])
     e = _angle_answer(p)
@@ -550,7 +552,11 @@ def _coplanar_slips(p) -> dict:
 
 
 def _coplanar_generate(rng) -> dict:
-    return {"u": _ints(rng, -3, 4, 3), "v": _ints(rng, -3, 4, 3), "w": _ints(rng, -3, 8, 2)}
+    # w = a u + b v with whole a, b: coplanar at a whole k = a u1 + b v1, which the learner finds
+    u, v = np.array(_ints(rng, -3, 4, 3)), np.array(_ints(rng, -3, 4, 3))
+    a, b = _nonzero_ints(rng, -2, 2, 2)
+    w = a * u + b * v
+    return {"u": _vec(u), "v": _vec(v), "w": (float(w[1]), float(w[2]))}
 
 
 def _coplanar_ok(p):
@@ -558,8 +564,8 @@ def _coplanar_ok(p):
     if abs(d1 - d0) < 0.5:
         return "det(u, v, w) does not depend on k (no k, or every k)"
     k = _coplanar_answer(p)
-    if abs(2 * k - round(2 * k)) > 1e-9 or abs(k) > 20:
-        return "k is not a whole or half number up to 20 (hand-friendly)"
+    if abs(2 * k - round(2 * k)) > 1e-9 or abs(k) > 20 or max(abs(x) for x in p["w"]) > 12:
+        return "k is not a whole or half number up to 20, or w's coordinates exceed 12 (hand-friendly)"
     if None in _coplanar_roots(p):
         return "a slip's determinant does not depend on k"
     return None
