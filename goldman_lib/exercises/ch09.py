@@ -1,11 +1,14 @@
 """Exercise checkers for chapter 9, vector geometry: points, vectors and their products without
 coordinates (Goldman §9.2-9.4 and the chapter's appendices).
 
-Each exercise's data are module constants, so the notebook prints the problem from here and the
-checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
-``SLIPS`` the wrong answers of the kinds each checker recognises.  The data differ from the
-chapter's worked examples; the coordinate drills (a dot product, a cross product, a determinant
-from coordinates) are chapter 10's.
+Exercises 2-6 deal new numbers (issue 17 §3, :mod:`goldman_lib.exercises.deal`): instance 0 is the
+module constants (the stored notebook), ``deal("check_...")`` or ``deal_button("check_...")``
+deals another, each checker checks the current instance, ``PROBLEMS`` states it and
+``steps("check_...")`` shows its worked steps.  Exercise 1 (which formal sums of points are legal)
+is a table of chosen expressions, each legal or not for its own reason, and an answer of words: it
+stays fixed.  ``SLIPS`` holds wrong answers of the stored instances, of the kinds each checker
+recognises.  The data differ from the chapter's worked examples; the coordinate drills (a dot
+product, a cross product, a determinant from coordinates) are chapter 10's.
 
 >>> print(PROBLEMS["check_dot_from_lengths"])  # doctest: +ELLIPSIS
 Two vectors have lengths |u| = 4 and |v| = 5, and |u - v| = 7. ... Goldman §9.4).
@@ -19,11 +22,13 @@ import numpy as np
 
 from goldman_lib import vectors
 from goldman_lib.exercises import guard_checkers, quote
+from goldman_lib.exercises.deal import Deck, memo
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, is_unanswered, off_by,
                                    read_number, read_points, unanswered, wrong)
 
 __all__ = ["PROBLEMS", "SLIPS", "EXPRESSIONS", "AFFINE_POINTS", "AFFINE_WEIGHTS", "DOT_LENGTHS", "CROSS_U",
            "CROSS_V_LENGTH", "CROSS_ANGLE", "DET_GIVEN", "DET_ASKED", "ASSOC_U", "ASSOC_W", "ASSOC_UV", "ASSOC_VW",
+           "DECK", "deal", "steps", "current", "deal_button",
            "check_expression_types", "check_affine_point", "check_dot_from_lengths", "check_cross_from_angle",
            "check_orientation", "check_associator"]
 
@@ -39,7 +44,7 @@ DOT_LENGTHS = (4.0, 5.0, 7.0)
 CROSS_U = np.array([4.0, 0.0, 0.0])
 CROSS_V_LENGTH = 2.5
 CROSS_ANGLE = 150.0
-#: Exercise 5: det(u, v, w), and the determinants asked, as coefficient rows on (u, v, w).
+#: Exercise 5 (instance 0): det(u, v, w), and the determinants asked, as coefficient rows on (u, v, w).
 DET_GIVEN = 5.0
 DET_ASKED = [("det(v, u, w)", [[0, 1, 0], [1, 0, 0], [0, 0, 1]]),
              ("det(w, u, v)", [[0, 0, 1], [1, 0, 0], [0, 1, 0]]),
@@ -59,32 +64,12 @@ def _expr_list() -> str:
     return "; ".join(f"({chr(97 + k)}) {e}" for k, (e, _) in enumerate(EXPRESSIONS))
 
 
-PROBLEMS = {
-    "check_expression_types": (
-        f"P, Q, R are points. For each expression say whether it is a point, a vector, or undefined (depends on the "
-        f"origin): {_expr_list()}. Answer with a list of {len(EXPRESSIONS)} words, e.g. [\"point\", \"vector\", ...] "
-        f"(Goldman §9.3 and Chapter 9, Appendix B)."),
-    "check_affine_point": (
-        f"A = {fmt(AFFINE_POINTS[0])}, B = {fmt(AFFINE_POINTS[1])}, C = {fmt(AFFINE_POINTS[2])}. Give the point "
-        f"a A + {fmt(AFFINE_WEIGHTS[0])} B + {fmt(AFFINE_WEIGHTS[1])} C, where the weight a of A is whatever makes it "
-        f"an affine combination (Goldman §9.3)."),
-    "check_dot_from_lengths": (
-        f"Two vectors have lengths |u| = {fmt(DOT_LENGTHS[0])} and |v| = {fmt(DOT_LENGTHS[1])}, and "
-        f"|u - v| = {fmt(DOT_LENGTHS[2])}. Without coordinates, find u · v (the law of cosines, Goldman §9.4)."),
-    "check_cross_from_angle": (
-        f"u = {fmt(CROSS_U)}; v lies in the xy-plane, has length {fmt(CROSS_V_LENGTH)} and makes the angle "
-        f"{fmt(CROSS_ANGLE)}° with u, turning counterclockwise from u (towards +y). From the geometric definition "
-        f"(length |u| |v| sin θ, perpendicular to u and v, (u, v, u × v) right-handed) give u × v as [x, y, z] "
-        f"(Goldman §9.4)."),
-    "check_orientation": (
-        f"det(u, v, w) = {fmt(DET_GIVEN)}, so (u, v, w) is right-handed. Give "
-        f"{', '.join(name for name, _ in DET_ASKED)} as a list of {len(DET_ASKED)} numbers (Goldman §9.4: the "
-        f"determinant is the signed volume of the parallelepiped)."),
-    "check_associator": (
-        f"u = {fmt(ASSOC_U)}, w = {fmt(ASSOC_W)}, and v is a vector with u · v = {fmt(ASSOC_UV)} and "
-        f"v · w = {fmt(ASSOC_VW)}. Give (u × v) × w - u × (v × w) as [x, y, z] (Goldman §9.4 and Chapter 9, "
-        f"Appendix A)."),
-}
+_EXPRESSIONS_PROBLEM = (
+    f"P, Q, R are points. For each expression say whether it is a point, a vector, or undefined (depends on the "
+    f"origin): {_expr_list()}. Answer with a list of {len(EXPRESSIONS)} words, e.g. [\"point\", \"vector\", ...] "
+    f"(Goldman §9.3 and Chapter 9, Appendix B).")
+
+DECK = Deck("ch09")
 
 
 # -- exercise 1 ---------------------------------------------------------------------------------
@@ -146,13 +131,76 @@ def check_expression_types(answer) -> Result:
 
 # -- exercise 2 ---------------------------------------------------------------------------------
 
-def _affine_weights() -> np.ndarray:
-    b, c = AFFINE_WEIGHTS
+_STORED_AFFINE = {"points": tuple(map(tuple, AFFINE_POINTS.tolist())), "weights": AFFINE_WEIGHTS}
+
+
+def _affine_weights(p) -> np.ndarray:
+    b, c = p["weights"]
     return np.array([1 - b - c, b, c])
 
 
-def check_affine_point(answer) -> Result:
-    """Check the affine combination of :data:`AFFINE_POINTS` with weights (1 - b - c, b, c) (Goldman §9.3).
+@memo
+def _affine_answers(p):
+    A = np.array(p["points"], dtype=float)
+    w = _affine_weights(p)
+    right = vectors.affine_combination(A, w).coords
+    slips = {}
+    for a in (1.0, 0.0):
+        ws = np.array([a, *p["weights"]])
+        slips[f"A's weight taken as {fmt(a)}"] = ws @ A
+    slips["the centroid"] = A.mean(axis=0)
+    slips["B's and C's weights swapped"] = w[[0, 2, 1]] @ A
+    return right, slips
+
+
+def _affine_generate(rng) -> dict:
+    points = tuple(tuple(float(v) for v in rng.integers(-5, 6, size=2)) for _ in range(3))
+    b, c = (float(k) / 20 for k in rng.integers(2, 13, size=2))   # multiples of 0.05 in [0.1, 0.6]
+    return {"points": points, "weights": (b, c)}
+
+
+def _affine_ok(p):
+    A = np.array(p["points"], dtype=float)
+    if abs(np.linalg.det(A[1:] - A[0])) < 0.5:
+        return "A, B, C are collinear (the weights would not be seen in the point)"
+    a = _affine_weights(p)[0]
+    if abs(a) < 1e-9 or abs(a - 1) < 1e-9 or a < -0.3:
+        return "A's weight is 0 or 1 (a slip would be right) or below -0.3"
+    b, c = p["weights"]
+    if any(abs(x - s) < 1e-6 for x in _affine_answers(p)[0] for s in (b + c, 1 + b + c)):
+        return "a coordinate of the answer is a sum of weights a slip's message prints"
+    return None
+
+
+def _affine_statement(p) -> str:
+    A = p["points"]
+    b, c = p["weights"]
+    return (f"A = {fmt(A[0])}, B = {fmt(A[1])}, C = {fmt(A[2])}. Give the point "
+            f"a A + {fmt(b)} B + {fmt(c)} C, where the weight a of A is whatever makes it "
+            f"an affine combination (Goldman §9.3).")
+
+
+def _affine_steps(p) -> str:
+    w = _affine_weights(p)
+    A = np.array(p["points"], dtype=float)
+    right, _ = _affine_answers(p)
+    terms = " + ".join(f"{fmt(w[k])}·{fmt(A[k])}" for k in range(3))
+    return (f"1. The weights must sum to 1: a = 1 - {fmt(w[1])} - {fmt(w[2])} = {fmt(w[0])}.\n"
+            f"2. Add the weighted coordinates: {terms} = {fmt(right)}.\n"
+            f"3. The result does not depend on the origin, because the weights sum to 1.")
+
+
+def _same_point(a, b, rel: float = 1e-4) -> bool:
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and bool(np.linalg.norm(a - b) <= rel * (1 + np.linalg.norm(b)))
+
+
+@DECK.exercise(stored=_STORED_AFFINE, generate=_affine_generate, answer=lambda p: _affine_answers(p)[0],
+               slips=lambda p: _affine_answers(p)[1], statement=_affine_statement, steps=_affine_steps,
+               same=lambda a, b: _same_point(a, b) or _same_point(b, a), well_posed=_affine_ok)
+def check_affine_point(answer, p) -> Result:
+    """Check the affine combination of the statement's A, B, C with weights (1 - b - c, b, c)
+    (Goldman §9.3).
 
     Recognises: A's weight taken as 1 or as 0 (weights not summing to 1), the centroid (equal
     weights), and the weights given to the wrong points.
@@ -163,16 +211,17 @@ def check_affine_point(answer) -> Result:
         return err
     if got.shape != (2,):
         return wrong(f"{what} is one point [x, y]; yours has shape {got.shape}.")
-    w = _affine_weights()
-    A = AFFINE_POINTS
+    w = _affine_weights(p)
+    A = np.array(p["points"], dtype=float)
+    b, c = p["weights"]
     expected = vectors.affine_combination(A, w).coords
-    close = lambda p: np.linalg.norm(got - p) <= 1e-4 * (1 + np.linalg.norm(p))  # noqa: E731
+    close = lambda q: np.linalg.norm(got - q) <= 1e-4 * (1 + np.linalg.norm(q))  # noqa: E731
     if close(expected):
-        return correct(f"A's weight is 1 - {fmt(AFFINE_WEIGHTS[0])} - {fmt(AFFINE_WEIGHTS[1])} = {fmt(w[0])}, and "
+        return correct(f"A's weight is 1 - {fmt(b)} - {fmt(c)} = {fmt(w[0])}, and "
                        f"{fmt(w[0])} A + {fmt(w[1])} B + {fmt(w[2])} C = {fmt(expected)}, the same point whatever the "
                        f"origin.")
     for a in (1.0, 0.0):
-        ws = np.array([a, *AFFINE_WEIGHTS])
+        ws = np.array([a, b, c])
         if close(ws @ A):
             return wrong(f"you gave A the weight {fmt(a)}, so the weights sum to {fmt(ws.sum())}, not 1: that sum of "
                          f"points moves when the origin moves. A's weight is what is left when B's and C's are taken "
@@ -189,7 +238,57 @@ def check_affine_point(answer) -> Result:
 
 # -- exercise 3 ---------------------------------------------------------------------------------
 
-def check_dot_from_lengths(answer) -> Result:
+_STORED_DOT = {"lengths": DOT_LENGTHS}
+
+
+def _dot_value(p) -> float:
+    a, b, c = p["lengths"]
+    return (a * a + b * b - c * c) / 2
+
+
+def _dot_slips(p) -> dict:
+    a, b, c = p["lengths"]
+    e = _dot_value(p)
+    return {"not halved": 2 * e, "the sign reversed": -e, "the lengths not squared": (a + b - c) / 2}
+
+
+def _dot_generate(rng) -> dict:
+    a, b = (float(v) for v in rng.integers(2, 10, size=2))
+    c = float(rng.integers(abs(a - b) + 1, a + b))      # a strict triangle: |a - b| < c < a + b
+    return {"lengths": (a, b, c)}
+
+
+def _dot_ok(p):
+    a, b, c = p["lengths"]
+    if not abs(a - b) < c < a + b:
+        return "the three lengths make no triangle"
+    if _dot_value(p) == 0:
+        return "u and v are perpendicular (the sign could not be told)"
+    return None
+
+
+def _dot_statement(p) -> str:
+    a, b, c = p["lengths"]
+    return (f"Two vectors have lengths |u| = {fmt(a)} and |v| = {fmt(b)}, and "
+            f"|u - v| = {fmt(c)}. Without coordinates, find u · v (the law of cosines, Goldman §9.4).")
+
+
+def _dot_steps(p) -> str:
+    a, b, c = p["lengths"]
+    e = _dot_value(p)
+    return (f"1. |u - v|² = (u - v) · (u - v) = |u|² - 2 u · v + |v|².\n"
+            f"2. So u · v = (|u|² + |v|² - |u - v|²) / 2 = ({fmt(a * a)} + {fmt(b * b)} - {fmt(c * c)}) / 2 "
+            f"= {fmt(e)}.\n"
+            f"3. The sign says the angle between u and v is {'obtuse' if e < 0 else 'acute'}.")
+
+
+def _same_number(a, b) -> bool:
+    return abs(float(a) - float(b)) <= 1e-4 * (1 + max(abs(float(a)), abs(float(b))))
+
+
+@DECK.exercise(stored=_STORED_DOT, generate=_dot_generate, answer=_dot_value, slips=_dot_slips,
+               statement=_dot_statement, steps=_dot_steps, same=_same_number, well_posed=_dot_ok)
+def check_dot_from_lengths(answer, p) -> Result:
     """Check u · v from |u|, |v|, |u - v| (Goldman §9.4): ``(|u|² + |v|² - |u - v|²) / 2``.
 
     Recognises: the factor 1/2 forgotten, the sign of the law of cosines reversed, the lengths
@@ -198,7 +297,7 @@ def check_dot_from_lengths(answer) -> Result:
     >>> check_dot_from_lengths(-8)
     Not yet: that is |u|² + |v|² - |u - v|², which is 2 |u| |v| cos θ: you forgot to halve it.
     """
-    a, b, c = DOT_LENGTHS
+    a, b, c = p["lengths"]
     value, err = read_number(answer, "u · v")
     if err is not None:
         return err
@@ -220,13 +319,63 @@ def check_dot_from_lengths(answer) -> Result:
 
 # -- exercise 4 ---------------------------------------------------------------------------------
 
-def _cross_expected() -> np.ndarray:
-    theta = math.radians(CROSS_ANGLE)
-    v = CROSS_V_LENGTH * np.array([math.cos(theta), math.sin(theta), 0.0])
-    return vectors.cross_from_geometry(CROSS_U, v, [0.0, 0.0, 1.0])
+_STORED_CROSS = {"u": tuple(CROSS_U.tolist()), "v_length": CROSS_V_LENGTH, "angle": CROSS_ANGLE}
 
 
-def check_cross_from_angle(answer) -> Result:
+@memo
+def _cross_expected(p) -> np.ndarray:
+    theta = math.radians(p["angle"])
+    v = p["v_length"] * np.array([math.cos(theta), math.sin(theta), 0.0])
+    return vectors.cross_from_geometry(np.array(p["u"]), v, [0.0, 0.0, 1.0])
+
+
+@memo
+def _cross_slips(p) -> dict:
+    L = float(np.linalg.norm(_cross_expected(p)))
+    lu, lv, angle = float(np.linalg.norm(p["u"])), p["v_length"], p["angle"]
+    return {"v × u": np.array([0.0, 0.0, -L]),
+            "cos θ": np.array([0.0, 0.0, lu * lv * math.cos(math.radians(angle))]),
+            "the sine in radians": np.array([0.0, 0.0, lu * lv * math.sin(angle)]),
+            "half the length": np.array([0.0, 0.0, L / 2]),
+            "in the plane of u and v": np.array([0.0, L, 0.0])}
+
+
+def _cross_generate(rng) -> dict:
+    return {"u": (float(rng.integers(1, 7)), 0.0, 0.0), "v_length": float(rng.choice([1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0])),
+            "angle": float(rng.choice([30.0, 150.0]))}   # sin θ = 1/2: an exact answer by hand
+
+
+def _cross_ok(p):
+    # the checker tells the cos and radian slips by the size of the z-coordinate: keep them apart
+    s = _cross_slips(p)
+    zs = [abs(v[2]) for v in s.values()] + [abs(_cross_expected(p)[2])]
+    tol = 1e-4 * (1 + zs[-1])
+    if any(abs(zs[i] - zs[j]) <= tol for i in (1, 2, 3, 5) for j in (1, 2, 3, 5) if i < j):
+        return "two slips have z-coordinates of the same size"
+    return None
+
+
+def _cross_statement(p) -> str:
+    return (f"u = {fmt(p['u'])}; v lies in the xy-plane, has length {fmt(p['v_length'])} and makes the angle "
+            f"{fmt(p['angle'])}° with u, turning counterclockwise from u (towards +y). From the geometric definition "
+            f"(length |u| |v| sin θ, perpendicular to u and v, (u, v, u × v) right-handed) give u × v as [x, y, z] "
+            f"(Goldman §9.4).")
+
+
+def _cross_steps(p) -> str:
+    e = _cross_expected(p)
+    lu = float(np.linalg.norm(p["u"]))
+    return (f"1. Length: |u| |v| sin θ = {fmt(lu)} · {fmt(p['v_length'])} · sin {fmt(p['angle'])}° = "
+            f"{fmt(np.linalg.norm(e))}.\n"
+            f"2. Direction: perpendicular to the xy-plane, where u and v lie; u along +x and v turning counterclockwise "
+            f"towards +y make u × v point to +z (right-hand rule).\n"
+            f"3. u × v = {fmt(e)}.")
+
+
+@DECK.exercise(stored=_STORED_CROSS, generate=_cross_generate, answer=_cross_expected, slips=_cross_slips,
+               statement=_cross_statement, steps=_cross_steps,
+               same=lambda a, b: _same_point(a, b) or _same_point(b, a), well_posed=_cross_ok)
+def check_cross_from_angle(answer, p) -> Result:
     """Check u × v from |u|, |v|, the angle and the orientation (Goldman §9.4).
 
     Recognises: v × u (the opposite direction), cos θ instead of sin θ, the angle's sine taken in
@@ -241,26 +390,27 @@ def check_cross_from_angle(answer) -> Result:
         return err
     if got.shape != (3,):
         return wrong(f"{what} is one 3D vector [x, y, z]; yours has shape {got.shape}.")
-    expected = _cross_expected()
+    expected = _cross_expected(p)
+    angle, v_length = p["angle"], p["v_length"]
     L = float(np.linalg.norm(expected))
     tol = 1e-4 * (1 + L)
     if np.linalg.norm(got - expected) <= tol:
-        return correct(f"|u × v| = |u| |v| sin {fmt(CROSS_ANGLE)}° = {fmt(L)}, perpendicular to the xy-plane, and up "
+        return correct(f"|u × v| = |u| |v| sin {fmt(angle)}° = {fmt(L)}, perpendicular to the xy-plane, and up "
                        f"(+z) by the right-hand rule: u × v = {fmt(expected)}.")
     if abs(got[0]) > tol or abs(got[1]) > tol:
         return wrong("u × v is perpendicular to both u and v, so to the whole xy-plane: only its z-coordinate can "
                      "be nonzero.")
     z = got[2]
-    lu = float(np.linalg.norm(CROSS_U))
-    theta = math.radians(CROSS_ANGLE)
+    lu = float(np.linalg.norm(p["u"]))
+    theta = math.radians(angle)
     if abs(z + L) <= tol:
         return wrong("the length is right but the direction is reversed: that is v × u. With u along +x and v turning "
                      "counterclockwise towards +y, the right-hand rule points u × v up, towards +z.")
-    if min(abs(abs(z) - lu * CROSS_V_LENGTH * abs(math.cos(theta))), abs(z - lu * CROSS_V_LENGTH * math.cos(theta))) <= tol:
+    if min(abs(abs(z) - lu * v_length * abs(math.cos(theta))), abs(z - lu * v_length * math.cos(theta))) <= tol:
         return wrong("that length uses cos θ: |u| |v| cos θ is the dot product's size. The cross product's length "
                      "is |u| |v| sin θ, the parallelogram's area.")
-    if min(abs(abs(z) - lu * CROSS_V_LENGTH * abs(math.sin(CROSS_ANGLE))), abs(z - lu * CROSS_V_LENGTH * math.sin(CROSS_ANGLE))) <= tol:
-        return wrong(f"you took the sine of {fmt(CROSS_ANGLE)} radians: the angle is in degrees (set your calculator "
+    if min(abs(abs(z) - lu * v_length * abs(math.sin(angle))), abs(z - lu * v_length * math.sin(angle))) <= tol:
+        return wrong(f"you took the sine of {fmt(angle)} radians: the angle is in degrees (set your calculator "
                      f"to degrees, or multiply by π/180).")
     if abs(abs(z) - L / 2) <= tol:
         return wrong("that is half the length, the area of the triangle on u and v; |u × v| is the area of the whole "
@@ -271,48 +421,118 @@ def check_cross_from_angle(answer) -> Result:
 
 # -- exercise 5 ---------------------------------------------------------------------------------
 
-def _det_expected() -> np.ndarray:
+#: the triples Exercise 5 draws from: one exchange, one cyclic shift, one repeated direction.
+_SWAPS = (("det(v, u, w)", [[0, 1, 0], [1, 0, 0], [0, 0, 1]]), ("det(u, w, v)", [[1, 0, 0], [0, 0, 1], [0, 1, 0]]),
+          ("det(w, v, u)", [[0, 0, 1], [0, 1, 0], [1, 0, 0]]))
+_CYCLES = (("det(w, u, v)", [[0, 0, 1], [1, 0, 0], [0, 1, 0]]), ("det(v, w, u)", [[0, 1, 0], [0, 0, 1], [1, 0, 0]]))
+_FLATS = (("det(u, v, u + v)", [[1, 0, 0], [0, 1, 0], [1, 1, 0]]), ("det(u, w, u - w)", [[1, 0, 0], [0, 0, 1], [1, 0, -1]]),
+          ("det(v, w, 2v + w)", [[0, 1, 0], [0, 0, 1], [0, 2, 1]]))
+_STORED_DET = {"det": DET_GIVEN, "swap": 0, "cycle": 0, "scale": (2.0, -1.0), "flat": 0}
+
+
+def _slot(k: float, name: str) -> str:
+    return name if k == 1 else ("-" + name if k == -1 else fmt(k) + name)
+
+
+def _det_asked(p) -> list:
+    s1, s3 = p["scale"]
+    scaled = (f"det({_slot(s1, 'u')}, v, {_slot(s3, 'w')})", [[s1, 0, 0], [0, 1, 0], [0, 0, s3]])
+    return [_SWAPS[p["swap"]], _CYCLES[p["cycle"]], scaled, _FLATS[p["flat"]]]
+
+
+def _det_expected(p) -> np.ndarray:
     # det is multilinear: det(M E) = det(M) det(E) for the coefficient rows M on (u, v, w)
-    return np.array([round(float(np.linalg.det(np.array(M, float))), 12) * DET_GIVEN for _, M in DET_ASKED])
+    return np.array([round(float(np.linalg.det(np.array(M, float))), 12) * p["det"] for _, M in _det_asked(p)])
+
+
+def _det_slips(p) -> dict:
+    e = _det_expected(p)
+    s1, s3 = p["scale"]
+    out = {"volumes without signs": np.abs(e)}
+    for k, why in ((0, "a swap keeping the sign"), (1, "a cyclic shift as one swap")):
+        s = e.copy()
+        s[k] = -s[k]
+        out[why] = s
+    s = e.copy()
+    s[2] = e[2] / abs(s1 * s3)
+    out["the factors left inside"] = s
+    s = e.copy()
+    s[3] = p["det"]
+    out["a flat triple with a volume"] = s
+    return out
+
+
+def _det_generate(rng) -> dict:
+    return {"det": float(rng.integers(2, 10)), "swap": int(rng.integers(0, 3)), "cycle": int(rng.integers(0, 2)),
+            "scale": (float(rng.integers(2, 5)), -float(rng.integers(1, 4))), "flat": int(rng.integers(0, 3))}
+
+
+def _det_statement(p) -> str:
+    asked = _det_asked(p)
+    return (f"det(u, v, w) = {fmt(p['det'])}, so (u, v, w) is right-handed. Give "
+            f"{', '.join(name for name, _ in asked)} as a list of {len(asked)} numbers (Goldman §9.4: the "
+            f"determinant is the signed volume of the parallelepiped).")
+
+
+def _det_steps(p) -> str:
+    asked, e = _det_asked(p), _det_expected(p)
+    s1, s3 = p["scale"]
+    return (f"1. {asked[0][0]}: one exchange of two vectors reverses the orientation: {fmt(e[0])}.\n"
+            f"2. {asked[1][0]}: a cyclic shift is two exchanges, the orientation is kept: {fmt(e[1])}.\n"
+            f"3. {asked[2][0]}: the factors {fmt(s1)} and {fmt(s3)} come out of their slots: "
+            f"{fmt(s1)} · ({fmt(s3)}) · {fmt(p['det'])} = {fmt(e[2])}.\n"
+            f"4. {asked[3][0]}: the third vector lies in the plane of the first two, so the parallelepiped is flat: "
+            f"{fmt(e[3])}.")
+
+
+def _same_dets(a, b) -> bool:
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and bool(np.all(np.abs(a - b) <= 1e-6 * (1 + np.maximum(np.abs(a), np.abs(b)))))
 
 
 _ORDINAL = ("first", "second", "third", "fourth", "fifth", "sixth")
 
 
-def check_orientation(answer) -> Result:
-    """Check the determinants of :data:`DET_ASKED` from ``det(u, v, w)`` (Goldman §9.4): a swap
+@DECK.exercise(stored=_STORED_DET, generate=_det_generate, answer=_det_expected, slips=_det_slips,
+               statement=_det_statement, steps=_det_steps, same=_same_dets)
+def check_orientation(answer, p) -> Result:
+    """Check the determinants the statement asks for, from ``det(u, v, w)`` (Goldman §9.4): a swap
     changes the sign, a cyclic shift does not, factors come out of each slot, and a repeated
     direction gives a flat parallelepiped.
 
-    Recognises: unsigned volumes (all signs dropped), a cyclic shift treated as one swap, scale
-    factors left inside, and a dependent triple given a nonzero volume.
+    Recognises: unsigned volumes (all signs dropped), a swap that keeps the sign, a cyclic shift
+    treated as one swap, scale factors left inside, and a dependent triple given a nonzero volume.
 
     >>> check_orientation([5, 5, 10, 0])  # doctest: +ELLIPSIS
     Not yet: those are volumes, without their signs: ...
     """
-    n = len(DET_ASKED)
+    asked = _det_asked(p)
+    n = len(asked)
     what = f"the {n} determinants"
     got, err = read_points(answer, what, ask=f"a list of {n} numbers")
     if err is not None:
         return err
     if got.shape != (n,):
         return wrong(f"give {n} numbers, one per determinant asked; yours has shape {got.shape}.")
-    expected = _det_expected()
+    expected = _det_expected(p)
     ok = np.abs(got - expected) <= 1e-6 * (1 + np.abs(expected))
     if ok.all():
         return correct("a swap reverses the orientation (the sign), a cyclic shift keeps it, each slot is linear, and "
-                       "u, v, u + v span no volume.")
+                       f"{asked[3][0][4:-1]} span no volume.")
     if np.allclose(got, np.abs(expected)) and not np.allclose(expected, np.abs(expected)):
         return wrong("those are volumes, without their signs: det(u, v, w) is a signed volume, and exchanging two "
                      "vectors turns a right-handed triple into a left-handed one.")
-    names = [name for name, _ in DET_ASKED]
+    names = [name for name, _ in asked]
     for k in np.flatnonzero(~ok):
         k = int(k)
-        name, M = DET_ASKED[k]
+        name, M = asked[k]
         M = np.array(M, float)
         perm = bool(np.all((M == 0) | (M == 1)) and np.all(M.sum(0) == 1) and np.all(M.sum(1) == 1))
         scale = np.prod([abs(r[r != 0]).prod() for r in M])
         if perm and abs(got[k] + expected[k]) <= 1e-6 * (1 + abs(expected[k])):
+            if np.linalg.det(M) < 0:
+                return wrong(f"the {_ORDINAL[k]} one, {name}: exchanging two vectors reverses the orientation, so "
+                             f"one swap changes the sign.")
             return wrong(f"the {_ORDINAL[k]} one, {name}: a cyclic shift (u, v, w) -> (w, u, v) is two swaps, not one, "
                          f"so it keeps the orientation.")
         if not perm and abs(expected[k]) > 0 and abs(abs(got[k]) * scale - abs(expected[k])) <= 1e-6 * (1 + abs(expected[k])):
@@ -328,7 +548,52 @@ def check_orientation(answer) -> Result:
 
 # -- exercise 6 ---------------------------------------------------------------------------------
 
-def check_associator(answer) -> Result:
+_STORED_ASSOC = {"u": tuple(ASSOC_U.tolist()), "w": tuple(ASSOC_W.tolist()), "uv": ASSOC_UV, "vw": ASSOC_VW}
+
+
+def _assoc_expected(p) -> np.ndarray:
+    return p["uv"] * np.array(p["w"]) - p["vw"] * np.array(p["u"])
+
+
+def _assoc_slips(p) -> dict:
+    u, w, uv, vw = np.array(p["u"]), np.array(p["w"]), p["uv"], p["vw"]
+    return {"zero": np.zeros(3), "the sign reversed": -_assoc_expected(p),
+            "the dot products on the wrong vectors": vw * w - uv * u}
+
+
+def _assoc_generate(rng) -> dict:
+    nonzero = [-3.0, -2.0, -1.0, 1.0, 2.0, 3.0, 4.0]
+    return {"u": tuple(float(v) for v in rng.integers(-2, 4, size=3)),
+            "w": tuple(float(v) for v in rng.integers(-2, 4, size=3)),
+            "uv": float(rng.choice(nonzero)), "vw": float(rng.choice(nonzero))}
+
+
+def _assoc_ok(p):
+    if np.linalg.norm(np.cross(p["u"], p["w"])) < 0.5:
+        return "u and w are parallel (or zero): no room for v, and the associator would not show the rule"
+    return None
+
+
+def _assoc_statement(p) -> str:
+    return (f"u = {fmt(p['u'])}, w = {fmt(p['w'])}, and v is a vector with u · v = {fmt(p['uv'])} and "
+            f"v · w = {fmt(p['vw'])}. Give (u × v) × w - u × (v × w) as [x, y, z] (Goldman §9.4 and Chapter 9, "
+            f"Appendix A).")
+
+
+def _assoc_steps(p) -> str:
+    return ("1. (u × v) × w = (u · w) v - (v · w) u and u × (v × w) = (u · w) v - (u · v) w.\n"
+            "2. Subtract: the terms in v cancel, so (u × v) × w - u × (v × w) = (u · v) w - (v · w) u, and v "
+            "itself is never needed.\n"
+            f"3. {fmt(p['uv'])} · {fmt(p['w'])} - ({fmt(p['vw'])}) · {fmt(p['u'])} = {fmt(_assoc_expected(p))}.")
+
+
+def _same_assoc(a, b) -> bool:
+    return _same_point(a, b, 1e-6) or _same_point(b, a, 1e-6)
+
+
+@DECK.exercise(stored=_STORED_ASSOC, generate=_assoc_generate, answer=_assoc_expected, slips=_assoc_slips,
+               statement=_assoc_statement, steps=_assoc_steps, same=_same_assoc, well_posed=_assoc_ok)
+def check_associator(answer, p) -> Result:
     """Check ``(u × v) × w - u × (v × w) = (u · v) w - (v · w) u`` (Goldman §9.4, Appendix A).
 
     Recognises: zero (assuming the cross product is associative), the opposite sign, and the two
@@ -343,9 +608,9 @@ def check_associator(answer) -> Result:
         return err
     if got.shape != (3,):
         return wrong(f"{what} is one 3D vector [x, y, z]; yours has shape {got.shape}.")
-    u, w, uv, vw = ASSOC_U, ASSOC_W, ASSOC_UV, ASSOC_VW
+    u, w, uv, vw = np.array(p["u"]), np.array(p["w"]), p["uv"], p["vw"]
     expected = uv * w - vw * u
-    close = lambda p: np.linalg.norm(got - p) <= 1e-6 * (1 + np.linalg.norm(p))  # noqa: E731
+    close = lambda q: np.linalg.norm(got - q) <= 1e-6 * (1 + np.linalg.norm(q))  # noqa: E731
     if close(expected):
         return correct(f"(u × v) × w - u × (v × w) = (u · v) w - (v · w) u = {fmt(expected)}: not zero, so the cross "
                        f"product is not associative, and v itself was never needed.")
@@ -359,6 +624,13 @@ def check_associator(answer) -> Result:
                      "v · w multiplies u.")
     return check_points(got, expected, what=what, tol=1e-6,
                         hint="(u × v) × w = (u · w) v - (v · w) u and u × (v × w) = (u · w) v - (u · v) w")
+
+
+#: Deal another instance of an exercise (``deal("check_dot_from_lengths")``, or with ``seed=``; 0 is
+#: the stored one), show the worked steps of the current one, read it, or get a button.
+deal, steps, current, deal_button = DECK.deal, DECK.steps, DECK.current, DECK.button
+#: Exercise 1 is a table of chosen expressions, each legal or not for its own reason: it does not deal.
+PROBLEMS = DECK.problems({"check_expression_types": _EXPRESSIONS_PROBLEM})
 
 
 SLIPS = {
