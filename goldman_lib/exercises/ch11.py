@@ -101,6 +101,11 @@ def _tup(a):
     return tuple(_tup(r) for r in a) if a.ndim > 1 else tuple(float(x) for x in a)
 
 
+def _f6(x) -> str:
+    """A number of the worked steps, to six digits (enough for the checker's tolerance)."""
+    return fmt(x, 6)
+
+
 def _r(x):
     """A value rounded for worked steps (no floating-point noise)."""
     return np.round(np.asarray(x, dtype=float), 6) + 0.0
@@ -133,9 +138,9 @@ def _law_statement(p) -> str:
 def _law_steps(p) -> str:
     a, b, g = p["a"], p["b"], p["gamma"]
     c2 = a * a + b * b - 2 * a * b * np.cos(np.radians(g))
-    return (f"1. cos {fmt(g)}° = {fmt(_r(np.cos(np.radians(g))))}.\n"
-            f"2. c² = a² + b² - 2ab cos γ = {fmt(a * a)} + {fmt(b * b)} - {fmt(2 * a * b)} cos γ = {fmt(_r(c2))}.\n"
-            f"3. c = √c² = {fmt(_r(np.sqrt(c2)))}.")
+    return (f"1. cos {fmt(g)}° = {_f6(_r(np.cos(np.radians(g))))}.\n"
+            f"2. c² = a² + b² - 2ab cos γ = {fmt(a * a)} + {fmt(b * b)} - {fmt(2 * a * b)} cos γ = {_f6(_r(c2))}.\n"
+            f"3. c = √c² = {_f6(_r(np.sqrt(c2)))}.")
 
 
 @DECK.exercise(stored=_STORED_LAW, generate=_law_generate, answer=lambda p: _law_answers(p)[0],
@@ -204,9 +209,9 @@ def _plane_steps(p) -> str:
     raw = float((Q - P) @ N)
     return (f"1. Q - P = {fmt(Q - P)}.\n"
             f"2. (Q - P)·N = {fmt(raw)}.\n"
-            f"3. |N| = √(N·N) = √{fmt(N @ N)} = {fmt(_r(np.linalg.norm(N)))}.\n"
-            f"4. The signed distance is {fmt(raw)} / {fmt(_r(np.linalg.norm(N)))} = "
-            f"{fmt(_r(raw / np.linalg.norm(N)))}; the distance is its absolute value.")
+            f"3. |N| = √(N·N) = √{fmt(N @ N)} = {_f6(_r(np.linalg.norm(N)))}.\n"
+            f"4. The signed distance is {fmt(raw)} / {_f6(_r(np.linalg.norm(N)))} = "
+            f"{_f6(_r(raw / np.linalg.norm(N)))}; the distance is its absolute value.")
 
 
 @DECK.exercise(stored=_STORED_PLANE, generate=_plane_generate, answer=lambda p: _plane_answers(p)[0],
@@ -281,7 +286,7 @@ def _lines_steps(p) -> str:
     dot = float((p2 - p1) @ c)
     return (f"1. The common perpendicular: d1 × d2 = {fmt(c)}, |d1 × d2| = √{fmt(c @ c)}.\n"
             f"2. p2 - p1 = {fmt(p2 - p1)}; (p2 - p1)·(d1 × d2) = {fmt(dot)}.\n"
-            f"3. The distance is |{fmt(dot)}| / √{fmt(c @ c)} = {fmt(_r(abs(dot) / np.sqrt(c @ c)))}.")
+            f"3. The distance is |{fmt(dot)}| / √{fmt(c @ c)} = {_f6(_r(abs(dot) / np.sqrt(c @ c)))}.")
 
 
 @DECK.exercise(stored=_STORED_LINES, generate=_lines_generate, answer=lambda p: _lines_answers(p)[0],
@@ -377,9 +382,9 @@ def _newell_steps(p) -> str:
     poly = _arr(p["polygon"])
     N = vg.newell_normal(poly)
     return (f"1. Newell's normal N = Σ P_i × P_(i+1), the last edge back to the first vertex included: "
-            f"N = {fmt(_r(N))}.\n"
-            f"2. |N| = √(N·N) = √{fmt(_r(N @ N))} = {fmt(_r(np.linalg.norm(N)))}.\n"
-            f"3. The area is |N| / 2 = {fmt(_r(np.linalg.norm(N) / 2))}.")
+            f"N = {_f6(_r(N))}.\n"
+            f"2. |N| = √(N·N) = √{_f6(_r(N @ N))} = {_f6(_r(np.linalg.norm(N)))}.\n"
+            f"3. The area is |N| / 2 = {_f6(_r(np.linalg.norm(N) / 2))}.")
 
 
 @DECK.exercise(stored=_STORED_NEWELL, generate=_newell_generate, answer=lambda p: _newell_answers(p)[0],
@@ -440,8 +445,8 @@ def _tet_steps(p) -> str:
     P0, P1, P2, P3 = _arr(p["T"])
     d = float(vectors.det(P1 - P0, P2 - P0, P3 - P0))
     return (f"1. The edges from P0: P1 - P0 = {fmt(P1 - P0)}, P2 - P0 = {fmt(P2 - P0)}, P3 - P0 = {fmt(P3 - P0)}.\n"
-            f"2. det(P1 - P0, P2 - P0, P3 - P0) = ((P1 - P0) × (P2 - P0))·(P3 - P0) = {fmt(_r(d))}.\n"
-            f"3. The volume is |det| / 6 = {fmt(_r(abs(d) / 6))}.")
+            f"2. det(P1 - P0, P2 - P0, P3 - P0) = ((P1 - P0) × (P2 - P0))·(P3 - P0) = {_f6(_r(d))}.\n"
+            f"3. The volume is |det| / 6 = {_f6(_r(abs(d) / 6))}.")
 
 
 @DECK.exercise(stored=_STORED_TET, generate=_tet_generate, answer=lambda p: _tet_answers(p)[0],
@@ -519,7 +524,7 @@ def _planes_steps(p) -> str:
             f"N1 × N2 = {fmt(np.cross(N1, N2))}.\n"
             f"2. det(N1, N2, N3) = (N1 × N2)·N3 = {fmt(d)}.\n"
             f"3. c1 (N2 × N3) + c2 (N3 × N1) + c3 (N1 × N2) = {fmt(num)}.\n"
-            f"4. Divide by the determinant: X = {fmt(_r(num / d))}; check it in each equation.")
+            f"4. Divide by the determinant: X = {_f6(_r(num / d))}; check it in each equation.")
 
 
 @DECK.exercise(stored=_STORED_PLANES, generate=_planes_generate, answer=lambda p: _planes_answers(p)[0],
@@ -603,10 +608,10 @@ def _slerp_statement(p) -> str:
 def _slerp_steps(p) -> str:
     th, t = p["theta"], p["t"]
     w0, w1 = np.sin(np.radians((1 - t) * th)) / np.sin(np.radians(th)), np.sin(np.radians(t * th)) / np.sin(np.radians(th))
-    return (f"1. cos θ = v0·v1 = {fmt(_r(np.cos(np.radians(th))))}, so θ = {fmt(th)}°.\n"
-            f"2. The weights: sin((1 - t)θ)/sin θ = sin {fmt(_r((1 - t) * th))}° / sin {fmt(th)}° = {fmt(_r(w0))}, "
-            f"sin(tθ)/sin θ = sin {fmt(_r(t * th))}° / sin {fmt(th)}° = {fmt(_r(w1))}.\n"
-            f"3. slerp = {fmt(_r(w0))} v0 + {fmt(_r(w1))} v1 = {fmt(_r(_slerp_answers(p)[0]))}, a unit vector.")
+    return (f"1. cos θ = v0·v1 = {_f6(_r(np.cos(np.radians(th))))}, so θ = {fmt(th)}°.\n"
+            f"2. The weights: sin((1 - t)θ)/sin θ = sin {_f6(_r((1 - t) * th))}° / sin {fmt(th)}° = {_f6(_r(w0))}, "
+            f"sin(tθ)/sin θ = sin {_f6(_r(t * th))}° / sin {fmt(th)}° = {_f6(_r(w1))}.\n"
+            f"3. slerp = {_f6(_r(w0))} v0 + {_f6(_r(w1))} v1 = {_f6(_r(_slerp_answers(p)[0]))}, a unit vector.")
 
 
 @DECK.exercise(stored=_STORED_SLERP, generate=_slerp_generate, answer=lambda p: _slerp_answers(p)[0],
