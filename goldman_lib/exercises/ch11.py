@@ -2,9 +2,10 @@
 
 Every exercise deals new instances (issue 17 §3, :mod:`goldman_lib.exercises.deal`): instance 0 is
 the module constants below, which the stored notebook shows; ``deal("check_...")`` (or the button
-beside the exercise) deals another, and the checker, ``PROBLEMS`` and ``steps("check_...")`` follow the
-current instance.  ``SLIPS`` holds the wrong answers of the kinds each checker recognises, for the
-stored instance.
+beside the exercise) deals another, and the checker, ``PROBLEMS`` and ``steps("check_...")`` follow
+the current instance. The chapter's "show that" exercises (9 and 10, in
+:mod:`goldman_lib.exercises.proofs`) ask for an identity, not a number, so they do not deal.
+``SLIPS`` holds the wrong answers of the kinds each checker recognises, for the stored instance.
 
 >>> print(PROBLEMS["check_law_of_cosines"])
 A triangle has sides a = 5 and b = 8 with the angle γ = 60° between them. Give the third side c (Goldman §11.2).

@@ -4,11 +4,11 @@ mirror in a plane, nonuniform scaling, orthogonal and perspective projection.
 
 Every exercise deals new instances (issue 17 §3, :mod:`goldman_lib.exercises.deal`): instance 0 is
 the module constants below, which the stored notebook shows; ``deal("check_...")`` (or the button
-beside the exercise) deals another, and the checker, ``PROBLEMS`` and ``steps("check_...")`` follow the
-current instance.  ``SLIPS`` holds the wrong answers of the kinds each checker recognises, for the
-stored instance.  Hand-computed decimals are accepted to a relative 1e-4 (2/3 typed as 0.6667 is
-right).
-"""
+beside the exercise) deals another, and the checker, ``PROBLEMS`` and ``steps("check_...")`` follow
+the current instance. The chapter's "show that" exercises (6 and 7, in
+:mod:`goldman_lib.exercises.proofs`) ask for an identity, not a number, so they do not deal.
+``SLIPS`` holds the wrong answers of the kinds each checker recognises, for the stored instance.
+Hand-computed decimals are accepted to a relative 1e-4 (2/3 typed as 0.6667 is right). """
 
 from __future__ import annotations
 
