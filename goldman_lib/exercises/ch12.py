@@ -24,7 +24,8 @@ from goldman_lib.exercises.deal import Deck, memo
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_POINT", "ROTATE_AXIS", "ROTATE_THROUGH", "ROTATE_ANGLE", "MIRROR_POINT",
            "MIRROR_PLANE_POINT", "MIRROR_NORMAL", "SCALE_POINT", "SCALE_FACTOR", "SCALE_DIRECTION", "SCALE_CENTER",
            "ORTHO_POINT", "ORTHO_PLANE_POINT", "ORTHO_NORMAL", "PERSP_POINT", "PERSP_EYE", "PERSP_PLANE_POINT",
-           "PERSP_NORMAL", "DECK", "deal", "steps", "current", "deal_button", "check_rotation_about_point", "check_mirror_point", "check_scale_along",
+           "PERSP_NORMAL", "DECK", "deal", "steps", "current", "deal_button", "check_rotation_about_point",
+           "check_mirror_point", "check_scale_along",
            "check_orthogonal_projection", "check_perspective_projection"]
 
 #: Exercise 1: rotate P by 120 degrees about the line through ROTATE_THROUGH along (1, 1, 1).
