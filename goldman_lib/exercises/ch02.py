@@ -22,7 +22,7 @@ import numpy as np
 from goldman_lib import fractals, turtle
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
-from goldman_lib.exercises.deal import Deck
+from goldman_lib.exercises.deal import Deck, within
 from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "LOOP_PASS", "STAR_PASSES", "CENTRE_PASS", "GASKET_SIDES", "C_CURVE_LEVEL",
@@ -54,12 +54,6 @@ def _turns(pass_: str) -> list[float]:
 
 def _num(x) -> str:
     return fmt(x)
-
-
-def _close1(tol):
-    def same(a, b):
-        return bool(np.all(np.abs(np.asarray(a, float) - np.asarray(b, float)) <= tol))
-    return same
 
 
 # -- exercise 2.1: the period of a loop ---------------------------------------------------------
@@ -119,7 +113,7 @@ def _loop_steps(p) -> str:
 
 
 @DECK.exercise(stored={"pass": LOOP_PASS}, generate=_loop_generate, answer=_loop_answer, slips=_loop_slips,
-               statement=_loop_statement, steps=_loop_steps, same=_close1(0), well_posed=_loop_ok)
+               statement=_loop_statement, steps=_loop_steps, same=within(0), well_posed=_loop_ok)
 def check_loop_period(answer, p) -> Result:
     """Exercise 2.1: the period of ``REPEAT k [pass]`` for the pass of the statement (Goldman §2.2,
     looping lemma): the least number of passes whose total turning is a multiple of 360.
@@ -196,7 +190,7 @@ def _star_steps(p) -> str:
 
 
 @DECK.exercise(stored={"n": STAR_PASSES}, generate=_star_generate, answer=_star_answer, slips=_star_slips,
-               statement=_star_statement, steps=_star_steps, same=_close1(0.01))
+               statement=_star_statement, steps=_star_steps, same=within(0.01))
 def check_star_angle(answer, p) -> Result:
     """Exercise 2.2: an angle ``a`` for which ``REPEAT n [FORWARD 1 TURN a]`` closes after exactly n
     passes and draws a star (Goldman §2.2).  Every such angle is accepted, within 0.01 degrees."""
@@ -276,7 +270,7 @@ def _centre_steps(p) -> str:
 
 
 @DECK.exercise(stored={"pass": CENTRE_PASS}, generate=_centre_generate, answer=_centre_answer,
-               slips=_centre_slips, statement=_centre_statement, steps=_centre_steps, same=_close1(1e-4),
+               slips=_centre_slips, statement=_centre_statement, steps=_centre_steps, same=within(1e-4),
                well_posed=_centre_ok)
 def check_loop_centre(answer, p) -> Result:
     """Exercise 2.3: the centre of rotation of the pass of the statement (Goldman §2.2):
@@ -368,7 +362,7 @@ def _gasket_steps(p) -> str:
 
 
 @DECK.exercise(stored={"sides": GASKET_SIDES}, generate=_gasket_generate, answer=_gasket_answer,
-               slips=_gasket_slips, statement=_gasket_statement, steps=_gasket_steps, same=_close1(1e-4))
+               slips=_gasket_slips, statement=_gasket_statement, steps=_gasket_steps, same=within(1e-4))
 def check_gasket_scale(answer, p) -> Result:
     """Exercise 2.4: the scale ``r`` of a polygon gasket's copies (Goldman §2.3, fractal gaskets):
     along a side of the big polygon, the copies at its two corners just touch.  Accepts 1e-4.
@@ -386,7 +380,7 @@ def check_gasket_scale(answer, p) -> Result:
     cos_text = _cos_text(angles)
     expected = _gasket_answer(p)
     if abs(r - expected) <= 1e-4:
-        formula = (f"2 r (1 + cos 45) = 1 gives r = 1 / (2 + sqrt 2)" if n == 8 else
+        formula = ("2 r (1 + cos 45) = 1 gives r = 1 / (2 + sqrt 2)" if n == 8 else
                    f"2 r (1 + {cos_text}) = 1 gives r")
         return correct(f"{formula} = {fmt(expected, 6)}: the copies at the two "
                        f"ends of a side meet at its midpoint.")
@@ -453,7 +447,7 @@ def _commands_steps(p) -> str:
 
 
 @DECK.exercise(stored={"level": C_CURVE_LEVEL}, generate=_commands_generate, answer=_commands_answer,
-               slips=_commands_slips, statement=_commands_statement, steps=_commands_steps, same=_close1(0))
+               slips=_commands_slips, statement=_commands_statement, steps=_commands_steps, same=within(0))
 def check_c_curve_commands(answer, p) -> Result:
     """Exercise 2.5: the commands executed by a level of the C-curve (Goldman §2.3), from the
     recurrence of the command count c(n) of level n.

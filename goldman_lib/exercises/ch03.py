@@ -18,7 +18,7 @@ import numpy as np
 
 from goldman_lib import fractals
 from goldman_lib.exercises import guard_checkers, clip
-from goldman_lib.exercises.deal import Deck
+from goldman_lib.exercises.deal import Deck, within
 from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_number, unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "EQUAL_COPIES", "EQUAL_SCALE", "TENT_PROGRAM", "CHORD_LEVEL", "BOUND_START",
@@ -45,10 +45,6 @@ _WORDS = {2: "a half", 3: "a third", 4: "a quarter", 5: "a fifth", 6: "a sixth",
 
 def _near(value: float, target: float, tol: float) -> bool:
     return abs(value - target) <= tol
-
-
-def _same(tol):
-    return lambda a, b: abs(float(a) - float(b)) <= tol
 
 
 # -- exercise 3.1: N copies at scale 1/k -------------------------------------------------------
@@ -89,7 +85,7 @@ def _equal_steps(p) -> str:
 
 
 @DECK.exercise(stored=_STORED_EQUAL, generate=_equal_generate, answer=_equal_answer, slips=_equal_slips,
-               statement=_equal_statement, steps=_equal_steps, same=_same(1e-3),
+               statement=_equal_statement, steps=_equal_steps, same=within(1e-3),
                well_posed=lambda p: None if 1.05 < _equal_answer(p) < 1.95 else "the dimension is too near 1 or 2")
 def check_equal_scales_dimension(answer, p) -> Result:
     """Exercise 3.1: the dimension of N copies at scale 1/k (Goldman §3.2), from N s^D = 1.
@@ -188,7 +184,7 @@ def _tent_steps(p) -> str:
 
 
 @DECK.exercise(stored={"k": 4}, generate=_tent_generate, answer=_tent_answer, slips=_tent_slips,
-               statement=_tent_statement, steps=_tent_steps, same=_same(1e-4))
+               statement=_tent_statement, steps=_tent_steps, same=within(1e-4))
 def check_program_dimension(answer, p) -> Result:
     """Exercise 3.2: the dimension of the wide-tent program of the statement (Goldman §3.2.2),
     from the scales of its RECURSE calls (the RESIZE factors multiply) and the equation
@@ -352,7 +348,7 @@ def _bound_steps(p) -> str:
 
 
 @DECK.exercise(stored={"start": BOUND_START, "level": BOUND_LEVEL}, generate=_bound_generate, answer=_bound_answer,
-               slips=_bound_slips, statement=_bound_statement, steps=_bound_steps, same=_same(1e-5))
+               slips=_bound_slips, statement=_bound_statement, steps=_bound_steps, same=within(1e-5))
 def check_attraction_bound(answer, p) -> Result:
     """Exercise 3.5: the bound on the Hausdorff distance at a level between two C-curve drawings a given
     distance apart at level 0 (Goldman §3.4), from the contraction factor of the C-curve's maps.  Accepts 1e-5.

@@ -28,7 +28,7 @@ import numpy as np
 
 from goldman_lib import fixed_point as fp
 from goldman_lib.exercises import guard_checkers
-from goldman_lib.exercises.deal import Deck, memo
+from goldman_lib.exercises.deal import Deck, memo, within
 from goldman_lib.exercises import Result, check_number, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises.projects import Case, check_project
 
@@ -76,12 +76,6 @@ def _system_text(A, b, names) -> str:
 
 
 DECK = Deck("ch07")
-
-
-def _same_number(tol: float):
-    def same(a, b) -> bool:
-        return bool(np.all(np.abs(np.asarray(a, dtype=float) - np.asarray(b, dtype=float)) <= tol))
-    return same
 
 
 def _matrix(rows) -> np.ndarray:
@@ -147,7 +141,7 @@ def _limit_steps(p) -> str:
 
 @DECK.exercise(stored=_STORED_LIMIT, generate=_limit_generate, answer=lambda p: _limit_answers(p)[0],
                slips=lambda p: _limit_answers(p)[1], statement=_limit_statement, steps=_limit_steps,
-               same=_same_number(1e-4), well_posed=_limit_ok)
+               same=within(1e-4), well_posed=_limit_ok)
 def check_fixed_point_limit(answer, p) -> Result:
     """Check the limit of x -> sqrt(c + x) from the statement's start, a fixed point L = sqrt(c + L)
     (Goldman §7.2); recognises the root of the quadratic that is not a fixed point (a square root is
@@ -237,7 +231,7 @@ def _newton_steps(p) -> str:
 
 @DECK.exercise(stored=_STORED_NEWTON, generate=_newton_generate, answer=lambda p: _newton_answers(p)[0],
                slips=lambda p: _newton_answers(p)[1], statement=_newton_statement, steps=_newton_steps,
-               same=_same_number(1e-5), well_posed=_newton_ok)
+               same=within(1e-5), well_posed=_newton_ok)
 def check_newton_step(answer, p) -> Result:
     """Check x2 of Newton's method on ``x^3 - a`` from the statement's start (Goldman §7.3.1).
 
@@ -533,7 +527,7 @@ def _hausdorff_steps(p) -> str:
 
 @DECK.exercise(stored=_STORED_HAUSDORFF, generate=_hausdorff_generate, answer=lambda p: _hausdorff_answers(p)[0],
                slips=lambda p: _hausdorff_answers(p)[1], statement=_hausdorff_statement, steps=_hausdorff_steps,
-               same=_same_number(1e-4), well_posed=_hausdorff_ok)
+               same=within(1e-4), well_posed=_hausdorff_ok)
 def check_hausdorff(answer, p) -> Result:
     """Check the Hausdorff distance h(A, B) of the statement's two sets: the larger of the two
     one-sided distances (Goldman §7.3.3).
@@ -629,7 +623,7 @@ def _stretch_steps(p) -> str:
 
 @DECK.exercise(stored=_STORED_STRETCH, generate=_stretch_generate, answer=lambda p: _stretch_answers(p)[0],
                slips=lambda p: _stretch_answers(p)[1], statement=_stretch_statement, steps=_stretch_steps,
-               same=_same_number(1e-4), well_posed=_stretch_ok)
+               same=within(1e-4), well_posed=_stretch_ok)
 def check_contraction_factor(answer, p) -> Result:
     """Check the contraction factor of the statement's linear part L: the square root of the
     largest eigenvalue of L^T L (Goldman §7.3.3).
@@ -640,7 +634,6 @@ def check_contraction_factor(answer, p) -> Result:
     value, problem = read_number(answer, "the contraction factor")
     if problem is not None:
         return problem
-    L = _matrix(p["L"])
     s, slips = _stretch_answers(p)
     tol = 1e-4
     if abs(value - s) <= tol:

@@ -22,8 +22,8 @@ import numpy as np
 
 from goldman_lib import vectors
 from goldman_lib.exercises import guard_checkers, quote
-from goldman_lib.exercises.deal import Deck, memo
-from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, is_unanswered, off_by,
+from goldman_lib.exercises.deal import Deck, memo, within
+from goldman_lib.exercises import (Result, check_points, correct, fmt, is_unanswered, off_by,
                                    read_number, read_points, unanswered, wrong)
 
 __all__ = ["PROBLEMS", "SLIPS", "EXPRESSIONS", "AFFINE_POINTS", "AFFINE_WEIGHTS", "DOT_LENGTHS", "CROSS_U",
@@ -282,12 +282,8 @@ def _dot_steps(p) -> str:
             f"3. The sign says the angle between u and v is {'obtuse' if e < 0 else 'acute'}.")
 
 
-def _same_number(a, b) -> bool:
-    return abs(float(a) - float(b)) <= 1e-4 * (1 + max(abs(float(a)), abs(float(b))))
-
-
 @DECK.exercise(stored=_STORED_DOT, generate=_dot_generate, answer=_dot_value, slips=_dot_slips,
-               statement=_dot_statement, steps=_dot_steps, same=_same_number, well_posed=_dot_ok)
+               statement=_dot_statement, steps=_dot_steps, same=within(1e-4, relative=True), well_posed=_dot_ok)
 def check_dot_from_lengths(answer, p) -> Result:
     """Check u · v from |u|, |v|, |u - v| (Goldman §9.4): ``(|u|² + |v|² - |u - v|²) / 2``.
 

@@ -22,8 +22,8 @@ import numpy as np
 
 from goldman_lib import vectors
 from goldman_lib.exercises import guard_checkers
-from goldman_lib.exercises import (Result, check_points, correct, fmt, off_by, read_number, read_points, wrong)
-from goldman_lib.exercises.deal import Deck, memo
+from goldman_lib.exercises import (Result, correct, fmt, off_by, read_number, read_points, wrong)
+from goldman_lib.exercises.deal import Deck, memo, within
 
 __all__ = ["PROBLEMS", "SLIPS", "DOT_U", "DOT_V", "CROSS_U", "CROSS_V", "DET_ROWS", "ANGLE_U", "ANGLE_V",
            "AREA_POINTS", "COPLANAR_U", "COPLANAR_V", "COPLANAR_W", "DECK", "deal", "steps", "current",
@@ -57,14 +57,6 @@ def _vec(v) -> tuple:
 
 def _close(value: float, target: float, rel: float = 1e-4) -> bool:
     return abs(value - target) <= rel * (1 + abs(target))
-
-
-def _same(rel: float):
-    """Whether two answers (numbers or vectors) count as one, to ``rel`` of their size."""
-    def same(a, b) -> bool:
-        a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-        return a.shape == b.shape and bool(np.all(np.abs(a - b) <= rel * (1 + np.maximum(np.abs(a), np.abs(b)))))
-    return same
 
 
 def _nonzero_ints(rng, lo, hi, size) -> tuple:
@@ -129,7 +121,7 @@ def _dot_sign(value: float) -> str:
 
 
 @DECK.exercise(stored=_STORED_DOT, generate=_dot_generate, answer=_dot_answer, slips=_dot_slips,
-               statement=_dot_statement, steps=_dot_steps, same=_same(1e-6), well_posed=_dot_ok)
+               statement=_dot_statement, steps=_dot_steps, same=within(1e-6, relative=True), well_posed=_dot_ok)
 def check_dot_product(answer, p) -> Result:
     """Check u · v for the statement's u and v (Goldman §10.3).
 
@@ -215,7 +207,7 @@ def _cross_steps(p) -> str:
 
 
 @DECK.exercise(stored=_STORED_CROSS, generate=_cross_generate, answer=_cross_answer, slips=_cross_slips,
-               statement=_cross_statement, steps=_cross_steps, same=_same(1e-6), well_posed=_cross_ok)
+               statement=_cross_statement, steps=_cross_steps, same=within(1e-6, relative=True), well_posed=_cross_ok)
 def check_cross_product(answer, p) -> Result:
     """Check u × v for the statement's u and v (Goldman §10.3).
 
@@ -305,7 +297,7 @@ def _det_steps(p) -> str:
 
 
 @DECK.exercise(stored=_STORED_DET, generate=_det_generate, answer=_det_answer, slips=_det_slips,
-               statement=_det_statement, steps=_det_steps, same=_same(1e-6), well_posed=_det_ok)
+               statement=_det_statement, steps=_det_steps, same=within(1e-6, relative=True), well_posed=_det_ok)
 def check_determinant(answer, p) -> Result:
     """Check the determinant of the statement's rows (Goldman §10.3).
 
@@ -482,7 +474,7 @@ def _area_steps(p) -> str:
 
 
 @DECK.exercise(stored=_STORED_AREA, generate=_area_generate, answer=_area_answer, slips=_area_slips,
-               statement=_area_statement, steps=_area_steps, same=_same(_AREA_REL), well_posed=_area_ok)
+               statement=_area_statement, steps=_area_steps, same=within(_AREA_REL, relative=True), well_posed=_area_ok)
 def check_parallelogram_area(answer, p) -> Result:
     """Check the area ``|(Q - P) × (R - P)|`` of the parallelogram on the statement's points
     (Goldman §10.3).
@@ -585,7 +577,7 @@ def _coplanar_steps(p) -> str:
 
 
 @DECK.exercise(stored=_STORED_COPLANAR, generate=_coplanar_generate, answer=_coplanar_answer, slips=_coplanar_slips,
-               statement=_coplanar_statement, steps=_coplanar_steps, same=_same(1e-6), well_posed=_coplanar_ok)
+               statement=_coplanar_statement, steps=_coplanar_steps, same=within(1e-6, relative=True), well_posed=_coplanar_ok)
 def check_coplanar_k(answer, p) -> Result:
     """Check the k that makes the statement's u, v and w = (k, w2, w3) coplanar (Goldman §10.3):
     ``det(u, v, w)`` is affine in k, and zero at one k.

@@ -49,7 +49,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-__all__ = ["Deck", "Exercise", "Steps", "IllPosed", "fresh_seed", "memo"]
+__all__ = ["Deck", "Exercise", "Steps", "IllPosed", "fresh_seed", "memo", "within"]
 
 #: Seeds dealt when none is given lie in 1 .. SEED_RANGE - 1 (short enough to read and type).
 SEED_RANGE = 100_000
@@ -57,6 +57,29 @@ SEED_RANGE = 100_000
 
 class IllPosed(RuntimeError):
     """No well-posed instance was found in ``max_tries`` draws (a generator that needs fixing)."""
+
+
+def within(tol: float, relative: bool = False):
+    """The ``same`` of an exercise whose checker accepts answers within ``tol``: two answers (numbers
+    or arrays) count as one when every entry differs by at most ``tol`` (``relative``: by at most
+    ``tol * (1 + max(|a|, |b|))``, and of one shape).  Arrays that do not broadcast are not the same.
+
+    >>> within(0.01)(1.0, 1.005), within(0.01)([1, 2], [1, 2.1]), within(1e-3, relative=True)(1000.0, 1000.5)
+    (True, False, True)
+    """
+    tol = float(tol)
+    if not tol >= 0:
+        raise ValueError(f"tol must be a number >= 0; got {tol!r}")
+
+    def same(a, b) -> bool:
+        a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+        if relative:
+            return a.shape == b.shape and bool(np.all(np.abs(a - b) <= tol * (1 + np.maximum(np.abs(a), np.abs(b)))))
+        try:
+            return bool(np.all(np.abs(a - b) <= tol))
+        except ValueError:            # shapes that do not broadcast: not one answer
+            return False
+    return same
 
 
 def memo(function):
