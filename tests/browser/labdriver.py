@@ -359,6 +359,26 @@ def stable_box(locator, timeout: float = 10, interval: float = 0.15) -> dict | N
         last = box
 
 
+def nudge_slider(handle, target, before: bytes, tolerance: float, timeout: float = 20) -> tuple[bytes, float, str]:
+    """Move a noUi slider with the keyboard until ``target``'s picture changes by more than
+    ``tolerance`` from ``before``: ArrowRight five times; if that shows nothing (small steps), End;
+    if the slider was already at its end, Home.  Returns the picture after, the changed fraction
+    and the keys pressed (``"ArrowRight x5"``, ``"... + End"``, ``"... + End + Home"``)."""
+    handle.scroll_into_view_if_needed()
+    handle.focus()
+    for _ in range(5):
+        handle.press("ArrowRight")
+    after, frac = wait_changed(target, before, tolerance, timeout=timeout)
+    how = "ArrowRight x5"
+    for key in ("End", "Home"):
+        if frac > tolerance:
+            break
+        handle.press(key)
+        after, frac = wait_changed(target, before, tolerance, timeout=timeout)
+        how += f" + {key}"
+    return after, frac, how
+
+
 def drag_until(page, canvas, plan, arrived, *, attempts: int = 3, timeout: float = 60, steps: int = 4,
                pause: float = 0.1, refine=None, on_miss=None, message: str = "the drag to arrive"):
     """Drag with the mouse on an ipympl ``canvas`` until ``arrived()`` returns something truthy,

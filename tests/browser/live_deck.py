@@ -15,7 +15,7 @@ import sys
 import pytest
 
 from .conftest import SCREENSHOTS
-from .labdriver import changed_fraction, wait_changed, wait_for, wait_nonblank
+from .labdriver import changed_fraction, nudge_slider, wait_for, wait_nonblank
 
 CHANGE_TOLERANCE = 0.001
 
@@ -130,17 +130,9 @@ def _walk_and_move(lab, page, notebook, selector, title):
     page.screenshot(path=str(SCREENSHOTS / f"{stem}-slide.png"))
     assert st.nonblank(), f"{what} on slide {walked} looks blank ({st})"
     assert view.count() == 1, f"{what} on the slide is not inside a goldman-interactive view"
-    handle = view.locator(".goldman-controls .noUi-handle").first
-    handle.focus()
-    for _ in range(5):
-        handle.press("ArrowRight")
-    after, frac = wait_changed(canvas, before, CHANGE_TOLERANCE, timeout=15)
-    if frac <= CHANGE_TOLERANCE:
-        handle.press("End")
-        after, frac = wait_changed(canvas, before, CHANGE_TOLERANCE, timeout=20)
-    if frac <= CHANGE_TOLERANCE:      # the chapter's own test left this slider at its end: go to the start
-        handle.press("Home")
-        after, frac = wait_changed(canvas, before, CHANGE_TOLERANCE, timeout=20)
+    # (Home as a last resort: the chapter's own test may have left this slider at its end)
+    after, frac, _ = nudge_slider(view.locator(".goldman-controls .noUi-handle").first, canvas, before,
+                                  CHANGE_TOLERANCE)
     (SCREENSHOTS / f"{stem}-after.png").write_bytes(after)
     # focusing the slider may make its code cell the active one, but the slide must stay, in view
     still_here = (page.evaluate(_JS_SLIDE)["slide"] == slide["slide"]

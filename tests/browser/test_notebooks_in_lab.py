@@ -19,7 +19,7 @@ import pytest
 
 from .chapter_checks import EXTRAS
 from .conftest import SCREENSHOTS, course_notebooks
-from .labdriver import drag_until, pixel_stats, wait_changed, wait_for, wait_nonblank
+from .labdriver import drag_until, nudge_slider, pixel_stats, wait_changed, wait_for, wait_nonblank
 
 pytestmark = pytest.mark.browser
 
@@ -221,21 +221,8 @@ def test_notebook_runs_and_views_respond(lab, notebook):
         before, st = wait_nonblank(display)
         (SCREENSHOTS / f"{stem}-view{i}-before.png").write_bytes(before)
         assert st.nonblank(), f"{rel}: interactive view {i} looks blank ({st})"
-        handle = handles.first
-        handle.scroll_into_view_if_needed()
-        handle.focus()
-        for _ in range(5):
-            handle.press("ArrowRight")
-        after, frac = wait_changed(display, before, CHANGE_TOLERANCE, timeout=15)
-        how = "ArrowRight x5"
-        if frac <= CHANGE_TOLERANCE:      # small steps may not show: go to the end of the range
-            handle.press("End")
-            after, frac = wait_changed(display, before, CHANGE_TOLERANCE, timeout=20)
-            how = "ArrowRight x5 + End"
-        if frac <= CHANGE_TOLERANCE:      # the default was already the maximum: go to the start
-            handle.press("Home")
-            after, frac = wait_changed(display, before, CHANGE_TOLERANCE, timeout=20)
-            how = "ArrowRight x5 + End + Home"
+        # small steps may not show (then End); the default may be the maximum (then Home)
+        after, frac, how = nudge_slider(handles.first, display, before, CHANGE_TOLERANCE)
         (SCREENSHOTS / f"{stem}-view{i}-after.png").write_bytes(after)
         status = view.locator(":scope > .widget-html, :scope .widget-html").last.inner_text()
         report.append(f"  view {i}: {how} changed {frac:.1%} of the display; {pixel_stats(after)}")

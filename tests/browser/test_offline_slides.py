@@ -17,7 +17,7 @@ from html.parser import HTMLParser
 import nbformat
 import pytest
 
-from .conftest import LAB_ROOT, REPO, SCREENSHOTS, course_notebooks
+from .conftest import REPO, SCREENSHOTS, course_notebooks
 
 pytestmark = pytest.mark.browser
 
