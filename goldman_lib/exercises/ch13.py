@@ -840,9 +840,9 @@ def _inverse_steps(p) -> str:
     return (f"1. R = {_rows6(R)}: an orthogonal block R₀ and the row t = {_f6(R[3, :3])}.\n"
             f"2. R is rigid, so R⁻¹ has the block R₀ᵀ and the row -t R₀ᵀ = {_f6(R_inv[3, :3])}: "
             f"R⁻¹ = {_rows6(R_inv)}.\n"
-            f"3. S scales by {fmt(p['s'])}, so S⁻¹ scales by 1/{fmt(p['s'])}.\n"
+            f"3. S scales by s = {fmt(p['s'])}, so S⁻¹ scales by 1/s = {fmt(1 / p['s'])}.\n"
             f"4. (R S)⁻¹ = S⁻¹ R⁻¹ (the reverse order: undo the last map first): the rows of R⁻¹'s block are "
-            f"multiplied by 1/{fmt(p['s'])}, its last row stays: M⁻¹ = {_rows6(answer)}.\n"
+            f"multiplied by 1/s, its last row stays: M⁻¹ = {_rows6(answer)}.\n"
             f"5. Check: M M⁻¹ = I.")
 
 

@@ -295,6 +295,9 @@ def _combo_generate(rng) -> dict:
                 continue
             coeffs[-1] = -rest // m_last
         terms = list(zip(coeffs, names))
+        positive = [k for k, (c, _) in enumerate(terms) if c > 0]
+        if positive:                              # a positive term first, as one writes it
+            terms = terms[positive[0]:] + terms[:positive[0]]
         if rng.random() < 0.5:
             terms.append((int(rng.choice([-1, 1])), "v"))
         text = _linear(terms)
