@@ -738,10 +738,12 @@ def _frame_steps(p) -> str:
     P, Q = _arr(p["P"]), _arr(p["Q"])
     M = _frame_answers(p)[0]
     V, W = P[1:] - P[0], Q[1:] - Q[0]
+    # V⁻¹ is the block of the map sending the frame to the unit frame (0, e1, e2, e3)
+    V_inv = transforms.affine_from_points(P, np.vstack([np.zeros(3), np.eye(3)]))[:3, :3]
     return (f"1. An affine map is fixed by the image of a point and of three independent vectors: "
             f"[P_i 1] M = [Q_i 1] gives (P_i - P0) L = Q_i - Q0 and P0 L + t = Q0.\n"
             f"2. The vectors as rows: V = {_rows6(V)}, their images W = {_rows6(W)}.\n"
-            f"3. V L = W, so L = V⁻¹ W with V⁻¹ = {_rows6(np.linalg.inv(V))}: L = {_rows6(M[:3, :3])}.\n"
+            f"3. V L = W, so L = V⁻¹ W with V⁻¹ = {_rows6(V_inv)}: L = {_rows6(M[:3, :3])}.\n"
             f"4. t = Q0 - P0 L = {fmt(Q[0])} - {_f6(P[0] @ M[:3, :3])} = {_f6(M[3, :3])}.\n"
             f"5. M = {_rows6(M)}; check: [P_i 1] M = [Q_i 1] for i = 0..3.")
 
