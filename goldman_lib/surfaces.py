@@ -975,6 +975,11 @@ class AffineInstance(Surface):
         self.M_inv = np.linalg.inv(M)
         self._set_material(material if material is not None else base.material)
 
+    def apply(self, points) -> np.ndarray:
+        """``A(P) = P M + shift`` for points ``(n, 3)`` of the base surface: their images."""
+        P = np.atleast_2d(as_points(points, "points", ndim=None, dim=3))
+        return P @ self.M + self.shift
+
     def undo(self, points) -> np.ndarray:
         """``A^{-1}(Q) = (Q - shift) M^{-1}`` for points ``(n, 3)``."""
         Q = np.atleast_2d(as_points(points, "points", ndim=None, dim=3))
