@@ -1,20 +1,64 @@
 """goldman_lib: the support library of the course on Goldman's *An Integrated Introduction to
 Computer Graphics and Geometric Modeling*.
 
-One module per topic, named with the book's vocabulary:
+One module per topic, named with the book's vocabulary, in the order of the book (the chapter's
+notebook is ``course/NN_*.ipynb``; its views are the module of the same name in
+:mod:`goldman_lib.views`, its exercise checkers ``goldman_lib.exercises.chNN``):
 
-- ``goldman_lib.turtle``     chapter 1, turtle graphics and a small turtle-program language
-- ``goldman_lib.bezier``     chapter 24, Bezier curves and tensor-product patches
-- ``goldman_lib.exercises``  checkers for the notebooks' exercises
-- ``goldman_lib.views``      matplotlib and three.js views and the widget factories
+Part I, two-dimensional computer graphics: from common curves to intricate fractals
+
+- ``turtle``                chapter 1, turtle graphics and the turtle-program language
+- ``fractals``              chapters 2-3, recursive turtle programs, fractals and their strangeness
+- ``affine``                chapter 4, affine transformations of the plane (3x3 matrices)
+- ``codo``                  chapter 5, affine geometry and the CODO language
+- ``ifs``                   chapter 6, iterated function systems and their fractals
+- ``fixed_point``           chapter 7, the trivial fixed point theorem, Newton, Jacobi, Gauss-Seidel
+- ``conformal_ifs``         chapter 8, recursive turtle programs as conformal IFS
+
+Part II, mathematical methods for three-dimensional computer graphics
+
+- ``vectors``               chapters 9-10, points, vectors, dot, cross and determinant
+- ``vector_geometry``       chapter 11, applications of vector geometry
+- ``transforms``            chapters 12-13, coordinate-free formulas and 4x4 matrices
+- ``mass_points``           chapter 14, projective space, mass-points, pseudoperspective
+- ``quaternions``           chapter 15, complex numbers and quaternions
+
+Part III, three-dimensional computer graphics: realistic rendering
+
+- ``lighting``              chapter 16, the one lighting model (used by every renderer below)
+- ``ray_tracing``           chapter 17, recursive ray tracing (``render`` with anti-aliasing and progress)
+- ``surfaces``              chapter 18, implicit, parametric, deformed and procedural surfaces
+- ``simple_surfaces``       chapter 19, the simple surfaces and the ray-surface contract
+- ``solid_modeling``        chapter 20, boundary representations, CSG and octrees
+- ``shading``               chapter 21, normals, the software rasteriser and five shading modes
+- ``hidden_surfaces``       chapter 22, six hidden-surface algorithms on one scene
+- ``radiosity``             chapter 23, form factors and the radiosity equations
+
+Part IV, geometric modeling: freeform curves and surfaces
+
+- ``bezier``                chapter 24, Bezier curves and tensor-product patches
+- ``bezier_subdivision``    chapter 25, subdivision and rendering
+- ``bezier_intersection``   chapter 25, intersection by subdivision
+- ``blossom``               chapter 26, blossoming
+- ``bspline``               chapter 27, B-splines and NURBS
+- ``knot_insertion``        chapter 28, knot insertion (Boehm, Oslo), subdivision
+- ``subdivision_matrices``  chapter 29, subdivision matrices and IFS
+- ``subdivision_surfaces``  chapter 30, subdivision surfaces
+
+Under them all: ``validation`` (argument checks and work budgets: the messages name the parameter
+and the rule), ``angles`` (degrees), the unchecked array kernels the checked functions share, and
+
+- ``goldman_lib.exercises``  the checkers of the notebooks' exercises, "show that" exercises and
+  programming projects (``deal`` makes numeric exercises deal new instances)
+- ``goldman_lib.views``      matplotlib and three.js views, the widget framework and the factories
 
 Conventions shared by every module: points are numpy arrays with coordinates in the last axis;
 angles are in degrees; transformation matrices act on row vectors from the right (``Q = P @ M``);
 bad input raises ``ValueError``/``TypeError`` naming the parameter and the rule; randomness comes
 in through an ``rng`` argument.
 
-Importing ``goldman_lib`` (or ``goldman_lib.turtle`` / ``goldman_lib.bezier``) does not import
-matplotlib, ipywidgets or pythreejs; only ``goldman_lib.views`` does.
+Importing ``goldman_lib`` (or any of the modules above) does not import matplotlib, ipywidgets or
+pythreejs; only ``goldman_lib.views`` does.
 """
 
 __version__ = "0.1.0"
