@@ -95,10 +95,16 @@ def test_distinct_keeps_the_first_of_each_combination():
     assert distinct(combos) == [combos[0], combos[2], combos[3]]
 
 
+_BARE = set(vars(InteractiveView(controls={}, views=[], update=lambda: {})))
+
+
 @pytest.mark.parametrize("factory", FACTORIES)
 def test_sweep_over_every_control_range(factory):
     view = factory()
     assert isinstance(view, InteractiveView) and view.last_error is None, view.last_error
+    # what a view carries is declared on InteractiveView (issue 19 §3), not set ad hoc
+    undeclared = sorted(k for k in set(vars(view)) - _BARE - InteractiveView.CARRIES if not k.startswith("_trait"))
+    assert not undeclared, f"{factory.__name__} sets attributes InteractiveView does not declare: {undeclared}"
     combos = distinct(view.sweep_values(n=3))
     if any(hasattr(w, "min") and hasattr(w, "max") for w in view.controls.values()):
         assert len(combos) >= 3, "a view with sliders is swept over at least its ends and middle"

@@ -33,6 +33,8 @@ How a chapter reuses it
 
 from __future__ import annotations
 
+import contextlib
+
 import html
 
 import numpy as np
@@ -286,14 +288,10 @@ class KnotEditor:
             return
         self._busy = True
         view = self._view
-        old = view._muted if view is not None else False
         try:
-            if view is not None:
-                view._muted = True
-            fn()
+            with (view.muted() if view is not None else contextlib.nullcontext()):
+                fn()
         finally:
-            if view is not None:
-                view._muted = old
             self._busy = False
         self._show_knots(self.knots())
         if view is not None:
