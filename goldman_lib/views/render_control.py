@@ -21,6 +21,7 @@ they are given.
 
 from __future__ import annotations
 
+import base64
 import html
 import io
 import time
@@ -47,6 +48,31 @@ def image_png(image) -> bytes:
         raise ValueError("image must hold finite values")
     buf = io.BytesIO()
     matplotlib.image.imsave(buf, np.clip(a, 0.0, 1.0), format="png")
+    return buf.getvalue()
+
+
+def _static_png(button: str | None, bar: str, fraction: float) -> bytes:
+    """A small picture of a button and a progress bar, for pages without the widget state (a stored
+    notebook opened before it runs, the website): what the control looks like, not a result."""
+    from matplotlib.figure import Figure
+    from matplotlib.patches import FancyBboxPatch, Rectangle
+
+    fig = Figure(figsize=(6.4, 0.34), dpi=80)
+    ax = fig.add_axes((0, 0, 1, 1))
+    ax.set_axis_off()
+    x = 0.005
+    if button is not None:
+        w = min(0.6, 0.012 * len(button) + 0.04)
+        ax.add_patch(FancyBboxPatch((x, 0.1), w, 0.8, boxstyle="round,pad=0,rounding_size=0.05",
+                                    facecolor="#2a7ab0", edgecolor="#1f5f8b", transform=ax.transAxes))
+        ax.text(x + w / 2, 0.5, button, ha="center", va="center", color="white", fontsize=8, transform=ax.transAxes)
+        x += w + 0.02
+    ax.text(x, 0.5, bar, ha="left", va="center", fontsize=8, transform=ax.transAxes)
+    x += 0.012 * len(bar) + 0.01
+    ax.add_patch(Rectangle((x, 0.3), 0.3, 0.4, facecolor="#eeeeee", edgecolor="#bbbbbb", transform=ax.transAxes))
+    ax.add_patch(Rectangle((x, 0.3), 0.3 * fraction, 0.4, facecolor="#2a7ab0", transform=ax.transAxes))
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", metadata={"Software": None})
     return buf.getvalue()
 
 
@@ -93,6 +119,11 @@ class ProgressBar(widgets.HBox):
     def __repr__(self) -> str:
         # what a page without the widget state (a stored notebook, the website) shows in its place
         return f"[progress bar: {self.bar.description}]"
+
+    def _repr_mimebundle_(self, **kwargs):
+        data = super()._repr_mimebundle_(**kwargs)
+        data["image/png"] = base64.b64encode(_static_png(None, self.bar.description, self.fraction)).decode("ascii")
+        return data
 
     @property
     def fraction(self) -> float:
@@ -156,6 +187,11 @@ class RenderControl(widgets.VBox):
     def __repr__(self) -> str:
         # what a page without the widget state (a stored notebook, the website) shows in its place
         return f"[render button: {self.button.description}; run the notebook to use it]"
+
+    def _repr_mimebundle_(self, **kwargs):
+        data = super()._repr_mimebundle_(**kwargs)
+        data["image/png"] = base64.b64encode(_static_png(self.button.description, "rendering", 0.0)).decode("ascii")
+        return data
 
     def render(self, **values) -> np.ndarray | None:
         """Render with the view's current values (or ``values``, for a test or a keyboard user) and
