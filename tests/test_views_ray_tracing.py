@@ -131,3 +131,18 @@ def test_the_legend_is_in_the_static_picture():
     _, ax_side = view.axes
     labels = [t.get_text() for t in ax_side.get_legend().get_texts()]
     assert {"primary ray", "reflected ray", "refracted ray", "shadow ray", "blocked shadow ray"} <= set(labels)
+
+
+def test_the_full_size_render_is_the_library_render_at_full_depth():
+    view = rv.ray_tracing_view()
+    values = view.values()
+    calls = []
+    img = view.render_full(lambda k, n: calls.append((k, n)), size=(32, 24), samples=2, **values)
+    light = view.light_control.lights({k: v for k, v in values.items() if k.startswith("light")})
+    scene = rt.default_scene(index=values["index"], lights=light)
+    assert np.array_equal(img, rt.render(scene, rt.default_camera(), 32, 24, rv.FULL_DEPTH, samples=2))
+    assert calls[-1] == (24, 24) and rv.FULL_DEPTH == 5 and rv.FULL_SIZE == (640, 480)
+    values["depth"] = 0           # the small picture's depth: the full one stays at FULL_DEPTH
+    assert np.array_equal(img, view.render_full(None, size=(32, 24), samples=2, **values))
+    values["index"] = 1.0         # the first slider changes the full picture
+    assert not np.array_equal(img, view.render_full(None, size=(32, 24), samples=2, **values))

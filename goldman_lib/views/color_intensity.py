@@ -32,7 +32,7 @@ from goldman_lib.views.interactive import InteractiveView, figure_widget, float_
 from goldman_lib.views.light_control import LightControl
 
 __all__ = ["shaded_sphere_view", "terms_view", "rgb_mixing_view", "EYE", "WINDOW", "SPHERE", "BACKGROUND",
-           "sphere_pixels", "wall_pixels"]
+           "sphere_pixels", "wall_pixels", "camera", "FULL_SIZE", "FULL_SAMPLES"]
 
 #: Where the camera is: on the z-axis, looking down at the unit sphere at the origin.
 EYE = np.array([0.0, 0.0, 6.0])
@@ -44,6 +44,18 @@ SPHERE = Sphere([0.0, 0.0, 0.0], 1.0)
 BACKGROUND = np.array([0.13, 0.13, 0.16])
 #: Largest image side (pixels) a view may be asked for.
 MAX_SIZE = 400
+#: The full-size picture a render button makes (width, height) and its anti-aliasing (samples x samples rays).
+FULL_SIZE = (640, 480)
+FULL_SAMPLES = 2
+
+
+def camera():
+    """The views' camera as a :class:`goldman_lib.ray_tracing.Camera`: at :data:`EYE`, looking at the
+    sphere's centre, y up, its vertical field of view the window ``[-WINDOW, WINDOW]`` of the plane
+    z = 0 (what :func:`sphere_pixels` sees, rendered by :func:`goldman_lib.ray_tracing.ray_cast`)."""
+    from goldman_lib import ray_tracing as rt
+
+    return rt.Camera(EYE, (0.0, 0.0, 0.0), up=(0.0, 1.0, 0.0), fov=float(np.degrees(2 * np.arctan2(WINDOW, EYE[2]))))
 
 
 def _size(size, name="size") -> int:
@@ -134,6 +146,11 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
 
     ``update(**values)`` returns ``{"image" (size, size, 3), "intensity" (m, 3) unclipped,
     "highlight" (3,), "light" (3,), "clipped" (fraction of sphere pixels over 1), "status"}``.
+
+    ``view.render_full(progress, size=FULL_SIZE, samples=FULL_SAMPLES, clamp=True, **values)`` is the
+    full-size picture of the view's state (the function a
+    :class:`goldman_lib.views.render_control.RenderControl` calls): the same sphere, material and
+    light ray cast by :func:`goldman_lib.ray_tracing.ray_cast` at 640 x 480, 2 x 2 anti-aliased.
     """
     size = _size(size)
     found, points, normals = sphere_pixels(size)
@@ -196,6 +213,17 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
     light.drag_in(view, ax_side, plane="xz")
     view.light_control = light
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+
+    def render_full(progress=None, size=FULL_SIZE, samples=FULL_SAMPLES, clamp=True, *, ka, kd, ks, n, colour, Ia,
+                    **light_values):
+        from goldman_lib import ray_tracing as rt
+
+        material = Material(colour=_rgb(colour, "colour"), ambient=ka, diffuse=kd, specular=ks, exponent=n)
+        scene = rt.Scene([Sphere(SPHERE.center, SPHERE.radius, material)], light.lights(light_values),
+                         ambient_light=Ia, background=BACKGROUND)
+        return rt.ray_cast(scene, camera(), size[0], size[1], samples=samples, clamp=clamp, progress=progress)
+
+    view.render_full = render_full
     return view
 
 

@@ -39,10 +39,13 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.light_control import LightControl
 
-__all__ = ["ray_tracing_view", "image_strip", "ray_plane", "project", "draw_tree", "WIDTH", "HEIGHT", "KIND_COLOURS", "KINDS"]
+__all__ = ["ray_tracing_view", "image_strip", "ray_plane", "project", "draw_tree", "WIDTH", "HEIGHT", "KIND_COLOURS", "KINDS",
+           "FULL_SIZE", "FULL_SAMPLES", "FULL_DEPTH"]
 
 #: The default image size of the view (a full re-render per slider move stays under 100 ms).
 WIDTH, HEIGHT = 160, 120
+#: The full-size picture a render button makes: (width, height), samples x samples rays per pixel, recursion depth.
+FULL_SIZE, FULL_SAMPLES, FULL_DEPTH = (640, 480), 2, 5
 #: How each kind of ray is drawn in the side view.
 KIND_COLOURS = {"primary": "#1f4e9c", "reflected": "#1b7f3b", "refracted": "#8f2d56", "shadow": "#edae49"}
 #: The kinds of rays, in the order of the codes in an update's ``"kinds"``.
@@ -195,6 +198,12 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
     "cut" (k,) whether the plane cuts each sphere, "discs" (k, 3) the cuts (a, b, radius; zeros if
     none), "pieces" (the drawn parts of the rays, (m, 2) each), "piece_rays" (the ray of each piece),
     "off_plane" (n,), "status"}`` (see :func:`draw_tree`).
+
+    ``view.render_full(progress, size=FULL_SIZE, samples=FULL_SAMPLES, full_depth=FULL_DEPTH, **values)``
+    is the full-size picture of the view's scene (its glass index and light; the depth slider and the
+    pixel are the small picture's): :func:`goldman_lib.ray_tracing.render` at 640 x 480, 2 x 2
+    anti-aliased, depth 5, the function a :class:`goldman_lib.views.render_control.RenderControl`
+    calls.  The glass index is the view's first slider (the render button's browser test moves it).
 
     >>> r = ray_tracing_view().set_values(depth=2, index=1.0)     # index 1: the glass bends nothing
     >>> "critical angle none" in r["status"]
@@ -351,7 +360,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
 
     view = InteractiveView(controls=controls, views=[figure_widget(fig), legend], update=update, figure=fig,
                            title="§17.2-17.5 recursive ray tracing: the image and one pixel's ray tree",
-                           arrange=[widgets.HBox([widgets.VBox([controls["depth"], controls["index"],
+                           arrange=[widgets.HBox([widgets.VBox([controls["index"], controls["depth"],
                                                                 controls["px"], controls["py"]]),
                                                   widgets.VBox(list(control.controls.values()))])])
 
@@ -385,4 +394,12 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
     view.click_cid = fig.canvas.mpl_connect("button_press_event", on_click)
     view.light_control = control
     view.axes = (ax_img, ax_side)
+
+    def render_full(progress=None, size=FULL_SIZE, samples=FULL_SAMPLES, full_depth=FULL_DEPTH, *, index, depth=None,
+                    px=None, py=None, **light_values):
+        # depth, px, py: the small picture's recursion depth and chosen pixel; the full picture is full_depth deep
+        scene = rt.default_scene(index=index, lights=control.lights(light_values))
+        return rt.render(scene, camera, size[0], size[1], full_depth, samples=samples, progress=progress)
+
+    view.render_full = render_full
     return view
