@@ -140,7 +140,9 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
     §16.3-16.6): every pixel of the ``size`` x ``size`` picture is a ray from the eye, its point and
     normal from :meth:`Sphere.hit`.  Sliders for the material (``k_a``, ``k_d``, ``k_s``, the
     exponent ``n``, the colour) and the ambient light ``I_a``; the light-position control (x, y, z,
-    intensity, colour).  Beside the picture a side view of the xz-plane shows the sphere, the eye and
+    intensity, colour) and a check box "clamp L·N at 0" (on: the lighting model of §16.4; off: the
+    slip it prevents, a light behind the surface subtracting light and leaking a highlight there).
+    Beside the picture a side view of the xz-plane shows the sphere, the eye and
     the light, which can be dragged there with the mouse; the brightest pixel (the highlight) is
     marked in both.
 
@@ -155,7 +157,9 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
     size = _size(size)
     found, points, normals = sphere_pixels(size)
     light = LightControl([Light((3.0, 2.0, 5.0))], box=(-6.0, 6.0))
-    controls = {**_material_controls(ka, kd, ks, exponent, colour, ambient_light), **light.controls}
+    controls = {**_material_controls(ka, kd, ks, exponent, colour, ambient_light),
+                "clamp": widgets.Checkbox(value=True, description="clamp L·N at 0 (§16.4)", indent=False),
+                **light.controls}
     fig = style.new_figure(style.WIDE_FIGSIZE)
     ax_img = fig.add_subplot(1, 2, 1)
     ax_side = fig.add_subplot(1, 2, 2)
@@ -181,10 +185,10 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
     ax_side.set_title("side view (the xz-plane)", fontsize=10)
     fig.tight_layout()
 
-    def update(ka, kd, ks, n, colour, Ia, **light_values):
+    def update(ka, kd, ks, n, colour, Ia, clamp=True, **light_values):
         material = Material(colour=_rgb(colour, "colour"), ambient=ka, diffuse=kd, specular=ks, exponent=n)
         lights = light.lights(light_values)
-        values = lighting.intensity(points, normals, EYE, lights, material, ambient_light=Ia)
+        values = lighting.intensity(points, normals, EYE, lights, material, ambient_light=Ia, clamp=bool(clamp))
         image = _picture(found, values)
         im.set_data(image)
         brightness = values.sum(axis=1)
@@ -202,10 +206,15 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
                   f"{100 * clipped:.1f}% of the sphere's pixels are over 1 in some channel and are clipped")
         if inside:
             status = "the light is inside the sphere: no outside point sees it, only the ambient term is left; " + status
+        if not clamp:
+            facing_away = float(np.mean(lighting.diffuse(points, normals, L, 1.0, 1.0, clamp=False) < 0))
+            status = (f"L·N is not clamped: on the {100 * facing_away:.0f}% of the sphere's pixels the light is behind, "
+                      f"the diffuse term is negative and subtracts light, and a highlight can leak there (§16.4); "
+                      + status)
         return {"image": image, "intensity": values, "highlight": hp, "light": L, "clipped": clipped,
                 "status": status}
 
-    material_box = widgets.VBox([controls[k] for k in ("ka", "kd", "ks", "n", "colour", "Ia")])
+    material_box = widgets.VBox([controls[k] for k in ("ka", "kd", "ks", "n", "colour", "Ia", "clamp")])
     light_box = widgets.VBox(list(light.controls.values()))
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="§16.3-16.6 a sphere lit pixel by pixel",
