@@ -19,7 +19,9 @@ surfaces; their normals; ray-surface intersection; mean and Gaussian curvature.
   terrain by random midpoint displacement (the diamond-square algorithm, our choice of example):
   :func:`fractal_heights` and :func:`height_field_mesh`.
 * **Curvature** (§18.4): :func:`curvature_implicit` from the gradient and Hessian of ``F``,
-  :func:`curvature_parametric` from the first and second fundamental forms.
+  :func:`curvature_parametric` from the first and second fundamental forms, and
+  :func:`curvature_deformed` for an implicit surface under an affine map (§18.4.3: the gradient and
+  Hessian of ``F(A^{-1}(Q))`` by the chain rule, then the implicit formulas).
 
 Sign convention of the mean curvature (the tests compare ``|H|``): we use the formulas of §18.4 in
 the form (Goldman, *Curvature formulas for implicit curves and surfaces*, 2005)
@@ -49,7 +51,7 @@ from goldman_lib.validation import as_float, as_float_array, as_int, as_points, 
     within_budget
 
 __all__ = ["ImplicitSurface", "ParametricSurface", "Deformation", "DeformedSurface", "implicit_normal",
-           "parametric_normal", "deformed_normals", "curvature_implicit", "curvature_parametric",
+           "parametric_normal", "deformed_normals", "curvature_implicit", "curvature_deformed", "curvature_parametric",
            "implicit_sphere", "implicit_cylinder", "implicit_torus", "parametric_sphere", "parametric_cylinder",
            "parametric_torus", "parametric_graph", "twist", "taper", "fractal_heights", "height_field_mesh",
            "MAX_SAMPLES", "AffineInstance"]
@@ -255,8 +257,11 @@ def curvature_implicit(f, grad, hess, points) -> tuple[np.ndarray, np.ndarray]:
     if hess is not None:
         _callable(hess, "hess")
     P = as_points(points, "points", dim=3)
-    g = _gradient(f, grad, P)
-    Hs = _hessian(f, grad, hess, P)
+    return _curvature_from(_gradient(f, grad, P), _hessian(f, grad, hess, P))
+
+
+def _curvature_from(g, Hs) -> tuple[np.ndarray, np.ndarray]:
+    """``(H, K)`` of §18.4.1 from gradients ``g (n, 3)`` and Hessians ``Hs (n, 3, 3)`` at points on a surface."""
     g2 = np.einsum("ij,ij->i", g, g)
     scale = np.abs(g).max(axis=1) if len(g) else np.zeros(0)
     if np.any(g2 <= 0) or np.any(~np.isfinite(g2)):
@@ -269,6 +274,52 @@ def curvature_implicit(f, grad, hess, points) -> tuple[np.ndarray, np.ndarray]:
         K = np.einsum("ij,ijk,ik->i", gn, _adjugate(Hs), gn) / (n2 * n2 * scale ** 2)
         H = (gHg - n2 * trace) / (2 * n2 ** 1.5 * scale)
     return finite_result(H, "points"), finite_result(K, "points")
+
+
+def curvature_deformed(f, grad, hess, M, points, shift=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.ndarray]:
+    """Mean and Gaussian curvature ``(H, K)`` of an implicit surface ``f = 0`` deformed by the affine map
+    ``A(P) = P M + shift`` (row vectors, the book's convention), at points ``Q`` of the image, by formula
+    (Goldman §18.4.3): the image is ``G(Q) = f((Q - shift) M^{-1}) = 0``, so with ``P = A^{-1}(Q)`` and
+    ``N = M^{-1}`` the chain rule gives, as a row and a matrix,
+
+        ``grad G(Q) = grad f(P) N^T``        ``Hess G(Q) = N Hess f(P) N^T``
+
+    (a linear map has no second derivatives, so no other term), and ``K``, ``H`` follow from the
+    implicit formulas of §18.4.1 (:func:`curvature_implicit`) with these.  Nothing is differentiated
+    numerically when ``grad`` and ``hess`` are given.
+
+    f, grad, hess: the base surface as in :func:`curvature_implicit` (callables; ``grad``/``hess`` may be
+    None for central differences of ``f``).  M: an invertible 3x3 matrix.  shift: (3,).  points:
+    ``(n, 3)`` on the image.  Returns two ``(n,)`` arrays.  Raises ValueError for a singular ``M``.
+
+    The unit sphere stretched by ``diag(a, b, c)`` is the ellipsoid ``x^2/a^2 + y^2/b^2 + z^2/c^2 = 1``,
+    whose ``K = 1 / (a^2 b^2 c^2 (x^2/a^4 + y^2/b^4 + z^2/c^4)^2)``.  With radii (3, 2, 1), at the vertex
+    ``(3, 0, 0)`` the principal curvatures are ``a/b^2 = 3/4`` and ``a/c^2 = 3``: ``K = 9/4`` and
+    ``H = -(3/4 + 3)/2`` (negative: the sphere's ``f`` is negative inside, see the module docstring):
+
+    >>> s = implicit_sphere([0, 0, 0], 1.0)
+    >>> H, K = curvature_deformed(s.f, s.grad, s.hess, np.diag([3.0, 2.0, 1.0]), [[3.0, 0.0, 0.0]])
+    >>> round(float(K[0]), 12), round(float(H[0]), 12)
+    (2.25, -1.875)
+    """
+    _callable(f, "f")
+    if grad is not None:
+        _callable(grad, "grad")
+    if hess is not None:
+        _callable(hess, "hess")
+    M = check_finite(as_float_array(M, "M"), "M")
+    if M.shape != (3, 3):
+        raise ValueError(f"M must be a 3x3 matrix; got shape {M.shape}")
+    scale = float(np.abs(M).max())
+    if not scale > 0 or abs(np.linalg.det(M / scale)) < 1e-12:
+        raise ValueError("M must be invertible (a singular M flattens the surface: it has no curvature)")
+    shift = as_points(shift, "shift", ndim=1, dim=3)
+    Q = as_points(points, "points", dim=3)
+    N = np.linalg.inv(M)
+    P = (Q - shift) @ N
+    g = _gradient(f, grad, P) @ N.T
+    Hs = N @ _hessian(f, grad, hess, P) @ N.T
+    return _curvature_from(g, 0.5 * (Hs + np.swapaxes(Hs, 1, 2)))
 
 
 def curvature_parametric(X, u, v, partials=None) -> tuple[np.ndarray, np.ndarray]:
@@ -891,12 +942,26 @@ class AffineInstance(Surface):
     transpose (§18.2).  base: any :class:`~goldman_lib.simple_surfaces.Surface`; M: an invertible 3x3
     matrix; shift: (3,).
 
+    normal_map: ``"inverse transpose"`` (the default, right: ``n' = n (M^{-1})^T`` as a row) or
+    ``"linear part"``, the classic slip of mapping the normal like a tangent, ``n' = n M`` (unit
+    length): kept to show what goes wrong -- under a shear or a non-uniform scale such a "normal" is
+    no longer perpendicular to the surface (``(n M) . (t M) != n . t = 0`` unless ``M`` is a rotation
+    times a scale), so shading that uses it is wrong.  :meth:`normal_error` measures the angle.
+    Raises ValueError for any other value.
+
     >>> e = AffineInstance(Sphere([0, 0, 0], 1.0), np.diag([3.0, 2.0, 1.0]), [0, 0, 0])
     >>> e.hits([[-5, 0, 0], [0, 0, -5]], [[1, 0, 0], [0, 0, 1]]).round(12).tolist()
     [[2.0, 8.0], [4.0, 6.0]]
     """
 
-    def __init__(self, base: Surface, M, shift=(0.0, 0.0, 0.0), material: Material | None = None):
+    #: The two ways of mapping normals :class:`AffineInstance` knows (the first is the right one).
+    NORMAL_MAPS = ("inverse transpose", "linear part")
+
+    def __init__(self, base: Surface, M, shift=(0.0, 0.0, 0.0), material: Material | None = None,
+                 normal_map: str = "inverse transpose"):
+        if not isinstance(normal_map, str) or normal_map not in self.NORMAL_MAPS:
+            raise ValueError(f"normal_map must be one of {self.NORMAL_MAPS}; got {normal_map!r}")
+        self.normal_map = normal_map
         if not isinstance(base, Surface):
             raise TypeError(f"base must be a goldman_lib.simple_surfaces.Surface; got {type(base).__name__}")
         M = check_finite(as_float_array(M, "M"), "M")
@@ -910,6 +975,11 @@ class AffineInstance(Surface):
         self.M_inv = np.linalg.inv(M)
         self._set_material(material if material is not None else base.material)
 
+    def apply(self, points) -> np.ndarray:
+        """``A(P) = P M + shift`` for points ``(n, 3)`` of the base surface: their images."""
+        P = np.atleast_2d(as_points(points, "points", ndim=None, dim=3))
+        return P @ self.M + self.shift
+
     def undo(self, points) -> np.ndarray:
         """``A^{-1}(Q) = (Q - shift) M^{-1}`` for points ``(n, 3)``."""
         Q = np.atleast_2d(as_points(points, "points", ndim=None, dim=3))
@@ -920,7 +990,30 @@ class AffineInstance(Surface):
 
     def _normal(self, P):
         # Q = P M + s, so F(Q) = f((Q - s) M^{-1}) and, as rows, grad F(Q) = grad f(P) (M^{-1})^T
-        return self.base.normal((P - self.shift) @ self.M_inv) @ self.M_inv.T
+        n = self.base.normal((P - self.shift) @ self.M_inv)
+        if self.normal_map == "linear part":           # the slip: the normal moved like a tangent
+            m = n @ self.M
+            return m / np.linalg.norm(m, axis=-1, keepdims=True)
+        return n @ self.M_inv.T
+
+    def normal_error(self, points) -> np.ndarray:
+        """The angle in degrees, at points ``(n, 3)`` of the image, between this instance's normal
+        and the true normal (the inverse transpose's; Goldman §18.2): 0 for the default
+        ``normal_map``; for ``"linear part"``, how far the tangent-mapped "normal" leans off the
+        perpendicular of the surface.
+
+        >>> from goldman_lib.simple_surfaces import Sphere
+        >>> shear = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 1.0]]        # x' = x + z
+        >>> wrong = AffineInstance(Sphere([0, 0, 0], 1.0), shear, normal_map="linear part")
+        >>> Q = wrong.M[0] * 1.0                                                # the image of (1, 0, 0)
+        >>> round(float(wrong.normal_error([Q])[0]), 6)                         # (1, 0, 0) M^-T = (1, 0, -1)
+        45.0
+        """
+        from goldman_lib.vectors import angle_between
+
+        Q = np.atleast_2d(as_points(points, "points", ndim=None, dim=3))
+        right = self.base.normal((Q - self.shift) @ self.M_inv) @ self.M_inv.T
+        return np.atleast_1d(angle_between(self.normal(Q), right))
 
     def _contains(self, P):
         return self.base.contains((P - self.shift) @ self.M_inv)

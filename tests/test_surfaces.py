@@ -252,3 +252,133 @@ def test_a_singular_map_is_refused():
         sf.AffineInstance(Sphere([0, 0, 0], 1.0), np.diag([1.0, 1.0, 0.0]))
     with pytest.raises(TypeError, match="base"):
         sf.AffineInstance("sphere", np.eye(3))
+
+
+# -- §18.4.3 curvature of deformed surfaces, by formula ---------------------------------------------------
+
+
+def ellipsoid_points(radii, n=40, seed=3):
+    return sphere_points(1.0, n, seed) * np.asarray(radii)
+
+
+def test_curvature_of_a_stretched_sphere_is_the_ellipsoids_closed_form():
+    a, b, c = radii = np.array([3.0, 2.0, 0.5])
+    s = sf.implicit_sphere([0, 0, 0], 1.0)
+    Q = ellipsoid_points(radii)
+    H, K = sf.curvature_deformed(s.f, s.grad, s.hess, np.diag(radii), Q)
+    x, y, z = Q.T
+    h2 = x ** 2 / a ** 4 + y ** 2 / b ** 4 + z ** 2 / c ** 4
+    K_closed = 1 / (a * a * b * b * c * c * h2 ** 2)                     # the ellipsoid's Gaussian curvature
+    H_closed = np.abs(x * x + y * y + z * z - a * a - b * b - c * c) / (2 * (a * b * c) ** 2 * h2 ** 1.5)
+    assert np.allclose(K, K_closed, rtol=1e-12) and np.allclose(np.abs(H), H_closed, rtol=1e-12)
+    assert np.all(H < 0)                                                  # outward normals, as the sphere's
+    # by hand at the vertex (3, 0, 0): principal curvatures a/b^2 = 3/4 and a/c^2 = 12
+    Hv, Kv = sf.curvature_deformed(s.f, s.grad, s.hess, np.diag(radii), [[3.0, 0.0, 0.0]])
+    assert Kv[0] == pytest.approx(9.0) and Hv[0] == pytest.approx(-(0.75 + 12.0) / 2)
+
+
+def test_curvature_of_a_sheared_torus_against_differences_of_the_deformed_surface():
+    T = sf.implicit_torus(1.0, 0.4)
+    M = np.array([[1.0, 0.3, 0.0], [0.0, 1.5, 0.0], [0.8, -0.2, 0.7]])    # a shear, a stretch and a squash
+    shift = np.array([0.5, -1.0, 2.0])
+    u, v = np.meshgrid(np.linspace(0.1, 6.0, 7), np.linspace(0.2, 6.1, 6))
+    P = sf.parametric_torus(1.0, 0.4).point(u.ravel(), v.ravel())
+    Q = P @ M + shift
+    H, K = sf.curvature_deformed(T.f, T.grad, T.hess, M, Q, shift)
+    M_inv = np.linalg.inv(M)
+
+    def G(X):                                                               # the deformed surface, G = f o A^-1
+        return T.f((X - shift) @ M_inv)
+
+    H_fd, K_fd = sf.curvature_implicit(G, None, None, Q)                 # central differences of G alone
+    assert np.allclose(K, K_fd, rtol=1e-5, atol=1e-6) and np.allclose(H, H_fd, rtol=1e-5, atol=1e-6)
+    assert np.any(K < 0) and np.any(K > 0)                                 # saddles inside, eggs outside
+
+
+def test_curvature_under_a_rigid_motion_and_a_uniform_scale():
+    T = sf.implicit_torus(2.0, 0.5)
+    P = sf.parametric_torus(2.0, 0.5).point(np.linspace(0, 6, 11), np.linspace(0.3, 5.9, 11))
+    H0, K0 = T.curvature(P)
+    th = np.radians(40.0)
+    Rot = np.array([[np.cos(th), 0.0, -np.sin(th)], [0.0, 1.0, 0.0], [np.sin(th), 0.0, np.cos(th)]])
+    H1, K1 = sf.curvature_deformed(T.f, T.grad, T.hess, Rot, P @ Rot + [1.0, 2.0, 3.0], [1.0, 2.0, 3.0])
+    assert np.allclose(H1, H0, atol=1e-12) and np.allclose(K1, K0, atol=1e-12)
+    H2, K2 = sf.curvature_deformed(T.f, T.grad, T.hess, 3.0 * np.eye(3), 3.0 * P)
+    assert np.allclose(H2, H0 / 3, atol=1e-12) and np.allclose(K2, K0 / 9, atol=1e-12)
+
+
+def test_curvature_deformed_refuses_a_singular_map():
+    s = sf.implicit_sphere([0, 0, 0], 1.0)
+    with pytest.raises(ValueError, match="M must be invertible"):
+        sf.curvature_deformed(s.f, s.grad, s.hess, np.diag([1.0, 0.0, 1.0]), [[1.0, 0.0, 0.0]])
+    with pytest.raises(ValueError, match="M must be a 3x3"):
+        sf.curvature_deformed(s.f, s.grad, s.hess, np.eye(2), [[1.0, 0.0, 0.0]])
+
+
+# -- §18.2 / §18.3.3: the normal of an affine instance, right and wrong -----------------------------------
+
+
+SHEAR = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.2, 0.0, 1.0]])      # x' = x + 1.2 z
+
+
+def _tangents(n):
+    """Two unit tangents of the unit sphere at points with unit normals n (independent of the library)."""
+    a = np.where(np.abs(n[:, :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])
+    t1 = np.cross(n, a)
+    t1 /= np.linalg.norm(t1, axis=1)[:, None]
+    return t1, np.cross(n, t1)
+
+
+def test_the_default_normal_map_is_unchanged_and_perpendicular():
+    from goldman_lib.simple_surfaces import Sphere
+
+    P = sphere_points(1.0, 60, seed=5)
+    right = sf.AffineInstance(Sphere([0, 0, 0], 1.0), SHEAR, [0.0, 0.0, 1.0])
+    assert right.normal_map == "inverse transpose"
+    Q = P @ SHEAR + [0.0, 0.0, 1.0]
+    n = right.normal(Q)
+    expected = P @ np.linalg.inv(SHEAR).T
+    assert np.allclose(n, expected / np.linalg.norm(expected, axis=1)[:, None], atol=1e-12)
+    t1, t2 = _tangents(P)
+    assert np.abs(np.einsum("ij,ij->i", n, t1 @ SHEAR)).max() < 1e-12     # perpendicular to mapped tangents
+    assert np.abs(np.einsum("ij,ij->i", n, t2 @ SHEAR)).max() < 1e-12
+    assert right.normal_error(Q).max() < 1e-9
+
+
+def test_the_linear_part_normal_leans_off_the_surface_by_the_measured_angle():
+    from goldman_lib.simple_surfaces import Sphere
+
+    P = sphere_points(1.0, 60, seed=5)
+    wrong = sf.AffineInstance(Sphere([0, 0, 0], 1.0), SHEAR, normal_map="linear part")
+    Q = P @ SHEAR
+    n = wrong.normal(Q)
+    assert np.allclose(n, (P @ SHEAR) / np.linalg.norm(P @ SHEAR, axis=1)[:, None], atol=1e-12)
+    t1, t2 = _tangents(P)
+    off = np.maximum(np.abs(np.einsum("ij,ij->i", n, t1 @ SHEAR)), np.abs(np.einsum("ij,ij->i", n, t2 @ SHEAR)))
+    assert off.max() > 0.3                                                  # not perpendicular to the surface
+    # the angle error against the cross product of two mapped tangents (the image's true normal)
+    true = np.cross(t1 @ SHEAR, t2 @ SHEAR)
+    true *= np.sign(np.einsum("ij,ij->i", true, P @ np.linalg.inv(SHEAR).T))[:, None]
+    cos = np.einsum("ij,ij->i", n, true) / np.linalg.norm(true, axis=1)
+    expected = np.degrees(np.arccos(np.clip(cos, -1, 1)))
+    assert np.allclose(wrong.normal_error(Q), expected, atol=1e-6)
+    assert 30 < wrong.normal_error(Q).max() < 90
+    # where the shear does not act (the normal (0, 1, 0) at (0, 1, 0)) the two agree
+    assert wrong.normal_error([[0.0, 1.0, 0.0]])[0] == pytest.approx(0.0, abs=1e-9)
+
+
+def test_a_rotation_times_a_uniform_scale_maps_normals_either_way():
+    from goldman_lib.simple_surfaces import Sphere
+
+    th = np.radians(25.0)
+    M = 2.0 * np.array([[np.cos(th), np.sin(th), 0.0], [-np.sin(th), np.cos(th), 0.0], [0.0, 0.0, 1.0]])
+    wrong = sf.AffineInstance(Sphere([0, 0, 0], 1.0), M, normal_map="linear part")
+    assert wrong.normal_error(sphere_points(1.0, 20) @ M).max() < 1e-9
+
+
+def test_the_normal_map_is_validated():
+    from goldman_lib.simple_surfaces import Sphere
+
+    for bad in ("transpose", "inverse-transpose", None, 1):
+        with pytest.raises(ValueError, match="normal_map must be one of"):
+            sf.AffineInstance(Sphere([0, 0, 0], 1.0), SHEAR, normal_map=bad)

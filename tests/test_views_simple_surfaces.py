@@ -87,3 +87,28 @@ def test_torus_ray_view_hits_by_hand_and_the_bound():
     after = view.set_values(r=0.6)["hits"]
     assert before.shape != after.shape or np.abs(before - after).max() > 0.1
     assert view.drag is not None
+
+
+def test_the_render_control_renders_what_the_gallery_shows_at_full_size(gallery):
+    from goldman_lib import ray_tracing as rt
+
+    rc = V.gallery_render_control(gallery, 32, 24, samples=2, depth=1)
+    gallery.set_values(kind="sphere", radius=1.0, light0_x=-2.0)
+    image = rc.render()
+    assert image.shape == (24, 32, 3) and rc.progress.fraction == 1.0 and rc.last_error is None
+    # the same scene rendered directly, from the view's own values
+    v = gallery.values()
+    scene = rt.Scene([S.Plane([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], V._FLOOR), V.make_surface("sphere", radius=1.0)],
+                     gallery.light_control.lights({k: x for k, x in v.items() if k.startswith("light")}),
+                     ambient_light=0.25, background=(0.62, 0.76, 0.92))
+    direct = rt.render(scene, rt.Camera(V._EYE, V._TARGET, fov=40.0), 32, 24, depth=1, samples=2)
+    assert np.array_equal(image, direct)
+    gallery.set_values(kind="torus")
+    assert not np.array_equal(rc.render(), image)                          # it follows the view
+
+
+def test_the_render_control_reports_a_refused_render_in_its_status(gallery):
+    rc = V.gallery_render_control(gallery, 32, 24, samples=99)
+    assert rc.render() is None and "samples" in rc.last_error
+    with pytest.raises(TypeError, match="gallery"):
+        V.gallery_render_control(object())

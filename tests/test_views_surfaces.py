@@ -70,3 +70,28 @@ def test_terrain_png_draws_one_panel_per_roughness():
 
     with pytest.raises(ValueError, match="roughnesses"):
         sv.terrain_png(())
+
+
+def test_the_normal_map_picture_and_its_validation():
+    import pytest
+
+    assert sv.normal_map_png(arrows=4, size=(16, 12))[:4] == b"\x89PNG"
+    with pytest.raises(ValueError, match="y = 0"):
+        sv.normal_map_png(M=[[1.0, 0.5, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    with pytest.raises(ValueError, match="arrows"):
+        sv.normal_map_png(arrows=1)
+
+
+def test_the_full_size_render_control_renders_its_scene_on_request():
+    import pytest
+
+    from goldman_lib import ray_tracing as rt
+
+    scene, camera = rt.default_scene(), rt.default_camera()
+    rc = sv.full_size_render(scene, camera, 24, 18, samples=2, depth=1)
+    assert rc.last_image is None                                            # nothing until the button
+    image = rc.render()
+    assert np.array_equal(image, rt.render(scene, camera, 24, 18, depth=1, samples=2))
+    assert rc.progress.fraction == 1.0 and "24 x 18" in rc.status.value
+    with pytest.raises(TypeError, match="Scene and Camera"):
+        sv.full_size_render("scene", camera)

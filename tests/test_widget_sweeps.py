@@ -41,7 +41,7 @@ def test_every_chapter_so_far_has_widget_factories():
 
 #: views modules that are helpers, not chapters: they may hold no widget factory (private modules,
 #: such as ``_checks``, are helpers too).
-HELPER_MODULES = {"interactive", "style", "three", "drag", "light_control", "agreement"}
+HELPER_MODULES = {"interactive", "style", "three", "drag", "light_control", "agreement", "render_control"}
 
 
 def test_every_views_module_has_a_widget_factory():

@@ -90,6 +90,10 @@ class ProgressBar(widgets.HBox):
             self.bar.max = total
         self.label.value = f"{done} / {total}"
 
+    def __repr__(self) -> str:
+        # what a page without the widget state (a stored notebook, the website) shows in its place
+        return f"[progress bar: {self.bar.description}]"
+
     @property
     def fraction(self) -> float:
         """How far the last call said the work was, in [0, 1]."""
@@ -148,6 +152,10 @@ class RenderControl(widgets.VBox):
         if isinstance(getattr(view, "uid", None), int):
             # the browser test finds the view this control renders (its box is goldman-view-<uid>)
             self.add_class(f"goldman-renders-{view.uid}")
+
+    def __repr__(self) -> str:
+        # what a page without the widget state (a stored notebook, the website) shows in its place
+        return f"[render button: {self.button.description}; run the notebook to use it]"
 
     def render(self, **values) -> np.ndarray | None:
         """Render with the view's current values (or ``values``, for a test or a keyboard user) and

@@ -5,7 +5,9 @@ parameters (radius, height, half-angle, R, r) and the shared light-position cont
 The pictures are made by the library: :func:`goldman_lib.ray_tracing.render` ray traces a floor and
 the chosen :mod:`goldman_lib.simple_surfaces` surface (each surface's ``hit``: its own intersection
 and normal), lit by :mod:`goldman_lib.lighting` with shadows; the three.js view shows the surface's
-``mesh``.  This module only picks the surface and draws.
+``mesh``.  This module only picks the surface and draws.  :func:`gallery_render_control` renders the
+gallery's current picture at full size (640 x 480, anti-aliased, depth 5) with a progress bar
+(issue 18 §4), by the same library call.
 
 >>> s = make_surface("torus", R=1.0, r=0.3)
 >>> type(s).__name__, s.R, s.r
@@ -25,8 +27,8 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider
 from goldman_lib.views.light_control import LightControl
 
-__all__ = ["SURFACES", "make_surface", "gallery_view", "gallery_figure", "surface_scene_view", "torus_ray_view",
-           "GALLERY_SIZE"]
+__all__ = ["SURFACES", "make_surface", "gallery_view", "gallery_render_control", "gallery_figure",
+           "surface_scene_view", "torus_ray_view", "GALLERY_SIZE"]
 
 #: The surfaces of the picker, in the chapter's order, with the section each comes from.
 SURFACES = {
@@ -171,8 +173,7 @@ def gallery_view(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
         key = pickle.dumps((surface, lamps))      # the objects' own state: equal surfaces, equal keys
         image = rendered.pop(key, None)
         if image is None:
-            scene = rt.Scene([floor, surface], lamps, ambient_light=0.25, background=(0.62, 0.76, 0.92))
-            image = rt.render(scene, camera, width, height_px, depth=0)
+            image = rt.render(_gallery_scene(floor, surface, lamps), camera, width, height_px, depth=0)
             image.setflags(write=False)
             while len(rendered) >= _KEEP_PICTURES:
                 rendered.pop(next(iter(rendered)))
@@ -186,6 +187,43 @@ def gallery_view(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
     view.light_control = light
     style.pin_layout(fig)       # the title need not be placed again at each redraw
     return view
+
+
+def _gallery_scene(floor, surface, lamps):
+    from goldman_lib import ray_tracing as rt
+
+    return rt.Scene([floor, surface], lamps, ambient_light=0.25, background=(0.62, 0.76, 0.92))
+
+
+def gallery_render_control(view: InteractiveView, width: int = 640, height_px: int = 480, samples: int = 2,
+                           depth: int = 5):
+    """A "render" control for the gallery ``view`` of :func:`gallery_view` (issue 18 §4): its button ray
+    traces the surface and the lights the view shows now, at ``width x height_px`` with ``samples x
+    samples`` anti-aliasing and recursion ``depth`` (:func:`goldman_lib.ray_tracing.render`, the same
+    scene and camera as the view's small picture), filling a progress bar as the rows are done; the
+    sliders stay as fast as before.  Returns a :class:`goldman_lib.views.render_control.RenderControl`
+    (not displayed); ``.render()`` does the same from the keyboard.
+
+    >>> v = gallery_view(width=40, height_px=30)
+    >>> rc = gallery_render_control(v, 16, 12, samples=1, depth=0)
+    >>> v.set_values(kind="sphere") and rc.render().shape
+    (12, 16, 3)
+    """
+    from goldman_lib import ray_tracing as rt
+    from goldman_lib.views.render_control import RenderControl
+
+    if not isinstance(view, InteractiveView) or not hasattr(view, "light_control"):
+        raise TypeError("view must be the gallery's InteractiveView (from gallery_view())")
+    camera = rt.Camera(_EYE, _TARGET, fov=40.0)
+    floor = S.Plane([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], _FLOOR)
+
+    def render(progress, kind, radius, height, half_angle, R, r, **lights):
+        surface = make_surface(kind, radius, height, half_angle, R, r)
+        scene = _gallery_scene(floor, surface, view.light_control.lights(lights))
+        return rt.render(scene, camera, width, height_px, depth=depth, samples=samples, progress=progress)
+
+    return RenderControl(render, view=view,
+                         label=f"Render {width} x {height_px}, {samples} x {samples} anti-aliased, depth {depth}")
 
 
 def gallery_figure(width: int = 112, height_px: int = 84, columns: int = 4):

@@ -6,7 +6,9 @@ surface are drawn, mapped by the inverse transpose of the deformation's Jacobian
 Every number comes from :mod:`goldman_lib.surfaces`: the surfaces are its parametric forms, the
 curvature of the deformed surface is :func:`~goldman_lib.surfaces.curvature_parametric` of the
 composed map ``A(X(u, v))``, and the normals are :meth:`Deformation.normals`.  This module only
-draws.
+draws.  Two static pieces go with §18.3.3: :func:`normal_map_png`, a sheared sphere with its normals
+mapped right (by the inverse transpose) and wrong (by the linear part itself), and
+:func:`full_size_render`, the "render" control of a ray-traced scene at full size (issue 18 §4).
 
 >>> view = curvature_view(resolution=16)
 >>> r = view.set_values(surface="sphere", curvature="Gaussian K", amount=0.0)
@@ -23,7 +25,8 @@ from goldman_lib import surfaces as sf
 from goldman_lib.views.interactive import InteractiveView, dropdown, float_slider, int_slider  # noqa: F401
 from goldman_lib.views.three import SceneView
 
-__all__ = ["curvature_view", "SURFACES", "CURVATURES", "DEFORMATIONS", "curvature_colours", "terrain_png"]
+__all__ = ["curvature_view", "SURFACES", "CURVATURES", "DEFORMATIONS", "curvature_colours", "terrain_png",
+           "SHEAR", "normal_map_png", "full_size_render"]
 
 #: The surfaces of the picker (parametric forms from goldman_lib.surfaces), and what their curvature is.
 SURFACES = {
@@ -160,3 +163,98 @@ def terrain_png(roughnesses=(0.35, 0.5, 0.7), level: int = 6, seed: int = 18) ->
     fig.tight_layout()
     return figure_png(fig)
 
+
+
+#: The shear of §18.3.3's "failure, then fix" picture: x' = x + 1.2 z (row vectors, ``Q = P M``).
+SHEAR = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (1.2, 0.0, 1.0))
+
+
+def normal_map_png(M=SHEAR, arrows: int = 16, size: tuple = (160, 120)) -> bytes:
+    """The unit sphere sheared by ``M`` (:class:`goldman_lib.surfaces.AffineInstance`, Goldman §18.2
+    and §18.3.3), its normals mapped two ways: by the inverse transpose (right, green) and by the
+    linear part itself, like a tangent (wrong, red).  Left: the cross-section ``y = 0`` with
+    ``arrows`` normals of each kind; middle and right: the surface on a floor ray traced
+    (:func:`goldman_lib.ray_tracing.render`, ``size`` pixels, no recursion) with each kind of normal,
+    the wrong one shading the sheared sides too dark or too bright.  Each panel's title gives the
+    largest angle error (:meth:`~goldman_lib.surfaces.AffineInstance.normal_error`) over the
+    section's points.  The picture is static (PNG bytes).  ``M`` must keep ``y = 0`` in place (map
+    the plane to itself) for the section to be the image's own section.
+
+    >>> normal_map_png(arrows=4, size=(16, 12))[:4]
+    b'\\x89PNG'
+    """
+    from matplotlib.figure import Figure
+
+    from goldman_lib import ray_tracing as rt
+    from goldman_lib.lighting import Light, Material
+    from goldman_lib.simple_surfaces import Plane, Sphere
+    from goldman_lib.views.interactive import figure_png
+
+    M = np.asarray(M, dtype=float)
+    if M.shape != (3, 3) or abs(M[1, 1]) < 1e-9 or np.any(M[[0, 2], 1] != 0):
+        raise ValueError("M must be a 3x3 matrix that maps the plane y = 0 to itself (M[0, 1] = M[2, 1] = 0)")
+    arrows = int(arrows)
+    if not 2 <= arrows <= 64:
+        raise ValueError(f"arrows must be between 2 and 64; got {arrows}")
+    width, height = (int(v) for v in size)
+    if not (8 <= width <= 320 and 6 <= height <= 240):
+        raise ValueError(f"size must be (width, height) within (8..320, 6..240); got {size}")
+    material = Material(colour=(0.35, 0.55, 0.85), specular=0.4, exponent=25)
+    kinds = {"inverse transpose": "#2a9d3a", "linear part": "#c62828"}
+    shapes = {k: sf.AffineInstance(Sphere([0, 0, 0], 1.0), M, [0.0, 0.0, 1.0], material=material, normal_map=k)
+              for k in kinds}
+    angles = np.linspace(0.0, 2 * np.pi, 201)
+    section = shapes["inverse transpose"].apply(np.stack([np.cos(angles), 0 * angles, np.sin(angles)], -1))
+    at = np.linspace(0.0, 2 * np.pi, arrows, endpoint=False) + np.pi / arrows
+    feet = shapes["inverse transpose"].apply(np.stack([np.cos(at), 0 * at, np.sin(at)], -1))
+    worst = {k: float(shapes[k].normal_error(section).max()) for k in kinds}
+
+    fig = Figure(figsize=(10.2, 3.3), dpi=100)
+    ax = fig.add_subplot(1, 3, 1)
+    ax.plot(section[:, 0], section[:, 2], color="#333333", lw=1.2)
+    for k, colour in kinds.items():
+        n = shapes[k].normal(feet)
+        ax.quiver(feet[:, 0], feet[:, 2], n[:, 0], n[:, 2], color=colour, angles="xy", scale_units="xy", scale=2.5,
+                  width=0.008)
+    lo, hi = section.min(axis=0) - 0.5, section.max(axis=0) + 0.5
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[2], hi[2])
+    ax.set_aspect("equal")
+    ax.set_xlabel("x")
+    ax.set_ylabel("z")
+    ax.set_title("the section y = 0: normals by the\ninverse transpose (green) and the linear part (red)", fontsize=9)
+    floor = Plane([0, 0, -0.05], [0, 0, 1], material=Material(colour=(0.9, 0.9, 0.9)))
+    camera = rt.Camera((0.8, -5.0, 2.6), (0.5, 0.0, 1.0), fov=40)
+    for j, k in enumerate(kinds):
+        scene = rt.Scene([shapes[k], floor], [Light((4, -5, 6))], ambient_light=0.25, background=(0.62, 0.76, 0.92))
+        axk = fig.add_subplot(1, 3, j + 2)
+        axk.imshow(rt.render(scene, camera, width, height, depth=0), interpolation="nearest")
+        axk.set_axis_off()
+        axk.set_title(f"shaded with the {k}\n({'right' if j == 0 else 'wrong'}: up to {worst[k]:.0f}° off)",
+                      fontsize=9)
+    fig.tight_layout()
+    return figure_png(fig)
+
+
+def full_size_render(scene, camera, width: int = 640, height: int = 480, samples: int = 2, depth: int = 5):
+    """A "render" control (:class:`goldman_lib.views.render_control.RenderControl`, issue 18 §4) that ray
+    traces ``scene`` through ``camera`` at full size with :func:`goldman_lib.ray_tracing.render`
+    (``samples x samples`` anti-aliasing, recursion ``depth``) when its button is pressed, with a
+    progress bar; nothing is rendered until then.  For a picture the chapter draws once (no sliders).
+
+    >>> from goldman_lib import ray_tracing as rt
+    >>> rc = full_size_render(rt.default_scene(), rt.default_camera(), 16, 12, samples=1, depth=0)
+    >>> rc.render().shape
+    (12, 16, 3)
+    """
+    from goldman_lib import ray_tracing as rt
+    from goldman_lib.views.render_control import RenderControl
+
+    if not isinstance(scene, rt.Scene) or not isinstance(camera, rt.Camera):
+        raise TypeError("scene and camera must be a goldman_lib.ray_tracing Scene and Camera")
+
+    def render(progress):
+        return rt.render(scene, camera, width, height, depth=depth, samples=samples, progress=progress)
+
+    return RenderControl(render, view=None,
+                         label=f"Render {width} x {height}, {samples} x {samples} anti-aliased, depth {depth}")

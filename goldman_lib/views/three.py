@@ -72,8 +72,14 @@ class SceneView:
         self.camera_position = tuple(float(v) for v in camera_position)
         self.lights = self._check_lights(lighting.default_lights() if lights is None else lights)
         self.ambient_light = float(ambient_light)
+        # Each light gets its shadow object from here: left "uninitialized", pythreejs's front end
+        # makes one itself and a state update of the light can then reach its change listener
+        # before the new model is resolved ("Error setting state: t.on is not a function", logged
+        # once or twice by every three.js chapter under ipywidgets 8).  No shadow is ever cast.
         self._light_objects = [p3.PointLight(color=self._hex(light.colour), intensity=light.intensity,
-                                             position=list(light.position), distance=0, decay=0)
+                                             position=list(light.position), distance=0, decay=0,
+                                             shadow=p3.LightShadow(camera=p3.PerspectiveCamera(fov=90, aspect=1,
+                                                                                              near=0.5, far=500)))
                                for light in self.lights]
         self.camera = p3.PerspectiveCamera(position=list(self.camera_position), up=[0, 0, 1],
                                            aspect=width / height, fov=40)

@@ -263,4 +263,8 @@ def test_notebook_runs_and_views_respond(lab, notebook):
         report.append(extra(lab, nb))
     problems = lab.dom_problems()
     assert not problems, f"{rel}: errors after moving sliders and dragging points:\n" + "\n".join(problems)
+    # A widget model that refused a state update logs it only in the console (issue 19 §3: pythreejs
+    # lights left to make their own shadow objects logged "Error setting state: t.on is not a function").
+    refused = [m for m in getattr(page, "console_errors", []) if "Error setting state" in m]
+    assert not refused, f"{rel}: widget models refused state updates:\n" + "\n".join(refused[:5])
     print("\n".join(report))
