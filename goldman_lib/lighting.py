@@ -17,7 +17,10 @@ from an eye at ``E`` as the sum of three terms, one colour channel at a time:
   specular exponent: the larger ``n``, the smaller and sharper the highlight.
 
 Conventions (the tests rely on them): a term is 0 where the light is behind the surface
-(``L . N <= 0``) and the specular term also where ``R . V <= 0``; the specular term has no
+(``L . N <= 0``) and the specular term also where ``R . V <= 0``: the clamp of §16.4 (``clamp=True``,
+the default of :func:`diffuse`, :func:`specular` and :func:`intensity`; ``clamp=False`` takes it away,
+to show what it prevents: a negative diffuse term that subtracts light, and a highlight on the side
+turned away from the light); the specular term has no
 ``L . N`` factor; no term is attenuated with distance.  Colours are RGB triples in [0, 1]; a
 material's colour multiplies its ambient and diffuse coefficients (the specular highlight takes
 the light's colour, as on a plastic).  Intensities are returned unclipped; images clip them to
@@ -214,52 +217,70 @@ def _unit(v):
     return np.divide(v, length, out=np.zeros_like(v), where=length > 0)
 
 
-def _cosines(P, N, light_position, V=None, exponent=None, name="light_position"):
+def _check_clamp(clamp) -> bool:
+    if not isinstance(clamp, (bool, np.bool_)):
+        raise TypeError(f"clamp must be True or False; got {type(clamp).__name__}")
+    return bool(clamp)
+
+
+def _cosines(P, N, light_position, V=None, exponent=None, name="light_position", clamp=True):
     """Unchecked kernel of the three terms for one light: ``max(L . N, 0)`` and, given unit ``V``,
     ``(R . V)^n`` (0 where ``L . N <= 0`` or ``R . V <= 0``), using ``R . V = 2 (L . N)(N . V) - L . V``
     so ``R`` itself is never formed.  P, N (unit), V: (..., 3).  ``name``: the light's position, blamed
-    (with points) if ``light_position - P`` overflows."""
+    (with points) if ``light_position - P`` overflows.  ``clamp=False`` (the unsafe setting): ``L . N``
+    as it is (negative where the light is behind the surface) and the specular term not switched off
+    there (still 0 where ``R . V <= 0``: a negative number has no real power)."""
     with np.errstate(over="ignore", invalid="ignore"):
         L = _unit(finite_result(light_position - P, f"{name} or points", why="is too large in magnitude"))
     ln = _dot(L, N)
-    cos_d = np.maximum(ln, 0.0)
+    cos_d = np.maximum(ln, 0.0) if clamp else ln
     if V is None:
         return cos_d, None
     rv = 2.0 * ln * _dot(N, V) - _dot(L, V)
-    rv = np.where(ln > 0, np.maximum(rv, 0.0), 0.0)
+    rv = np.where(ln > 0, np.maximum(rv, 0.0), 0.0) if clamp else np.maximum(rv, 0.0)
     with np.errstate(under="ignore", divide="ignore"):
         power = np.where(rv > 0, np.power(rv, exponent), 0.0)
     return cos_d, power
 
 
-def diffuse(points, normals, light_position, kd, light_intensity) -> np.ndarray:
+def diffuse(points, normals, light_position, kd, light_intensity, *, clamp: bool = True) -> np.ndarray:
     """Lambert's diffuse term ``I_p k_d max(L . N, 0)`` at each point (Goldman §16.4).
 
     points, normals: (..., 3) (normals need not be unit); light_position: (3,); kd and
     light_intensity: numbers or RGB triples.  Returns (...) or (..., 3) if either is RGB.
+    clamp: True (the default) clamps ``L . N`` at 0, so a light behind the surface adds nothing;
+    False is the slip the clamp prevents (§16.4): ``I_p k_d (L . N)`` goes negative there and
+    subtracts light.
+
+    >>> diffuse([[0, 0, 0]], [[0, 0, -1]], [0, 3, 3], 1.0, 1.0, clamp=False).round(6).tolist()
+    [-0.707107]
 
     >>> diffuse([[0, 0, 0], [0, 0, 0]], [[0, 0, 1], [0, 0, -1]], [0, 3, 3], 1.0, 1.0).round(6).tolist()
     [0.707107, 0.0]
     """
+    clamp = _check_clamp(clamp)
     P, N = _geometry(points, normals)
-    cos_d, _ = _cosines(P, N, as_points(light_position, "light_position", ndim=1, dim=3))
+    cos_d, _ = _cosines(P, N, as_points(light_position, "light_position", ndim=1, dim=3), clamp=clamp)
     return _scale(cos_d, kd, light_intensity, "kd", "light_intensity")
 
 
-def specular(points, normals, light_position, eye, ks, exponent, light_intensity) -> np.ndarray:
+def specular(points, normals, light_position, eye, ks, exponent, light_intensity, *, clamp: bool = True) -> np.ndarray:
     """Phong's specular term ``I_p k_s (R . V)^n`` (Goldman §16.5): ``R`` the mirror image of the
     unit vector ``L`` to the light, ``V`` the unit vector to the eye (one point (3,) or one per
     point); 0 where ``L . N <= 0`` (the
     light is behind the surface) or ``R . V <= 0``.  No ``L . N`` factor, no attenuation.
+    clamp: False drops the test ``L . N > 0`` (§16.4's clamp; see :func:`diffuse`): a light behind the
+    surface can then make a highlight on it.
 
     >>> specular([[0, 0, 0]], [[0, 0, 1]], [1, 0, 1], [0, 0, 1], 1.0, 2, 1.0).round(6).tolist()
     [0.5]
     """
+    clamp = _check_clamp(clamp)
     P, N = _geometry(points, normals)
     light = as_points(light_position, "light_position", ndim=1, dim=3)
     with np.errstate(over="ignore", invalid="ignore"):
         V = unit_rows(finite_result(_eye(eye, P) - P, "eye or points", why="is too large in magnitude"), "eye - points")
-    _, power = _cosines(P, N, light, V, _non_negative(exponent, "exponent"))
+    _, power = _cosines(P, N, light, V, _non_negative(exponent, "exponent"), clamp=clamp)
     return _scale(power, ks, light_intensity, "ks", "light_intensity")
 
 
@@ -295,7 +316,7 @@ def blinn_specular(points, normals, light_position, eye, ks, exponent, light_int
 
 
 def intensity(points, normals, eye, lights, material: Material, ambient_light=0.2, shadowed=None,
-              two_sided: bool = False, light_fraction=None) -> np.ndarray:
+              two_sided: bool = False, light_fraction=None, *, clamp: bool = True) -> np.ndarray:
     """The total RGB intensity ``I_a k_a C + sum over lights of I_p (k_d C (L . N) + k_s S (R . V)^n)``
     at each point (Goldman §16.6), ``C`` the material's colour and ``S`` its specular colour.
 
@@ -306,14 +327,20 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
     two_sided: flip each normal to face the eye first (for open surfaces and static pictures).
     light_fraction: optional (..., len(lights)) in [0, 1], the fraction of each light that reaches
     each point (chapter 17's shadow rays through transparent objects): it multiplies that light's
-    diffuse and specular terms.  Returns (..., 3), unclipped.
+    diffuse and specular terms.  clamp: True (the default) clamps ``L . N`` at 0 (§16.4: a light
+    behind the surface adds nothing); False, the slip it prevents, lets a light behind the surface
+    subtract light through a negative diffuse term and make a highlight (see :func:`diffuse`,
+    :func:`specular`).  Returns (..., 3), unclipped.
 
     >>> m = Material(colour=(1, 0, 0), ambient=0.1, diffuse=0.5, specular=0.0)
     >>> intensity([[0, 0, 0]], [[0, 0, 1]], [0, 0, 5], Light((0, 0, 5)), m, ambient_light=1.0).tolist()
     [[0.6, 0.0, 0.0]]
+    >>> intensity([[0, 0, 0]], [[0, 0, -1]], [0, 0, 5], Light((0, 0, 5)), m, ambient_light=1.0, clamp=False).tolist()
+    [[-0.4, 0.0, 0.0]]
     """
     if not isinstance(material, Material):
         raise TypeError(f"material must be a goldman_lib.lighting.Material; got {type(material).__name__}")
+    clamp = _check_clamp(clamp)
     lights = _lights(lights)
     P, N = _geometry(points, normals)
     E = _eye(eye, P)
@@ -343,7 +370,8 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
     else:
         V = None
     for k, light in enumerate(lights):
-        cos_d, power = _cosines(P, N, np.asarray(light.position), V, material.exponent, f"lights[{k}].position")
+        cos_d, power = _cosines(P, N, np.asarray(light.position), V, material.exponent, f"lights[{k}].position",
+                                clamp=clamp)
         with np.errstate(over="ignore", invalid="ignore"):
             term = cos_d[..., None] * finite_result(material.diffuse * C * light.rgb,
                                                     f"lights[{k}].intensity and material.diffuse",

@@ -52,7 +52,7 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
 
 __all__ = ["Camera", "Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
            "trace", "render", "ray_tree", "in_shadow", "light_fraction", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
-           "OFFSET", "INDEX_RANGE", "MATERIALS", "MAX_SAMPLES", "BANDS"]
+           "OFFSET", "INDEX_RANGE", "MATERIALS", "MAX_SAMPLES", "BANDS", "ray_cast", "PRECISIONS", "INDEX_RATIOS"]
 
 #: The deepest recursion a render may ask for (a ray tree of depth d holds up to 2^(d+1) - 1 rays).
 MAX_DEPTH = 12
@@ -61,6 +61,10 @@ INDEX_RANGE = (0.01, 100.0)
 #: Secondary rays (shadow, reflected, refracted) start this far off the surface, on the side they
 #: leave by, so that rounding does not make them hit the surface they start on.
 OFFSET = 1e-7
+#: The precisions a Scene's hit points may be rounded to before their shadow rays leave (``Scene(precision=...)``).
+PRECISIONS = ("float64", "float32")
+#: The ratio of indices Snell's law is given (``Scene(index_ratio=...)``): "n1/n2" is right, "n2/n1" the slip.
+INDEX_RATIOS = ("n1/n2", "n2/n1")
 
 
 def _unit(v, name):
@@ -135,13 +139,32 @@ class Scene:
     multiplying the light by its ``material.transmit`` (Whitted 1980: attenuated, not refracted); False
     makes every object cast a full shadow, as an opaque one does.
 
+    Three switches take a safeguard away, to show what it prevents (each default is the safe one):
+
+    * shadow_offset (§17.3, shadow acne): None (the default) starts secondary rays :data:`OFFSET` off
+      the surface on the side they leave by, and does not test a shadow ray against the surface it
+      leaves where that surface cannot block it (a plane, or a sphere seen from outside: exact, so
+      no rounding can make a point shadow itself).  A number ``>= 0`` is the classic safeguard alone:
+      the rays start that far off the surface and a shadow ray is tested against every object, its
+      own surface included.  A point rounded to just inside its surface then finds that surface
+      between it and the light unless the offset exceeds the rounding error: speckled self-shadowing,
+      "shadow acne".
+    * precision (§17.3): "float64" (the default) or "float32": each hit point is rounded to single
+      precision (a GPU's arithmetic) before its shadow and reflected rays leave, an error about
+      1e-7 times the coordinates, where float64's (1e-16) hides under the intersection tolerance
+      ``t > EPS`` of :mod:`goldman_lib.simple_surfaces` (why ``OFFSET = 0`` alone changes nothing).
+    * index_ratio (§17.5): "n1/n2" (the default, Snell's law ``sin(theta2) = (n1 / n2) sin(theta1)``)
+      or "n2/n1", the ratio upside down: a ray entering glass then bends away from the normal, as if
+      the glass were thinner than the air, and past ``arcsin(n1 / n2)`` it cannot enter at all.
+
     >>> s = Scene([Sphere((0, 0, 0), 1)], [Light((0, 0, 5))], ambient_light=0.3)
     >>> len(s.objects), s.background.tolist(), s.shadow_transmission
     (1, [0.0, 0.0, 0.0], True)
     """
 
     def __init__(self, objects, lights, ambient_light=0.2, background=(0.0, 0.0, 0.0),
-                 shadow_transmission: bool = True):
+                 shadow_transmission: bool = True, *, shadow_offset=None, precision: str = "float64",
+                 index_ratio: str = "n1/n2"):
         try:
             objects = tuple(objects)
         except TypeError:
@@ -180,6 +203,26 @@ class Scene:
         if not isinstance(shadow_transmission, (bool, np.bool_)):
             raise TypeError(f"shadow_transmission must be True or False; got {type(shadow_transmission).__name__}")
         self.shadow_transmission = bool(shadow_transmission)
+        if shadow_offset is not None:
+            shadow_offset = as_float(shadow_offset, "shadow_offset")
+            if not 0 <= shadow_offset <= 1:
+                raise ValueError(f"shadow_offset must be None (the safe default) or a distance in [0, 1]; "
+                                 f"got {shadow_offset}")
+        self.shadow_offset = shadow_offset
+        for name, value, allowed in (("precision", precision, PRECISIONS), ("index_ratio", index_ratio, INDEX_RATIOS)):
+            if not isinstance(value, str) or value not in allowed:
+                raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}; got {value!r}")
+        self.precision = precision
+        self.index_ratio = index_ratio
+
+    def _offset(self) -> tuple[float, bool]:
+        """(how far secondary rays start off the surface, whether a shadow ray skips the surface it
+        leaves where that surface cannot block it)."""
+        return (OFFSET, True) if self.shadow_offset is None else (self.shadow_offset, False)
+
+    def _leave(self, P):
+        """Hit points as the scene's precision holds them before secondary rays leave."""
+        return P.astype(np.float32).astype(float) if self.precision == "float32" else P
 
 
 # -- refraction (§17.5) ------------------------------------------------------------------------------
@@ -386,13 +429,14 @@ def _nearest(objects, bounds, o, d):
     return best, which, normals
 
 
-def _light_fraction(objects, bounds, P, N_f, owner, entering, lights, transmission=True):
+def _light_fraction(objects, bounds, P, N_f, owner, entering, lights, transmission=True, skip_own=True):
     """Shadow rays (§17.3): the fraction of each light that reaches each point, (N, L), and whether
     an object lies between, (N, L) bool.  A light behind the surface (``L . N <= 0``) is blocked by
     the surface itself (fraction 0); otherwise a plane cannot shadow its own points, nor a sphere the
     points on its outside.  Each object the shadow ray meets before the light multiplies the
     fraction by its ``material.transmit`` if ``transmission`` (Whitted's attenuation: 0 for an
-    opaque object), else by 0."""
+    opaque object), else by 0.  skip_own False: test the shadow ray against its own surface too
+    (``Scene(shadow_offset=...)``)."""
     fraction = np.ones((len(P), len(lights)))
     between = np.zeros((len(P), len(lights)), dtype=bool)
     for j, light in enumerate(lights):
@@ -402,7 +446,9 @@ def _light_fraction(objects, bounds, P, N_f, owner, entering, lights, transmissi
         unit = to_light / np.where(distance > 0, distance, 1.0)[:, None]
         for k, obj in enumerate(objects):
             test = (fraction[:, j] > 0) & (distance > 0)
-            if isinstance(obj, Plane):
+            if not skip_own:
+                pass
+            elif isinstance(obj, Plane):
                 test &= owner != k
             elif isinstance(obj, Sphere):
                 test &= (owner != k) | ~entering
@@ -432,9 +478,10 @@ def _shadow_rays(scene, points, normals):
     if np.abs(P).max() > 1e15:
         raise ValueError("points must have coordinates at most 1e15 in magnitude")
     bounds = [_bounding_sphere(obj) for obj in scene.objects]
+    offset, skip_own = scene._offset()
     with np.errstate(over="ignore", invalid="ignore", under="ignore"):
-        return _light_fraction(scene.objects, bounds, P + OFFSET * N, N, np.full(len(P), -1),
-                               np.ones(len(P), dtype=bool), scene.lights, scene.shadow_transmission)
+        return _light_fraction(scene.objects, bounds, scene._leave(P) + offset * N, N, np.full(len(P), -1),
+                               np.ones(len(P), dtype=bool), scene.lights, scene.shadow_transmission, skip_own)
 
 
 def in_shadow(scene: Scene, points, normals) -> np.ndarray:
@@ -562,6 +609,7 @@ def _trace(scene, o, d, depth, record, miss_length, counts, max_rays=MAX_ITEMS):
     names = ("primary", "reflected", "refracted")
     objects, lights = scene.objects, scene.lights
     bounds = [_bounding_sphere(obj) for obj in objects]
+    offset, skip_own = scene._offset()
     for level in range(depth + 1):
         if len(o) == 0:
             break
@@ -593,9 +641,10 @@ def _trace(scene, o, d, depth, record, miss_length, counts, max_rays=MAX_ITEMS):
         eye_h = o[hit]
         entering = _dot(d_h, N) < 0
         N_f = np.where(entering[:, None], N, -N)      # the normal on the side the ray arrives from
-        outside = P + OFFSET * N_f
+        P_leave = scene._leave(P)
+        outside = P_leave + offset * N_f
         fraction, blocked = _light_fraction(objects, bounds, outside, N_f, obj_h, entering, lights,
-                                            scene.shadow_transmission)
+                                            scene.shadow_transmission, skip_own)
         counts["shadow"] += blocked.size
         if record is not None:
             _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, level, fraction)
@@ -612,11 +661,13 @@ def _trace(scene, o, d, depth, record, miss_length, counts, max_rays=MAX_ITEMS):
             r_weight = np.full(len(sel), m.reflect)
             if m.transmit > 0:
                 eta = np.where(entering[sel], 1.0 / m.index, m.index)
+                if scene.index_ratio == "n2/n1":
+                    eta = 1.0 / eta                  # the slip, upside down (Scene(index_ratio="n2/n1"))
                 T, tir = _refract(d_h[sel], N_f[sel], eta)
                 r_weight = r_weight + np.where(tir, m.transmit, 0.0)
                 go = sel[~tir]
                 if len(go):
-                    next_o.append(P[go] - OFFSET * N_f[go])
+                    next_o.append(P_leave[go] - offset * N_f[go])
                     next_d.append(T[~tir])
                     next_w.append(w[go] * m.transmit)
                     next_p.append(pix[go])
@@ -729,6 +780,68 @@ def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, de
             progress(bottom, height)
         if counts is not None:
             counts.update(total)
+    image = lighting.to_image(colour.reshape(big_h, big_w, 3))
+    if samples > 1:
+        image = image.reshape(height, samples, width, samples, 3).mean(axis=(1, 3))
+    return image
+
+
+def ray_cast(scene: Scene, camera: Camera, width: int = 160, height: int = 120, *, samples: int = 1,
+             clamp: bool = True, progress=None) -> np.ndarray:
+    """Ray cast ``scene`` seen by ``camera`` with local light only: the pictures of chapter 16
+    (Goldman §16.6: each pixel's ray, its nearest hit and :func:`goldman_lib.lighting.intensity` there,
+    no shadow rays and no recursion; :func:`render` adds those, §17.2).  A ``(height, width, 3)`` image
+    in [0, 1] (row 0 at the top); a ray that hits nothing sees ``scene.background``.
+
+    samples: ``samples x samples`` rays per pixel, averaged after clipping (anti-aliasing, as in
+    :func:`render`), at most :data:`MAX_SAMPLES`.  clamp: passed to
+    :func:`goldman_lib.lighting.intensity` (False: the unclamped ``L . N`` of §16.4, the slip).
+    progress: ``progress(done, total)`` after each of up to :data:`BANDS` bands of image rows (the
+    same image, pixel for pixel, as without it).  The work is ``width * height * samples^2`` rays,
+    within :data:`goldman_lib.validation.MAX_ITEMS`.
+
+    >>> s = Scene([Sphere((0, 0, 0), 1, Material(colour=(1, 1, 1), ambient=1, diffuse=0, specular=0))],
+    ...           [Light((0, 0, 5))], ambient_light=0.5, background=(0, 0, 1))
+    >>> img = ray_cast(s, Camera((0, -5, 0), (0, 0, 0), fov=30), 4, 3)
+    >>> img[1, 1].tolist(), img[0, 0].tolist()          # the sphere in the middle, the background in a corner
+    ([0.5, 0.5, 0.5], [0.0, 0.0, 1.0])
+    """
+    if not isinstance(camera, Camera):
+        raise TypeError(f"camera must be a goldman_lib.ray_tracing.Camera; got {type(camera).__name__}")
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
+    width, height = _image_size(width, height, 0)
+    samples = as_int(samples, "samples", minimum=1, maximum=MAX_SAMPLES)
+    if not isinstance(clamp, (bool, np.bool_)):
+        raise TypeError(f"clamp must be True or False; got {type(clamp).__name__}")
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress must be a function progress(done, total) or None; got {type(progress).__name__}")
+    big_w, big_h = width * samples, height * samples
+    if big_w * big_h > MAX_ITEMS:
+        raise ValueError(f"samples={samples} makes {big_w * big_h:,} rays for a {width}x{height} image, over the "
+                         f"budget {MAX_ITEMS:,}; use fewer samples or a smaller image")
+    o, d = camera.rays(big_w, big_h)
+    bounds = [_bounding_sphere(obj) for obj in scene.objects]
+    colour = np.empty((big_w * big_h, 3))
+    rows = -(-height // min(BANDS, height))
+    for top in range(0, height, rows):
+        bottom = min(height, top + rows)
+        a, b = top * samples * big_w, bottom * samples * big_w
+        with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+            t, which, normals = _nearest(scene.objects, bounds, o[a:b], d[a:b])
+        band = np.broadcast_to(scene.background, (b - a, 3)).copy()
+        for k, obj in enumerate(scene.objects):
+            sel = np.flatnonzero(which == k)
+            if len(sel) == 0:
+                continue
+            P = o[a:b][sel] + t[sel, None] * d[a:b][sel]
+            N = normals[sel]
+            N_f = np.where((_dot(d[a:b][sel], N) < 0)[:, None], N, -N)
+            band[sel] = lighting.intensity(P, N_f, camera.eye, scene.lights, obj.material, scene.ambient_light,
+                                           clamp=bool(clamp))
+        colour[a:b] = band
+        if progress is not None:
+            progress(bottom, height)
     image = lighting.to_image(colour.reshape(big_h, big_w, 3))
     if samples > 1:
         image = image.reshape(height, samples, width, samples, 3).mean(axis=(1, 3))

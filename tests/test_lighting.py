@@ -190,3 +190,51 @@ def test_blinn_term_refuses_bad_input_naming_it():
         lighting.blinn_specular([[0, 0, 0]], [[0, 0, 1]], [0, 0, 1], [0, 0, 1], 1.0, -1, 1.0)
     with pytest.raises((ValueError, TypeError), match="light_position"):
         lighting.blinn_specular([[0, 0, 0]], [[0, 0, 1]], [0, 0], [0, 0, 1], 1.0, 1, 1.0)
+
+
+# -- the clamp of L . N (§16.4), switched off to show what it prevents ------------------------------
+
+def test_unclamped_diffuse_goes_negative_behind_the_surface():
+    # the normal (0, 0, -1) turned away from a light at (0, 3, 3): L . N = -1/sqrt 2
+    N = [[0.0, 0.0, -1.0]]
+    assert lighting.diffuse(P0, N, [0, 3, 3], 0.5, 2.0)[0] == 0.0
+    assert lighting.diffuse(P0, N, [0, 3, 3], 0.5, 2.0, clamp=False)[0] == pytest.approx(-1.0 / np.sqrt(2))
+    # in front of the surface the switch changes nothing, bit for bit
+    pts = np.random.default_rng(1).normal(size=(200, 3))
+    normals = np.random.default_rng(2).normal(size=(200, 3))
+    safe = lighting.diffuse(pts, normals, [1.0, 2.0, 3.0], 0.7, 1.3)
+    unsafe = lighting.diffuse(pts, normals, [1.0, 2.0, 3.0], 0.7, 1.3, clamp=False)
+    front = unsafe > 0
+    assert np.array_equal(safe[front], unsafe[front]) and np.all(safe[~front] == 0) and np.all(unsafe[~front] <= 0)
+    assert np.array_equal(safe, lighting.diffuse(pts, normals, [1.0, 2.0, 3.0], 0.7, 1.3, clamp=True))
+
+
+def test_unclamped_specular_lets_a_light_behind_the_surface_make_a_highlight():
+    # N = (0, 0, 1); the light just below the surface's plane on one side, the eye above on the other:
+    # L . N < 0 but R = 2 (L . N) N - L has R . V > 0, worked by hand with numpy's dot products
+    light, eye = np.array([4.0, 0.0, -0.4]), np.array([-4.0, 0.0, 0.8])
+    L, V, N = light / np.linalg.norm(light), eye / np.linalg.norm(eye), np.array([0.0, 0.0, 1.0])
+    R = 2 * (L @ N) * N - L
+    assert L @ N < 0 and R @ V > 0
+    assert lighting.specular(P0, UP, light, eye, 0.8, 6, 1.0)[0] == 0.0
+    assert lighting.specular(P0, UP, light, eye, 0.8, 6, 1.0, clamp=False)[0] == pytest.approx(0.8 * (R @ V) ** 6)
+
+
+def test_intensity_clamp_switch_default_unchanged_and_validated():
+    m = Material(colour=(0.8, 0.3, 0.3), ambient=0.2, diffuse=0.7, specular=0.5, exponent=5)
+    rng = np.random.default_rng(7)
+    pts, normals = rng.normal(size=(300, 3)), rng.normal(size=(300, 3))
+    lights = [Light((3.0, 2.0, 5.0)), Light((-4.0, 1.0, -3.0), intensity=0.5)]
+    default = lighting.intensity(pts, normals, [0, 0, 6], lights, m, 1.0)
+    assert np.array_equal(default, lighting.intensity(pts, normals, [0, 0, 6], lights, m, 1.0, clamp=True))
+    unsafe = lighting.intensity(pts, normals, [0, 0, 6], lights, m, 1.0, clamp=False)
+    behind = np.zeros(len(pts), dtype=bool)
+    for light in lights:
+        behind |= np.einsum("ij,ij->i", np.asarray(light.position) - pts, normals) <= 0
+    assert np.array_equal(default[~behind], unsafe[~behind])     # only points with a light behind them change
+    assert np.any(unsafe[behind] < default[behind])               # the negative diffuse term subtracts
+    for bad in ("no", 1, None):
+        with pytest.raises(TypeError, match="clamp"):
+            lighting.intensity(P0, UP, [0, 0, 5], lights, m, clamp=bad)
+        with pytest.raises(TypeError, match="clamp"):
+            lighting.diffuse(P0, UP, [0, 0, 5], 1.0, 1.0, clamp=bad)

@@ -417,3 +417,102 @@ def test_a_hall_of_mirrors_is_refused_at_the_level_that_passes_the_budget():
     full = {}
     rt.render(scene, camera, 32, 24, depth=12, counts=full)         # the default budget holds all 13 levels
     assert full == {"rays": 13 * 768, "shadow": 13 * 768}
+
+
+# -- the safeguards, switched off to show what they prevent (§17.3, §17.5) ----------------------------
+
+def _with(scene, **kw):
+    return rt.Scene(scene.objects, scene.lights, scene.ambient_light, scene.background, scene.shadow_transmission, **kw)
+
+
+def _changed(a, b):
+    return np.any(np.abs(a - b) > 1e-3, axis=2)
+
+
+def test_the_default_safeguards_are_the_scene_as_before():
+    scene, camera = rt.default_scene(), rt.default_camera()
+    base = rt.render(scene, camera, 48, 36, 3)
+    explicit = _with(scene, shadow_offset=None, precision="float64", index_ratio="n1/n2")
+    assert np.array_equal(base, rt.render(explicit, camera, 48, 36, 3))
+    # float64 with no offset at all: a self-hit at t ~ 1e-16 hides under t > EPS, so no pixel changes
+    # (the secondary rays start 1e-7 elsewhere: the last bits move, nothing a display shows)
+    assert not _changed(base, rt.render(_with(scene, shadow_offset=0.0), camera, 48, 36, 3)).any()
+
+
+def test_shadow_acne_appears_in_single_precision_without_an_offset_and_an_offset_removes_it():
+    scene, camera = rt.default_scene(), rt.default_camera()
+    base = rt.render(scene, camera, 80, 60, 3)
+    acne = rt.render(_with(scene, shadow_offset=0.0, precision="float32"), camera, 80, 60, 3)
+    fixed = rt.render(_with(scene, shadow_offset=1e-4, precision="float32"), camera, 80, 60, 3)
+    changed = _changed(base, acne)
+    assert changed.mean() > 0.03                             # speckles over the spheres
+    assert np.all(acne[changed].sum(axis=1) < base[changed].sum(axis=1) + 1e-9) or \
+        np.mean(acne[changed].sum(axis=1) < base[changed].sum(axis=1)) > 0.8    # self-shadowed: darker
+    o, d = camera.rays(80, 60)
+    t_floor = scene.objects[0].intersect(o, d).reshape(60, 80)
+    t_spheres = np.min([obj.intersect(o, d) for obj in scene.objects[1:]], axis=0).reshape(60, 80)
+    on_spheres = np.isfinite(t_spheres) & (t_spheres < t_floor)
+    assert changed[on_spheres].mean() > 0.3 and changed[~on_spheres].mean() < changed[on_spheres].mean() / 5
+    assert _changed(base, fixed).mean() < 0.002               # the offset past the rounding error: gone
+
+
+def test_the_index_ratio_upside_down_bends_the_ray_away_from_the_normal():
+    glass = Material(colour=(1, 1, 1), ambient=0, diffuse=0, specular=0, transmit=1.0, index=1.5)
+    scene = rt.Scene([Sphere((0, 0, 0), 1.0, glass)], [])
+    o, d = np.array([[-5.0, 0.3, 0.0]]), np.array([[1.0, 0.0, 0.0]])
+    sin1 = 0.3                                                # the hit point is the unit normal: sin = its y
+    for ratio, sin2 in (("n1/n2", sin1 / 1.5), ("n2/n1", sin1 * 1.5)):
+        record = []
+        rt.trace(_with(scene, index_ratio=ratio), o, d, depth=1, record=record)
+        inside = next(s for s in record if s.kind == "refracted")
+        T = (inside.end - inside.start) / np.linalg.norm(inside.end - inside.start)
+        N = -inside.start / np.linalg.norm(inside.start)      # the inward normal at the entry point
+        assert np.linalg.norm(np.cross(T, N)) == pytest.approx(sin2, abs=1e-6)
+
+
+def test_safeguard_switches_are_validated():
+    s = rt.default_scene()
+    for kw, err in ((dict(shadow_offset=-1.0), ValueError), (dict(shadow_offset=2.0), ValueError),
+                    (dict(shadow_offset="small"), (TypeError, ValueError)), (dict(precision="float16"), ValueError),
+                    (dict(index_ratio="n2:n1"), ValueError), (dict(index_ratio=1.5), ValueError)):
+        with pytest.raises(err):
+            _with(s, **kw)
+
+
+# -- ray casting, the pictures of chapter 16 ------------------------------------------------------------
+
+def test_ray_cast_is_local_light_at_the_nearest_hit():
+    m = Material(colour=(1.0, 0.5, 0.25), ambient=0.2, diffuse=0.6, specular=0.3, exponent=10)
+    scene = rt.Scene([Sphere((0, 0, 0), 1.0, m)], [Light((0, -5, 5))], ambient_light=0.5, background=(0, 0, 1))
+    camera = rt.Camera((0, -5, 0), (0, 0, 0), up=(0, 0, 1), fov=40)
+    img = rt.ray_cast(scene, camera, 9, 7)
+    # the centre pixel's ray hits (0, -1, 0), N = (0, -1, 0): L = (0, -4, 5)/sqrt 41, L.N = 4/sqrt 41,
+    # R = (0, -4, -5)/sqrt 41 ... R.V = 4/sqrt 41 with V = (0, -1, 0)
+    c = 4 / math.sqrt(41)
+    expected = np.clip(0.5 * 0.2 * np.array([1.0, 0.5, 0.25]) + 0.6 * c * np.array([1.0, 0.5, 0.25]) + 0.3 * c ** 10,
+                       0, 1)
+    assert img[3, 4] == pytest.approx(expected, abs=1e-12)
+    assert img[0, 0].tolist() == [0.0, 0.0, 1.0]
+    calls = []
+    assert np.array_equal(img, rt.ray_cast(scene, camera, 9, 7, progress=lambda k, n: calls.append((k, n))))
+    assert calls[-1] == (7, 7)
+    fine = rt.ray_cast(scene, camera, 18, 14)
+    assert rt.ray_cast(scene, camera, 9, 7, samples=2) == pytest.approx(fine.reshape(7, 2, 9, 2, 3).mean(axis=(1, 3)))
+    with pytest.raises(TypeError, match="clamp"):
+        rt.ray_cast(scene, camera, 9, 7, clamp="yes")
+    with pytest.raises(TypeError, match="progress"):
+        rt.ray_cast(scene, camera, 9, 7, progress=3)
+
+
+def test_ray_cast_unclamped_changes_only_what_the_light_is_behind():
+    m = Material(colour=(0.8, 0.3, 0.35), ambient=0.15, diffuse=0.7, specular=0.5, exponent=5)
+    scene = rt.Scene([Sphere((0, 0, 0), 1.0, m)], [Light((4, 1, -3))], ambient_light=1.0)
+    camera = rt.Camera((0, 0, 6), (0, 0, 0), up=(0, 1, 0), fov=24)
+    safe, unsafe = rt.ray_cast(scene, camera, 60, 60), rt.ray_cast(scene, camera, 60, 60, clamp=False)
+    delta = unsafe.sum(axis=2) - safe.sum(axis=2)
+    assert (delta < -1e-3).sum() > 1000 and (delta > 1e-3).sum() > 10     # a dark side and a leaked highlight
+    o, d = camera.rays(60, 60)
+    t = scene.objects[0].intersect(o, d)
+    P = o + np.where(np.isfinite(t), t, 0)[:, None] * d
+    behind = (np.isfinite(t) & (np.einsum("ij,ij->i", np.array([4.0, 1.0, -3.0]) - P, P) <= 0)).reshape(60, 60)
+    assert not _changed(safe, unsafe)[~behind].any()

@@ -123,3 +123,38 @@ def test_image_sizes_are_bounded():
         ci.sphere_pixels(10_000)
     with pytest.raises(ValueError, match="size"):
         ci.shaded_sphere_view(size=4)
+
+
+def test_the_full_size_render_is_the_view_ray_cast():
+    from goldman_lib import ray_tracing as rt
+    from goldman_lib.lighting import Light
+    from goldman_lib.simple_surfaces import Sphere
+
+    view = ci.shaded_sphere_view(size=32)
+    values = view.values()
+    calls = []
+    img = view.render_full(lambda k, n: calls.append((k, n)), size=(40, 30), samples=1, **values)
+    assert img.shape == (30, 40, 3) and calls[-1] == (30, 30)
+    m = Material(colour=RED, ambient=values["ka"], diffuse=values["kd"], specular=values["ks"], exponent=values["n"])
+    scene = rt.Scene([Sphere((0, 0, 0), 1.0, m)], [Light((3.0, 2.0, 5.0))], ambient_light=values["Ia"],
+                     background=ci.BACKGROUND)
+    assert img == pytest.approx(rt.ray_cast(scene, ci.camera(), 40, 30), abs=1e-12)
+    # the camera sees the window of the small picture: the sphere's top at the same height
+    column = img[:, 20].sum(axis=1)
+    assert abs(np.flatnonzero(np.abs(column - ci.BACKGROUND.sum()) > 1e-6)[0] - 30 * (1 - 1 / 1.25) / 2) <= 2
+    values["ka"] = 0.9
+    assert not np.array_equal(img, view.render_full(None, size=(40, 30), samples=1, **values))
+
+
+def test_the_clamp_check_box_shows_the_unclamped_lambert_term():
+    view = ci.shaded_sphere_view(size=48)
+    safe = view.set_values(light0_x=4.0, light0_y=1.0, light0_z=-3.0)
+    assert view.controls["clamp"].value is True and "not clamped" not in safe["status"]
+    unsafe = view.set_values(clamp=False)
+    found, points, normals = ci.sphere_pixels(48)
+    lit = lighting.diffuse(points, normals, [4.0, 1.0, -3.0], 1.0, 1.0, clamp=False) > 0
+    assert np.array_equal(safe["intensity"][lit], unsafe["intensity"][lit])       # the lit side: bit for bit
+    # behind the light: mostly darker (the negative term), a few brighter (the leaked highlight, exponent 30)
+    assert np.mean(unsafe["intensity"][~lit].sum(axis=1) < safe["intensity"][~lit].sum(axis=1)) > 0.9
+    assert np.any(unsafe["intensity"][~lit] < 0) and "not clamped" in unsafe["status"]
+    assert np.array_equal(view.set_values(clamp=True)["image"], safe["image"])

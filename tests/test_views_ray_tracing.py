@@ -131,3 +131,42 @@ def test_the_legend_is_in_the_static_picture():
     _, ax_side = view.axes
     labels = [t.get_text() for t in ax_side.get_legend().get_texts()]
     assert {"primary ray", "reflected ray", "refracted ray", "shadow ray", "blocked shadow ray"} <= set(labels)
+
+
+def test_the_full_size_render_is_the_library_render_at_full_depth():
+    view = rv.ray_tracing_view()
+    values = view.values()
+    calls = []
+    img = view.render_full(lambda k, n: calls.append((k, n)), size=(32, 24), samples=2, **values)
+    light = view.light_control.lights({k: v for k, v in values.items() if k.startswith("light")})
+    scene = rt.default_scene(index=values["index"], lights=light)
+    assert np.array_equal(img, rt.render(scene, rt.default_camera(), 32, 24, rv.FULL_DEPTH, samples=2))
+    assert calls[-1] == (24, 24) and rv.FULL_DEPTH == 5 and rv.FULL_SIZE == (640, 480)
+    values["depth"] = 0           # the small picture's depth: the full one stays at FULL_DEPTH
+    assert np.array_equal(img, view.render_full(None, size=(32, 24), samples=2, **values))
+    values["index"] = 1.0         # the first slider changes the full picture
+    assert not np.array_equal(img, view.render_full(None, size=(32, 24), samples=2, **values))
+
+
+def test_the_off_menu_takes_a_safeguard_away_and_puts_it_back():
+    view = rv.ray_tracing_view()
+    base = view.set_values(depth=3)
+    assert view.controls["unsafe"].value == "none" and "Safeguard off" not in base["status"]
+    scene = rt.default_scene()
+    o, d = rt.default_camera().rays(rv.WIDTH, rv.HEIGHT)
+    on_glass = np.isfinite(scene.objects[1].intersect(o, d)).reshape(rv.HEIGHT, rv.WIDTH)
+    on_spheres = np.isfinite(np.min([obj.intersect(o, d) for obj in scene.objects[1:]], axis=0)).reshape(
+        rv.HEIGHT, rv.WIDTH)
+    acne = view.set_values(unsafe="acne")
+    changed = np.any(np.abs(acne["image"] - base["image"]) > 1e-3, axis=2)
+    assert changed.mean() > 0.03 and changed[on_spheres].mean() > 0.3 and "shadow acne" in acne["status"]
+    ratio = view.set_values(unsafe="ratio")
+    changed = np.any(np.abs(ratio["image"] - base["image"]) > 1e-3, axis=2)
+    assert changed[on_glass].mean() > 0.9 and changed[~on_glass].mean() < 0.05 and "away from the normal" in ratio["status"]
+    assert np.array_equal(view.set_values(unsafe="none")["image"], base["image"])
+    # the full-size render shows what the menu chose
+    values = view.values()
+    values["unsafe"] = "ratio"
+    assert np.array_equal(view.render_full(None, size=(32, 24), samples=1, **values),
+                          rt.render(rt.Scene(scene.objects, scene.lights, scene.ambient_light, scene.background,
+                                             index_ratio="n2/n1"), rt.default_camera(), 32, 24, rv.FULL_DEPTH))

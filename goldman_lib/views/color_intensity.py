@@ -32,7 +32,7 @@ from goldman_lib.views.interactive import InteractiveView, figure_widget, float_
 from goldman_lib.views.light_control import LightControl
 
 __all__ = ["shaded_sphere_view", "terms_view", "rgb_mixing_view", "EYE", "WINDOW", "SPHERE", "BACKGROUND",
-           "sphere_pixels", "wall_pixels"]
+           "sphere_pixels", "wall_pixels", "camera", "FULL_SIZE", "FULL_SAMPLES"]
 
 #: Where the camera is: on the z-axis, looking down at the unit sphere at the origin.
 EYE = np.array([0.0, 0.0, 6.0])
@@ -44,6 +44,18 @@ SPHERE = Sphere([0.0, 0.0, 0.0], 1.0)
 BACKGROUND = np.array([0.13, 0.13, 0.16])
 #: Largest image side (pixels) a view may be asked for.
 MAX_SIZE = 400
+#: The full-size picture a render button makes (width, height) and its anti-aliasing (samples x samples rays).
+FULL_SIZE = (640, 480)
+FULL_SAMPLES = 2
+
+
+def camera():
+    """The views' camera as a :class:`goldman_lib.ray_tracing.Camera`: at :data:`EYE`, looking at the
+    sphere's centre, y up, its vertical field of view the window ``[-WINDOW, WINDOW]`` of the plane
+    z = 0 (what :func:`sphere_pixels` sees, rendered by :func:`goldman_lib.ray_tracing.ray_cast`)."""
+    from goldman_lib import ray_tracing as rt
+
+    return rt.Camera(EYE, (0.0, 0.0, 0.0), up=(0.0, 1.0, 0.0), fov=float(np.degrees(2 * np.arctan2(WINDOW, EYE[2]))))
 
 
 def _size(size, name="size") -> int:
@@ -128,17 +140,26 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
     §16.3-16.6): every pixel of the ``size`` x ``size`` picture is a ray from the eye, its point and
     normal from :meth:`Sphere.hit`.  Sliders for the material (``k_a``, ``k_d``, ``k_s``, the
     exponent ``n``, the colour) and the ambient light ``I_a``; the light-position control (x, y, z,
-    intensity, colour).  Beside the picture a side view of the xz-plane shows the sphere, the eye and
+    intensity, colour) and a check box "clamp L·N at 0" (on: the lighting model of §16.4; off: the
+    slip it prevents, a light behind the surface subtracting light and leaking a highlight there).
+    Beside the picture a side view of the xz-plane shows the sphere, the eye and
     the light, which can be dragged there with the mouse; the brightest pixel (the highlight) is
     marked in both.
 
     ``update(**values)`` returns ``{"image" (size, size, 3), "intensity" (m, 3) unclipped,
     "highlight" (3,), "light" (3,), "clipped" (fraction of sphere pixels over 1), "status"}``.
+
+    ``view.render_full(progress, size=FULL_SIZE, samples=FULL_SAMPLES, clamp=True, **values)`` is the
+    full-size picture of the view's state (the function a
+    :class:`goldman_lib.views.render_control.RenderControl` calls): the same sphere, material and
+    light ray cast by :func:`goldman_lib.ray_tracing.ray_cast` at 640 x 480, 2 x 2 anti-aliased.
     """
     size = _size(size)
     found, points, normals = sphere_pixels(size)
     light = LightControl([Light((3.0, 2.0, 5.0))], box=(-6.0, 6.0))
-    controls = {**_material_controls(ka, kd, ks, exponent, colour, ambient_light), **light.controls}
+    controls = {**_material_controls(ka, kd, ks, exponent, colour, ambient_light),
+                "clamp": widgets.Checkbox(value=True, description="clamp L·N at 0 (§16.4)", indent=False),
+                **light.controls}
     fig = style.new_figure(style.WIDE_FIGSIZE)
     ax_img = fig.add_subplot(1, 2, 1)
     ax_side = fig.add_subplot(1, 2, 2)
@@ -164,10 +185,10 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
     ax_side.set_title("side view (the xz-plane)", fontsize=10)
     fig.tight_layout()
 
-    def update(ka, kd, ks, n, colour, Ia, **light_values):
+    def update(ka, kd, ks, n, colour, Ia, clamp=True, **light_values):
         material = Material(colour=_rgb(colour, "colour"), ambient=ka, diffuse=kd, specular=ks, exponent=n)
         lights = light.lights(light_values)
-        values = lighting.intensity(points, normals, EYE, lights, material, ambient_light=Ia)
+        values = lighting.intensity(points, normals, EYE, lights, material, ambient_light=Ia, clamp=bool(clamp))
         image = _picture(found, values)
         im.set_data(image)
         brightness = values.sum(axis=1)
@@ -185,10 +206,15 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
                   f"{100 * clipped:.1f}% of the sphere's pixels are over 1 in some channel and are clipped")
         if inside:
             status = "the light is inside the sphere: no outside point sees it, only the ambient term is left; " + status
+        if not clamp:
+            facing_away = float(np.mean(lighting.diffuse(points, normals, L, 1.0, 1.0, clamp=False) < 0))
+            status = (f"L·N is not clamped: on the {100 * facing_away:.0f}% of the sphere's pixels the light is behind, "
+                      f"the diffuse term is negative and subtracts light, and a highlight can leak there (§16.4); "
+                      + status)
         return {"image": image, "intensity": values, "highlight": hp, "light": L, "clipped": clipped,
                 "status": status}
 
-    material_box = widgets.VBox([controls[k] for k in ("ka", "kd", "ks", "n", "colour", "Ia")])
+    material_box = widgets.VBox([controls[k] for k in ("ka", "kd", "ks", "n", "colour", "Ia", "clamp")])
     light_box = widgets.VBox(list(light.controls.values()))
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="§16.3-16.6 a sphere lit pixel by pixel",
@@ -196,6 +222,17 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
     light.drag_in(view, ax_side, plane="xz")
     view.light_control = light
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+
+    def render_full(progress=None, size=FULL_SIZE, samples=FULL_SAMPLES, clamp=True, *, ka, kd, ks, n, colour, Ia,
+                    **light_values):
+        from goldman_lib import ray_tracing as rt
+
+        material = Material(colour=_rgb(colour, "colour"), ambient=ka, diffuse=kd, specular=ks, exponent=n)
+        scene = rt.Scene([Sphere(SPHERE.center, SPHERE.radius, material)], light.lights(light_values),
+                         ambient_light=Ia, background=BACKGROUND)
+        return rt.ray_cast(scene, camera(), size[0], size[1], samples=samples, clamp=clamp, progress=progress)
+
+    view.render_full = render_full
     return view
 
 

@@ -36,13 +36,24 @@ from goldman_lib import ray_tracing as rt
 from goldman_lib.simple_surfaces import Sphere
 from goldman_lib.validation import as_float, as_int
 from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
 from goldman_lib.views.light_control import LightControl
 
-__all__ = ["ray_tracing_view", "image_strip", "ray_plane", "project", "draw_tree", "WIDTH", "HEIGHT", "KIND_COLOURS", "KINDS"]
+__all__ = ["ray_tracing_view", "image_strip", "ray_plane", "project", "draw_tree", "WIDTH", "HEIGHT", "KIND_COLOURS", "KINDS",
+           "FULL_SIZE", "FULL_SAMPLES", "FULL_DEPTH", "SAFEGUARDS_OFF"]
 
 #: The default image size of the view (a full re-render per slider move stays under 100 ms).
 WIDTH, HEIGHT = 160, 120
+#: The full-size picture a render button makes: (width, height), samples x samples rays per pixel, recursion depth.
+FULL_SIZE, FULL_SAMPLES, FULL_DEPTH = (640, 480), 2, 5
+#: The safeguards the view's "off" menu takes away: (label, the Scene keywords, what it shows).
+SAFEGUARDS_OFF = {
+    "none": ("none", {}, ""),
+    "acne": ("shadow offset, float32 (§17.3)", {"shadow_offset": 0.0, "precision": "float32"},
+             "hit points in single precision and no shadow offset: shadow acne, the points that shadow themselves"),
+    "ratio": ("Snell's n1/n2 (§17.5)", {"index_ratio": "n2/n1"},
+              "Snell's ratio upside down: rays entering the glass bend away from the normal"),
+}
 #: How each kind of ray is drawn in the side view.
 KIND_COLOURS = {"primary": "#1f4e9c", "reflected": "#1b7f3b", "refracted": "#8f2d56", "shadow": "#edae49"}
 #: The kinds of rays, in the order of the codes in an update's ``"kinds"``.
@@ -187,14 +198,22 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
     """Recursive ray tracing (Goldman §17.2-17.5): the image of the chapter's scene (left) at
     recursion depth ``depth`` with the glass sphere's index of refraction ``index``, and the ray tree
     of pixel ``(px, py)`` (column from the left, row from the top) in the plane of its rays (right),
-    where the light can be dragged.
+    where the light can be dragged.  The menu "off" (control ``unsafe``) takes one safeguard of the tracer away to show
+    what it prevents (:data:`SAFEGUARDS_OFF`: the shadow offset in single precision, §17.3 shadow acne;
+    Snell's ratio upside down, §17.5).
 
-    ``update(depth, index, px, py, light0_x, light0_y, light0_z, light0_I, light0_colour)`` returns
+    ``update(depth, index, px, py, unsafe, light0_x, light0_y, light0_z, light0_I, light0_colour)`` returns
     ``{"image" (120, 160, 3), "segments" (n, 2, 2) the rays' ends in the drawing's plane, "kinds" (n,)
     codes into :data:`KINDS`, "blocked" (n,) booleans, "pixel" (3,), "rays", "plane" (3, 3) rows origin, U, V,
     "cut" (k,) whether the plane cuts each sphere, "discs" (k, 3) the cuts (a, b, radius; zeros if
     none), "pieces" (the drawn parts of the rays, (m, 2) each), "piece_rays" (the ray of each piece),
     "off_plane" (n,), "status"}`` (see :func:`draw_tree`).
+
+    ``view.render_full(progress, size=FULL_SIZE, samples=FULL_SAMPLES, full_depth=FULL_DEPTH, **values)``
+    is the full-size picture of the view's scene (its glass index and light; the depth slider and the
+    pixel are the small picture's): :func:`goldman_lib.ray_tracing.render` at 640 x 480, 2 x 2
+    anti-aliased, depth 5, the function a :class:`goldman_lib.views.render_control.RenderControl`
+    calls.  The glass index is the view's first slider (the render button's browser test moves it).
 
     >>> r = ray_tracing_view().set_values(depth=2, index=1.0)     # index 1: the glass bends nothing
     >>> "critical angle none" in r["status"]
@@ -215,6 +234,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         "index": float_slider("index", index, 1.0, 2.5, 0.05),
         "px": int_slider("pixel x", px, 0, WIDTH - 1),
         "py": int_slider("pixel y", py, 0, HEIGHT - 1),
+        "unsafe": dropdown("off", [(label, key) for key, (label, _, _) in SAFEGUARDS_OFF.items()], "none"),
         **control.controls,
     }
     camera = rt.default_camera()
@@ -271,12 +291,19 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
 
     images: OrderedDict = OrderedDict()
 
-    def picture(depth, index, lights):
-        key = (depth, index, tuple((lt.position, lt.colour, lt.intensity) for lt in lights))
+    def the_scene(index, lights, unsafe):
+        scene = rt.default_scene(index=index, lights=lights)
+        if unsafe == "none":
+            return scene
+        return rt.Scene(scene.objects, scene.lights, scene.ambient_light, scene.background, scene.shadow_transmission,
+                        **SAFEGUARDS_OFF[unsafe][1])
+
+    def picture(depth, index, lights, unsafe="none"):
+        key = (depth, index, tuple((lt.position, lt.colour, lt.intensity) for lt in lights), unsafe)
         if key in images:
             images.move_to_end(key)
             return images[key]
-        scene = rt.default_scene(index=index, lights=lights)
+        scene = the_scene(index, lights, unsafe)
         counts: dict = {}
         img = rt.render(scene, camera, WIDTH, HEIGHT, depth, counts=counts)
         images[key] = (scene, img, counts)
@@ -284,9 +311,9 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
             images.popitem(last=False)
         return images[key]
 
-    def update(depth, index, px, py, **light_values):
+    def update(depth, index, px, py, unsafe="none", **light_values):
         lights = control.lights(light_values)
-        scene, img, counts = picture(depth, index, lights)
+        scene, img, counts = picture(depth, index, lights, unsafe)
         tree = rt.ray_tree(scene, camera, px, py, depth, WIDTH, HEIGHT, miss_length=4.0)
         lamp = control.marker_positions(light_values)[0]
         if frame.get("hold") and "plane" in frame:
@@ -340,6 +367,8 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
                   f"{rt.ray_tree_size(depth, len(lights))} at this depth; {off} leave the drawing's plane (drawn projected).  "
                   f"Glass index {index:.2f}: critical angle "
                   + (f"{crit:.1f}° (inside the glass)" if crit is not None else "none (no total internal reflection)"))
+        if unsafe != "none":
+            status = f"Safeguard off: {SAFEGUARDS_OFF[unsafe][2]}.  " + status
         pixel = np.asarray(img[py, px], dtype=float)
         codes = np.array([KINDS.index(k) for k in kinds], dtype=int)
         return {"image": img, "segments": seg, "kinds": codes, "blocked": blocked, "pixel": pixel,
@@ -351,8 +380,8 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
 
     view = InteractiveView(controls=controls, views=[figure_widget(fig), legend], update=update, figure=fig,
                            title="§17.2-17.5 recursive ray tracing: the image and one pixel's ray tree",
-                           arrange=[widgets.HBox([widgets.VBox([controls["depth"], controls["index"],
-                                                                controls["px"], controls["py"]]),
+                           arrange=[widgets.HBox([widgets.VBox([controls["index"], controls["depth"],
+                                                                controls["px"], controls["py"], controls["unsafe"]]),
                                                   widgets.VBox(list(control.controls.values()))])])
 
     # drag the light in the plane of the drawing (it keeps its distance from that plane)
@@ -385,4 +414,12 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
     view.click_cid = fig.canvas.mpl_connect("button_press_event", on_click)
     view.light_control = control
     view.axes = (ax_img, ax_side)
+
+    def render_full(progress=None, size=FULL_SIZE, samples=FULL_SAMPLES, full_depth=FULL_DEPTH, *, index, depth=None,
+                    px=None, py=None, unsafe="none", **light_values):
+        # depth, px, py: the small picture's recursion depth and chosen pixel; the full picture is full_depth deep
+        scene = the_scene(index, control.lights(light_values), unsafe)
+        return rt.render(scene, camera, size[0], size[1], full_depth, samples=samples, progress=progress)
+
+    view.render_full = render_full
     return view
