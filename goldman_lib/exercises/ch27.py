@@ -112,6 +112,20 @@ def _near(a, b, tol) -> bool:
     return a.shape == b.shape and bool(np.all(np.abs(a - b) <= tol))
 
 
+def _terminating(x, places: int = 4) -> bool:
+    """Whether every entry of x is a decimal of at most ``places`` places (a learner can type it
+    exactly: the checker's tolerance 1e-6 does not forgive a rounded third)."""
+    scaled = np.asarray(x, dtype=float) * 10 ** places
+    return bool(np.all(np.abs(scaled - np.round(scaled)) < 1e-6))
+
+
+def _hand_exact(answer):
+    """The ``well_posed`` rule of the exercises checked to 1e-6: an answer of short decimals."""
+    def ok(p):
+        return None if _terminating(answer(p)) else "the answer is not a short decimal (a hand answer would be rounded)"
+    return ok
+
+
 def _quadratic_knots(rng) -> tuple:
     """Clamped quadratic knots 0, 0, 0, a, b, c, c, c with whole a < b < c (the middle span [a, b) at least 2 long)."""
     a = int(rng.integers(1, 3))
@@ -183,7 +197,7 @@ def _de_boor_steps(p) -> str:
 
 @DECK.exercise(stored=_STORED_DE_BOOR, generate=_de_boor_generate, answer=lambda p: _de_boor_answers(p)[0],
                slips=lambda p: _de_boor_answers(p)[1], statement=_de_boor_statement, steps=_de_boor_steps,
-               same=within(1e-6))
+               same=within(1e-6), well_posed=_hand_exact(lambda p: _de_boor_answers(p)[0]))
 def check_local_de_boor(answer, p) -> Result:
     """Check C(u) of the statement's quadratic B-spline by local de Boor (Goldman §27.2); recognises a
     point of level 1, de Casteljau's weights over the span, and the pyramid of a neighbouring span.
@@ -450,7 +464,8 @@ def _spline_steps(p) -> str:
 
 @DECK.exercise(stored=_STORED_SPLINE, generate=_spline_generate, answer=lambda p: _spline(p)[0],
                slips=lambda p: dict(zip(("values of the spline", "first piece beyond its span"), _spline_forms(p))),
-               statement=_spline_statement, steps=_spline_steps, same=within(1e-6))
+               statement=_spline_statement, steps=_spline_steps, same=within(1e-6),
+               well_posed=_hand_exact(lambda p: _spline(p)[0]))
 def check_spline_control_points(answer, p) -> Result:
     """Check the B-spline control points of the statement's piecewise quadratic (Goldman §27.6); recognises
     values of the spline in place of blossoms and the first piece's blossom used beyond its span.
@@ -542,7 +557,7 @@ def _surface_steps(p) -> str:
 
 @DECK.exercise(stored=_STORED_SURFACE, generate=_surface_generate, answer=lambda p: _surface_answers(p)[0],
                slips=lambda p: _surface_answers(p)[1], statement=_surface_statement, steps=_surface_steps,
-               same=within(1e-6))
+               same=within(1e-6), well_posed=_hand_exact(lambda p: _surface_answers(p)[0]))
 def check_surface_point(answer, p) -> Result:
     """Check S(u, v) of the statement's degree (1, 2) surface (Goldman §27.8); recognises the knot vectors
     swapped between the directions and the v-curve of one row alone.

@@ -83,6 +83,16 @@ def _same_points(a, b) -> bool:
     return _near(a, b)
 
 
+def _terminating(x, places: int = 4) -> bool:
+    """Whether every entry of x is a decimal of at most ``places`` places (a learner can type it
+    exactly: the checkers' tolerance 1e-6 does not forgive a rounded third)."""
+    scaled = np.asarray(x, dtype=float) * 10 ** places
+    return bool(np.all(np.abs(scaled - np.round(scaled)) < 1e-6))
+
+
+_NOT_EXACT = "the answer is not a short decimal (a hand answer would be rounded)"
+
+
 def _quad_generate(rng) -> tuple:
     """Four whole control points and clamped knots 0, 0, 0, a, c, c, c (a, c - a in 1..2)."""
     a = float(rng.integers(1, 3))
@@ -172,7 +182,7 @@ def _boehm_generate(rng) -> dict:
 def _boehm_ok(p):
     if p["u"] in p["knots"]:
         return "u is already a knot"
-    return None
+    return None if _terminating(_boehm_answers(p)[0]) else _NOT_EXACT
 
 
 def _boehm_statement(p) -> str:
@@ -260,8 +270,15 @@ def _oslo_answers(p):
 
 
 def _oslo_generate(rng) -> dict:
-    ctrl, t = _quad_generate(rng)
-    return {"ctrl": ctrl, "knots": t, "new": (_half_in(rng, 0, t[3]), _half_in(rng, t[3], t[-1]))}
+    """New control points and two new knots, one in each span, on the stored knots (the notebook's
+    hint names their labels b(0, 0), b(0, 1), b(1, 2), b(2, 2))."""
+    ctrl, _ = _quad_generate(rng)
+    return {"ctrl": ctrl, "knots": _tup(QUAD_KNOTS),
+            "new": (float(rng.integers(1, 4)) / 4, 1 + float(rng.integers(1, 4)) / 4)}
+
+
+def _oslo_ok(p):
+    return None if _terminating(_oslo_answers(p)[0]) else _NOT_EXACT
 
 
 def _oslo_statement(p) -> str:
@@ -284,7 +301,7 @@ def _oslo_steps(p) -> str:
 
 @DECK.exercise(stored=_STORED_OSLO, generate=_oslo_generate, answer=lambda p: _oslo_answers(p)[0],
                slips=lambda p: _oslo_answers(p)[1], statement=_oslo_statement, steps=_oslo_steps,
-               same=_same_points)
+               same=_same_points, well_posed=_oslo_ok)
 def check_oslo(answer, p) -> Result:
     """Check the six control points over the statement's refined knot vector (Goldman §28.3.2);
     recognises one knot inserted alone and the midpoints of the old legs.
@@ -355,7 +372,7 @@ def _bezier_steps(p) -> str:
 
 @DECK.exercise(stored=_STORED_BEZIER, generate=_bezier_generate, answer=lambda p: _bezier_answers(p)[0],
                slips=lambda p: _bezier_answers(p)[1], statement=_bezier_statement, steps=_bezier_steps,
-               same=_same_points)
+               same=_same_points, well_posed=lambda p: None if _terminating(_bezier_answers(p)[0]) else _NOT_EXACT)
 def check_bezier_pieces(answer, p) -> Result:
     """Check the two Bezier polygons of the statement's quadratic (Goldman §28.3.3); recognises the knot
     not inserted (the pieces do not meet) and a junction that is not the curve point.
@@ -412,7 +429,7 @@ def _chaikin_ok(p):
     closed = ki.lane_riesenfeld(P, 2, 1, closed=True)
     if all(np.any(np.linalg.norm(closed - g, axis=1) < 1e-6) for g in np.repeat(P, 2, axis=0)):
         return "the doubled polygon's points are the closed polygon's"
-    return None
+    return None if _terminating(_chaikin_answers(p)[0]) else _NOT_EXACT
 
 
 def _chaikin_statement(p) -> str:
@@ -490,7 +507,7 @@ def _schaefer_ok(p):
     t = p["knots"]
     if t[3] == t[-1] - t[3]:
         return "uniform knots: Schaefer's weights are Lane-Riesenfeld's"
-    return None
+    return None if _terminating(_schaefer_answers(p)[0]) else _NOT_EXACT
 
 
 def _schaefer_statement(p) -> str:

@@ -347,7 +347,8 @@ def _normal_answers(p):
 
 
 def _normal_generate(rng) -> dict:
-    return {"n": int(rng.integers(3, 6)), "t": float(rng.choice(_PARAMS))}
+    """The notebook's exercise is the normal quartic: the parameter deals, the degree stays 4."""
+    return {"n": NORMAL_DEGREE, "t": float(rng.choice(_PARAMS))}
 
 
 def _coords(n) -> str:

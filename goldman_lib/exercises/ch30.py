@@ -241,7 +241,8 @@ def _prism_answers(p):
 
 
 def _prism_generate(rng) -> dict:
-    return {"n": int(rng.choice([3, 5, 6, 7, 8])), "levels": int(rng.integers(2, 4))}
+    """The notebook's exercise counts two levels: the prism's polygon deals, the levels stay."""
+    return {"n": int(rng.choice([3, 5, 6, 7, 8])), "levels": PRISM_LEVELS}
 
 
 def _prism_statement(p) -> str:
@@ -418,8 +419,8 @@ def _star_answer(p) -> float:
 
 
 def _star_generate(rng) -> dict:
-    return {"n": int(rng.choice([3, 5, 6])), "heights": tuple(float(z) for z in rng.choice(np.arange(0, 10), 3,
-                                                                                          replace=False))}
+    """The notebook's exercise is the vertex of valence 5: the heights deal, the valence stays."""
+    return {"n": STAR_VALENCE, "heights": tuple(float(z) for z in rng.choice(np.arange(0, 10), 3, replace=False))}
 
 
 def _star_statement(p) -> str:
