@@ -457,7 +457,8 @@ def _spline_steps(p) -> str:
                      for i, ((lo, hi), v) in enumerate(zip(labels, ctrl)))
     return (f"1. The blossom of a + b u + c u^2 is a + b (u1 + u2)/2 + c u1 u2: b_1 for {_poly(c0)}, b_2 for "
             f"{_poly(c1)}.\n"
-            f"2. The knots {_knots(knots)}: the labels of the control points are consecutive pairs of the inner knots.\n"
+            f"2. The knots {_knots(knots)}: the labels of the control points are consecutive pairs of the "
+            f"inner knots.\n"
             f"3. Each label lies in one piece's span (the label ({fmt(labels[2][0])}, {fmt(labels[2][1])}) in both: "
             f"the spline is C^1 there): {rows}.")
 

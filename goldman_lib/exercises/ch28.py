@@ -364,10 +364,12 @@ def _bezier_steps(p) -> str:
     pieces, _ = ki.to_piecewise_bezier(P, t, QUAD_DEGREE)
     return (f"1. The control points are the blossoms b(0, 0), b(0, {fmt(a)}), b({fmt(a)}, {fmt(c)}), "
             f"b({fmt(c)}, {fmt(c)}).\n"
-            f"2. Insert the knot {fmt(a)} once more (multiplicity p = 2): the new point b({fmt(a)}, {fmt(a)}) = C({fmt(a)}) "
+            f"2. Insert the knot {fmt(a)} once more (multiplicity p = 2): the new point "
+            f"b({fmt(a)}, {fmt(a)}) = C({fmt(a)}) "
             f"lies on the leg P_1 P_2, {fmt(a)}/{fmt(c)} of the way along: {_f(pieces[0][-1])}.\n"
             f"3. The pieces: over [0, {fmt(a)}] b(0, 0), b(0, {fmt(a)}), b({fmt(a)}, {fmt(a)}) = {_f(pieces[0])}; over "
-            f"[{fmt(a)}, {fmt(c)}] b({fmt(a)}, {fmt(a)}), b({fmt(a)}, {fmt(c)}), b({fmt(c)}, {fmt(c)}) = {_f(pieces[1])}.")
+            f"[{fmt(a)}, {fmt(c)}] b({fmt(a)}, {fmt(a)}), b({fmt(a)}, {fmt(c)}), b({fmt(c)}, {fmt(c)}) = "
+            f"{_f(pieces[1])}.")
 
 
 @DECK.exercise(stored=_STORED_BEZIER, generate=_bezier_generate, answer=lambda p: _bezier_answers(p)[0],

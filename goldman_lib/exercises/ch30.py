@@ -202,9 +202,10 @@ def check_box_spline_mask(answer, p) -> Result:
                      f"{K}); yours total half of that: one factor of 1/2 too many.")
     total = got.sum()
     if abs(total - 4 * K) > 1e-6:
+        yours = ("total " + fmt(total) if abs(total - 4 * K) >= 0.5
+                 else "miss that total by a little (an entry rounded?)")
         return wrong(f"the entries of the mask times {K} should total {4 * K} (four kinds of new points, each an "
-                     f"affine combination); yours "
-                     f"{'total ' + fmt(total) if abs(total - 4 * K) >= 0.5 else 'miss that total by a little (an entry rounded?)'}"
+                     f"affine combination); yours {yours}"
                      f". Multiply (1 + x)^{r} (1 + y)^{s} by (1 + xy)" + (f"^{t}" if t > 1 else "") + ".")
     bad = np.argwhere(np.abs(got - expected) > 1e-6)
     i, j = (int(x) for x in bad[0])
@@ -336,7 +337,7 @@ def _quad_edge_generate(rng) -> dict:
 
 def _quad_edge_ok(p):
     v, w, x1, y1, y2, x2 = _arr(p["points"])
-    if np.allclose(v, w) or np.linalg.norm(np.cross(w - v, x1 - v)) == 0 or np.linalg.norm(np.cross(w - v, x2 - v)) == 0:
+    if np.allclose(v, w) or not np.any(np.cross(w - v, x1 - v)) or not np.any(np.cross(w - v, x2 - v)):
         return "a degenerate edge or face"
     return None
 
