@@ -130,3 +130,64 @@ def test_pyramid_node_interval_by_hand_and_its_slips():
     assert "single knot span" in ch27.check_pyramid_node_interval([1, 2]).message
     assert "wrong knot" in ch27.check_pyramid_node_interval([0, 2]).message
     assert not ch27.check_pyramid_node_interval([0, 1]).correct
+
+
+# -- dealt instances (issue 17 §3): the library's answer of every dealt instance agrees with scipy ----
+
+SEEDS = range(1, 41)
+
+
+def _dealt(name, seed):
+    return ch27.DECK.exercises[name].instance(seed), ch27.DECK.exercises[name].answer
+
+
+def test_dealt_de_boor_and_basis_agree_with_scipy():
+    for seed in SEEDS:
+        p, answer = _dealt("check_local_de_boor", seed)
+        assert np.allclose(answer(p), BSpline(p["knots"], np.array(p["ctrl"]), 2)(p["u"]), atol=1e-12)
+        p, answer = _dealt("check_basis_values", seed)
+        assert np.allclose(answer(p), BSpline.design_matrix([p["u"]], p["knots"], 2).toarray()[0, 1:4], atol=1e-12)
+
+
+def test_dealt_continuity_orders_are_degree_minus_multiplicity():
+    for seed in SEEDS:
+        p, answer = _dealt("check_continuity_orders", seed)
+        assert list(answer(p)) == [p["degree"] - list(p["knots"]).count(x) for x in p["at"]]
+
+
+def test_dealt_spline_control_points_reproduce_the_pieces():
+    for seed in SEEDS:
+        p, answer = _dealt("check_spline_control_points", seed)
+        (c0, c1), (a, b, e) = p["pieces"], p["breaks"]
+        spline = BSpline([a, a, a, b, e, e, e], np.asarray(answer(p)), 2)
+        u = np.linspace(a, e, 17)
+        pieces = np.where(u <= b, np.polyval(c0[::-1], u), np.polyval(c1[::-1], u))
+        assert np.allclose(spline(u), pieces, atol=1e-12)
+
+
+def test_dealt_surface_and_nurbs_points_agree_with_scipy():
+    for seed in SEEDS:
+        p, answer = _dealt("check_surface_point", seed)
+        u, v = p["uv"]
+        Nu = BSpline.design_matrix([u], ch27.SURF_KNOTS_U, 1).toarray()[0]
+        Nv = BSpline.design_matrix([v], ch27.SURF_KNOTS_V, 2).toarray()[0]
+        assert np.allclose(answer(p), [Nu @ [0, 1, 2], Nv @ [0, 1, 2], Nu @ np.array(p["heights"]) @ Nv])
+        p, answer = _dealt("check_nurbs_point", seed)
+        w, P = np.array(p["weights"]), np.array(p["ctrl"])
+        hom = BSpline(ch27.NURBS_KNOTS, np.column_stack([w[:, None] * P, w]), 2)(p["u"])
+        assert np.allclose(answer(p), hom[:2] / hom[2], atol=1e-12)
+
+
+def test_dealt_pyramid_interval_is_t_i_to_t_i_plus_p_plus_1_minus_r():
+    for seed in SEEDS:
+        p, answer = _dealt("check_pyramid_node_interval", seed)
+        (r, i), deg, t = p["node"], p["degree"], p["knots"]
+        assert list(answer(p)) == [t[i], t[i + deg + 1 - r]]
+
+
+def test_dealt_steps_print_and_the_stored_instance_comes_back():
+    for name in ch27.DECK.exercises:
+        ch27.deal(name, seed=3)
+        assert "seed 3" in repr(ch27.steps(name))
+        ch27.deal(name, seed=0)
+    assert ch27.check_local_de_boor(DE_BOOR).correct

@@ -249,3 +249,56 @@ def test_boehm_project_too_few_points_and_unanswered():
 
     assert not ch28.check_boehm_project(starter).answered
     assert not ch28.check_boehm_project(None).answered
+
+
+# -- dealt instances (issue 17 §3): every dealt answer leaves the curve unchanged (scipy) -------------
+
+SEEDS = range(1, 41)
+
+
+def _dealt(name, seed):
+    return ch28.DECK.exercises[name].instance(seed), ch28.DECK.exercises[name].answer
+
+
+def _same_curve(ctrl, knots, new_ctrl, new_knots):
+    a, b = knots[2], knots[-3]
+    u = np.linspace(a, b, 23)
+    return np.allclose(BSpline(knots, np.asarray(ctrl, float), 2)(u), BSpline(new_knots, new_ctrl, 2)(u), atol=1e-12)
+
+
+def test_dealt_boehm_oslo_and_schaefer_keep_the_curve():
+    for seed in SEEDS:
+        p, answer = _dealt("check_boehm_insert", seed)
+        assert _same_curve(p["ctrl"], p["knots"], answer(p), np.sort(list(p["knots"]) + [p["u"]]))
+        p, answer = _dealt("check_oslo", seed)
+        assert _same_curve(p["ctrl"], p["knots"], answer(p), np.sort(list(p["knots"]) + list(p["new"])))
+        p, answer = _dealt("check_schaefer", seed)
+        t = p["knots"]
+        refined = np.sort(list(t) + [t[3] / 2, (t[3] + t[-1]) / 2])
+        assert _same_curve(p["ctrl"], t, answer(p), refined)
+
+
+def test_dealt_bezier_pieces_are_the_curve_on_each_span():
+    for seed in SEEDS:
+        p, answer = _dealt("check_bezier_pieces", seed)
+        t, pieces = p["knots"], np.asarray(answer(p))
+        curve = BSpline(t, np.asarray(p["ctrl"], float), 2)
+        for (a, b), piece in zip(((0, t[3]), (t[3], t[-1])), pieces):
+            s = np.linspace(0, 1, 9)[:, None]
+            bern = (1 - s) ** 2 * piece[0] + 2 * s * (1 - s) * piece[1] + s ** 2 * piece[2]
+            assert np.allclose(bern, curve(a + (b - a) * s[:, 0]), atol=1e-12)
+
+
+def test_dealt_chaikin_cuts_each_leg_at_a_quarter():
+    for seed in SEEDS:
+        p, answer = _dealt("check_chaikin", seed)
+        P = np.asarray(p["ctrl"], float)
+        expected = [w * a + (1 - w) * b for a, b in zip(P[:-1], P[1:]) for w in (0.75, 0.25)]
+        assert np.allclose(answer(p), expected)
+
+
+def test_dealt_convergence_levels_are_the_smallest_power_of_four():
+    for seed in SEEDS:
+        p, answer = _dealt("check_convergence_levels", seed)
+        L = answer(p)
+        assert p["distance"] / 4 ** L < p["tol"] <= p["distance"] / 4 ** (L - 1)

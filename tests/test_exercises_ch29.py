@@ -2,6 +2,8 @@
 are worked by hand from the problem constants (so a bug in goldman_lib.subdivision_matrices cannot
 make a checker accept a wrong answer)."""
 
+import math
+
 import numpy as np
 import pytest
 
@@ -186,3 +188,49 @@ def test_project_unanswered_and_wrong_shapes():
     assert "a pair (L, R)" in r.message
     r = ch29.check_subdivision_matrices_project(lambda n, t=0.5: tuple(m[:-1] for m in hand_matrices(n, t)))
     assert "should have shape (2, 2)" in r.message
+
+
+# -- dealt instances (issue 17 §3): the dealt answers against closed forms ----------------------------
+
+SEEDS = range(1, 41)
+
+
+def _dealt(name, seed):
+    return ch29.DECK.exercises[name].instance(seed), ch29.DECK.exercises[name].answer
+
+
+def _bern(n, k, t):
+    return math.comb(n, k) * t ** k * (1 - t) ** (n - k)
+
+
+def test_dealt_left_matrix_and_normal_point_are_bernstein_values():
+    for seed in SEEDS:
+        p, answer = _dealt("check_left_matrix_at_t", seed)
+        t = p["t"]
+        assert np.allclose(answer(p), [[_bern(i, j, t) if j <= i else 0 for j in range(3)] for i in range(3)])
+        p, answer = _dealt("check_normal_curve_point", seed)
+        assert np.allclose(answer(p), [_bern(4, k, p["t"]) for k in range(1, 5)])
+
+
+def test_dealt_right_half_uses_the_cubic_mask():
+    rows = np.array([[1, 6, 1, 0], [0, 4, 4, 0], [0, 1, 6, 1], [0, 0, 4, 4]]) / 8
+    for seed in SEEDS:
+        p, answer = _dealt("check_bspline_right_half", seed)
+        assert np.allclose(answer(p), rows @ np.array(p["ctrl"]))
+
+
+def test_dealt_fixed_point_and_joints():
+    for seed in SEEDS:
+        p, answer = _dealt("check_composed_fixed_point", seed)
+        P = np.array(p["ctrl"])
+        assert np.allclose(answer(p), (P[0] + 4 * P[1] + 4 * P[2]) / 9)       # C(2/3)
+        p, answer = _dealt("check_fractal_joint", seed)
+        P, v = np.array(p["ctrl"]), p["v"]
+        u = (1 - v) / 2
+        joint = u * P[0] + v * P[1] + u * P[2]
+        assert np.allclose(answer(p), joint)
+        p, answer = _dealt("check_fractal_quarter_joint", seed)
+        P, v = np.array(p["ctrl"]), p["v"]
+        u = (1 - v) / 2
+        left = [P[0], (P[0] + P[1]) / 2, u * P[0] + v * P[1] + u * P[2]]
+        assert np.allclose(answer(p), u * left[0] + v * left[1] + u * left[2])

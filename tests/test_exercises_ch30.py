@@ -183,3 +183,59 @@ def test_project_unanswered_and_wrong_shape():
     assert not ch30.check_ring_step_project(starter).answered
     r = ch30.check_ring_step_project(lambda v, ring: ring_step(v, ring)[1:])
     assert "return 7 points" in r.message
+
+
+# -- dealt instances (issue 17 §3): the dealt answers against closed forms ----------------------------
+
+SEEDS = range(1, 41)
+
+
+def _dealt(name, seed):
+    return ch30.DECK.exercises[name].instance(seed), ch30.DECK.exercises[name].answer
+
+
+def _poly2(*factors):
+    """The coefficient grid of a product of polynomials in x (rows) and y (columns)."""
+    out = np.array([[1.0]])
+    for f in factors:
+        f = np.asarray(f, float)
+        grid = np.zeros((out.shape[0] + f.shape[0] - 1, out.shape[1] + f.shape[1] - 1))
+        for (i, j), c in np.ndenumerate(f):
+            grid[i:i + out.shape[0], j:j + out.shape[1]] += c * out
+        out = grid
+    return out
+
+
+def test_dealt_box_masks_are_products_of_direction_factors():
+    for seed in SEEDS:
+        p, answer = _dealt("check_box_spline_mask", seed)
+        r, s, t = p["m"]
+        mask = _poly2(*([[[1], [1]]] * r + [[[1, 1]]] * s + [[[1, 0], [0, 1]]] * t))
+        assert np.allclose(answer(p), mask)
+
+
+def test_dealt_prism_counts_follow_the_counting_rules():
+    for seed in SEEDS:
+        p, answer = _dealt("check_prism_counts", seed)
+        n = p["n"]
+        V, E, F, sizes = 2 * n, 3 * n, n + 2, 6 * n
+        for _ in range(p["levels"]):
+            V, E, F = V + E + F, 2 * E + sizes, sizes
+            sizes = 4 * F
+        assert tuple(answer(p)) == (V, E, F)
+
+
+def test_dealt_stencils():
+    for seed in SEEDS:
+        p, answer = _dealt("check_quad_edge_point", seed)
+        v, w, *others = np.array(p["points"])
+        assert np.allclose(answer(p), 3 / 8 * (v + w) + sum(others) / 16)
+        p, answer = _dealt("check_extraordinary_height", seed)
+        zv, zu, zd = p["heights"]
+        assert np.isclose(answer(p), 9 / 16 * zv + 3 / 8 * zu + 1 / 16 * zd)     # n b = 3/8, n c = 1/16
+        p, answer = _dealt("check_tetrahedron_vertex", seed)
+        P = np.array(p["vertices"])
+        assert np.allclose(answer(p), 5 / 8 * P[0] + 1 / 8 * P[1:].sum(axis=0))
+        p, answer = _dealt("check_triangle_edge_point", seed)
+        v, w, x, y = np.array(p["points"])
+        assert np.allclose(answer(p), 3 / 8 * (v + w) + 1 / 8 * (x + y))

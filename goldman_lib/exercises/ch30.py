@@ -1,22 +1,30 @@
 """Exercise checkers for chapter 30, subdivision surfaces (Goldman §30.2-30.4), and the checker of
 the chapter's programming project.
 
-Each exercise's data are module constants, so the notebook prints the problem from here and the
-checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
-``SLIPS`` the wrong answers of the kinds each checker recognises.
+Every numeric exercise deals new numbers (issue 17 §3, :mod:`goldman_lib.exercises.deal`):
+instance 0 is the module constants below (the stored notebook), ``deal("check_...")`` or
+``deal_button("check_...")`` deals another, each checker checks the current instance,
+``PROBLEMS`` states it and ``steps("check_...")`` shows its worked steps, computed by the library.
+The "show that" exercises (in :mod:`goldman_lib.exercises.proofs`) and the programming project do
+not deal.  ``SLIPS`` holds the wrong answers of the kinds each checker recognises, for the stored
+instances.
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
 from goldman_lib import subdivision_surfaces as ss
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
+from goldman_lib.exercises.deal import Deck, memo, within
 from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "BOX_MULTIPLICITIES", "PRISM_SIDES", "PRISM_LEVELS", "QUAD_EDGE_POINTS",
-           "STAR_VALENCE", "STAR_HEIGHTS", "TETRA_VERTICES", "EDGE_POINTS",
+           "STAR_VALENCE", "STAR_HEIGHTS", "TETRA_VERTICES", "EDGE_POINTS", "DECK", "deal", "steps", "current",
+           "deal_button",
            "check_box_spline_mask", "check_prism_counts", "check_quad_edge_point", "check_extraordinary_height",
            "check_tetrahedron_vertex", "check_triangle_edge_point", "check_ring_step_project"]
 
@@ -42,41 +50,38 @@ EDGE_POINTS = np.array([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [2.0, 3.0, 1.0], [2.0,
 REL_TOL = 1e-4
 
 
+DECK = Deck("ch30")
+
+_WORDS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
+_POLYGONS = {3: ("triangle", "triangular"), 4: ("square", "square"), 5: ("pentagon", "pentagonal"),
+             6: ("hexagon", "hexagonal"), 7: ("heptagon", "heptagonal"), 8: ("octagon", "octagonal")}
+
+
 def _pts(P):
     return ", ".join(fmt(p) for p in P)
 
 
-PROBLEMS = {
-    "check_box_spline_mask": (
-        f"On a regular grid, one level of split and average for the box spline with multiplicities "
-        f"{BOX_MULTIPLICITIES} for the directions e1 = (1, 0), e2 = (0, 1), e3 = (1, 1): split, then average "
-        f"r - 1 = 1 time along e1, s - 1 = 1 time along e2 and t = 1 time along e3. Give its mask times 8, as a "
-        f"4 x 4 list of rows laid out like the masks printed in §30.2, with the e3 diagonal running from top left "
-        f"to bottom right (Goldman §30.2)."),
-    "check_prism_counts": (
-        f"The prism over a pentagon has V = 10 vertices, E = 15 edges and F = 7 faces (five quadrilaterals and "
-        f"two pentagons). After {PRISM_LEVELS} levels of quadrilateral centroid averaging, how many vertices, "
-        f"edges and faces are there? Give [V, E, F] (Goldman §30.3)."),
-    "check_quad_edge_point": (
-        f"An edge of a quadrilateral mesh runs from v = {fmt(QUAD_EDGE_POINTS[0])} to w = {fmt(QUAD_EDGE_POINTS[1])}. "
-        f"Its two faces are (v, w, {fmt(QUAD_EDGE_POINTS[2])}, {fmt(QUAD_EDGE_POINTS[3])}) and "
-        f"(w, v, {fmt(QUAD_EDGE_POINTS[4])}, {fmt(QUAD_EDGE_POINTS[5])}). Where is the new edge point after one "
-        f"level of quadrilateral centroid averaging? Give [x, y, z] (Goldman §30.3)."),
-    "check_extraordinary_height": (
-        f"In a quadrilateral mesh, a vertex v of valence {STAR_VALENCE} is at height z = {fmt(STAR_HEIGHTS[0])}; its "
-        f"{STAR_VALENCE} edge neighbours are at z = {fmt(STAR_HEIGHTS[1])} and its {STAR_VALENCE} diagonal neighbours "
-        f"(the far corners of its faces) at z = {fmt(STAR_HEIGHTS[2])}. At what height is its new vertex point after "
-        f"one level of quadrilateral centroid averaging? Give z to 4 digits (Goldman §30.3)."),
-    "check_tetrahedron_vertex": (
-        f"The tetrahedron with vertices {_pts(TETRA_VERTICES)} is a triangle mesh whose vertices all have valence 3. "
-        f"Where does the vertex {fmt(TETRA_VERTICES[0])} go after one level of the triangle scheme (weighted "
-        f"centroids 1/4, 3/8, 3/8)? Give [x, y, z] (Goldman §30.4)."),
-    "check_triangle_edge_point": (
-        f"An edge of a triangle mesh runs from v = {fmt(EDGE_POINTS[0])} to w = {fmt(EDGE_POINTS[1])}; its two "
-        f"triangles have opposite vertices x = {fmt(EDGE_POINTS[2])} and y = {fmt(EDGE_POINTS[3])}. Where is the new "
-        f"edge point after one level of the triangle scheme (weighted centroids 1/4, 3/8, 3/8)? Give [x, y, z] "
-        f"(Goldman §30.4)."),
-}
+def _tup(a):
+    a = np.asarray(a, dtype=float)
+    return tuple(_tup(x) for x in a) if a.ndim > 1 else tuple(float(x) for x in a)
+
+
+def _arr(v):
+    return np.asarray(v, dtype=float)
+
+
+def _f(x) -> str:
+    """Numbers of the worked steps, rounded to 6 digits (no floating-point noise)."""
+    return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
+
+
+def _times(k: int) -> str:
+    return f"{k} time" + ("" if k == 1 else "s")
+
+
+#: The checkers' tolerance (hand-computed decimals to a relative 1e-4), a little wider, and
+#: answers of other shapes apart.
+_same = within(REL_TOL, relative=True)
 
 
 # -- reading and comparing -------------------------------------------------------------------------
@@ -103,55 +108,171 @@ def _far(got, expected, what, hint) -> Result:
 # -- §30.2 box splines -------------------------------------------------------------------------------
 
 def _box_mask(multiplicities):
-    delta = np.zeros((5, 5, 1))
-    delta[2, 2] = 1.0
+    delta = np.zeros((9, 9, 1))
+    delta[4, 4] = 1.0
     box = ss.box_spline_split_and_average(delta, multiplicities, 1)[..., 0]
-    return box[box.any(1)][:, box.any(0)]
+    return box[np.abs(box).sum(1) > 0][:, np.abs(box).sum(0) > 0]
 
 
-def check_box_spline_mask(answer) -> Result:
-    """Check the mask (times 8) of the box spline with multiplicities (2, 2, 1) (Goldman §30.2);
-    recognises the mirrored layout (the e3 diagonal the other way), the mask not scaled by 8, the
-    mask without the e3 factor, and entries that do not sum to 4 times 8.
+def _box_scale(m) -> int:
+    """The factor that makes the mask whole: 2^(r + s + t - 2)."""
+    r, s, t = m
+    return 2 ** (r + s + t - 2)
+
+
+_STORED_BOX = {"m": tuple(BOX_MULTIPLICITIES)}
+_BOXES = ((2, 2, 1), (2, 2, 2), (3, 2, 1), (2, 3, 1), (3, 3, 1), (3, 2, 2), (2, 3, 2), (3, 3, 2))
+
+
+@memo
+def _box_answers(p):
+    m = p["m"]
+    r, s, _ = m
+    K = _box_scale(m)
+    expected = _box_mask(m) * K
+    no_e3 = np.outer([math.comb(r, i) for i in range(r + 1)], [math.comb(s, j) for j in range(s + 1)]).astype(float)
+    return expected, {"mirrored": expected[::-1], "not scaled": expected / K, "no e3 factor": no_e3,
+                      "halved": expected / 2}
+
+
+def _size(k: int) -> str:
+    return _WORDS.get(k, str(k))
+
+
+def _box_statement(p) -> str:
+    r, s, t = p["m"]
+    K = _box_scale(p["m"])
+    rows, cols = r + t + 1, s + t + 1
+    return (f"On a regular grid, one level of split and average for the box spline with multiplicities "
+            f"{tuple(p['m'])} for the directions e1 = (1, 0), e2 = (0, 1), e3 = (1, 1): split, then average "
+            f"r - 1 = {_times(r - 1)} along e1, s - 1 = {_times(s - 1)} along e2 and t = {_times(t)} along e3. "
+            f"Give its mask times {K}, as a "
+            f"{rows} x {cols} list of rows laid out like the masks printed in §30.2, with the e3 diagonal running "
+            f"from top left to bottom right (Goldman §30.2).")
+
+
+def _box_steps(p) -> str:
+    r, s, t = p["m"]
+    K = _box_scale(p["m"])
+    no_e3 = _box_answers(p)[1]["no e3 factor"]
+    return (f"1. Splitting gives the mask (1 + x)(1 + y); each averaging along a direction multiplies it by "
+            f"(1 + x)/2, (1 + y)/2 or (1 + xy)/2.\n"
+            f"2. So the mask is (1 + x)^{r} (1 + y)^{s} (1 + xy)^{t} / 2^{r + s + t - 2}; times {K} it is the "
+            f"polynomial multiplied out.\n"
+            f"3. (1 + x)^{r} (1 + y)^{s} has the coefficients {'; '.join(_f(row) for row in no_e3)} (rows: powers of "
+            f"x, columns: powers of y); each factor (1 + xy) adds a copy shifted one step down the diagonal.\n"
+            f"4. The mask times {K}: {'; '.join(_f(row) for row in _box_answers(p)[0])} (the entries total {4 * K}).")
+
+
+@DECK.exercise(stored=_STORED_BOX, generate=lambda rng: {"m": _BOXES[int(rng.integers(0, len(_BOXES)))]},
+               answer=lambda p: _box_answers(p)[0], slips=lambda p: _box_answers(p)[1], statement=_box_statement,
+               steps=_box_steps, same=_same)
+def check_box_spline_mask(answer, p) -> Result:
+    """Check the mask (scaled to whole numbers) of the statement's box spline (Goldman §30.2);
+    recognises the mirrored layout (the e3 diagonal the other way), the mask not scaled, the
+    mask without the e3 factor, and entries that do not sum to the scaled total.
     """
-    got, err = read_points(answer, "your mask", ask="the mask times 8 as a list of rows")
+    got, err = read_points(answer, "your mask", ask=f"the mask times {_box_scale(p['m'])} as a list of rows")
     if err is not None:
         return err
-    expected = _box_mask(BOX_MULTIPLICITIES) * 8
-    if got.shape == (3, 3) and _close(got, np.outer([1, 2, 1], [1, 2, 1])):
-        return wrong("that is the mask of the bilinear box spline (1 + x)^2 (1 + y)^2, without the averaging "
-                     "along e3; one averaging along e3 multiplies it by (1 + xy) and shifts a copy along the "
-                     "diagonal.")
+    m = p["m"]
+    r, s, t = m
+    K = _box_scale(m)
+    expected = _box_mask(m) * K
+    no_e3 = _box_answers(p)[1]["no e3 factor"]
+    if got.shape == no_e3.shape and _close(got, no_e3):
+        kind = "bilinear box spline " if (r, s) == (2, 2) else "box spline "
+        return wrong(f"that is the mask of the {kind}(1 + x)^{r} (1 + y)^{s}, without the averaging "
+                     f"along e3; {'one averaging' if t == 1 else f'each of the {t} averagings'} along e3 multiplies "
+                     f"it by (1 + xy) and shifts a copy along the diagonal.")
     if got.shape != expected.shape:
-        return wrong(f"the mask should be a four by four list of rows; yours has shape {got.shape}.")
+        shape = f"{_size(expected.shape[0])} by {_size(expected.shape[1])}"
+        return wrong(f"the mask should be a {shape} list of rows; yours has shape {got.shape}.")
     if _close(got, expected):
-        return correct("the mask is (1 + x)^2 (1 + y)^2 (1 + xy) / 8 multiplied out: each new point is an affine "
-                       "combination of the old ones.")
+        factors = f"(1 + x)^{r} (1 + y)^{s} (1 + xy)" + (f"^{t}" if t > 1 else "")
+        return correct(f"the mask is {factors} / {K} multiplied out: each new point is an affine "
+                       f"combination of the old ones.")
     if _close(got, expected[::-1]) or _close(got, expected[:, ::-1]):
         return wrong("that is the mask mirrored: the averaging along e3 = (1, 1) adds P[i+1, j+1] to P[i, j], so "
                      "the band of the diagonal runs from top left to bottom right, as in the masks of §30.2.")
-    if _close(got, expected / 8):
-        return wrong("those are the weights themselves; the exercise asks for the mask times 8 (whole numbers).")
+    if _close(got, expected / K):
+        return wrong(f"those are the weights themselves; the exercise asks for the mask times {K} (whole numbers).")
     if _close(got * 2, expected):
-        return wrong("the entries should total 32 (four kinds of new points, each an affine combination, times "
-                     "8); yours total half of that: one factor of 1/2 too many.")
+        return wrong(f"the entries should total {4 * K} (four kinds of new points, each an affine combination, times "
+                     f"{K}); yours total half of that: one factor of 1/2 too many.")
     total = got.sum()
-    if abs(total - 32) > 1e-6:
-        return wrong(f"the entries of the mask times 8 should total 32 (four kinds of new points, each an affine "
-                     f"combination); yours {'total ' + fmt(total) if abs(total - 32) >= 0.5 else 'miss that total by a little (an entry rounded?)'}"
-                     f". Multiply (1 + x)^2 (1 + y)^2 by (1 + xy).")
+    if abs(total - 4 * K) > 1e-6:
+        yours = ("total " + fmt(total) if abs(total - 4 * K) >= 0.5
+                 else "miss that total by a little (an entry rounded?)")
+        return wrong(f"the entries of the mask times {K} should total {4 * K} (four kinds of new points, each an "
+                     f"affine combination); yours {yours}"
+                     f". Multiply (1 + x)^{r} (1 + y)^{s} by (1 + xy)" + (f"^{t}" if t > 1 else "") + ".")
     bad = np.argwhere(np.abs(got - expected) > 1e-6)
     i, j = (int(x) for x in bad[0])
     return wrong(f"the entry in row {i}, column {j} is {off_by(got[i, j], expected[i, j])}; the mask is the "
-                 f"product of the direction factors (1 + x)^2 (1 + y)^2 (1 + xy): multiply the bilinear mask by "
-                 f"(1 + xy), that is, add to it a copy shifted one step along the diagonal.")
+                 f"product of the direction factors (1 + x)^{r} (1 + y)^{s} (1 + xy)" + (f"^{t}" if t > 1 else "")
+                 + ": multiply the mask of (1 + x)^r (1 + y)^s by (1 + xy), that is, add to it a copy shifted one "
+                   "step along the diagonal.")
 
 
 # -- §30.3 quadrilateral meshes ----------------------------------------------------------------------
 
-def check_prism_counts(answer) -> Result:
-    """Check [V, E, F] of the pentagonal prism after two levels of the quadrilateral scheme
-    (Goldman §30.3); recognises the counts after one level, face points left out, F = 4F (as if all
+_STORED_PRISM = {"n": PRISM_SIDES, "levels": PRISM_LEVELS}
+
+
+def _counts(mesh) -> tuple:
+    return (mesh.n_vertices, mesh.n_edges, mesh.n_faces)
+
+
+@memo
+def _prism_levels(p) -> list:
+    """[V, E, F] of the prism after 0, 1, ..., levels levels (the library's meshes)."""
+    mesh = ss.prism(p["n"])
+    return [_counts(mesh)] + [_counts(ss.centroid_averaging(mesh, k)) for k in range(1, p["levels"] + 1)]
+
+
+@memo
+def _prism_answers(p):
+    counts = _prism_levels(p)
+    L, F0 = p["levels"], counts[0][2]
+    (V, E, F), (V1, E1, _) = counts[L], counts[L - 1]
+    slips = {"one level short": counts[L - 1], "face points left out": (V1 + E1, E, F),
+             "F = 4F": (V, E, 4 ** L * F0), "V - E + F not 2": (V, E + 2, F)}
+    return counts[L], slips
+
+
+def _prism_generate(rng) -> dict:
+    """The notebook's exercise counts two levels: the prism's polygon deals, the levels stay."""
+    return {"n": int(rng.choice([3, 5, 6, 7, 8])), "levels": PRISM_LEVELS}
+
+
+def _prism_statement(p) -> str:
+    n = p["n"]
+    V, E, F = _prism_levels(p)[0]
+    name = _POLYGONS[n][0]
+    return (f"The prism over a {name} has V = {V} vertices, E = {E} edges and F = {F} faces ({_WORDS[n]} "
+            f"quadrilaterals and two {name}s). After {p['levels']} levels of quadrilateral centroid averaging, how "
+            f"many vertices, edges and faces are there? Give [V, E, F] (Goldman §30.3).")
+
+
+def _prism_steps(p) -> str:
+    counts = _prism_levels(p)
+    n = p["n"]
+    lines = [f"1. Each level: V' = V + E + F (old vertices, edge points, face points), E' = 2E + (sum of face "
+             f"sizes), F' = sum of face sizes (a k-gon becomes k quadrilaterals); the averaging moves points only."]
+    for k in range(1, len(counts)):
+        sizes = 2 * n + 4 * n if k == 1 else 4 * counts[k - 1][2]
+        lines.append(f"{k + 1}. Level {k}: the face sizes sum to {sizes}; V, E, F = {counts[k]} "
+                     f"(V - E + F = {counts[k][0] - counts[k][1] + counts[k][2]}).")
+    return "\n".join(lines)
+
+
+@DECK.exercise(stored=_STORED_PRISM, generate=_prism_generate, answer=lambda p: _prism_answers(p)[0],
+               slips=lambda p: _prism_answers(p)[1], statement=_prism_statement, steps=_prism_steps,
+               same=within(1e-9))
+def check_prism_counts(answer, p) -> Result:
+    """Check [V, E, F] of the statement's prism after its levels of the quadrilateral scheme
+    (Goldman §30.3); recognises the counts one level short, face points left out, F = 4F (as if all
     faces were quadrilaterals), and an answer whose V - E + F is not 2.
 
     >>> check_prism_counts([32, 60, 30])
@@ -166,25 +287,26 @@ def check_prism_counts(answer) -> Result:
     if not np.allclose(got, np.round(got)):
         return wrong("V, E and F count vertices, edges and faces: they are whole numbers.")
     if np.abs(got).max() > 1e6:
-        return wrong("two levels multiply the counts of a small prism by about sixteen, not by millions; count "
+        return wrong("each level multiplies the counts of a small prism by about four, not by millions; count "
                      "each level with V' = V + E + F.")
     V, E, F = (int(round(x)) for x in got)
-    mesh = ss.prism(PRISM_SIDES)
-    m1 = ss.centroid_averaging(mesh, 1)
-    m2 = ss.centroid_averaging(mesh, PRISM_LEVELS)
-    expected = (m2.n_vertices, m2.n_edges, m2.n_faces)
+    counts = _prism_levels(p)
+    L, n = p["levels"], p["n"]
+    F0 = counts[0][2]
+    expected = counts[L]
     if (V, E, F) == expected:
-        return correct(f"two levels take the pentagonal prism to V, E, F = {expected}, and V - E + F = 2 at "
-                       f"every level.")
-    if (V, E, F) == (m1.n_vertices, m1.n_edges, m1.n_faces):
-        return wrong("those are the counts after one level; apply the rules V' = V + E + F, E' = 2E + (sum of "
+        return correct(f"{_WORDS[L]} levels take the {_POLYGONS[n][1]} prism to V, E, F = {expected}, and "
+                       f"V - E + F = 2 at every level.")
+    if (V, E, F) == counts[L - 1]:
+        levels = "one level" if L == 2 else f"{_WORDS[L - 1]} levels"
+        return wrong(f"those are the counts after {levels}; apply the rules V' = V + E + F, E' = 2E + (sum of "
                      "face sizes), F' = sum of face sizes once more (now every face is a quadrilateral).")
-    if (V, E, F) == (m1.n_vertices + m1.n_edges, m2.n_edges, m2.n_faces) or V == m1.n_vertices + m1.n_edges:
+    if V == counts[L - 1][0] + counts[L - 1][1]:
         return wrong("V leaves out the face points: the bilinear split adds a point at every edge and at every "
                      "face, V' = V + E + F.")
-    if F == 4 * 7 or (F == 4 * 4 * 7):
-        return wrong("a k-gon is cut into k quadrilaterals, not 4: the two pentagons give five each, so at the "
-                     "first level F' is the sum of the face sizes.")
+    if F == 4 * F0 or F == 4 ** L * F0:
+        return wrong(f"a k-gon is cut into k quadrilaterals, not 4: the two {_POLYGONS[n][0]}s give {_WORDS[n]} "
+                     f"each, so at the first level F' is the sum of the face sizes.")
     chi = V - E + F
     if chi != 2:
         return wrong(f"your counts give V - E + F = {chi}, but subdivision refines the mesh without changing its "
@@ -194,15 +316,61 @@ def check_prism_counts(answer) -> Result:
                  "E' = 2E + (sum of face sizes), F' = sum of face sizes.")
 
 
-def check_quad_edge_point(answer) -> Result:
-    """Check the edge point of the quadrilateral scheme for ``QUAD_EDGE_POINTS`` (Goldman §30.3);
+_STORED_QUAD_EDGE = {"points": _tup(QUAD_EDGE_POINTS)}
+
+
+@memo
+def _quad_edge_answers(p):
+    v, w, x1, y1, y2, x2 = _arr(p["points"])
+    others = x1 + y1 + y2 + x2
+    ea, eb = ss.quad_edge_stencil()
+    mid = (v + w) / 2
+    f1, f2 = (v + w + x1 + y1) / 4, (w + v + y2 + x2) / 4
+    slips = {"midpoint": mid, "old face centroids": (f1 + f2) / 2, "equal weights": (mid + f1 + f2) / 3,
+             "triangle weights": 3 / 8 * (v + w) + 1 / 8 * others}
+    return ea * (v + w) + eb * others, slips
+
+
+def _quad_edge_generate(rng) -> dict:
+    return {"points": _tup(rng.integers(-2, 3, size=(6, 3)) * 2)}
+
+
+def _quad_edge_ok(p):
+    v, w, x1, y1, y2, x2 = _arr(p["points"])
+    if np.allclose(v, w) or not np.any(np.cross(w - v, x1 - v)) or not np.any(np.cross(w - v, x2 - v)):
+        return "a degenerate edge or face"
+    return None
+
+
+def _quad_edge_statement(p) -> str:
+    P = _arr(p["points"])
+    return (f"An edge of a quadrilateral mesh runs from v = {fmt(P[0])} to w = {fmt(P[1])}. "
+            f"Its two faces are (v, w, {fmt(P[2])}, {fmt(P[3])}) and "
+            f"(w, v, {fmt(P[4])}, {fmt(P[5])}). Where is the new edge point after one "
+            f"level of quadrilateral centroid averaging? Give [x, y, z] (Goldman §30.3).")
+
+
+def _quad_edge_steps(p) -> str:
+    v, w, x1, y1, y2, x2 = _arr(p["points"])
+    ea, eb = ss.quad_edge_stencil()
+    return (f"1. After the split the edge's midpoint lies in four small quadrilaterals; the average of their "
+            f"centroids gives the stencil {_f(ea)} (v + w) + {_f(eb)} (the four other corners) (§30.3).\n"
+            f"2. v + w = {fmt(v + w)}; the other corners sum to {fmt(x1 + y1 + y2 + x2)}.\n"
+            f"3. The edge point = {_f(_quad_edge_answers(p)[0])}.")
+
+
+@DECK.exercise(stored=_STORED_QUAD_EDGE, generate=_quad_edge_generate, answer=lambda p: _quad_edge_answers(p)[0],
+               slips=lambda p: _quad_edge_answers(p)[1], statement=_quad_edge_statement, steps=_quad_edge_steps,
+               same=_same, well_posed=_quad_edge_ok)
+def check_quad_edge_point(answer, p) -> Result:
+    """Check the edge point of the quadrilateral scheme for the statement's edge (Goldman §30.3);
     recognises the midpoint, the average of the two face centroids, the triangle weights, and the
     midpoint averaged with the face centroids with equal weights.
     """
     got, err = _point(answer, "the edge point", "the edge point as [x, y, z]")
     if err is not None:
         return err
-    v, w, x1, y1, y2, x2 = QUAD_EDGE_POINTS
+    v, w, x1, y1, y2, x2 = _arr(p["points"])
     others = x1 + y1 + y2 + x2
     ea, eb = ss.quad_edge_stencil()
     expected = ea * (v + w) + eb * others
@@ -228,9 +396,12 @@ def check_quad_edge_point(answer) -> Result:
                                                  "midpoint of the edge")
 
 
-def _star_slips():
-    n = STAR_VALENCE
-    zv, zu, zd = STAR_HEIGHTS
+_STORED_STAR = {"n": STAR_VALENCE, "heights": tuple(STAR_HEIGHTS)}
+
+
+def _star_slips(p):
+    n = p["n"]
+    zv, zu, zd = p["heights"]
     face = (zv + 2 * zu + zd) / 4
     return {
         "valence 4": 9 / 16 * zv + n * 3 / 32 * zu + n * 1 / 64 * zd,
@@ -241,27 +412,57 @@ def _star_slips():
     }
 
 
-def check_extraordinary_height(answer) -> Result:
-    """Check the height of the new vertex point of a valence-5 vertex in a quadrilateral mesh
-    (Goldman §30.3); recognises the valence-4 weights, the edge and diagonal weights swapped, the
-    diagonal neighbours left out, the triangle rule, and Catmull-Clark's vertex rule.
+def _star_answer(p) -> float:
+    n = p["n"]
+    a, b, c = ss.quad_vertex_stencil(n)
+    zv, zu, zd = p["heights"]
+    return a * zv + n * b * zu + n * c * zd
+
+
+def _star_generate(rng) -> dict:
+    """The notebook's exercise is the vertex of valence 5: the heights deal, the valence stays."""
+    return {"n": STAR_VALENCE, "heights": tuple(float(z) for z in rng.choice(np.arange(0, 10), 3, replace=False))}
+
+
+def _star_statement(p) -> str:
+    n, (zv, zu, zd) = p["n"], p["heights"]
+    return (f"In a quadrilateral mesh, a vertex v of valence {n} is at height z = {fmt(zv)}; its "
+            f"{n} edge neighbours are at z = {fmt(zu)} and its {n} diagonal neighbours "
+            f"(the far corners of its faces) at z = {fmt(zd)}. At what height is its new vertex point after "
+            f"one level of quadrilateral centroid averaging? Give z to 4 digits (Goldman §30.3).")
+
+
+def _star_steps(p) -> str:
+    n, (zv, zu, zd) = p["n"], p["heights"]
+    a, b, c = ss.quad_vertex_stencil(n)
+    return (f"1. The vertex stencil of §30.3 at valence n = {n}: a = 9/16, b = 3/(8n) = {_f(b)}, "
+            f"c = 1/(16n) = {_f(c)}.\n"
+            f"2. z' = a z_v + b (sum of the {n} edge neighbours) + c (sum of the {n} diagonal neighbours) = "
+            f"9/16·{fmt(zv)} + {n}·{_f(b)}·{fmt(zu)} + {n}·{_f(c)}·{fmt(zd)}.\n"
+            f"3. z' = {_f(_star_answer(p))}.")
+
+
+@DECK.exercise(stored=_STORED_STAR, generate=_star_generate, answer=_star_answer, slips=_star_slips,
+               statement=_star_statement, steps=_star_steps, same=_same)
+def check_extraordinary_height(answer, p) -> Result:
+    """Check the height of the new vertex point of the statement's extraordinary vertex in a
+    quadrilateral mesh (Goldman §30.3); recognises the valence-4 weights, the edge and diagonal weights
+    swapped, the diagonal neighbours left out, the triangle rule, and Catmull-Clark's vertex rule.
     """
     value, err = read_number(answer, "the height")
     if err is not None:
         return err
-    n = STAR_VALENCE
-    a, b, c = ss.quad_vertex_stencil(n)
-    zv, zu, zd = STAR_HEIGHTS
-    expected = a * zv + n * b * zu + n * c * zd
+    n = p["n"]
+    expected = _star_answer(p)
     close = lambda x: abs(value - x) <= REL_TOL * max(1.0, abs(x))  # noqa: E731
     if close(expected):
         return correct(f"9/16 of the vertex, 3/(8n) of each edge neighbour and 1/(16n) of each diagonal neighbour, "
                        f"with n = {n}.")
-    slips = _star_slips()
+    slips = _star_slips(p)
     if close(slips["valence 4"]):
-        return wrong("you used the weights of a regular vertex (valence 4); this vertex has five neighbours of each "
-                     "kind, so the weights of the neighbours are shared among n = 5, and only the vertex's own "
-                     "weight stays the same.")
+        return wrong(f"you used the weights of a regular vertex (valence 4); this vertex has {_WORDS[n]} neighbours "
+                     f"of each kind, so the weights of the neighbours are shared among n = {n}, and only the vertex's "
+                     f"own weight stays the same.")
     if close(slips["swapped"]):
         return wrong("the edge and diagonal weights are swapped: the edge neighbours are the nearer ones and get "
                      "the larger weight.")
@@ -280,15 +481,61 @@ def check_extraordinary_height(answer) -> Result:
 
 # -- §30.4 triangle meshes ---------------------------------------------------------------------------
 
-def check_tetrahedron_vertex(answer) -> Result:
-    """Check where the tetrahedron's vertex goes after one level of the triangle scheme (Goldman
-    §30.4); recognises Loop's (Warren's) valence-3 weight 3/16, the regular (valence 6) weights,
-    plain centroids, and the vertex left where it was.
+_STORED_TETRA = {"vertices": _tup(TETRA_VERTICES)}
+
+
+@memo
+def _tetra_answers(p):
+    P = _arr(p["vertices"])
+    v, nbrs = P[0], P[1:]
+    a, b = ss.triangle_vertex_stencil(3)
+    a3, b3 = ss.triangle_vertex_stencil(3, self_weight=1 / 3)
+    slips = {"not moved": v, "Warren's 3/16": (1 - 3 * 3 / 16) * v + 3 / 16 * nbrs.sum(axis=0),
+             "valence-6 weights": 10 / 16 * v + 1 / 16 * nbrs.sum(axis=0),
+             "plain centroids": a3 * v + b3 * nbrs.sum(axis=0)}
+    return a * v + b * nbrs.sum(axis=0), slips
+
+
+def _tetra_generate(rng) -> dict:
+    return {"vertices": _tup(rng.integers(-4, 5, size=(4, 3)))}
+
+
+def _tetra_ok(p):
+    P = _arr(p["vertices"])
+    if abs(float(np.linalg.det(P[1:] - P[0]))) < 6:
+        return "the tetrahedron is flat or tiny"
+    return None
+
+
+def _tetra_statement(p) -> str:
+    P = _arr(p["vertices"])
+    return (f"The tetrahedron with vertices {_pts(P)} is a triangle mesh whose vertices all have valence 3. "
+            f"Where does the vertex {fmt(P[0])} go after one level of the triangle scheme (weighted "
+            f"centroids 1/4, 3/8, 3/8)? Give [x, y, z] (Goldman §30.4).")
+
+
+def _tetra_steps(p) -> str:
+    P = _arr(p["vertices"])
+    a, b = ss.triangle_vertex_stencil(3)
+    return (f"1. The vertex stencil of the triangle scheme: 5/8 v + 3/(8n) (sum of the n neighbours); here "
+            f"n = 3: a = {_f(a)}, b = {_f(b)}.\n"
+            f"2. v = {fmt(P[0])}; its neighbours (the other three vertices) sum to {fmt(P[1:].sum(axis=0))}.\n"
+            f"3. The new vertex = {_f(_tetra_answers(p)[0])}.")
+
+
+@DECK.exercise(stored=_STORED_TETRA, generate=_tetra_generate, answer=lambda p: _tetra_answers(p)[0],
+               slips=lambda p: _tetra_answers(p)[1], statement=_tetra_statement, steps=_tetra_steps, same=_same,
+               well_posed=_tetra_ok)
+def check_tetrahedron_vertex(answer, p) -> Result:
+    """Check where the statement's tetrahedron's vertex goes after one level of the triangle scheme
+    (Goldman §30.4); recognises Loop's (Warren's) valence-3 weight 3/16, the regular (valence 6)
+    weights, plain centroids, and the vertex left where it was.
     """
     got, err = _point(answer, "the new vertex", "the new vertex as [x, y, z]")
     if err is not None:
         return err
-    v, nbrs = TETRA_VERTICES[0], TETRA_VERTICES[1:]
+    P = _arr(p["vertices"])
+    v, nbrs = P[0], P[1:]
     a, b = ss.triangle_vertex_stencil(3)
     expected = a * v + b * nbrs.sum(axis=0)
     if _close(got, expected):
@@ -312,14 +559,57 @@ def check_tetrahedron_vertex(answer) -> Result:
                                                 "1/4 v + 3/8 a + 3/8 b")
 
 
-def check_triangle_edge_point(answer) -> Result:
-    """Check the edge point of the triangle scheme for ``EDGE_POINTS`` (Goldman §30.4); recognises
+_STORED_TRI_EDGE = {"points": _tup(EDGE_POINTS)}
+
+
+@memo
+def _tri_edge_answers(p):
+    v, w, x, y = _arr(p["points"])
+    ea, eb = ss.triangle_edge_stencil()
+    pa, pb = ss.triangle_edge_stencil(1 / 3)
+    slips = {"midpoint": (v + w) / 2, "plain centroids": pa * (v + w) + pb * (x + y),
+             "quadrilateral weights": 3 / 8 * (v + w) + 1 / 16 * (x + y)}
+    return ea * (v + w) + eb * (x + y), slips
+
+
+def _tri_edge_generate(rng) -> dict:
+    return {"points": _tup(rng.integers(-4, 5, size=(4, 3)))}
+
+
+def _tri_edge_ok(p):
+    v, w, x, y = _arr(p["points"])
+    if np.linalg.norm(np.cross(w - v, x - v)) == 0 or np.linalg.norm(np.cross(w - v, y - v)) == 0:
+        return "a degenerate triangle"
+    return None
+
+
+def _tri_edge_statement(p) -> str:
+    P = _arr(p["points"])
+    return (f"An edge of a triangle mesh runs from v = {fmt(P[0])} to w = {fmt(P[1])}; its two "
+            f"triangles have opposite vertices x = {fmt(P[2])} and y = {fmt(P[3])}. Where is the new "
+            f"edge point after one level of the triangle scheme (weighted centroids 1/4, 3/8, 3/8)? Give [x, y, z] "
+            f"(Goldman §30.4).")
+
+
+def _tri_edge_steps(p) -> str:
+    v, w, x, y = _arr(p["points"])
+    ea, eb = ss.triangle_edge_stencil()
+    return (f"1. The edge stencil of the triangle scheme: {_f(ea)} (v + w) + {_f(eb)} (x + y) (§30.4).\n"
+            f"2. v + w = {fmt(v + w)}, x + y = {fmt(x + y)}.\n"
+            f"3. The edge point = {_f(_tri_edge_answers(p)[0])}.")
+
+
+@DECK.exercise(stored=_STORED_TRI_EDGE, generate=_tri_edge_generate, answer=lambda p: _tri_edge_answers(p)[0],
+               slips=lambda p: _tri_edge_answers(p)[1], statement=_tri_edge_statement, steps=_tri_edge_steps,
+               same=_same, well_posed=_tri_edge_ok)
+def check_triangle_edge_point(answer, p) -> Result:
+    """Check the edge point of the triangle scheme for the statement's edge (Goldman §30.4); recognises
     the midpoint, plain centroids, and the quadrilateral scheme's weights.
     """
     got, err = _point(answer, "the edge point", "the edge point as [x, y, z]")
     if err is not None:
         return err
-    v, w, x, y = EDGE_POINTS
+    v, w, x, y = _arr(p["points"])
     ea, eb = ss.triangle_edge_stencil()
     expected = ea * (v + w) + eb * (x + y)
     if _close(got, expected):
@@ -336,6 +626,12 @@ def check_triangle_edge_point(answer) -> Result:
                      "opposite vertices (and the weights must sum to one).")
     return _far(got, expected, "the edge point", "average, over the small triangles around the edge's midpoint, "
                                                 "their weighted centroids")
+
+
+#: Deal another instance of an exercise (``deal("check_prism_counts")``, or with ``seed=``; 0 is
+#: the stored one), show the worked steps of the current one, read it, or get a button.
+deal, steps, current, deal_button = DECK.deal, DECK.steps, DECK.current, DECK.button
+PROBLEMS = DECK.problems({})
 
 
 SLIPS = {
