@@ -191,3 +191,35 @@ def test_the_button_deals_through_the_same_function():
     assert ch02.current("check_star_angle")[0] == seed_box.value > 0
     bundle = box._repr_mimebundle_()
     assert "image/png" in bundle and "ch02.deal('check_star_angle')" in bundle["text/plain"]
+
+
+_ROUNDING = __import__("re").compile(r"to (\d+) (decimals|decimal places|digits|significant digits|significant figures)")
+
+
+@pytest.mark.parametrize("module, name", DEALING)
+def test_an_answer_rounded_as_the_statement_asks_is_accepted(module, name):
+    """A statement that says "to 4 decimals" (or "4 significant digits") must accept the answer
+    rounded so: the checker's tolerance is at least the rounding the statement asks for (a learner
+    who types 2.667 for 8/3 after "4 digits" was told wrong)."""
+    ex: Exercise = module.DECK.exercises[name]
+    for seed in range(0, 41):
+        p = ex.instance(seed)
+        found = _ROUNDING.search(ex.statement(p))
+        if not found:
+            return
+        answer = ex.answer(p)
+        try:
+            arr = np.asarray(answer, dtype=float)
+        except (TypeError, ValueError):
+            return
+        if not np.all(np.isfinite(arr)):
+            return
+        n, kind = int(found.group(1)), found.group(2)
+        if kind in ("decimals", "decimal places"):
+            typed = np.round(arr, n)
+        else:
+            typed = np.array([float(f"{v:.{n}g}") for v in arr.ravel()]).reshape(arr.shape)
+        result = ex.check(typed.tolist() if typed.ndim else float(typed), p)
+        assert isinstance(result, Result) and result.correct, (
+            f"seed {seed}: the statement asks for {n} {kind}; {typed.tolist()} (the answer so rounded) is told "
+            f"{result.message!r}")

@@ -282,7 +282,7 @@ def _composed_ok(p):
 def _composed_statement(p) -> str:
     return (f"The quadratic Bezier curve with control points {fmt_points(p['ctrl'])} is the attractor of its IFS "
             f"{{M_L, M_R}} = {{P^-1 L P, P^-1 R P}}. Which point does the composite map X -> X M_L M_R (first M_L, then "
-            f"M_R; points are row vectors) leave fixed? Give [x, y] to 4 digits (Goldman §29.3).")
+            f"M_R; points are row vectors) leave fixed? Give [x, y] to 4 decimal places (Goldman §29.3).")
 
 
 def _composed_steps(p) -> str:

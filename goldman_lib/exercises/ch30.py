@@ -429,7 +429,7 @@ def _star_statement(p) -> str:
     return (f"In a quadrilateral mesh, a vertex v of valence {n} is at height z = {fmt(zv)}; its "
             f"{n} edge neighbours are at z = {fmt(zu)} and its {n} diagonal neighbours "
             f"(the far corners of its faces) at z = {fmt(zd)}. At what height is its new vertex point after "
-            f"one level of quadrilateral centroid averaging? Give z to 4 digits (Goldman §30.3).")
+            f"one level of quadrilateral centroid averaging? Give z to 4 decimal places (Goldman §30.3).")
 
 
 def _star_steps(p) -> str:
