@@ -117,3 +117,13 @@ def test_slerp_s3_view_marks_slerp_evenly_and_nlerp_bunched():
     for keys in qv.S3_KEYS:
         r = view.set_values(keys=keys, t=0.3)
         assert view.last_error is None and np.isfinite(r["slerp_point"]).all()
+
+
+def test_one_sided_product_plot_draws_minus_sin_half_theta_u_dot_v_and_zero():
+    v = np.array([0.3, -1.2, 2.0])
+    u = np.array([1.0, 1.0, 1.0]) / np.sqrt(3)
+    ax = qv.one_sided_product_plot([1, 1, 1], v)
+    one_sided, sandwich = ax.get_lines()[:2]
+    theta = one_sided.get_xdata()
+    assert np.allclose(one_sided.get_ydata(), -np.sin(np.radians(theta) / 2) * (u @ v))   # -q⃗·v, by hand
+    assert np.allclose(sandwich.get_ydata(), 0, atol=1e-12)

@@ -27,7 +27,7 @@ from goldman_lib.views.interactive import InteractiveView, figure_widget, float_
 from goldman_lib.views.vectors3d import COLOURS, VectorScene
 
 __all__ = ["complex_plane_view", "quaternion_rotation_view", "key_frame_view", "double_cover_view", "slerp_s3_view",
-           "FIGURE_F", "BODY_ARROWS", "KEY_SETS", "BRICK", "FRAMES", "COVER_AXIS", "S3_KEYS", "S3_MARKS"]
+           "one_sided_product_plot", "FIGURE_F", "BODY_ARROWS", "KEY_SETS", "BRICK", "FRAMES", "COVER_AXIS", "S3_KEYS", "S3_MARKS"]
 
 #: The asymmetric figure the complex numbers act on: a letter F (a closed outline), away from the origin.
 FIGURE_F = np.array([[0.0, 0.0], [0.2, 0.0], [0.2, 0.4], [0.5, 0.4], [0.5, 0.6], [0.2, 0.6], [0.2, 0.8],
@@ -288,6 +288,38 @@ def key_frame_view(keys: str = "tumble", frame: int = FRAMES // 8) -> Interactiv
                            arrange=[controls["keys"], widgets.HBox([play, controls["frame"]])])
     view.play, view.scene = play, scene
     return view
+
+
+# -- why a sandwich (§15.3.2) --------------------------------------------------------------------------
+
+def one_sided_product_plot(axis, v, ax=None):
+    """The scalar parts of ``q v`` and of ``q v q*`` for ``q = (cos(θ/2), sin(θ/2) u)``, u along
+    ``axis``, over θ from -360 to 360 degrees (Goldman §15.3.2): the one-sided product has the
+    scalar part ``-sin(θ/2) u·v``, so it leaves the vectors (the mass-points of mass 0) unless θ is 0
+    or 360, while the sandwich's scalar part stays 0.  Draws on ``ax`` (a new figure if None) and
+    returns the axes.
+
+    >>> ax = one_sided_product_plot([1, 1, 1], [0.3, -1.2, 2.0])
+    >>> [line.get_label() for line in ax.get_lines()[:2]]
+    ['scalar part of q v', 'scalar part of q v q*']
+    """
+    ax = style.get_axes(ax, equal=False)
+    theta = np.linspace(-360.0, 360.0, 241)
+    q = qt.from_axis_angle(axis, theta)
+    v4 = qt.pure(v)
+    one_sided = qt.multiply(q, v4)[:, 0]
+    sandwich = qt.multiply(qt.multiply(q, v4), qt.conjugate(q))[:, 0]
+    ax.plot(theta, one_sided, color=style.PALETTE["point"], linewidth=1.8, label="scalar part of q v")
+    ax.plot(theta, sandwich, color=style.PALETTE["curve"], linewidth=1.8, label="scalar part of q v q*")
+    ax.axhline(0.0, color="#cccccc", linewidth=0.6)
+    ax.set_xlim(-360.0, 360.0)
+    ax.set_xticks([-360, -180, 0, 180, 360])
+    ax.set_xlabel("θ, the angle of q (degrees)", fontsize=9)
+    ax.set_ylabel("mass (scalar part)", fontsize=9)
+    ax.legend(loc="upper right", fontsize=8)
+    ax.set_title("q v leaves the vectors; q v q* stays among them", fontsize=10)
+    ax.figure.tight_layout()
+    return ax
 
 
 # -- the double cover: q and -q (§15.3.2) ----------------------------------------------------------------
