@@ -344,10 +344,13 @@ def _set_body(lines, tips, arrows):
 
 def _body_axes(fig, position, title):
     ax3 = fig.add_subplot(*position, projection="3d")
-    ax3.set_xlim(-1, 1), ax3.set_ylim(-1, 1), ax3.set_zlim(-1, 1)
+    ax3.set_xlim(-0.8, 0.8), ax3.set_ylim(-0.8, 0.8), ax3.set_zlim(-0.8, 0.8)
     ax3.set_box_aspect((1, 1, 1))
-    ax3.set_xticks([-1, 0, 1]), ax3.set_yticks([-1, 0, 1]), ax3.set_zticks([-1, 0, 1])
-    ax3.tick_params(labelsize=7)
+    ax3.set_axis_off()               # (the panes and ticks of a 3D axes are most of its redraw)
+    for k, name in enumerate("xyz"):  # faint coordinate axes instead
+        end = np.eye(3)[k] * 0.8
+        ax3.plot(*np.stack([-end, end]).T, color="#d0d0d0", linewidth=0.8)
+        ax3.text(*(end * 1.08), name, color="#9a9a9a", fontsize=8)
     ax3.view_init(elev=22, azim=-60)
     ax3.set_title(title, fontsize=9)
     return ax3
@@ -386,7 +389,7 @@ def double_cover_view(t: float = 200.0) -> InteractiveView:
     ax.axhline(0.0, color="#cccccc", linewidth=0.6)
     ax.set_ylim(-1.1, 1.1)
     ax.set_ylabel("components of q(t)", fontsize=8)
-    ax.legend(loc="lower left", fontsize=7, ncol=4)
+    ax.legend(loc="lower left", fontsize=7, ncol=2)
     ax.annotate("q(360°) = −1", (360.0, -1.0), textcoords="offset points", xytext=(4, 4), fontsize=8)
     ax.annotate("q(720°) = 1", (720.0, 1.0), textcoords="offset points", xytext=(-58, -12), fontsize=8)
     away_q = np.linalg.norm(qs - qs[0], axis=1)
@@ -404,6 +407,7 @@ def double_cover_view(t: float = 200.0) -> InteractiveView:
     ax3.plot(*np.stack([-COVER_AXIS, COVER_AXIS]).T, color=COLOURS["cross"], linewidth=1.5)
     body = _body_lines(ax3, COLOURS["u"])
     fig.tight_layout()
+    style.pin_layout(fig)            # fixed limits: titles and labels need no new placing at each move
 
     def update(t):
         q = qt.from_axis_angle(COVER_AXIS, t)
@@ -477,7 +481,7 @@ def slerp_s3_view(keys: str = "150° about x to 150° about y", t: float = 0.3) 
     grid = fig.add_gridspec(1, 3, width_ratios=(1.25, 0.95, 1.0))
     ax = fig.add_subplot(grid[0, 0], projection="3d")
     ax.set_box_aspect((1, 1, 1))
-    ax.tick_params(labelsize=7)
+    ax.set_axis_off()                # (the panes and ticks of a 3D axes are most of its redraw)
     ax.view_init(elev=72, azim=45)
     ax.set_title("unit quaternions, stereographic view from −1", fontsize=9)
     (circle,) = ax.plot([], [], [], color="#9a9a9a", linewidth=1.0)
@@ -504,6 +508,7 @@ def slerp_s3_view(keys: str = "150° about x to 150° about y", t: float = 0.3) 
     slerp_body = _body_lines(ax3, COLOURS["u"])
     nlerp_body = _body_lines(ax3, style.PALETTE["point"], "--", 1.4)
     fig.tight_layout()
+    style.pin_layout(fig)            # the 2D panel's limits are fixed; the 3D panels show no ticks
     shown = {"keys": None}
     fine = np.linspace(0.0, 1.0, 61)
 
