@@ -360,9 +360,10 @@ def double_cover_view(t: float = 200.0) -> InteractiveView:
     """The double cover (Goldman §15.3.2): the unit quaternion ``q(t) = (cos(t/2), sin(t/2) u)`` of the
     rotation by ``t`` degrees about ``u =`` :data:`COVER_AXIS`, for ``t`` from 0 to 720.  Left, top: the
     four components of q(t) (:func:`goldman_lib.quaternions.from_axis_angle`), with a marker at the
-    slider's t; below: how far q(t) is from q(0) = 1 and how far the rotation's matrix
-    (:func:`goldman_lib.quaternions.to_matrix`) is from the identity.  The matrix comes back at 360°,
-    where q(360°) = -1 is the other quaternion of the same rotation; q comes back only at 720°.
+    slider's t; below: how far q(t) is from q(0) = 1 (blue) and the angle of the rotation it performs
+    (orange, :func:`goldman_lib.quaternions.to_axis_angle`, 0 to 180° about ±u).  The rotation comes
+    back at 360°, where q(360°) = -1 is the other quaternion of the same rotation; q comes back only
+    at 720°.
     Right: the body of three arrows turned by q(t) (blue), the axis u (orange) and the body at rest
     (grey).
 
@@ -393,13 +394,18 @@ def double_cover_view(t: float = 200.0) -> InteractiveView:
     ax.annotate("q(360°) = −1", (360.0, -1.0), textcoords="offset points", xytext=(4, 4), fontsize=8)
     ax.annotate("q(720°) = 1", (720.0, 1.0), textcoords="offset points", xytext=(-58, -12), fontsize=8)
     away_q = np.linalg.norm(qs - qs[0], axis=1)
-    away_M = np.linalg.norm(qt.to_matrix(qs) - np.eye(4), axis=(1, 2))
     ax_dist.plot(ts, away_q, color=style.PALETTE["curve"], linewidth=1.5, label="|q(t) − 1|")
-    ax_dist.plot(ts, away_M, color=style.PALETTE["accent"], linewidth=1.5, label="|M(t) − I|")
+    ax_dist.set_ylim(0.0, 2.2)
+    ax_dist.set_ylabel("|q(t) − 1|", fontsize=8, color=style.PALETTE["curve"])
+    ax_angle = ax_dist.twinx()
+    ax_angle.plot(ts, qt.to_axis_angle(qs)[1], color=style.PALETTE["accent"], linewidth=1.5)
+    ax_angle.set_ylim(0.0, 198.0)
+    ax_angle.set_yticks([0, 90, 180])
+    ax_angle.tick_params(labelsize=8)
+    ax_angle.set_ylabel("rotation angle (°)", fontsize=8, color=style.PALETTE["accent"])
     ax_dist.set_xlim(0.0, 720.0)
     ax_dist.set_xticks([0, 180, 360, 540, 720])
     ax_dist.set_xlabel("t, the angle turned (degrees)", fontsize=8)
-    ax_dist.legend(loc="upper left", fontsize=7, ncol=2)
     cursor = [a.axvline(t, color=style.PALETTE["point"], linewidth=1.0) for a in (ax, ax_dist)]
     (dots,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=5)
     ax3 = _body_axes(fig, (grid[:, 1],), "the body turned by q(t)")
