@@ -21,7 +21,8 @@ from goldman_lib._kernels import norm as _length
 
 __all__ = ["complex_rotation", "complex_polar", "complex_multiply", "multiply", "conjugate", "norm", "inverse", "normalize",
            "from_axis_angle", "to_axis_angle", "rotate", "conformal_map", "to_matrix", "from_matrix", "slerp",
-           "key_frames", "matrix_lerp", "matrix_key_frames", "matrix_distortion"]
+           "key_frames", "matrix_lerp", "matrix_key_frames", "matrix_distortion", "pure", "mirror",
+           "rotation_from_mirrors", "nlerp", "stereographic", "inverse_stereographic"]
 
 
 def _quaternions(q, name: str) -> np.ndarray:
@@ -460,3 +461,119 @@ def matrix_distortion(M) -> np.ndarray:
         raise ValueError(f"M must be a 3x3 or 4x4 matrix (or a stack of them); got shape {A.shape}")
     sv = np.linalg.svd(A[..., :3, :3], compute_uv=False)
     return np.max(np.abs(sv - 1), axis=-1)
+
+
+# -- Chapter 15's framing: why a sandwich, mirrors, the double cover, slerp drawn on S³ ------------------
+
+def pure(v) -> np.ndarray:
+    """The pure quaternion ``(0, v)`` of 3D vectors ``v``: a vector as a mass-point of mass 0, the
+    way the sandwich ``q v q*`` reads it (Goldman §15.3.2).
+
+    v: (..., 3).  Returns (..., 4).
+
+    >>> pure([1, 2, 3]).tolist()
+    [0.0, 1.0, 2.0, 3.0]
+    """
+    vec = check_finite(as_float_array(v, "v"), "v")
+    if vec.ndim == 0 or vec.shape[-1] != 3:
+        raise ValueError(f"v must hold 3D vectors (last axis of length 3); got shape {vec.shape}")
+    return _join(np.zeros(vec.shape[:-1] + (1,)), vec)
+
+
+def mirror(normal, v) -> np.ndarray:
+    """The mirror image of vectors ``v`` in the plane through the origin perpendicular to ``normal``,
+    computed as the sandwich ``N v N`` of the unit pure quaternion ``N = (0, normal/|normal|)``
+    (Goldman §15.3.2): ``N v N = v - 2 (v·N) N``.  For a pure unit ``N``, ``N* = -N``, so
+    ``-N v N*`` is the same map.
+
+    normal: (3,) nonzero.  v: (..., 3).  Returns (..., 3).
+
+    >>> mirror([0, 0, 2], [1, 2, 3]).tolist()
+    [1.0, 2.0, -3.0]
+    """
+    n = check_finite(as_float_array(normal, "normal"), "normal")
+    if n.shape != (3,):
+        raise ValueError(f"normal must be one 3D vector; got shape {n.shape}")
+    length = float(np.linalg.norm(n))
+    if length == 0:
+        raise ValueError("normal must be nonzero: a mirror plane needs a normal direction")
+    N = pure(n / length)
+    return multiply(multiply(N, pure(v)), N)[..., 1:]
+
+
+def rotation_from_mirrors(normal1, normal2) -> np.ndarray:
+    """The unit quaternion ``N2 N1`` of two mirrors, in the planes through the origin perpendicular to
+    ``normal1`` and then to ``normal2`` (Goldman §15.3.2): ``N2 (N1 v N1) N2 = (N2 N1) v (N2 N1)*``,
+    the rotation about ``normal1 × normal2`` by twice the angle from ``normal1`` to ``normal2``.
+
+    >>> axis, angle = to_axis_angle(rotation_from_mirrors([1, 0, 0], [1, 1, 0]))
+    >>> (np.round(axis, 12) + 0.0).tolist(), round(float(angle), 9)
+    ([0.0, 0.0, 1.0], 90.0)
+    """
+    n1 = check_finite(as_float_array(normal1, "normal1"), "normal1")
+    n2 = check_finite(as_float_array(normal2, "normal2"), "normal2")
+    for name, n in (("normal1", n1), ("normal2", n2)):
+        if n.shape != (3,) or not np.any(n):
+            raise ValueError(f"{name} must be one nonzero 3D vector; got {n.tolist()}")
+    return multiply(pure(n2 / np.linalg.norm(n2)), pure(n1 / np.linalg.norm(n1)))
+
+
+def nlerp(q0, q1, t) -> np.ndarray:
+    """Normalised linear interpolation of unit quaternions along the shorter side, ``((1-t) q0 + t q1)
+    / |(1-t) q0 + t q1|`` with ``q1`` negated when ``q0·q1 < 0``: the chord of 4-space pushed back
+    onto the sphere.  It runs along the same great arc as :func:`slerp` but not at constant speed (our
+    formulation, the foil to slerp in §15.3.4).  On the shorter side the chord never passes through
+    0 (``q1 = -q0`` is negated to ``q0``).
+
+    >>> np.round(nlerp([1, 0, 0, 0], from_axis_angle([0, 0, 1], 90), 0.5), 6).tolist()
+    [0.92388, 0.0, 0.0, 0.382683]
+    """
+    a = _quaternions(q0, "q0")
+    b = _quaternions(q1, "q1")
+    a = a / _nonzero(a, "q0")[..., None]
+    b = b / _nonzero(b, "q1")[..., None]
+    tt = as_parameter(t, "t")[..., None]
+    d = np.sum(a * b, axis=-1, keepdims=True)
+    b = np.where(d < 0, -b, b)
+    with np.errstate(over="ignore", invalid="ignore"):
+        chord = (1 - tt) * a + tt * b
+    chord = finite_result(chord, "t", why="is too large in magnitude")
+    return chord / _nonzero(chord, "t")[..., None]
+
+
+def stereographic(q) -> np.ndarray:
+    """Stereographic projection of unit quaternions from the pole ``-1 = (-1, 0, 0, 0)`` to 3-space:
+    ``(w, x, y, z) -> (x, y, z) / (1 + w)`` (our formulation, to draw §15.3.4's slerp on S³).  The
+    identity ``1`` goes to the origin, the rotation by θ about the unit u, ``(cos(θ/2), sin(θ/2) u)``,
+    to ``tan(θ/4) u``; great circles go to circles or lines, and angles are kept (a conformal map).
+    ``q`` is normalised first.  Raises ValueError for ``q`` at (or within 1e-9 of) the pole, which
+    goes to infinity: pass ``-q``, the same rotation, instead.
+
+    q: (..., 4).  Returns (..., 3).
+
+    >>> (np.round(stereographic(from_axis_angle([0, 0, 1], 180)), 12) + 0.0).tolist()
+    [0.0, 0.0, 1.0]
+    """
+    u = normalize(q)
+    if np.any(1 + u[..., 0] < 1e-9):
+        raise ValueError("q must not be the pole -1 = (-1, 0, 0, 0) of the projection (it goes to infinity); "
+                         "-q is the same rotation and projects to the origin's side")
+    return u[..., 1:] / (1 + u[..., :1])
+
+
+def inverse_stereographic(p) -> np.ndarray:
+    """The unit quaternion that :func:`stereographic` sends to the point ``p`` of 3-space:
+    ``((1 - |p|^2) / (1 + |p|^2), 2 p / (1 + |p|^2))`` (our formulation).
+
+    p: (..., 3).  Returns (..., 4).
+
+    >>> inverse_stereographic([0, 0, 1]).tolist()
+    [0.0, 0.0, 0.0, 1.0]
+    """
+    P = check_finite(as_float_array(p, "p"), "p")
+    if P.ndim == 0 or P.shape[-1] != 3:
+        raise ValueError(f"p must hold 3D points (last axis of length 3); got shape {P.shape}")
+    s = np.sum(P * P, axis=-1, keepdims=True)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = _join((1 - s) / (1 + s), 2 * P / (1 + s))
+    return finite_result(out, "p", why="is too far out (its preimage is the pole)")

@@ -174,3 +174,105 @@ def test_bad_input_names_the_parameter_of_each_function():
         qt.complex_multiply([[1.0, 1.0]], 1e308 + 1e308j)
     with pytest.raises(ValueError, match="t is too large"):
         qt.matrix_lerp(np.eye(3), -np.eye(3), 1e308)
+
+
+# -- the chapter's framing: pure quaternions, mirrors, nlerp, the stereographic picture of S³ ---------
+
+def test_one_sided_product_leaves_three_space_and_the_sandwich_does_not():
+    # q = 90° about z = (√2/2, 0, 0, √2/2), v = (1, 0, 1): q v = (-q⃗·v, w v + q⃗ × v), worked by hand
+    q, v = qt.from_axis_angle([0, 0, 1], 90), np.array([1.0, 0.0, 1.0])
+    h = np.sqrt(0.5)
+    assert np.allclose(qt.multiply(q, qt.pure(v)), [-h, h, h, h])
+    assert np.allclose(qt.multiply(qt.multiply(q, qt.pure(v)), qt.conjugate(q)), [0, 0, 1, 1])
+    assert qt.pure([[1, 2, 3], [4, 5, 6]]).shape == (2, 4)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.floats(-3, 3), min_size=3, max_size=3).filter(lambda n: np.linalg.norm(n) > 0.1),
+       st.lists(st.floats(-3, 3), min_size=3, max_size=3))
+def test_mirror_sandwich_is_the_mirror_of_chapter_12(n, v):
+    from goldman_lib import transforms
+
+    got = qt.mirror(n, v)
+    assert np.allclose(got, transforms.reflect([v], [0, 0, 0], n)[0], atol=1e-9)
+    assert np.allclose(got, np.asarray(v) @ transforms.mirror([0, 0, 0], n)[:3, :3], atol=1e-9)
+    N = qt.pure(np.asarray(n) / np.linalg.norm(n))
+    minus = -qt.multiply(qt.multiply(N, qt.pure(v)), qt.conjugate(N))     # -N v N* is the same map
+    assert np.allclose(minus[1:], got, atol=1e-9) and abs(minus[0]) < 1e-9
+
+
+def test_mirror_by_hand():
+    assert np.allclose(qt.mirror([1, 1, 0], [1, 0, 0]), [0, -1, 0])     # the plane x = -y swaps and negates
+    with pytest.raises(ValueError, match="normal"):
+        qt.mirror([0, 0, 0], [1, 0, 0])
+
+
+@pytest.mark.parametrize("n1,n2", [([1, 0, 0], [1, 1, 0]), ([0, 0, 1], [0, 1, 2]), ([1, -2, 2], [2, 2, 1])])
+def test_two_mirrors_make_a_rotation_by_twice_the_angle_between_them(n1, n2):
+    n1, n2 = np.array(n1, float), np.array(n2, float)
+    phi = np.arccos(n1 @ n2 / np.linalg.norm(n1) / np.linalg.norm(n2))
+    axis = np.cross(n1, n2)
+    reference = Rotation.from_rotvec(2 * phi * axis / np.linalg.norm(axis))   # scipy, column vectors
+    v = np.array([0.3, -1.1, 0.7])
+    q = qt.rotation_from_mirrors(n1, n2)
+    assert np.allclose(qt.rotate(q, v), reference.apply(v))
+    assert np.allclose(qt.mirror(n2, qt.mirror(n1, v)), reference.apply(v))
+
+
+def test_nlerp_runs_the_slerp_arc_at_another_speed():
+    q0, q1 = np.array([1.0, 0, 0, 0]), qt.from_axis_angle([0, 0, 1], 120)
+    # t = 1/4: normalise (3/4, 0, 0, 0) + (1/4)(1/2, 0, 0, √3/2) = (7/8, 0, 0, √3/8), worked by hand
+    expected = np.array([7 / 8, 0, 0, np.sqrt(3) / 8]) / np.sqrt(49 / 64 + 3 / 64)
+    assert np.allclose(qt.nlerp(q0, q1, 0.25), expected)
+    assert np.allclose(qt.nlerp(q0, q1, 0.5), qt.slerp(q0, q1, 0.5))
+    assert np.allclose(qt.nlerp(q0, -q1, 0.25), expected)                   # the shorter side
+    ts = np.linspace(0, 1, 9)
+    angles = qt.to_axis_angle(qt.nlerp(q0, q1, ts))[1]
+    steps = np.diff(angles)
+    assert steps[0] < 14 < steps[4]                                          # bunched at the ends
+    assert np.allclose(np.diff(qt.to_axis_angle(qt.slerp(q0, q1, ts))[1]), 15)
+
+
+def test_stereographic_projection_of_unit_quaternions():
+    assert np.allclose(qt.stereographic([1, 0, 0, 0]), 0)                  # the pole's antipode -> origin
+    u = np.array([1.0, 2.0, 2.0]) / 3
+    for theta in (30.0, 90.0, 200.0, 300.0):
+        # (cos(θ/2), sin(θ/2) u) -> sin(θ/2)/(1 + cos(θ/2)) u = tan(θ/4) u
+        assert np.allclose(qt.stereographic(qt.from_axis_angle(u, theta)), np.tan(np.radians(theta) / 4) * u)
+    assert np.allclose(qt.stereographic([2, 0, 0, 0]), 0)                  # normalised first
+    with pytest.raises(ValueError, match="pole"):
+        qt.stereographic([-1, 0, 0, 0])
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.floats(-2, 2), min_size=4, max_size=4).filter(lambda q: np.linalg.norm(q) > 0.1))
+def test_stereographic_round_trip(q):
+    q = np.asarray(q) / np.linalg.norm(q)
+    if q[0] < 0:
+        q = -q                        # the same rotation, away from the pole
+    back = qt.inverse_stereographic(qt.stereographic(q))
+    assert np.allclose(back, q, atol=1e-9)
+    p = np.array([q[1] - 0.5, 3.0 * q[2], q[3]])
+    assert np.isclose(np.linalg.norm(qt.inverse_stereographic(p)), 1.0)
+    assert np.allclose(qt.stereographic(qt.inverse_stereographic(p)), p, atol=1e-9)
+
+
+def test_stereographic_sends_a_great_circle_to_a_circle():
+    rng = np.random.default_rng(4)
+    a, b = rng.normal(size=4), rng.normal(size=4)
+    a /= np.linalg.norm(a)
+    b -= (a @ b) * a
+    b /= np.linalg.norm(b)
+    s = np.linspace(0, 2 * np.pi, 40, endpoint=False)[:, None]
+    circle = np.cos(s) * a + np.sin(s) * b                      # a great circle of S³, missing the pole
+    assert np.all(circle[:, 0] > -0.999)
+    P = qt.stereographic(circle)
+    centred = P - P.mean(axis=0)
+    assert np.linalg.svd(centred, compute_uv=False)[2] < 1e-9   # in one plane
+    # the circumcentre of three of its points is at one distance from them all
+    A, B, C = P[0], P[13], P[27]
+    ab, ac = B - A, C - A
+    n = np.cross(ab, ac)
+    centre = A + (np.cross(n, ab) * (ac @ ac) + np.cross(ac, n) * (ab @ ab)) / (2 * n @ n)
+    r = np.linalg.norm(P - centre, axis=1)
+    assert np.ptp(r) < 1e-9 * r.max()

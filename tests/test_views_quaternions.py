@@ -83,3 +83,47 @@ def test_the_play_widget_drives_the_frame_slider_and_the_plain_update():
     assert np.isclose(view.last_result["time"], 40 / qv.FRAMES * 4)
     view.set_values(frame=5)
     assert view.play.value == 5
+
+
+def test_double_cover_view_comes_back_at_720_not_360():
+    view = qv.double_cover_view()
+    r = view.set_values(t=360.0)
+    assert np.allclose(r["q"], [-1, 0, 0, 0]) and np.allclose(r["image"], qv.BODY_ARROWS)
+    assert "other quaternion" in r["status"]
+    r = view.set_values(t=720.0)
+    assert np.allclose(r["q"], [1, 0, 0, 0]) and "both back" in r["status"]
+    a, b = view.set_values(t=130.0), view.set_values(t=490.0)
+    assert np.allclose(b["q"], -a["q"]) and np.allclose(b["image"], a["image"]) and np.allclose(b["matrix"], a["matrix"])
+    assert "q(t) = −q(130°)" in b["status"]
+    # the body drawn is the body turned by q(t) about COVER_AXIS (scipy as the reference)
+    from scipy.spatial.transform import Rotation
+
+    expected = Rotation.from_rotvec(np.radians(130.0) * qv.COVER_AXIS).apply(qv.BODY_ARROWS)
+    assert np.allclose(a["image"], expected)
+
+
+def test_slerp_s3_view_marks_slerp_evenly_and_nlerp_bunched():
+    view = qv.slerp_s3_view()
+    q0, q1 = qv.S3_KEYS[view.values()["keys"]]
+    for t in (0.0, 0.1, 0.25, 0.5, 0.9, 1.0):
+        r = view.set_values(t=t)
+        assert np.isclose(r["slerp_turned"], t * r["total"])                    # constant speed
+        assert np.allclose(r["slerp_point"], qt.stereographic(qt.slerp(q0, q1, t)))
+        assert np.allclose(r["nlerp_point"], qt.stereographic(qt.nlerp(q0, q1, t)))
+    r = view.set_values(t=0.2)
+    assert r["nlerp_turned"] < 0.2 * r["total"] - 3                             # slow near the key
+    r = view.set_values(t=0.5)
+    assert np.isclose(r["nlerp_turned"], 0.5 * r["total"])
+    for keys in qv.S3_KEYS:
+        r = view.set_values(keys=keys, t=0.3)
+        assert view.last_error is None and np.isfinite(r["slerp_point"]).all()
+
+
+def test_one_sided_product_plot_draws_minus_sin_half_theta_u_dot_v_and_zero():
+    v = np.array([0.3, -1.2, 2.0])
+    u = np.array([1.0, 1.0, 1.0]) / np.sqrt(3)
+    ax = qv.one_sided_product_plot([1, 1, 1], v)
+    one_sided, sandwich = ax.get_lines()[:2]
+    theta = one_sided.get_xdata()
+    assert np.allclose(one_sided.get_ydata(), -np.sin(np.radians(theta) / 2) * (u @ v))   # -q⃗·v, by hand
+    assert np.allclose(sandwich.get_ydata(), 0, atol=1e-12)

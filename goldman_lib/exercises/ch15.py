@@ -1,8 +1,11 @@
 """Exercise checkers for chapter 15, complex numbers and quaternions (Goldman §15.2-15.3).
 
-Each exercise's data are module constants, so the notebook prints the problem from here and the
-checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
-``SLIPS`` the wrong answers each checker recognises.  ``None`` or ``...`` means "not answered yet".
+Every numeric exercise deals new instances (issue 17 §3, :mod:`goldman_lib.exercises.deal`): instance 0
+is the module constants below, which the stored notebook shows; ``deal("check_...")`` (or the button
+beside the exercise) deals another, and the checker, ``PROBLEMS`` and ``steps("check_...")`` follow the
+current instance.  The chapter's "show that" exercises (in :mod:`goldman_lib.exercises.proofs`) ask
+for an identity, not a number, so they do not deal.  ``SLIPS`` holds the wrong answers of the kinds
+each checker recognises, for the stored instance.  ``None`` or ``...`` means "not answered yet".
 Every exercise uses other numbers, quaternions and angles than the chapter's worked examples.  The
 programming project, :func:`check_slerp_project`, runs the learner's ``slerp(q0, q1, t)`` against
 :func:`goldman_lib.quaternions.slerp` on seeded cases, degenerate ones included.
@@ -26,11 +29,12 @@ from goldman_lib import quaternions as qt
 from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
+from goldman_lib.exercises.deal import Deck, memo, within
 from goldman_lib.exercises.projects import Case, check_project, describe
 
 __all__ = ["PROBLEMS", "SLIPS", "COMPLEX_FROM", "COMPLEX_TO", "PRODUCT_P", "PRODUCT_Q", "ROTATION_AXIS",
            "ROTATION_ANGLE", "ROTATION_V", "CONFORMAL_Q", "CONFORMAL_V", "MATRIX_Q", "SLERP_Q0", "SLERP_Q1", "SLERP_T",
-           "LERP_ANGLE", "LERP_T", "check_complex_factor", "check_quaternion_product", "check_rotated_vector",
+           "LERP_ANGLE", "LERP_T", "DECK", "deal", "steps", "current", "deal_button", "check_complex_factor", "check_quaternion_product", "check_rotated_vector",
            "check_conformal_image", "check_rotation_matrix", "check_slerp_angle", "check_lerp_distortion",
            "check_slerp_project", "slerp_project_cases"]
 
@@ -58,6 +62,9 @@ LERP_ANGLE = 120.0
 LERP_T = 0.25
 
 
+DECK = Deck("ch15")
+
+
 def _q_text(q) -> str:
     return "(" + ", ".join(fmt(v) for v in q) + ")"
 
@@ -66,46 +73,126 @@ def _q5(q) -> str:
     return "(" + ", ".join(f"{v:.5f}" for v in q) + ")"
 
 
-PROBLEMS = {
-    "check_complex_factor": (
-        f"Which complex number z sends the point {_q_text(COMPLEX_FROM)} = 2 + i to {_q_text(COMPLEX_TO)} = -1 + 3i "
-        f"by multiplication (z (2 + i) = -1 + 3i)? Give z as [Re z, Im z]; multiplying by z then rotates the "
-        f"whole plane by arg z and scales it by |z| (Goldman §15.2)."),
-    "check_quaternion_product": (
-        f"Compute the quaternion product p q for p = {_q_text(PRODUCT_P)} and q = {_q_text(PRODUCT_Q)}, written "
-        f"(w, x, y, z) = w + x i + y j + z k. Give [w, x, y, z] (Goldman §15.3.1)."),
-    "check_rotated_vector": (
-        f"Let q be the unit quaternion of the rotation by {fmt(ROTATION_ANGLE)} degrees about the axis "
-        f"{_q_text(ROTATION_AXIS)} (counterclockwise looking down the axis towards the origin). Rotate "
-        f"v = {_q_text(ROTATION_V)} by q v q*: give the image [x, y, z], to 4 decimals (Goldman §15.3.2)."),
-    "check_conformal_image": (
-        f"The quaternion q = {_q_text(CONFORMAL_Q)} is not a unit quaternion. Compute the vector part of q v q* for "
-        f"v = {_q_text(CONFORMAL_V)}: the image of v under the conformal map of q. Give [x, y, z] "
-        f"(Goldman §15.3.2)."),
-    "check_rotation_matrix": (
-        f"Convert the unit quaternion q = {_q_text(MATRIX_Q)} to the 3x3 matrix M of its rotation in the book's "
-        f"row convention (v' = v M, so the first row is the image of (1, 0, 0)). Give M as [[..], [..], [..]] "
-        f"(Goldman §15.3.6)."),
-    "check_slerp_angle": (
-        f"Two key orientations are the unit quaternions q0 = {_q5(SLERP_Q0)} and q1 = {_q5(SLERP_Q1)} "
-        f"(to 5 decimals), both rotations about the z-axis. Slerp between them (the shorter way) at t = {fmt(SLERP_T)}: "
-        f"the result is a rotation about the z-axis. Give its signed angle in degrees, between -180 and 180 "
-        f"(positive = counterclockwise looking down z), to 2 decimals (Goldman §15.3.5)."),
-    "check_lerp_distortion": (
-        f"Let R be the matrix of the rotation by {fmt(LERP_ANGLE)} degrees about the z-axis. Blend it linearly "
-        f"with the identity: M = (1 - t) I + t R at t = {fmt(LERP_T)}. How far is M from a rotation? Give its "
-        f"distortion, the largest |σ - 1| over M's singular values σ (0 for a rotation), to 4 decimals "
-        f"(Goldman §15.3.4)."),
-}
+def _f6(x) -> str:
+    """A number of the worked steps, rounded to six digits (no floating-point noise)."""
+    return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
 
 
-# -- reading answers ---------------------------------------------------------------------------------
+def _arr(v) -> np.ndarray:
+    return np.asarray(v, dtype=float)
+
+
+def _tup(a) -> tuple:
+    return tuple(float(x) for x in np.asarray(a, dtype=float).ravel())
+
+
+def _ints(rng, lo, hi, size) -> tuple:
+    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
+
+
+def _pick(rng, options):
+    return options[int(rng.integers(0, len(options)))]
+
+
+def _root_text(n2: float) -> str:
+    """The square root of a whole number as a learner writes it: 3 for 9, √2 for 2."""
+    r = math.isqrt(int(round(n2)))
+    return fmt(r) if r * r == int(round(n2)) else f"√{fmt(n2)}"
+
+
+def _complex_text(c) -> str:
+    """A Gaussian integer written a + b i: 2 + i, -1 + 3i, 2 - i, 3, -i."""
+    re, im = (float(x) for x in c)
+    if im == 0:
+        return fmt(re)
+    mag = "" if abs(im) == 1 else fmt(abs(im))
+    if re == 0:
+        return ("-" if im < 0 else "") + mag + "i"
+    return f"{fmt(re)} {'-' if im < 0 else '+'} {mag}i"
+
+
+def _named(name, phrases):
+    """``well_posed`` part shared by the exercises: on this instance the checker accepts the answer
+    and names every slip by its own misconception (the checker tests the forms it recognises in
+    turn, so a slip must not fall into an earlier slip's test)."""
+    def ok(p):
+        ex = DECK.exercises[name]
+        if not ex.check(_plain(ex.answer(p)), p).correct:
+            return "the checker refuses the answer (rounding)"
+        for slip, value in ex.slips(p).items():
+            r = ex.check(_plain(value), p)
+            if r.correct or phrases[slip] not in r.message:
+                return f"the slip '{slip}' is not named by its own message"
+        return None
+    return ok
+
+
+def _plain(value):
+    arr = np.asarray(value)
+    return arr.tolist() if arr.dtype.kind in "biuf" else value
+
 
 # -- §15.2 ---------------------------------------------------------------------------------------------
 
-def check_complex_factor(answer) -> Result:
-    """Check the complex number z with z (2 + i) = -1 + 3i, a quotient of complex numbers (Goldman
-    §15.2); read as [Re z, Im z] or as a Python complex number.
+_STORED_COMPLEX = {"a": COMPLEX_FROM, "b": COMPLEX_TO}
+_COMPLEX_PHRASES = {"the product": "the product", "upside down": "upside down",
+                    "the wrong conjugate": "instead of its conjugate", "coordinatewise": "one by one"}
+
+
+@memo
+def _complex_answers(p):
+    a, b = complex(*p["a"]), complex(*p["b"])
+    pair = lambda c: (c.real, c.imag)  # noqa: E731
+    slips = {"the product": pair(a * b), "upside down": pair(a / b),
+             "the wrong conjugate": pair(b * a / abs(a) ** 2),
+             "coordinatewise": (b.real / a.real, b.imag / a.imag)}
+    return pair(b / a), slips
+
+
+def _complex_generate(rng) -> dict:
+    return {"a": _ints(rng, -3, 3, 2), "b": _ints(rng, -4, 4, 2)}
+
+
+def _complex_ok(p):
+    a, b = p["a"], p["b"]
+    if a[0] == 0 or a[1] == 0:
+        return "2 + i must have both parts nonzero (the coordinatewise slip divides by them)"
+    z = complex(*b) / complex(*a)
+    if abs(z.imag) < 0.1 or abs(z.real) < 0.1:
+        return "z is (nearly) real or imaginary: a turn by a multiple of 90 degrees teaches less"
+    return _named("check_complex_factor", _COMPLEX_PHRASES)(p)
+
+
+def _complex_statement(p) -> str:
+    a, b = p["a"], p["b"]
+    return (f"Which complex number z sends the point {_q_text(a)} = {_complex_text(a)} to {_q_text(b)} = "
+            f"{_complex_text(b)} by multiplication (z ({_complex_text(a)}) = {_complex_text(b)})? Give z as [Re z, Im z]; "
+            f"multiplying by z then rotates the whole plane by arg z and scales it by |z| (Goldman §15.2).")
+
+
+def _complex_steps(p) -> str:
+    a, b = complex(*p["a"]), complex(*p["b"])
+    conj = a.conjugate()
+    top = b * conj
+    z = complex(*_complex_answers(p)[0])
+    scale, angle = qt.complex_polar(z)
+    n2 = abs(a) ** 2
+    return (f"1. z = ({_complex_text(p['b'])}) / ({_complex_text(p['a'])}); multiply top and bottom by the conjugate "
+            f"{_complex_text((conj.real, conj.imag))}.\n"
+            f"2. Top: ({_complex_text(p['b'])})({_complex_text((conj.real, conj.imag))}) = "
+            f"{_complex_text((top.real, top.imag))} (using i^2 = -1); bottom: |{_complex_text(p['a'])}|^2 = {fmt(n2)}.\n"
+            f"3. z = ({_complex_text((top.real, top.imag))}) / {fmt(n2)} = {_f6(z.real)} + {_f6(z.imag)} i, "
+            f"so [Re z, Im z] = {_f6([z.real, z.imag])}.\n"
+            f"4. Check: |z| = {_f6(scale)} = |{_complex_text(p['b'])}| / |{_complex_text(p['a'])}|, and multiplying "
+            f"by z turns the plane by arg z = {_f6(angle)} degrees.")
+
+
+@DECK.exercise(stored=_STORED_COMPLEX, generate=_complex_generate, answer=lambda p: _complex_answers(p)[0],
+               slips=lambda p: _complex_answers(p)[1], statement=_complex_statement, steps=_complex_steps,
+               same=within(1e-4), well_posed=_complex_ok)
+def check_complex_factor(answer, p) -> Result:
+    """Check the complex number z that multiplies the statement's first point into its second, a
+    quotient of complex numbers (Goldman §15.2); read as [Re z, Im z] or as a Python complex number.
 
     Recognises the product instead of the quotient, the quotient the other way up, a conjugate
     taken on the wrong factor, and coordinates divided one by one.
@@ -115,32 +202,79 @@ def check_complex_factor(answer) -> Result:
     got, err = _read_vector(answer, "your z", 2, "z as [Re z, Im z]")
     if err is not None:
         return err
-    a, b = complex(*COMPLEX_FROM), complex(*COMPLEX_TO)
-    z = b / a
+    a, b = complex(*p["a"]), complex(*p["b"])
+    at, bt = _complex_text(p["a"]), _complex_text(p["b"])
+    ct = _complex_text((a.real, -a.imag))
+    expected, slips = _complex_answers(p)
     tol = 1e-4
-    pair = lambda c: (c.real, c.imag)  # noqa: E731
-    if _close(got, pair(z), tol):
+    if _close(got, expected, tol):
+        z = complex(*expected)
         scale, angle = qt.complex_polar(z)
         return correct(f"z = {fmt(z.real)} + {fmt(z.imag)} i: multiplying by z rotates the plane by "
-                       f"{fmt(angle, 4)} degrees and scales it by |z| = {fmt(scale, 4)} = |-1 + 3i| / |2 + i|.")
-    if _close(got, pair(a * b), tol):
-        return wrong("that is (2 + i)(-1 + 3i), the product; z is the quotient (-1 + 3i) / (2 + i): multiply top and "
-                     "bottom by the conjugate 2 - i.")
-    if _close(got, pair(a / b), tol):
-        return wrong("that is (2 + i) / (-1 + 3i), the quotient upside down: it sends -1 + 3i back to 2 + i.")
-    if _close(got, pair(b * a / abs(a) ** 2), tol):
-        return wrong("you multiplied by 2 + i instead of its conjugate 2 - i: 1 / (2 + i) = (2 - i) / |2 + i|^2.")
-    if _close(got, (b.real / a.real, b.imag / a.imag), tol):
-        return wrong("you divided the coordinates one by one; complex division is not coordinatewise "
-                     "(i^2 = -1 mixes them): multiply top and bottom by the conjugate 2 - i.")
-    return wrong(f"your z is {_dist(got, pair(z))} from the right one; check that z (2 + i) "
-                 f"gives -1 + 3i, using i^2 = -1.")
+                       f"{fmt(angle, 4)} degrees and scales it by |z| = {fmt(scale, 4)} = |{bt}| / |{at}|.")
+    if _close(got, slips["the product"], tol):
+        return wrong(f"that is ({at})({bt}), the product; z is the quotient ({bt}) / ({at}): multiply top and "
+                     f"bottom by the conjugate {ct}.")
+    if _close(got, slips["upside down"], tol):
+        return wrong(f"that is ({at}) / ({bt}), the quotient upside down: it sends {bt} back to {at}.")
+    if _close(got, slips["the wrong conjugate"], tol):
+        return wrong(f"you multiplied by {at} instead of its conjugate {ct}: 1 / ({at}) = ({ct}) / |{at}|^2.")
+    if _close(got, slips["coordinatewise"], tol):
+        return wrong(f"you divided the coordinates one by one; complex division is not coordinatewise "
+                     f"(i^2 = -1 mixes them): multiply top and bottom by the conjugate {ct}.")
+    return wrong(f"your z is {_dist(got, expected)} from the right one; check that z ({at}) "
+                 f"gives {bt}, using i^2 = -1.")
 
 
 # -- §15.3.1 -------------------------------------------------------------------------------------------
 
-def check_quaternion_product(answer) -> Result:
-    """Check the product p q = (ab - u·v, a v + b u + u × v) of ``PRODUCT_P`` and ``PRODUCT_Q``
+_STORED_PRODUCT = {"p": PRODUCT_P, "q": PRODUCT_Q}
+_PRODUCT_PHRASES = {"q p": "that is q p", "no cross product": "lacks the cross product",
+                    "plus u·v": "adds u·v", "coordinatewise": "coordinate by coordinate"}
+
+
+@memo
+def _product_answers(p):
+    P, Q = _arr(p["p"]), _arr(p["q"])
+    a, u, b, v = P[0], P[1:], Q[0], Q[1:]
+    slips = {"q p": qt.multiply(Q, P), "no cross product": np.r_[a * b - u @ v, a * v + b * u],
+             "plus u·v": np.r_[a * b + u @ v, a * v + b * u + np.cross(u, v)], "coordinatewise": P * Q}
+    return qt.multiply(P, Q), slips
+
+
+def _product_generate(rng) -> dict:
+    return {"p": _ints(rng, -3, 3, 4), "q": _ints(rng, -3, 3, 4)}
+
+
+def _product_ok(p):
+    P, Q = _arr(p["p"]), _arr(p["q"])
+    if np.linalg.norm(np.cross(P[1:], Q[1:])) == 0:
+        return "the vector parts are parallel: p and q commute, so the order would not matter"
+    if P[0] == 0 or Q[0] == 0:
+        return "a pure factor leaves out the terms a v and b u"
+    return _named("check_quaternion_product", _PRODUCT_PHRASES)(p)
+
+
+def _product_statement(p) -> str:
+    return (f"Compute the quaternion product p q for p = {_q_text(p['p'])} and q = {_q_text(p['q'])}, written "
+            f"(w, x, y, z) = w + x i + y j + z k. Give [w, x, y, z] (Goldman §15.3.1).")
+
+
+def _product_steps(p) -> str:
+    P, Q = _arr(p["p"]), _arr(p["q"])
+    a, u, b, v = P[0], P[1:], Q[0], Q[1:]
+    pq = _product_answers(p)[0]
+    return (f"1. p = (a, u) with a = {fmt(a)}, u = {fmt(u)}; q = (b, v) with b = {fmt(b)}, v = {fmt(v)}.\n"
+            f"2. Scalar part: ab - u·v = {fmt(a * b)} - ({fmt(u @ v)}) = {fmt(pq[0])}.\n"
+            f"3. Vector part: a v + b u + u × v = {fmt(a * v)} + {fmt(b * u)} + {fmt(np.cross(u, v))} = {fmt(pq[1:])}.\n"
+            f"4. p q = {fmt(pq)}; in the other order q p = {fmt(qt.multiply(Q, P))} (u × v changes sign).")
+
+
+@DECK.exercise(stored=_STORED_PRODUCT, generate=_product_generate, answer=lambda p: _product_answers(p)[0],
+               slips=lambda p: _product_answers(p)[1], statement=_product_statement, steps=_product_steps,
+               same=within(1e-6), well_posed=_product_ok)
+def check_quaternion_product(answer, p) -> Result:
+    """Check the product p q = (ab - u·v, a v + b u + u × v) of the statement's p and q
     (Goldman §15.3.1).
 
     Recognises q p (the other order), a missing cross product, a plus sign on the dot product, and
@@ -149,27 +283,27 @@ def check_quaternion_product(answer) -> Result:
     got, err = _read_vector(answer, "your product", 4, "p q as [w, x, y, z]")
     if err is not None:
         return err
-    p, q = np.array(PRODUCT_P), np.array(PRODUCT_Q)
-    expected = qt.multiply(p, q)
-    a, u, b, v = p[0], p[1:], q[0], q[1:]
+    P, Q = _arr(p["p"]), _arr(p["q"])
+    expected, slips = _product_answers(p)
     tol = 1e-6
     if _close(got, expected, tol):
-        return correct(f"p q = {fmt(expected)}, while q p = {fmt(qt.multiply(q, p))}: the two differ by 2 u × v, "
+        return correct(f"p q = {fmt(expected)}, while q p = {fmt(slips['q p'])}: the two differ by 2 u × v, "
                        f"so the product is not commutative.")
-    if _close(got, qt.multiply(q, p), tol):
+    if _close(got, slips["q p"], tol):
         return wrong("that is q p, the product in the other order: the quaternion product is not commutative "
                      "(u × v changes sign), so p q and q p differ. Multiply with p on the left.")
-    if _close(got, np.r_[a * b - u @ v, a * v + b * u], tol):
+    if _close(got, slips["no cross product"], tol):
         return wrong("your vector part lacks the cross product u × v: (a, u)(b, v) = (ab - u·v, a v + b u + u × v), "
                      "since i j = k, j k = i, k i = j.")
-    if _close(got, np.r_[a * b + u @ v, a * v + b * u + np.cross(u, v)], tol):
+    if _close(got, slips["plus u·v"], tol):
         return wrong("your scalar part adds u·v; it subtracts it, since i^2 = j^2 = k^2 = -1: "
                      "the scalar part is ab - u·v.")
-    if _close(got, p * q, tol):
+    if _close(got, slips["coordinatewise"], tol):
         return wrong("you multiplied coordinate by coordinate; expand (a + u)(b + v) with the rules i^2 = -1, "
                      "i j = k = -j i, and so on.")
     return wrong(f"your product is {_dist(got, expected)} from p q; use (a, u)(b, v) = "
-                 f"(ab - u·v, a v + b u + u × v) with a = 1, u = (2, 0, -1), b = 2, v = (-1, 1, 3).")
+                 f"(ab - u·v, a v + b u + u × v) with a = {fmt(P[0])}, u = {fmt(P[1:])}, b = {fmt(Q[0])}, "
+                 f"v = {fmt(Q[1:])}.")
 
 
 # -- §15.3.2 -------------------------------------------------------------------------------------------
@@ -179,48 +313,157 @@ def _sandwich(a, v, b):
     return qt.multiply(qt.multiply(a, np.r_[0.0, v]), b)[1:]
 
 
-def check_rotated_vector(answer) -> Result:
-    """Check q v q* for the unit quaternion q of the rotation ``ROTATION_ANGLE`` about ``ROTATION_AXIS``
-    and v = ``ROTATION_V`` (Goldman §15.3.2).
+_STORED_ROTATION = {"axis": ROTATION_AXIS, "angle": ROTATION_ANGLE, "v": ROTATION_V}
+#: cos and sin of the half angles of the rotations dealt, written exactly
+_HALF_TRIG = {30.0: ("√3/2", "1/2"), 45.0: ("√2/2", "√2/2"), 135.0: ("-√2/2", "√2/2"), 150.0: ("-√3/2", "1/2")}
+_ROTATION_AXES = ((1.0, 0.0, 1.0), (1.0, 1.0, 0.0), (0.0, 1.0, 1.0), (1.0, -1.0, 0.0), (1.0, 0.0, -1.0),
+                  (0.0, 1.0, -1.0), (1.0, 1.0, 1.0), (1.0, -1.0, 1.0), (1.0, 1.0, -1.0), (-1.0, 1.0, 1.0),
+                  (1.0, 2.0, 2.0), (2.0, 1.0, 2.0), (2.0, 2.0, 1.0), (2.0, -1.0, 2.0), (0.0, 3.0, 4.0), (3.0, 0.0, 4.0))
+_ROTATION_PHRASES = {"twice the angle": "twice the angle", "q* v q": "that is q* v q", "q v q": "q v q:",
+                     "radians": "as if it were radians", "axis not normalised": "not a unit quaternion"}
+
+
+@memo
+def _rotation_answers(p):
+    axis, th, v = _arr(p["axis"]), float(p["angle"]), _arr(p["v"])
+    q = qt.from_axis_angle(axis, th)
+    raw = np.r_[math.cos(math.radians(th) / 2), math.sin(math.radians(th) / 2) * axis]
+    slips = {"twice the angle": qt.rotate(qt.from_axis_angle(axis, 2 * th), v),
+             "q* v q": _sandwich(qt.conjugate(q), v, q), "q v q": _sandwich(q, v, q),
+             "radians": qt.rotate(qt.from_axis_angle(axis, math.degrees(th)), v),
+             "axis not normalised": _sandwich(raw, v, qt.conjugate(raw))}
+    return qt.rotate(q, v), slips
+
+
+def _rotation_generate(rng) -> dict:
+    return {"axis": _pick(rng, _ROTATION_AXES), "angle": float(_pick(rng, (60.0, 90.0, 270.0, 300.0))),
+            "v": _ints(rng, -2, 2, 3)}
+
+
+def _rotation_ok(p):
+    axis, v = _arr(p["axis"]), _arr(p["v"])
+    if np.linalg.norm(np.cross(axis, v)) / np.linalg.norm(axis) < 0.5:
+        return "v lies on (or near) the axis: it hardly moves"
+    return _named("check_rotated_vector", _ROTATION_PHRASES)(p)
+
+
+def _rotation_statement(p) -> str:
+    return (f"Let q be the unit quaternion of the rotation by {fmt(p['angle'])} degrees about the axis "
+            f"{_q_text(p['axis'])} (counterclockwise looking down the axis towards the origin). Rotate "
+            f"v = {_q_text(p['v'])} by q v q*: give the image [x, y, z], to 4 decimals (Goldman §15.3.2).")
+
+
+def _half_text(th) -> str:
+    h = th / 2
+    c, s = _HALF_TRIG.get(h, (_f6(math.cos(math.radians(h))), _f6(math.sin(math.radians(h)))))
+    return f"θ/2 = {fmt(h)}°, cos {fmt(h)}° = {c}, sin {fmt(h)}° = {s}"
+
+
+def _rotation_steps(p) -> str:
+    axis, th, v = _arr(p["axis"]), float(p["angle"]), _arr(p["v"])
+    q = qt.from_axis_angle(axis, th)
+    qv = qt.multiply(q, np.r_[0.0, v])
+    qvq = qt.multiply(qv, qt.conjugate(q))
+    return (f"1. The unit axis u = {fmt(axis)} / {_root_text(axis @ axis)} = {_f6(axis / np.linalg.norm(axis))}; "
+            f"{_half_text(th)}.\n"
+            f"2. q = (cos(θ/2), sin(θ/2) u) = {_f6(q)}.\n"
+            f"3. q v = {_f6(qv)} (its scalar part is -q⃗·v: not a vector yet).\n"
+            f"4. (q v) q* = {_f6(qvq)}: scalar part 0, and the image is {_f6(qvq[1:])}, "
+            f"of length |v| = {_f6(np.linalg.norm(v))}.")
+
+
+@DECK.exercise(stored=_STORED_ROTATION, generate=_rotation_generate, answer=lambda p: _rotation_answers(p)[0],
+               slips=lambda p: _rotation_answers(p)[1], statement=_rotation_statement, steps=_rotation_steps,
+               same=within(2e-4), well_posed=_rotation_ok)
+def check_rotated_vector(answer, p) -> Result:
+    """Check q v q* for the unit quaternion q of the statement's rotation (an angle about an axis)
+    and its vector v (Goldman §15.3.2).
 
     Recognises the full angle in q (cos θ, not cos θ/2: twice the rotation), the opposite rotation
-    (q* v q), q v q instead of q v q*, and an axis left unnormalised.
+    (q* v q), q v q instead of q v q*, the angle taken in radians, and an axis left unnormalised.
     """
     got, err = _read_vector(answer, "your image", 3, "the image as [x, y, z]")
     if err is not None:
         return err
-    v = np.array(ROTATION_V)
-    q = qt.from_axis_angle(ROTATION_AXIS, ROTATION_ANGLE)
-    expected = qt.rotate(q, v)
+    axis, th, v = _arr(p["axis"]), float(p["angle"]), _arr(p["v"])
+    expected, slips = _rotation_answers(p)
     tol = 2e-4
     if _close(got, expected, tol):
         return correct(f"q v q* = {fmt(expected)}: the part of v along the axis stays, the rest turns by "
-                       f"{fmt(ROTATION_ANGLE)} degrees about it; the length {fmt(np.linalg.norm(v), 4)} is kept.")
-    full = qt.from_axis_angle(ROTATION_AXIS, 2 * ROTATION_ANGLE)
-    if _close(got, qt.rotate(full, v), tol):
+                       f"{fmt(th)} degrees about it; the length {fmt(np.linalg.norm(v), 4)} is kept.")
+    if _close(got, slips["twice the angle"], tol):
         return wrong("you rotated by twice the angle: q v q* turns by θ when q = (cos(θ/2), sin(θ/2) u), the half "
                      "angle, because q acts twice (once on each side).")
-    if _close(got, _sandwich(qt.conjugate(q), v, q), tol):
+    if _close(got, slips["q* v q"], tol):
         return wrong("that is q* v q, the rotation the other way (clockwise looking down the axis); the "
                      "counterclockwise rotation is q v q*.")
-    if _close(got, _sandwich(q, v, q), tol):
+    if _close(got, slips["q v q"], tol):
         return wrong("that is (the vector part of) q v q: the right side must be the conjugate q*, otherwise the "
                      "result is not even a pure vector.")
-    if _close(got, qt.rotate(qt.from_axis_angle(ROTATION_AXIS, math.degrees(ROTATION_ANGLE)), v), tol):
-        return wrong("you took cos and sin of the angle in degrees as if it were radians: np.cos and math.cos take "
-                     "radians, so convert first (θ/2 = 45°, cos 45° = sin 45° = √2/2).")
-    raw = np.r_[math.cos(math.radians(ROTATION_ANGLE) / 2), math.sin(math.radians(ROTATION_ANGLE) / 2) * np.array(ROTATION_AXIS)]
-    if _close(got, _sandwich(raw, v, qt.conjugate(raw)), tol):
-        return wrong("your q is not a unit quaternion: the axis (1, 0, 1) has length √2, so normalise it to "
-                     "u = (1, 0, 1)/√2 before forming (cos(θ/2), sin(θ/2) u); otherwise q v q* also scales by |q|^2.")
+    if _close(got, slips["radians"], tol):
+        return wrong(f"you took cos and sin of the angle in degrees as if it were radians: np.cos and math.cos take "
+                     f"radians, so convert first ({_half_text(th)}).")
+    if _close(got, slips["axis not normalised"], tol):
+        return wrong(f"your q is not a unit quaternion: the axis {_q_text(axis)} has length {_root_text(axis @ axis)}, "
+                     f"so normalise it to u = {_q_text(axis)}/{_root_text(axis @ axis)} before forming "
+                     f"(cos(θ/2), sin(θ/2) u); otherwise q v q* also scales by |q|^2.")
+    h = fmt(th / 2)
     return wrong(f"your image is {_dist(got, expected)} from q v q*; its length should stay "
                  f"|v| = {fmt(np.linalg.norm(v), 4)} (yours is {fmt(np.linalg.norm(got), 4)}). Split v into its part "
-                 f"along u and the rest, or multiply out q v q* with q = (cos 45°, sin 45° u).")
+                 f"along u and the rest, or multiply out q v q* with q = (cos {h}°, sin {h}° u).")
 
 
-def check_conformal_image(answer) -> Result:
-    """Check the vector part of q v q* for the quaternion ``CONFORMAL_Q`` (not a unit quaternion) and
-    v = ``CONFORMAL_V``: a rotation with a scaling by |q|^2 (Goldman §15.3.2).
+_STORED_CONFORMAL = {"q": CONFORMAL_Q, "v": CONFORMAL_V}
+_CONFORMAL_PHRASES = {"the rotation alone": "rotation alone", "scaled by |q|": "scaled by |q|",
+                      "q* v q": "that is q* v q", "q v q": "q v q:"}
+
+
+@memo
+def _conformal_answers(p):
+    q, v = _arr(p["q"]), _arr(p["v"])
+    expected = qt.conformal_map(q, v)
+    n = float(qt.norm(q))
+    slips = {"the rotation alone": expected / (n * n), "scaled by |q|": expected / n,
+             "q* v q": _sandwich(qt.conjugate(q), v, q), "q v q": _sandwich(q, v, q)}
+    return expected, slips
+
+
+def _conformal_generate(rng) -> dict:
+    w = float(rng.choice([-2.0, -1.0, 1.0, 2.0]))
+    return {"q": (w,) + _ints(rng, -2, 2, 3), "v": _ints(rng, -2, 2, 3)}
+
+
+def _conformal_ok(p):
+    q, v = _arr(p["q"]), _arr(p["v"])
+    if np.linalg.norm(np.cross(q[1:], v)) < 0.5:
+        return "v lies along the vector part of q (or q or v is zero there): the rotation leaves v alone"
+    return _named("check_conformal_image", _CONFORMAL_PHRASES)(p)
+
+
+def _conformal_statement(p) -> str:
+    return (f"The quaternion q = {_q_text(p['q'])} is not a unit quaternion. Compute the vector part of q v q* for "
+            f"v = {_q_text(p['v'])}: the image of v under the conformal map of q. Give [x, y, z] "
+            f"(Goldman §15.3.2).")
+
+
+def _conformal_steps(p) -> str:
+    q, v = _arr(p["q"]), _arr(p["v"])
+    w, u = q[0], q[1:]
+    image = _conformal_answers(p)[0]
+    return (f"1. q = (w, u) with w = {fmt(w)}, u = {fmt(u)}; multiplying out (w, u)(0, v)(w, -u) gives "
+            f"q v q* = (w^2 - |u|^2) v + 2(u·v) u + 2w u × v.\n"
+            f"2. w^2 - |u|^2 = {fmt(w * w - u @ u)}, u·v = {fmt(u @ v)}, u × v = {fmt(np.cross(u, v))}.\n"
+            f"3. q v q* = {fmt(w * w - u @ u)} {fmt(v)} + {fmt(2 * (u @ v))} {fmt(u)} + {fmt(2 * w)} "
+            f"{fmt(np.cross(u, v))} = {_f6(image)}.\n"
+            f"4. Check: |q|^2 = {fmt(q @ q)} and |q v q*| = |q|^2 |v| = {_f6(np.linalg.norm(image))}.")
+
+
+@DECK.exercise(stored=_STORED_CONFORMAL, generate=_conformal_generate, answer=lambda p: _conformal_answers(p)[0],
+               slips=lambda p: _conformal_answers(p)[1], statement=_conformal_statement, steps=_conformal_steps,
+               same=within(1e-4), well_posed=_conformal_ok)
+def check_conformal_image(answer, p) -> Result:
+    """Check the vector part of q v q* for the statement's quaternion q (not a unit quaternion) and
+    its vector v: a rotation with a scaling by |q|^2 (Goldman §15.3.2).
 
     Recognises the rotation alone (divided by |q|^2), a scaling by |q| instead of |q|^2, q* v q
     (the other rotation) and q v q.
@@ -228,22 +471,23 @@ def check_conformal_image(answer) -> Result:
     got, err = _read_vector(answer, "your image", 3, "the image as [x, y, z]")
     if err is not None:
         return err
-    q, v = np.array(CONFORMAL_Q), np.array(CONFORMAL_V)
-    expected = qt.conformal_map(q, v)
+    q = _arr(p["q"])
+    expected, slips = _conformal_answers(p)
     n = float(qt.norm(q))
     tol = 1e-4
     if _close(got, expected, tol):
         return correct(f"q v q* = {fmt(expected)}: the rotation of q/|q| followed by the scaling by "
                        f"|q|^2 = {fmt(n * n)} (|q| = {fmt(n)}), a conformal map.")
-    if _close(got, expected / (n * n), tol):
+    if _close(got, slips["the rotation alone"], tol):
         return wrong("that is the rotation alone (q/|q| v (q/|q|)*, or q v q^-1): q v q* with a non-unit q also "
                      "scales every vector by |q|^2.")
-    if _close(got, expected / n, tol):
+    if _close(got, slips["scaled by |q|"], tol):
         return wrong("you scaled by |q|; q v q* scales by |q|^2, since q and q* each contribute a factor |q|.")
-    if _close(got, _sandwich(qt.conjugate(q), v, q), tol):
+    if _close(got, slips["q* v q"], tol):
         return wrong("that is q* v q: it turns the other way. Multiply q v first, then by q* on the right.")
-    if _close(got, _sandwich(q, v, q), tol):
-        return wrong("that is (the vector part of) q v q: the right factor is the conjugate q* = (1, -2, 0, -2).")
+    if _close(got, slips["q v q"], tol):
+        return wrong(f"that is (the vector part of) q v q: the right factor is the conjugate "
+                     f"q* = {_q_text(qt.conjugate(q))}.")
     return wrong(f"your image is {_dist(got, expected)} from q v q*; its length should be "
                  f"|q|^2 |v| (yours is {fmt(np.linalg.norm(got), 4)}). Multiply (0, v) by q on the left, then by "
                  f"q* on the right.")
@@ -251,11 +495,87 @@ def check_conformal_image(answer) -> Result:
 
 # -- §15.3.6 -------------------------------------------------------------------------------------------
 
-def check_rotation_matrix(answer) -> Result:
-    """Check the row-convention rotation matrix of the unit quaternion ``MATRIX_Q`` (Goldman §15.3.6).
+def _rational_units():
+    """Unit quaternions whose entries are short decimals: (a, b, c, d)/n with a^2 + b^2 + c^2 + d^2 = n^2
+    and n in 2, 5, 10, 25 (so a learner squares and doubles them by hand), sorted entries."""
+    out = []
+    for n in (2, 5, 10, 25):
+        for a in range(n + 1):
+            for b in range(a, n + 1):
+                for c in range(b, n + 1):
+                    d2 = n * n - a * a - b * b - c * c
+                    d = math.isqrt(max(d2, 0))
+                    if d2 >= 0 and d * d == d2 and d >= c and math.gcd(math.gcd(a, b), math.gcd(c, d)) == 1:
+                        out.append(tuple(x / n for x in (a, b, c, d)))
+    return tuple(out)
+
+
+_UNITS = _rational_units()
+_STORED_MATRIX = {"q": MATRIX_Q}
+_MATRIX_PHRASES = {"transposed": "transposed matrix", "off-diagonal halved": "off-diagonal entries are half",
+                   "diagonal without 2": "diagonal entries lack", "(x, y, z, w)": "order (x, y, z, w)"}
+
+
+def _row_matrix(q) -> np.ndarray:
+    return qt.to_matrix(q)[:3, :3]
+
+
+@memo
+def _matrix_answers(p):
+    w, x, y, z = p["q"]
+    expected = _row_matrix(p["q"])
+    half = expected.copy()
+    off = ~np.eye(3, dtype=bool)
+    half[off] = expected[off] / 2
+    no2 = expected.copy()
+    no2[np.diag_indices(3)] = [1 - (y * y + z * z), 1 - (x * x + z * z), 1 - (x * x + y * y)]
+    slips = {"transposed": expected.T, "off-diagonal halved": half, "diagonal without 2": no2,
+             "(x, y, z, w)": _row_matrix((z, w, x, y))}
+    return expected, slips
+
+
+def _matrix_generate(rng) -> dict:
+    q = np.array(_pick(rng, _UNITS))[rng.permutation(4)] * rng.choice([-1.0, 1.0], size=4)
+    return {"q": _tup(q + 0.0)}
+
+
+def _matrix_ok(p):
+    w, x, y, z = p["q"]
+    if w == 0 or (x, y, z) == (0, 0, 0):
+        return "a half turn (w = 0) has a symmetric matrix, and the identity (x = y = z = 0) teaches nothing"
+    if min(x * x, y * y, z * z) == 0 and sum(c != 0 for c in (x, y, z)) < 2:
+        return "a turn about a coordinate axis: too many entries are 0 or 1"
+    return _named("check_rotation_matrix", _MATRIX_PHRASES)(p)
+
+
+def _matrix_statement(p) -> str:
+    return (f"Convert the unit quaternion q = {_q_text(p['q'])} to the 3x3 matrix M of its rotation in the book's "
+            f"row convention (v' = v M, so the first row is the image of (1, 0, 0)). Give M as [[..], [..], [..]] "
+            f"(Goldman §15.3.6).")
+
+
+def _matrix_steps(p) -> str:
+    w, x, y, z = p["q"]
+    M = _matrix_answers(p)[0]
+    rows = [f"   row {i + 1}, the image of {fmt(e)} by q v q*: {_f6(qt.rotate(p['q'], e))}"
+            for i, e in enumerate(np.eye(3))]
+    return (f"1. w = {fmt(w)}, x = {fmt(x)}, y = {fmt(y)}, z = {fmt(z)}; w^2 + x^2 + y^2 + z^2 = "
+            f"{fmt(w * w + x * x + y * y + z * z)}, a unit quaternion.\n"
+            f"2. Row convention (v' = v M): M = [[1 - 2(y^2 + z^2), 2(xy + wz), 2(xz - wy)], "
+            f"[2(xy - wz), 1 - 2(x^2 + z^2), 2(yz + wx)], [2(xz + wy), 2(yz - wx), 1 - 2(x^2 + y^2)]].\n"
+            f"3. With the numbers: M = [" + ", ".join(_f6(r) for r in M) + "].\n"
+            f"4. Check: the rows are the images of the axes,\n" + "\n".join(rows))
+
+
+@DECK.exercise(stored=_STORED_MATRIX, generate=_matrix_generate, answer=lambda p: _matrix_answers(p)[0],
+               slips=lambda p: _matrix_answers(p)[1], statement=_matrix_statement, steps=_matrix_steps,
+               same=within(2e-4), well_posed=_matrix_ok)
+def check_rotation_matrix(answer, p) -> Result:
+    """Check the row-convention rotation matrix of the statement's unit quaternion (Goldman §15.3.6).
 
     Accepts the 4x4 matrix too.  Recognises the transposed (column-convention) matrix, off-diagonal
-    entries without their factor 2, and the diagonal 1 - (y^2 + z^2) without the 2.
+    entries without their factor 2, the diagonal 1 - (y^2 + z^2) without the 2, and q read in the
+    order (x, y, z, w).
     """
     got, err = read_points(answer, "your matrix", ask="M as [[..], [..], [..]]")
     if err is not None:
@@ -266,8 +586,7 @@ def check_rotation_matrix(answer) -> Result:
         got = got[:3, :3]
     if got.shape != (3, 3):
         return wrong(f"M is a 3x3 matrix; yours has shape {got.shape}.")
-    w, x, y, z = MATRIX_Q
-    expected = qt.to_matrix(MATRIX_Q)[:3, :3]
+    expected, slips = _matrix_answers(p)
     tol = 2e-4
     if _close(got, expected, tol):
         return correct(f"M has determinant {fmt(np.linalg.det(got), 4)} and orthonormal rows; its first row "
@@ -275,18 +594,16 @@ def check_rotation_matrix(answer) -> Result:
     if _close(got, expected.T, tol):
         return wrong("that is the transposed matrix, for column vectors (v' = R v), which is also the matrix of the "
                      "rotation q*: in the row convention v' = v M, the first row is the image of (1, 0, 0).")
-    xyzw = qt.to_matrix((MATRIX_Q[3], MATRIX_Q[0], MATRIX_Q[1], MATRIX_Q[2]))[:3, :3]
+    xyzw = slips["(x, y, z, w)"]
     if _close(got, xyzw, tol) or _close(got, xyzw.T, tol):
         return wrong("you read q in the order (x, y, z, w): the course writes quaternions (w, x, y, z) = "
                      "w + x i + y j + z k, the scalar part first (some libraries, scipy among them, put it last).")
-    half = expected.copy()
+    half = slips["off-diagonal halved"]
     off = ~np.eye(3, dtype=bool)
-    half[off] = expected[off] / 2
     if _close(got[off], half[off], tol) or _close(got[off], half.T[off], tol):
         return wrong("your off-diagonal entries are half what they should be: they are 2(xy ± wz), 2(xz ± wy), "
                      "2(yz ± wx), with the factor 2.")
-    diag = np.array([1 - (y * y + z * z), 1 - (x * x + z * z), 1 - (x * x + y * y)])
-    if _close(np.diag(got), diag, tol):
+    if _close(np.diag(got), np.diag(slips["diagonal without 2"]), tol):
         return wrong("your diagonal entries lack the factor 2: they are 1 - 2(y^2 + z^2), 1 - 2(x^2 + z^2), "
                      "1 - 2(x^2 + y^2).")
     bad = np.argwhere(np.abs(got - expected) > tol)
@@ -311,60 +628,173 @@ def _slerp_degrees_as_radians(q0, q1, t):
     return (math.sin((1 - t) * th) * q0 + math.sin(t * th) * q1) / math.sin(th)
 
 
-def check_slerp_angle(answer) -> Result:
+def _longer(q0, q1, t):
+    """The great arc from q0 to q1 itself (q1 not negated)."""
+    th = math.acos(float(np.clip(q0 @ q1, -1, 1)))
+    return (math.sin((1 - t) * th) * q0 + math.sin(t * th) * q1) / math.sin(th)
+
+
+_STORED_SLERP = {"q0": SLERP_Q0, "q1": SLERP_Q1, "t": SLERP_T}
+_SLERP_PHRASES = {"the longer arc": "longer way round", "the half angle": "half angle",
+                  "t from q1": "measured t from q1", "radians": "as if it were radians",
+                  "nlerp": "normalised linear interpolation"}
+
+
+@memo
+def _slerp_answers(p):
+    q0, q1, t = _arr(p["q0"]), _arr(p["q1"]), float(p["t"])
+    expected = _z_angle(qt.slerp(q0, q1, t))
+    slips = {"the longer arc": _z_angle(_longer(q0, q1, t)), "the half angle": expected / 2,
+             "t from q1": _z_angle(qt.slerp(q0, q1, 1 - t)),
+             "radians": _z_angle(_slerp_degrees_as_radians(q0, -q1, t)),
+             "nlerp": _z_angle(qt.normalize((1 - t) * q0 - t * q1))}
+    return expected, slips
+
+
+def _z_quaternion(half_degrees) -> tuple:
+    h = math.radians(half_degrees)
+    return tuple(round(v, 5) + 0.0 for v in (math.cos(h), 0.0, 0.0, math.sin(h)))
+
+
+def _slerp_generate(rng) -> dict:
+    a0 = 10.0 * int(rng.integers(-15, 16))
+    d = 10.0 * int(rng.integers(8, 17)) * float(rng.choice([-1.0, 1.0]))
+    # q1 is written as the negative of the half-angle quaternion of a0 + d: the same rotation, q0·q1 < 0
+    q1 = tuple(-v + 0.0 for v in _z_quaternion((a0 + d) / 2))
+    return {"q0": _z_quaternion(a0 / 2), "q1": q1,
+            "t": float(_pick(rng, (0.2, 0.25, 0.3, 0.4, 0.6, 0.7, 0.75, 0.8)))}
+
+
+def _slerp_ok(p):
+    q0, q1 = _arr(p["q0"]), _arr(p["q1"])
+    if not q0 @ q1 < -0.05:
+        return "q0·q1 must be clearly negative: the exercise is about the shorter arc"
+    return _named("check_slerp_angle", _SLERP_PHRASES)(p)
+
+
+def _slerp_statement(p) -> str:
+    return (f"Two key orientations are the unit quaternions q0 = {_q5(p['q0'])} and q1 = {_q5(p['q1'])} "
+            f"(to 5 decimals), both rotations about the z-axis. Slerp between them (the shorter way) at t = "
+            f"{fmt(p['t'])}: the result is a rotation about the z-axis. Give its signed angle in degrees, between -180 "
+            f"and 180 (positive = counterclockwise looking down z), to 2 decimals (Goldman §15.3.5).")
+
+
+def _raw_angle(q) -> float:
+    """The angle 2 atan2(z, w) read off a quaternion about z as written, in (-360, 360]."""
+    return math.degrees(2 * math.atan2(q[3], q[0]))
+
+
+def _slerp_steps(p) -> str:
+    q0, q1, t = _arr(p["q0"]), _arr(p["q1"]), float(p["t"])
+    a0, a1 = _z_angle(q0), _z_angle(q1)
+    d = float(q0 @ q1)
+    th = math.degrees(math.acos(min(1.0, abs(d))))
+    q = qt.slerp(q0, q1, t)
+    return (f"1. q0 = (cos(θ0/2), 0, 0, sin(θ0/2)) turns by θ0 = {_f6(a0)} degrees about z; q1 as written has "
+            f"2 atan2(z, w) = {_f6(_raw_angle(q1))}, the rotation by {_f6(a1)} degrees.\n"
+            f"2. q0·q1 = {_f6(d)} < 0: negate q1 (-q1 is the same rotation); the angle between q0 and -q1 is "
+            f"θ = arccos({_f6(-d)}) = {_f6(th)} degrees (half the turn between the two orientations).\n"
+            f"3. slerp = sin((1 - t)θ)/sin θ q0 + sin(tθ)/sin θ (-q1) = {_f6(q)}.\n"
+            f"4. Its angle 2 atan2(z, w) = {_f6(_z_angle(q))} degrees: from {_f6(a0)} a fraction t = {fmt(t)} of the "
+            f"way to {_f6(a1)} along the shorter arc.")
+
+
+@DECK.exercise(stored=_STORED_SLERP, generate=_slerp_generate, answer=lambda p: _slerp_answers(p)[0],
+               slips=lambda p: _slerp_answers(p)[1], statement=_slerp_statement, steps=_slerp_steps,
+               same=within(0.02), well_posed=_slerp_ok)
+def check_slerp_angle(answer, p) -> Result:
     """Check the rotation angle of slerp(q0, q1, t) for rotations about z, where q0·q1 < 0 makes slerp
     take the shorter arc by negating q1 (Goldman §15.3.5).
 
     Recognises the longer arc (q1 not negated), the half angle of the quaternion, t measured from
-    q1, and normalised linear interpolation.
+    q1, the weights' angle taken in radians, and normalised linear interpolation.
     """
     value, err = read_number(answer, "the angle", "number of degrees")
     if err is not None:
         return err
-    q0, q1 = np.array(SLERP_Q0), np.array(SLERP_Q1)
-    expected = _z_angle(qt.slerp(q0, q1, SLERP_T))
+    q0, q1 = _arr(p["q0"]), _arr(p["q1"])
+    expected, slips = _slerp_answers(p)
+    a0, a1, raw = fmt(_z_angle(q0)), fmt(_z_angle(q1)), fmt(_raw_angle(q1))
     tol = 0.02
     if abs(value - expected) <= tol:
         return correct(f"the result turns by {fmt(expected, 4)} degrees about z: q0·q1 < 0, so slerp negates q1 "
-                       f"(-q1 is the same rotation, by -60 degrees) and runs the shorter arc from 40 to -60 degrees "
+                       f"(-q1 is the same rotation, by {a1} degrees) and runs the shorter arc from {a0} to {a1} degrees "
                        f"at constant speed.")
-    # the longer arc: the great circle from q0 to q1 itself
-    th = math.acos(float(np.clip(q0 @ q1, -1, 1)))
-    longer = (math.sin((1 - SLERP_T) * th) * q0 + math.sin(SLERP_T * th) * q1) / math.sin(th)
-    if abs(value - _z_angle(longer)) <= tol:
-        return wrong("you went the longer way round (from 40 through 180 to 300 degrees): q0·q1 < 0, so negate q1 "
-                     "first; -q1 is the same rotation, and the arc from q0 to -q1 is the shorter one.")
-    if abs(value - expected / 2) <= tol or abs(value - _z_angle(longer) / 2) <= tol:
+    if abs(value - slips["the longer arc"]) <= tol:
+        return wrong(f"you went the longer way round (from {a0} to {raw} degrees, as q1 is written): q0·q1 < 0, so "
+                     f"negate q1 first; -q1 is the same rotation, and the arc from q0 to -q1 is the shorter one.")
+    if abs(value - expected / 2) <= tol or abs(value - slips["the longer arc"] / 2) <= tol:
         return wrong("that is the half angle, the angle in the quaternion (cos(θ/2), sin(θ/2) k); the rotation's "
                      "angle θ is twice it.")
-    if abs(value - _z_angle(qt.slerp(q0, q1, 1 - SLERP_T))) <= tol:
-        return wrong(f"you measured t from q1: slerp(q0, q1, t) starts at q0 for t = 0, so q0 gets the weight "
-                     f"sin((1 - t)θ)/sin θ.")
-    if abs(value - _z_angle(_slerp_degrees_as_radians(q0, -q1, SLERP_T))) <= tol:
+    if abs(value - slips["t from q1"]) <= tol:
+        return wrong("you measured t from q1: slerp(q0, q1, t) starts at q0 for t = 0, so q0 gets the weight "
+                     "sin((1 - t)θ)/sin θ.")
+    if abs(value - slips["radians"]) <= tol:
         return wrong("your slerp weights took θ in degrees as if it were radians: sin((1 - t)θ)/sin θ needs θ in "
                      "radians for np.sin and math.sin (θ, the angle between q0 and -q1, is the half angle).")
-    nlerp = qt.normalize((1 - SLERP_T) * q0 - SLERP_T * q1)
-    if abs(value - _z_angle(nlerp)) <= tol:
+    if abs(value - slips["nlerp"]) <= tol:
         return wrong("that is normalised linear interpolation: the right arc, but not at constant speed; slerp "
                      "weights q0 and -q1 by sin((1 - t)θ)/sin θ and sin(tθ)/sin θ, θ the angle between them.")
     return wrong(f"your angle is {off_by(value, expected)}; read the angles of q0 and q1 from "
                  f"w = cos(θ/2), z = sin(θ/2), check the sign of q0·q1, then interpolate.")
 
 
-def check_lerp_distortion(answer) -> Result:
-    """Check the distortion 1 - |scale| of the blend M = (3/4) I + (1/4) R, R a turn about z: in the
-    xy-plane M acts as a complex number, a scaling with a rotation (Goldman §15.3.4).
+_STORED_LERP = {"angle": LERP_ANGLE, "t": LERP_T}
+_LERP_PHRASES = {"a rotation": "not a rotation", "the scale": "the scale factor", "σ^2": "σ^2",
+                 "halfway": "halfway"}
 
-    Recognises 0 (taking the blend for a rotation), the scale √7/4 itself, the squared scale
-    (7/16), and the halfway blend's 0.5.
+
+@memo
+def _lerp_answers(p):
+    R = _row_matrix(qt.from_axis_angle([0, 0, 1], p["angle"]))
+    M = qt.matrix_lerp(np.eye(3), R, p["t"])
+    expected = float(qt.matrix_distortion(M))
+    scale = float(np.linalg.svd(M, compute_uv=False)[-1])
+    slips = {"a rotation": 0.0, "the scale": scale, "σ^2": 1 - scale * scale,
+             "halfway": float(qt.matrix_distortion(qt.matrix_lerp(np.eye(3), R, 0.5)))}
+    return expected, slips
+
+
+def _lerp_generate(rng) -> dict:
+    return {"angle": float(_pick(rng, (60.0, 90.0, 120.0, 150.0))),
+            "t": float(_pick(rng, (0.2, 0.25, 0.3, 0.4, 0.6, 0.7, 0.75, 0.8)))}
+
+
+def _lerp_statement(p) -> str:
+    return (f"Let R be the matrix of the rotation by {fmt(p['angle'])} degrees about the z-axis. Blend it linearly "
+            f"with the identity: M = (1 - t) I + t R at t = {fmt(p['t'])}. How far is M from a rotation? Give its "
+            f"distortion, the largest |σ - 1| over M's singular values σ (0 for a rotation), to 4 decimals "
+            f"(Goldman §15.3.4).")
+
+
+def _lerp_steps(p) -> str:
+    th, t = float(p["angle"]), float(p["t"])
+    c = (1 - t) + t * qt.complex_rotation(th)
+    s2 = (1 - t) ** 2 + t * t + 2 * t * (1 - t) * math.cos(math.radians(th))
+    expected, slips = _lerp_answers(p)
+    return (f"1. R turns the xy-plane by {fmt(th)} degrees and keeps z; in the xy-plane M acts as the complex "
+            f"number c = (1 - t) + t e^{{iθ}} = {_f6(c.real)} + {_f6(c.imag)} i.\n"
+            f"2. |c|^2 = (1 - t)^2 + t^2 + 2t(1 - t) cos θ = {_f6(s2)}, so σ = |c| = {_f6(math.sqrt(s2))} "
+            f"(twice: the xy-plane shrinks by σ); along z, σ = 1.\n"
+            f"3. The distortion is max |σ - 1| = 1 - σ = {_f6(expected)} (the library's matrix_distortion: "
+            f"{_f6(qt.matrix_distortion(qt.matrix_lerp(np.eye(3), _row_matrix(qt.from_axis_angle([0, 0, 1], th)), t)))}).")
+
+
+@DECK.exercise(stored=_STORED_LERP, generate=_lerp_generate, answer=lambda p: _lerp_answers(p)[0],
+               slips=lambda p: _lerp_answers(p)[1], statement=_lerp_statement, steps=_lerp_steps,
+               same=within(2e-4), well_posed=_named("check_lerp_distortion", _LERP_PHRASES))
+def check_lerp_distortion(answer, p) -> Result:
+    """Check the distortion 1 - |scale| of the blend M = (1 - t) I + t R, R the statement's turn about
+    z: in the xy-plane M acts as a complex number, a scaling with a rotation (Goldman §15.3.4).
+
+    Recognises 0 (taking the blend for a rotation), the scale σ itself, 1 - σ^2 (the squared scale),
+    and the halfway blend's distortion.
     """
     value, err = read_number(answer, "the distortion")
     if err is not None:
         return err
-    R = qt.to_matrix(qt.from_axis_angle([0, 0, 1], LERP_ANGLE))[:3, :3]
-    M = qt.matrix_lerp(np.eye(3), R, LERP_T)
-    expected = float(qt.matrix_distortion(M))
-    scale = float(np.linalg.svd(M, compute_uv=False)[-1])
+    expected, slips = _lerp_answers(p)
+    scale = slips["the scale"]
     tol = 2e-4
     if abs(value - expected) <= tol:
         return correct(f"the distortion is {fmt(expected, 4)}: the blend shrinks the xy-plane (by the factor "
@@ -374,12 +804,18 @@ def check_lerp_distortion(answer) -> Result:
                      "xy-plane it acts like the complex number (1 - t) + t e^{iθ}, whose modulus is below 1.")
     if abs(value - scale) <= tol:
         return wrong("that is the scale factor σ of the xy-plane; the distortion is |σ - 1|, how far it is from 1.")
-    if abs(value - (1 - scale * scale)) <= tol:
+    if abs(value - slips["σ^2"]) <= tol:
         return wrong("you used σ^2 = |(1 - t) + t e^{iθ}|^2; the singular value is its square root.")
-    if abs(value - float(qt.matrix_distortion(qt.matrix_lerp(np.eye(3), R, 0.5)))) <= tol:
-        return wrong(f"that is the distortion halfway (t = 1/2); here t = {fmt(LERP_T)}.")
+    if abs(value - slips["halfway"]) <= tol:
+        return wrong(f"that is the distortion halfway (t = 1/2); here t = {fmt(p['t'])}.")
     return wrong(f"your distortion is {off_by(value, expected)}; in the xy-plane M acts like the complex number "
                  f"(1 - t) + t e^{{iθ}}: find its modulus σ (the z-axis keeps σ = 1).")
+
+
+#: Deal another instance of an exercise (``deal("check_rotated_vector")``, or with ``seed=``; 0 is the
+#: stored one), show the worked steps of the current one, read it, or get a button.
+deal, steps, current, deal_button = DECK.deal, DECK.steps, DECK.current, DECK.button
+PROBLEMS = DECK.problems({})
 
 
 # -- the programming project --------------------------------------------------------------------------

@@ -1,7 +1,9 @@
 """The views of chapter 15 (Goldman, complex numbers and quaternions): a complex number acting on
 the plane (§15.2), the rotation ``q v q*`` of a body about an axis (§15.3.2, with the 4x4 matrix of
 §15.3.6), and a key-frame animation played by slerp beside the same key frames blended linearly as
-matrices (§15.3.4-15.3.5), so the distortion of the linear blend shows.
+matrices (§15.3.4-15.3.5), so the distortion of the linear blend shows; the double cover (q(t) comes
+back only after 720°, §15.3.2) and slerp drawn on S³ through a stereographic projection beside the
+rotating body (§15.3.4).
 
 Every number a view shows comes from :mod:`goldman_lib.quaternions`; this module only draws.
 
@@ -24,8 +26,8 @@ from goldman_lib.views.drag import drag_sliders
 from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
 from goldman_lib.views.vectors3d import COLOURS, VectorScene
 
-__all__ = ["complex_plane_view", "quaternion_rotation_view", "key_frame_view", "FIGURE_F", "BODY_ARROWS", "KEY_SETS",
-           "BRICK", "FRAMES"]
+__all__ = ["complex_plane_view", "quaternion_rotation_view", "key_frame_view", "double_cover_view", "slerp_s3_view",
+           "one_sided_product_plot", "FIGURE_F", "BODY_ARROWS", "KEY_SETS", "BRICK", "FRAMES", "COVER_AXIS", "S3_KEYS", "S3_MARKS"]
 
 #: The asymmetric figure the complex numbers act on: a letter F (a closed outline), away from the origin.
 FIGURE_F = np.array([[0.0, 0.0], [0.2, 0.0], [0.2, 0.4], [0.5, 0.4], [0.5, 0.6], [0.2, 0.6], [0.2, 0.8],
@@ -285,4 +287,281 @@ def key_frame_view(keys: str = "tumble", frame: int = FRAMES // 8) -> Interactiv
                            title="§15.3.5 key-frame animation: slerp (left) and linear matrices (right)",
                            arrange=[controls["keys"], widgets.HBox([play, controls["frame"]])])
     view.play, view.scene = play, scene
+    return view
+
+
+# -- why a sandwich (§15.3.2) --------------------------------------------------------------------------
+
+def one_sided_product_plot(axis, v, ax=None):
+    """The scalar parts of ``q v`` and of ``q v q*`` for ``q = (cos(θ/2), sin(θ/2) u)``, u along
+    ``axis``, over θ from -360 to 360 degrees (Goldman §15.3.2): the one-sided product has the
+    scalar part ``-sin(θ/2) u·v``, so it leaves the vectors (the mass-points of mass 0) unless θ is 0
+    or 360, while the sandwich's scalar part stays 0.  Draws on ``ax`` (a new figure if None) and
+    returns the axes.
+
+    >>> ax = one_sided_product_plot([1, 1, 1], [0.3, -1.2, 2.0])
+    >>> [line.get_label() for line in ax.get_lines()[:2]]
+    ['scalar part of q v', 'scalar part of q v q*']
+    """
+    ax = style.get_axes(ax, equal=False)
+    theta = np.linspace(-360.0, 360.0, 241)
+    q = qt.from_axis_angle(axis, theta)
+    v4 = qt.pure(v)
+    one_sided = qt.multiply(q, v4)[:, 0]
+    sandwich = qt.multiply(qt.multiply(q, v4), qt.conjugate(q))[:, 0]
+    ax.plot(theta, one_sided, color=style.PALETTE["point"], linewidth=1.8, label="scalar part of q v")
+    ax.plot(theta, sandwich, color=style.PALETTE["curve"], linewidth=1.8, label="scalar part of q v q*")
+    ax.axhline(0.0, color="#cccccc", linewidth=0.6)
+    ax.set_xlim(-360.0, 360.0)
+    ax.set_xticks([-360, -180, 0, 180, 360])
+    ax.set_xlabel("θ, the angle of q (degrees)", fontsize=9)
+    ax.set_ylabel("mass (scalar part)", fontsize=9)
+    ax.legend(loc="upper right", fontsize=8)
+    ax.set_title("q v leaves the vectors; q v q* stays among them", fontsize=10)
+    ax.figure.tight_layout()
+    return ax
+
+
+# -- the double cover: q and -q (§15.3.2) ----------------------------------------------------------------
+
+#: The axis of the double-cover view: (2, 3, 6)/7, so the four components of q(t) are four different curves.
+COVER_AXIS = np.array([2.0, 3.0, 6.0]) / 7.0
+
+_COMPONENT_COLOURS = {"w": "#222222", "x": style.PALETTE["point"], "y": style.PALETTE["good"], "z": style.PALETTE["curve"]}
+
+
+def _body_lines(ax3, colour, style_="-", width=2.0):
+    lines = [ax3.plot([0, 0], [0, 0], [0, 0], style_, color=colour, linewidth=width)[0] for _ in BODY_ARROWS]
+    tips = ax3.plot([], [], [], "o", color=colour, markersize=4)[0]
+    return lines, tips
+
+
+def _set_body(lines, tips, arrows):
+    for line, tip in zip(lines, arrows):
+        line.set_data_3d([0.0, tip[0]], [0.0, tip[1]], [0.0, tip[2]])
+    tips.set_data_3d(arrows[:, 0], arrows[:, 1], arrows[:, 2])
+
+
+def _body_axes(fig, position, title):
+    ax3 = fig.add_subplot(*position, projection="3d")
+    ax3.set_xlim(-0.8, 0.8), ax3.set_ylim(-0.8, 0.8), ax3.set_zlim(-0.8, 0.8)
+    ax3.set_box_aspect((1, 1, 1))
+    ax3.set_axis_off()               # (the panes and ticks of a 3D axes are most of its redraw)
+    for k, name in enumerate("xyz"):  # faint coordinate axes instead
+        end = np.eye(3)[k] * 0.8
+        ax3.plot(*np.stack([-end, end]).T, color="#d0d0d0", linewidth=0.8)
+        ax3.text(*(end * 1.08), name, color="#9a9a9a", fontsize=8)
+    ax3.view_init(elev=22, azim=-60)
+    ax3.set_title(title, fontsize=9)
+    return ax3
+
+
+def double_cover_view(t: float = 200.0) -> InteractiveView:
+    """The double cover (Goldman §15.3.2): the unit quaternion ``q(t) = (cos(t/2), sin(t/2) u)`` of the
+    rotation by ``t`` degrees about ``u =`` :data:`COVER_AXIS`, for ``t`` from 0 to 720.  Left, top: the
+    four components of q(t) (:func:`goldman_lib.quaternions.from_axis_angle`), with a marker at the
+    slider's t; below: how far q(t) is from q(0) = 1 (blue) and the angle of the rotation it performs
+    (orange, :func:`goldman_lib.quaternions.to_axis_angle`, 0 to 180° about ±u).  The rotation comes
+    back at 360°, where q(360°) = -1 is the other quaternion of the same rotation; q comes back only
+    at 720°.
+    Right: the body of three arrows turned by q(t) (blue), the axis u (orange) and the body at rest
+    (grey).
+
+    ``update(t)`` returns ``{"q" (4,), "image" (3, 3), "matrix" (4, 4), "status"}``.
+
+    >>> r = double_cover_view().set_values(t=360.0)
+    >>> (np.round(r["q"], 12) + 0.0).tolist(), bool(np.allclose(r["image"], BODY_ARROWS))
+    ([-1.0, 0.0, 0.0, 0.0], True)
+    """
+    t = as_float(t, "t")
+    controls = {"t": float_slider("t (°)", t, 0.0, 720.0, 5.0, readout=".0f")}
+    fig = style.new_figure(figsize=(8.4, 3.9))
+    grid = fig.add_gridspec(2, 2, width_ratios=(1.35, 1.0), height_ratios=(1.6, 1.0))
+    ax = fig.add_subplot(grid[0, 0])
+    ax_dist = fig.add_subplot(grid[1, 0], sharex=ax)
+    ts = np.linspace(0.0, 720.0, 289)
+    qs = qt.from_axis_angle(COVER_AXIS, ts)
+    for k, name in enumerate("wxyz"):
+        ax.plot(ts, qs[:, k], color=_COMPONENT_COLOURS[name], linewidth=1.5, label=name)
+    for a in (ax, ax_dist):
+        for mark in (360.0, 720.0):
+            a.axvline(mark, color="#9a9a9a", linewidth=0.8, linestyle="--")
+        a.tick_params(labelsize=8)
+    ax.axhline(0.0, color="#cccccc", linewidth=0.6)
+    ax.set_ylim(-1.1, 1.1)
+    ax.set_ylabel("components of q(t)", fontsize=8)
+    ax.legend(loc="lower left", fontsize=7, ncol=2)
+    ax.annotate("q(360°) = −1", (360.0, -1.0), textcoords="offset points", xytext=(4, 4), fontsize=8)
+    ax.annotate("q(720°) = 1", (720.0, 1.0), textcoords="offset points", xytext=(-58, -12), fontsize=8)
+    away_q = np.linalg.norm(qs - qs[0], axis=1)
+    ax_dist.plot(ts, away_q, color=style.PALETTE["curve"], linewidth=1.5, label="|q(t) − 1|")
+    ax_dist.set_ylim(0.0, 2.2)
+    ax_dist.set_ylabel("|q(t) − 1|", fontsize=8, color=style.PALETTE["curve"])
+    ax_angle = ax_dist.twinx()
+    ax_angle.plot(ts, qt.to_axis_angle(qs)[1], color=style.PALETTE["accent"], linewidth=1.5)
+    ax_angle.set_ylim(0.0, 198.0)
+    ax_angle.set_yticks([0, 90, 180])
+    ax_angle.tick_params(labelsize=8)
+    ax_angle.set_ylabel("rotation angle (°)", fontsize=8, color=style.PALETTE["accent"])
+    ax_dist.set_xlim(0.0, 720.0)
+    ax_dist.set_xticks([0, 180, 360, 540, 720])
+    ax_dist.set_xlabel("t, the angle turned (degrees)", fontsize=8)
+    cursor = [a.axvline(t, color=style.PALETTE["point"], linewidth=1.0) for a in (ax, ax_dist)]
+    (dots,) = ax.plot([], [], "o", color=style.PALETTE["point"], markersize=5)
+    ax3 = _body_axes(fig, (grid[:, 1],), "the body turned by q(t)")
+    _set_body(*_body_lines(ax3, "#b5b5b5", width=1.2), BODY_ARROWS)
+    ax3.plot(*np.stack([-COVER_AXIS, COVER_AXIS]).T, color=COLOURS["cross"], linewidth=1.5)
+    body = _body_lines(ax3, COLOURS["u"])
+    fig.tight_layout()
+    style.pin_layout(fig)            # fixed limits: titles and labels need no new placing at each move
+
+    def update(t):
+        q = qt.from_axis_angle(COVER_AXIS, t)
+        image = qt.rotate(q, BODY_ARROWS)
+        M = qt.to_matrix(q)
+        for line in cursor:
+            line.set_xdata([t, t])
+        dots.set_data([t] * 4, q)
+        _set_body(*body, image)
+        turned = t % 360.0
+        if np.isclose(t, 360.0):
+            where = "q(360°) = −1: the body is back where it started, but q is the other quaternion of that rotation"
+        elif np.isclose(t, 720.0) or np.isclose(t, 0.0):
+            where = "q = 1: the body and the quaternion are both back where they started"
+        elif t > 360.0:
+            where = (f"the body looks as it did at t = {turned:.0f}°, and q(t) = −q({turned:.0f}°): q and −q give "
+                     f"the same rotation")
+        else:
+            where = "the first turn: q runs through half of its circle"
+        status = f"t = {t:.0f}°: q(t) = {_fmt_q(np.round(q, 6) + 0.0)};  {where}"
+        return {"q": q, "image": image, "matrix": M, "status": status}
+
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="§15.3.2 the double cover: q(t) comes back only after 720°")
+    return view
+
+
+# -- slerp drawn on S³ (§15.3.4) ------------------------------------------------------------------------
+
+#: Key pairs of the S³ view: (q0, q1), unit quaternions on one side (q0·q1 > 0).
+S3_KEYS = {
+    "150° about x to 150° about y": (qt.from_axis_angle([1.0, 0.0, 0.0], 150.0), qt.from_axis_angle([0.0, 1.0, 0.0], 150.0)),
+    "90° about x to 90° about y": (qt.from_axis_angle([1.0, 0.0, 0.0], 90.0), qt.from_axis_angle([0.0, 1.0, 0.0], 90.0)),
+    "a twist and a tilt": (_turns(([0, 0, 1], -60)), _turns(([1, 0, 0], 120), ([0, 0, 1], 60))),
+}
+
+#: Equal steps of t at which the S³ view marks slerp and nlerp.
+S3_MARKS = np.linspace(0.0, 1.0, 11)
+
+
+def slerp_s3_view(keys: str = "150° about x to 150° about y", t: float = 0.3) -> InteractiveView:
+    """Slerp drawn on S³ (Goldman §15.3.4): left, the unit quaternions seen in 3-space through the
+    stereographic projection from -1 (:func:`goldman_lib.quaternions.stereographic`: 1 at the origin,
+    the rotation by θ about u at tan(θ/4) u; the box is fitted to the arc).  The great
+    circle through the keys q0 and q1 :data:`S3_KEYS` ``[keys]`` (grey) carries both the slerp arc and the
+    normalised chord of nlerp (:func:`goldman_lib.quaternions.nlerp`); the markers at equal steps of t
+    (:data:`S3_MARKS`) are evenly spaced for slerp (blue); for nlerp (red) they bunch near the keys and
+    spread out in the middle, where the normalised chord runs fastest.
+    Middle: the fraction of the turn from q0 to q1 done at t (the angle of ``q q0*``,
+    :func:`goldman_lib.quaternions.to_axis_angle`): t itself for slerp, an S-curve for nlerp.  Right:
+    the body turned by slerp(t) (blue) and by nlerp(t) (red, dashed).
+
+    ``update(keys, t)`` returns ``{"slerp" (4,), "nlerp" (4,), "slerp_point" (3,), "nlerp_point" (3,),
+    "slerp_turned", "nlerp_turned", "total", "status"}``, the angles in degrees turned from q0.
+
+    >>> r = slerp_s3_view().set_values(t=0.5)
+    >>> bool(np.allclose(r["slerp"], r["nlerp"])), round(r["slerp_turned"] / r["total"], 9)
+    (True, 0.5)
+    """
+    import ipywidgets as widgets
+
+    if keys not in S3_KEYS:
+        raise ValueError(f"keys must be one of {sorted(S3_KEYS)}; got {keys!r}")
+    t = as_float(t, "t")
+    controls = {
+        "keys": widgets.Dropdown(options=list(S3_KEYS), value=keys, description="keys",
+                                 style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+        "t": float_slider("t", t, 0.0, 1.0, 0.01),
+    }
+    fig = style.new_figure(figsize=(10.4, 3.7))
+    grid = fig.add_gridspec(1, 3, width_ratios=(1.25, 0.95, 1.0))
+    ax = fig.add_subplot(grid[0, 0], projection="3d")
+    ax.set_box_aspect((1, 1, 1))
+    ax.set_axis_off()                # (the panes and ticks of a 3D axes are most of its redraw)
+    ax.view_init(elev=72, azim=45)
+    ax.set_title("unit quaternions, stereographic view from −1", fontsize=9)
+    (circle,) = ax.plot([], [], [], color="#9a9a9a", linewidth=1.0)
+    (arc,) = ax.plot([], [], [], color=style.PALETTE["curve"], linewidth=2.0)
+    (slerp_marks,) = ax.plot([], [], [], "o", color=style.PALETTE["curve"], markersize=6, label="slerp, t = 0, 0.1, ..., 1")
+    (nlerp_marks,) = ax.plot([], [], [], "x", color=style.PALETTE["point"], markersize=8, mew=1.6,
+                             label="nlerp, the same t")
+    (keys_dots,) = ax.plot([], [], [], "s", color="#222222", markersize=5)
+    (slerp_now,) = ax.plot([], [], [], "o", color=style.PALETTE["curve"], markersize=9, markerfacecolor="none")
+    (nlerp_now,) = ax.plot([], [], [], "o", color=style.PALETTE["point"], markersize=12, markerfacecolor="none")
+    labels = [ax.text(0, 0, 0, name, fontsize=9) for name in ("q0", "q1")]
+    ax.legend(loc="upper left", fontsize=7)
+    ax_turn = fig.add_subplot(grid[0, 1])
+    ax_turn.plot([0, 1], [0, 1], color="#cccccc", linewidth=0.8)
+    (slerp_turn,) = ax_turn.plot([], [], color=style.PALETTE["curve"], linewidth=1.8, label="slerp")
+    (nlerp_turn,) = ax_turn.plot([], [], color=style.PALETTE["point"], linewidth=1.8, linestyle="--", label="nlerp")
+    (turn_now,) = ax_turn.plot([], [], "o", color="#222222", markersize=4)
+    ax_turn.set_xlim(0, 1), ax_turn.set_ylim(0, 1)
+    ax_turn.set_xlabel("t", fontsize=8)
+    ax_turn.set_title("fraction of the turn from q0 to q1", fontsize=9)
+    ax_turn.tick_params(labelsize=7)
+    ax_turn.legend(loc="upper left", fontsize=7)
+    ax3 = _body_axes(fig, (grid[0, 2],), "the body turned by slerp(t) and nlerp(t)")
+    slerp_body = _body_lines(ax3, COLOURS["u"])
+    nlerp_body = _body_lines(ax3, style.PALETTE["point"], "--", 1.4)
+    fig.tight_layout()
+    style.pin_layout(fig)            # the 2D panel's limits are fixed; the 3D panels show no ticks
+    shown = {"keys": None}
+    fine = np.linspace(0.0, 1.0, 61)
+
+    def set_keys(name):
+        q0, q1 = S3_KEYS[name]
+        # the great circle through q0 and q1, a little beyond the keys; the box fits it
+        P = qt.stereographic(qt.slerp(q0, q1, np.linspace(-0.35, 1.35, 69)))
+        circle.set_data_3d(P[:, 0], P[:, 1], P[:, 2])
+        style.equal_3d_limits(ax, P)
+        A = qt.stereographic(qt.slerp(q0, q1, fine))
+        arc.set_data_3d(A[:, 0], A[:, 1], A[:, 2])
+        S = qt.stereographic(qt.slerp(q0, q1, S3_MARKS))
+        N = qt.stereographic(qt.nlerp(q0, q1, S3_MARKS))
+        slerp_marks.set_data_3d(S[:, 0], S[:, 1], S[:, 2])
+        nlerp_marks.set_data_3d(N[:, 0], N[:, 1], N[:, 2])
+        back = qt.conjugate(q0)
+        total = float(qt.to_axis_angle(qt.multiply(q1, back))[1])
+        slerp_turn.set_data(fine, qt.to_axis_angle(qt.multiply(qt.slerp(q0, q1, fine), back))[1] / total)
+        nlerp_turn.set_data(fine, qt.to_axis_angle(qt.multiply(qt.nlerp(q0, q1, fine), back))[1] / total)
+        K = qt.stereographic(np.stack([q0, q1]))
+        keys_dots.set_data_3d(K[:, 0], K[:, 1], K[:, 2])
+        for label, point in zip(labels, K):
+            label.set_position((point[0], point[1]))
+            label.set_3d_properties(point[2], "z")
+        shown["keys"] = name
+
+    def update(keys, t):
+        if shown["keys"] != keys:
+            set_keys(keys)
+        q0, q1 = S3_KEYS[keys]
+        qs, qn = qt.slerp(q0, q1, t), qt.nlerp(q0, q1, t)
+        ps, pn = qt.stereographic(qs), qt.stereographic(qn)
+        slerp_now.set_data_3d([ps[0]], [ps[1]], [ps[2]])
+        nlerp_now.set_data_3d([pn[0]], [pn[1]], [pn[2]])
+        _set_body(*slerp_body, qt.rotate(qs, BODY_ARROWS))
+        _set_body(*nlerp_body, qt.rotate(qn, BODY_ARROWS))
+        back = qt.conjugate(q0)
+        total = float(qt.to_axis_angle(qt.multiply(q1, back))[1])
+        turned_s = float(qt.to_axis_angle(qt.multiply(qs, back))[1])
+        turned_n = float(qt.to_axis_angle(qt.multiply(qn, back))[1])
+        turn_now.set_data([t, t], [turned_s / total, turned_n / total])
+        status = (f"t = {t:.2f}: slerp has turned {turned_s:.1f}° of the {total:.1f}° from q0 to q1 "
+                  f"({turned_s / total:.0%}, always t), nlerp {turned_n:.1f}° ({turned_n / total:.0%}): the chord "
+                  f"pushed onto the sphere moves slowly near the keys and fast in the middle")
+        return {"slerp": qs, "nlerp": qn, "slerp_point": ps, "nlerp_point": pn, "slerp_turned": turned_s,
+                "nlerp_turned": turned_n, "total": total, "status": status}
+
+    view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="§15.3.4 slerp on S³: equal steps of t, evenly spaced (slerp) or bunched (nlerp)")
     return view
