@@ -100,3 +100,21 @@ def test_vertex_colours_live_and_static():
     s.add_mesh("plain", pos, tri)
     with pytest.raises(ValueError, match="without per-vertex colors"):
         s.set_colors("plain", np.zeros((4, 3)))
+
+
+def test_axes_keeps_the_other_coordinates_where_the_light_starts():
+    from goldman_lib.lighting import Light
+    from goldman_lib.views.light_control import LightControl
+
+    control = LightControl([Light((0.5, 0.5, 0.99), intensity=1.0)], box=(0.0, 1.0), axes="xy")
+    assert sorted(control.controls) == ["light0_I", "light0_colour", "light0_x", "light0_y"]
+    assert control.controls["light0_I"].value == 1.0          # a Light's intensity starts the slider
+    (light,) = control.lights({**control.defaults(), "light0_x": 0.25})
+    assert light.position == (0.25, 0.5, 0.99)
+    assert control.marker_positions(control.defaults()).tolist() == [[0.5, 0.5, 0.99]]
+    import pytest
+    for bad in ("", "xw", "xx", 3):
+        with pytest.raises(ValueError, match="axes"):
+            LightControl([(0, 0, 1)], axes=bad)
+    with pytest.raises(ValueError, match="plane"):
+        control.drag_in(None, None, plane="xz")

@@ -47,10 +47,13 @@ class LightControl:
     box: the slider range of each coordinate, one ``(low, high)`` for all three or three pairs.
     intensity_range: the intensity slider's range.  colour: whether to add colour pickers.
     prefix: the start of every control name (two controls in one view need two prefixes).
+    axes: the coordinates that get a slider (default all of ``"xyz"``); the others stay where the
+    starting light is (a light on a ceiling: ``axes="xy"``).  A light given as a ``Light`` keeps its
+    intensity and colour as the sliders' starting values.
     """
 
     def __init__(self, lights: Sequence = ((3.0, -3.0, 5.0),), box=(-6.0, 6.0), intensity_range=(0.0, 2.0),
-                 colour: bool = True, prefix: str = "light", step: float = 0.1):
+                 colour: bool = True, prefix: str = "light", step: float = 0.1, axes: str = "xyz"):
         lights = [light if isinstance(light, Light) else Light(tuple(as_points(light, "lights", ndim=1, dim=3)))
                   for light in lights]
         if not lights:
@@ -59,12 +62,18 @@ class LightControl:
         boxes = np.broadcast_to(box, (3, 2)) if box.shape == (2,) else box
         if boxes.shape != (3, 2) or np.any(boxes[:, 0] >= boxes[:, 1]):
             raise ValueError(f"box must be (low, high) or three (low, high) pairs with low < high; got {box.tolist()}")
+        if not isinstance(axes, str) or not axes or not set(axes) <= set("xyz") or len(set(axes)) != len(axes):
+            raise ValueError(f"axes must name some of the coordinates 'xyz', each once (e.g. 'xy'); got {axes!r}")
+        self.axes = "".join(a for a in "xyz" if a in axes)
         self.prefix = str(prefix)
         self.count = len(lights)
         self.colour = bool(colour)
         self.controls: dict[str, widgets.Widget] = {}
+        self._fixed = [tuple(float(v) for v in light.position) for light in lights]
         for k, light in enumerate(lights):
             for axis, (lo, hi), value in zip("xyz", boxes, light.position):
+                if axis not in self.axes:
+                    continue
                 self.controls[self.name(k, axis)] = float_slider(
                     f"{'L' + str(k) if self.count > 1 else 'light'} {axis}", float(np.clip(value, lo, hi)), float(lo),
                     float(hi), step)
@@ -91,14 +100,18 @@ class LightControl:
 
         out = []
         for k in range(self.count):
-            position = tuple(float(values[self.name(k, axis)]) for axis in "xyz")
+            position = self._position(k, values)
             colour = to_rgb(values[self.name(k, "colour")]) if self.colour else self._colours[k]
             out.append(Light(position, colour=colour, intensity=float(values[self.name(k, "I")])))
         return tuple(out)
 
+    def _position(self, k: int, values: Mapping) -> tuple:
+        return tuple(float(values[self.name(k, axis)]) if axis in self.axes else self._fixed[k][i]
+                     for i, axis in enumerate("xyz"))
+
     def marker_positions(self, values: Mapping) -> np.ndarray:
         """Where the lights are: ``(count, 3)``, to draw as markers."""
-        return np.array([[float(values[self.name(k, axis)]) for axis in "xyz"] for k in range(self.count)])
+        return np.array([self._position(k, values) for k in range(self.count)])
 
     def own(self, values: Mapping) -> dict:
         """The part of ``values`` that belongs to this control (so an update can split its kwargs)."""
@@ -112,6 +125,8 @@ class LightControl:
 
         if len(plane) != 2 or not set(plane) <= set("xyz") or plane[0] == plane[1]:
             raise ValueError(f"plane must be two different letters of 'xyz' (e.g. 'xz'); got {plane!r}")
+        if not set(plane) <= set(self.axes):
+            raise ValueError(f"plane must use coordinates the control has sliders for ({self.axes!r}); got {plane!r}")
         pairs = [(self.name(k, plane[0]), self.name(k, plane[1])) for k in range(self.count)]
         return drag_sliders(view, ax, pairs, radius=radius)
 

@@ -28,6 +28,7 @@ from goldman_lib import radiosity as rd
 from goldman_lib.validation import as_int
 from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, dropdown, figure_png, figure_widget, int_slider
+from goldman_lib.lighting import Light
 from goldman_lib.views.light_control import LightControl
 
 __all__ = ["radiosity_view", "cornell_scene", "SOLVERS", "MAX_STEPS", "LIGHT_SIZE", "EMISSION", "WHITE"]
@@ -125,10 +126,10 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     shooting = _shooting()
     n = len(box)
     rho, area = box.reflectance, box.areas
-    light = LightControl([(0.5, 0.5, 0.99)], box=[(LIGHT_SIZE / 2, 1 - LIGHT_SIZE / 2)] * 2 + [(0.0, 1.0)],
-                         intensity_range=(0.0, 2.0), step=0.025)
-    light.controls["light0_I"].value = 1.0
-    light_controls = {k: w for k, w in light.controls.items() if k != "light0_z"}   # the light stays on the ceiling
+    # the light stays on the ceiling: sliders for x and y only
+    light = LightControl([Light((0.5, 0.5, 0.99), intensity=1.0)], box=[(LIGHT_SIZE / 2, 1 - LIGHT_SIZE / 2)] * 2 + [(0.0, 1.0)],
+                         intensity_range=(0.0, 2.0), step=0.025, axes="xy")
+    light_controls = light.controls
     controls = {
         "solver": dropdown("solver", [(v, k) for k, v in SOLVERS.items()], solver, label_width="60px"),
         "shots": int_slider("shots", 300, 0, MAX_STEPS["progressive"], label_width="60px"),
@@ -180,7 +181,7 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     defaults = {k: w.value for k, w in controls.items()}
 
     def update(solver, shots, jacobi_k, gs_k, shading, light0_x, light0_y, light0_I, light0_colour):
-        (lamp,) = light.lights({"light0_x": light0_x, "light0_y": light0_y, "light0_z": 0.99, "light0_I": light0_I,
+        (lamp,) = light.lights({"light0_x": light0_x, "light0_y": light0_y, "light0_I": light0_I,
                                 "light0_colour": light0_colour})
         key = (round(light0_x, 6), round(light0_y, 6), round(light0_I, 6), lamp.colour)
         if solved.get("key") != key:
