@@ -178,19 +178,23 @@ def mach_band_view(row: int = 86, facets: int = 6, show: str = "Gouraud and Phon
     mesh_cache: dict = {}
 
     def mesh(n):
+        """The sphere of n bands, its triangle per pixel and its two renders (a row or show move
+        re-renders nothing)."""
         if n not in mesh_cache:
             mesh_cache.clear()
             V, T = shading.uv_sphere(n, 2 * n)
-            mesh_cache[n] = (V, T, shading.rasterise_triangles(camera.project(V)[:, :3], T, size, size).triangle)
+            ids = shading.rasterise_triangles(camera.project(V)[:, :3], T, size, size).triangle
+            pictures = [shading.render(V, T, camera, light, material, mode=mode, ambient_light=0.3,
+                                       background=(1.0, 1.0, 1.0)) for mode in modes]
+            mesh_cache[n] = (ids, pictures)
         return mesh_cache[n]
 
     def update(row, facets, show):
-        V, T, ids = mesh(int(facets))
+        ids, rendered = mesh(int(facets))
         pictures, greys, slopes, jumps = [], [], [], []
         measured = shading.edge_slopes(np.zeros(size), ids[row])
         for k, mode in enumerate(modes):
-            picture = shading.render(V, T, camera, light, material, mode=mode, ambient_light=0.3,
-                                     background=(1.0, 1.0, 1.0))
+            picture = rendered[k]
             grey, slope = shading.scanline_profile(picture, row)
             edges = shading.edge_slopes(grey, ids[row])
             images[k].set_data(picture)
