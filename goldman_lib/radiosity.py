@@ -379,7 +379,7 @@ def _surfaces(patches: Patches):
             nu, nv, start)
 
 
-def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1) -> np.ndarray:
+def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1, progress=None) -> np.ndarray:
     """Form factors ``F_ij`` between all patches of a scene by hemi-cubes (Goldman §23.3).
 
     For each patch ``i`` a hemi-cube is set on its centre, facing along its normal; every other patch
@@ -398,14 +398,25 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1) -> np
     cells across the top face; the work (``n s^2 3 r^2`` cells times the rectangles) is bounded
     (:data:`MAX_HEMICUBE_TESTS`).
 
+    progress: ``progress(done, total)`` is called with the hemi-cubes finished so far (of ``n s^2``)
+    after each batch of them (about 400,000 cell-rectangle tests a batch), for a progress bar
+    (:class:`goldman_lib.views.render_control.ProgressBar`); the result does not depend on it.  An
+    interrupt between batches leaves nothing half-written (``F`` is returned only at the end).
+
     >>> two = Patches([[0, 0, 0], [0, 1, 1]], [[1, 0, 0], [1, 0, 0]], [[0, 1, 0], [0, -1, 0]],
     ...               [[0.5] * 3] * 2, [[0.0] * 3] * 2)
     >>> F = hemicube_form_factors(two, resolution=32, subdivisions=6)
     >>> bool(abs(F[0, 1] - 0.1998) < 0.004)
     True
+    >>> seen = []
+    >>> F2 = hemicube_form_factors(two, resolution=32, subdivisions=6, progress=lambda k, n: seen.append((k, n)))
+    >>> seen[-1], bool(np.array_equal(F, F2))
+    ((72, 72), True)
     """
     if not isinstance(patches, Patches):
         raise TypeError(f"patches must be a radiosity.Patches; got {type(patches).__name__}")
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress must be a function progress(done, total) or None; got {type(progress).__name__}")
     n = len(patches)
     subdivisions = as_int(subdivisions, "subdivisions", minimum=1)
     res = _check_resolution(resolution)
@@ -470,6 +481,8 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1) -> np
             rows = np.broadcast_to(who[:, None], patch.shape)
             weights = np.broadcast_to(delta[None, :], patch.shape)
             F += np.bincount((rows * n + patch)[seen], weights=weights[seen], minlength=n * n).reshape(n, n)
+            if progress is not None:
+                progress(min(lo + chunk, len(eyes)), len(eyes))
     F /= len(ga)
     np.fill_diagonal(F, 0.0)
     return F

@@ -52,7 +52,7 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
 
 __all__ = ["Camera", "Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
            "trace", "render", "ray_tree", "in_shadow", "light_fraction", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
-           "OFFSET", "INDEX_RANGE", "MATERIALS"]
+           "OFFSET", "INDEX_RANGE", "MATERIALS", "MAX_SAMPLES", "BANDS"]
 
 #: The deepest recursion a render may ask for (a ray tree of depth d holds up to 2^(d+1) - 1 rays).
 MAX_DEPTH = 12
@@ -663,8 +663,14 @@ def _record_shadows(record, objects, bounds, P, outside, w, blocked, lights, lev
                                      float(fraction[i, j])))
 
 
+#: The most samples per pixel side :func:`render` takes (``samples=4``: 16 rays per pixel).
+MAX_SAMPLES = 4
+#: How many bands of rows :func:`render` traces one after another when it reports ``progress``.
+BANDS = 24
+
+
 def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3, *,
-           counts: dict | None = None, max_rays: int = MAX_ITEMS) -> np.ndarray:
+           samples: int = 1, progress=None, counts: dict | None = None, max_rays: int = MAX_ITEMS) -> np.ndarray:
     """Ray trace ``scene`` seen by ``camera`` (Goldman §17.2): a ``(height, width, 3)`` image in
     [0, 1] (row 0 at the top).  depth: the recursion depth (0: local light and shadows only), at
     most :data:`MAX_DEPTH`.  The work is the rays actually traced, counted level by level against
@@ -672,19 +678,61 @@ def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, de
     image of :func:`default_scene` at depth 5 traces under 0.9 million rays, shadow rays included, far
     from the ``640 * 480 * 63`` (19 million) of a full binary tree per pixel.  counts: as in :func:`trace`.
 
+    samples: anti-aliasing by supersampling (§17.1 raster graphics: a pixel is an area, not a point;
+    the regular grid is our choice): each pixel is the mean of ``samples x samples`` rays through
+    the centres of an even grid of sub-pixels, each clipped to [0, 1] before the mean; 1 (the
+    default) is one ray through the pixel's centre.  At most :data:`MAX_SAMPLES`.
+    progress: ``progress(done, total)`` is called with the image rows finished so far, after each
+    of up to :data:`BANDS` bands of rows traced in turn (the image is the same, pixel for pixel, as
+    without it), so a long render can show how far it is; an interrupt (Ctrl-C, the kernel's stop
+    button) stops it between or inside bands.
+
     >>> img = render(default_scene(), default_camera(), 8, 6, depth=1)
     >>> img.shape
     (6, 8, 3)
+    >>> done = []
+    >>> img2 = render(default_scene(), default_camera(), 8, 6, depth=1, progress=lambda k, n: done.append((k, n)))
+    >>> done[-1], bool((img2 == img).all())
+    ((6, 6), True)
     """
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be a goldman_lib.ray_tracing.Camera; got {type(camera).__name__}")
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
     width, height = _image_size(width, height, depth)
-    _check_lights(scene, width * height, _as_budget(max_rays))   # before the primary rays are made
-    o, d = camera.rays(width, height)
-    colour = trace(scene, o, d, depth, counts=counts, max_rays=max_rays)
-    return lighting.to_image(colour.reshape(height, width, 3))
+    samples = as_int(samples, "samples", minimum=1, maximum=MAX_SAMPLES)
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress must be a function progress(done, total) or None; got {type(progress).__name__}")
+    if counts is not None and not isinstance(counts, dict):
+        raise TypeError(f"counts must be a dict (to receive the ray counts) or None; got {type(counts).__name__}")
+    budget = _as_budget(max_rays)
+    big_w, big_h = width * samples, height * samples
+    if big_w * big_h > budget:
+        raise ValueError(f"samples={samples} makes {big_w * big_h:,} primary rays for a {width}x{height} image, "
+                         f"over the budget max_rays={budget:,}; use fewer samples or a smaller image")
+    _check_lights(scene, big_w * big_h, budget)   # before the primary rays are made
+    o, d = camera.rays(big_w, big_h)
+    if progress is None:
+        colour = trace(scene, o, d, depth, counts=counts, max_rays=budget)
+    else:
+        colour = np.empty((big_w * big_h, 3))
+        total = {"rays": 0, "shadow": 0}
+        rows = -(-height // min(BANDS, height))            # image rows per band
+        for top in range(0, height, rows):
+            bottom = min(height, top + rows)
+            a, b = top * samples * big_w, bottom * samples * big_w
+            band: dict = {}
+            colour[a:b] = trace(scene, o[a:b], d[a:b], depth, counts=band,
+                                max_rays=max(1, budget - total["rays"] - total["shadow"]))
+            total["rays"] += band["rays"]
+            total["shadow"] += band["shadow"]
+            progress(bottom, height)
+        if counts is not None:
+            counts.update(total)
+    image = lighting.to_image(colour.reshape(big_h, big_w, 3))
+    if samples > 1:
+        image = image.reshape(height, samples, width, samples, 3).mean(axis=(1, 3))
+    return image
 
 
 def ray_tree(scene: Scene, camera: Camera, px: int, py: int, depth: int = 3, width: int = 160,

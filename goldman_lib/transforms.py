@@ -29,7 +29,8 @@ from goldman_lib.validation import as_float, as_float_array, as_points, check_fi
 from goldman_lib._kernels import norm as _norm
 
 __all__ = ["translation", "rotation", "mirror", "scaling", "nonuniform_scaling", "orthogonal_projection",
-           "perspective", "apply", "homogeneous", "apply_to_vectors", "compose", "translate", "rotate", "reflect", "scale", "scale_along",
+           "perspective", "apply", "homogeneous", "apply_to_vectors", "compose", "affine_from_points",
+           "rigid_inverse", "translate", "rotate", "reflect", "scale", "scale_along",
            "project_orthogonal", "project_perspective"]
 
 
@@ -321,6 +322,65 @@ def compose(*matrices) -> np.ndarray:
         with np.errstate(over="ignore", invalid="ignore"):
             out = out @ A
         finite_result(out, f"matrices (up to matrices[{k}]) are", why="too large in magnitude")
+    return out
+
+
+def affine_from_points(sources, images) -> np.ndarray:
+    """The 4x4 matrix (row convention) of the affine map of 3-space that sends four affinely
+    independent points ``sources[i]`` to ``images[i]`` (Goldman §13.1; the 2D case is §4.7): an
+    affine map is fixed by the images of an affine frame, the point ``P0`` and the vectors
+    ``P_i - P0``.  The block ``L`` solves ``(P_i - P0) L = Q_i - Q0`` (i = 1, 2, 3) and the
+    translation row is ``t = Q0 - P0 L``, so that ``[P0 1] M = [Q0 1]``.
+
+    sources, images: (4, 3).  Returns (4, 4) with last column (0, 0, 0, 1).  The images may be
+    dependent (the map is then singular).  Raises ValueError when the sources are affinely
+    dependent (coplanar): the frame then fixes no map.
+
+    >>> affine_from_points([[1, 0, 0], [2, 0, 0], [1, 1, 0], [1, 0, 1]],
+    ...                    [[0, 0, 0], [0, 1, 0], [-1, 0, 0], [0, 0, 1]]).tolist()
+    [[0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, -1.0, 0.0, 1.0]]
+    """
+    P = as_points(sources, "sources", dim=3)
+    Q = as_points(images, "images", dim=3)
+    if P.shape != (4, 3):
+        raise ValueError(f"sources must hold four 3D points (shape (4, 3)); got shape {P.shape}")
+    if Q.shape != (4, 3):
+        raise ValueError(f"images must hold four 3D points (shape (4, 3)); got shape {Q.shape}")
+    V, W = P[1:] - P[0], Q[1:] - Q[0]
+    scale_ = max(1.0, float(np.abs(V).max()))
+    if abs(np.linalg.det(V / scale_)) <= 1e-12:
+        raise ValueError("sources must be affinely independent (not coplanar): the vectors P_i - P0 are dependent, "
+                         "so they fix no linear part")
+    with np.errstate(over="ignore", invalid="ignore"):
+        L = np.linalg.solve(V, W)
+        M = np.eye(4)
+        M[:3, :3] = L
+        M[3, :3] = Q[0] - P[0] @ L
+    return finite_result(M, "sources or images are", why="too large in magnitude")
+
+
+def rigid_inverse(M) -> np.ndarray:
+    """The inverse of the 4x4 matrix of a rigid motion (Goldman §13.3): its block ``R`` is
+    orthogonal, so the inverse has the block ``Rᵀ`` and the translation row ``-t Rᵀ``
+    (``[P 1] M = [P R + t 1]`` is undone by ``P = (Q - t) Rᵀ``).  No linear solve is needed.
+
+    M: (4, 4), affine (last column (0, 0, 0, 1)) with an orthogonal block (to 1e-9).
+    Raises ValueError for any other matrix.
+
+    >>> (rigid_inverse(rotation([0, 0, 1], 90, point=[1, 0, 0])).round(12) + 0.0).tolist()
+    [[0.0, -1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [1.0, 1.0, 0.0, 1.0]]
+    """
+    A = check_finite(as_float_array(M, "M"), "M")
+    if A.shape != (4, 4):
+        raise ValueError(f"M must be a 4x4 matrix; got shape {A.shape}")
+    if not np.allclose(A[:, 3], [0, 0, 0, 1], atol=1e-12):
+        raise ValueError(f"M must be affine (last column (0, 0, 0, 1)); got last column {A[:, 3].tolist()}")
+    R, t = A[:3, :3], A[3, :3]
+    if not np.allclose(R @ R.T, np.eye(3), atol=1e-9):
+        raise ValueError("M must be a rigid motion: its 3x3 block must be orthogonal (R Rᵀ = I)")
+    out = np.eye(4)
+    out[:3, :3] = R.T
+    out[3, :3] = -t @ R.T
     return out
 
 

@@ -32,7 +32,7 @@ def test_final_state():
     assert ch01.check_final_state([[-1, 3], [0, 2]]).correct
     assert ch01.check_final_state(((-1.0, 3.0), (0.0, 2.0))).correct
     _assert_wrong(ch01.check_final_state([[-1, 2], [0, 1]]), "without RESIZE 2", "multiplies w by s")
-    _assert_wrong(ch01.check_final_state([[-1, -3], [0, -2]]), "every TURN clockwise", "counterclockwise")
+    _assert_wrong(ch01.check_final_state([[-1, -3], [0, -2]]), "every TURN the other way", "counterclockwise")
     _assert_wrong(ch01.check_final_state([[2, 3], [0, 2]]), "MOVE 3 left out", "without drawing")
     _assert_wrong(ch01.check_final_state([[-1, 3], [0, 1]]), "P is right, but w is not")
     _assert_wrong(ch01.check_final_state([[0, 3], [0, 2]]), "w is right, but P is off")

@@ -20,6 +20,13 @@ COMPOSITE = [[0, 1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [-2, 1, 0, 1]]
 PERSPECTIVE = [5, 10, 0]
 # (1, 2, 3) L = (0, 1, 0) + 2 (-1, 0, 0) + 3 (0, 0, 1) = (-2, 1, 3); the point adds (2, -1, 3)
 POINT_AND_VECTOR = [[0, 0, 6], [-2, 1, 3]]
+# the frame: V = rows P_i - P0 = (1, 0, 0), (0, 1, 1), (0, 0, 1); W = rows Q_i - Q0 = (0, 1, 0), (-2, 0, 1), (0, 0, 2).
+# V L = W: row 1 of L = (0, 1, 0); row 2 + row 3 = (-2, 0, 1) with row 3 = (0, 0, 2), so row 2 = (-2, 0, -1).
+# t = Q0 - P0 L = (2, 0, 1) - [(0, 1, 0) + (-2, 0, -1)] = (4, -1, 2)
+FRAME = [[0, 1, 0, 0], [-2, 0, -1, 0], [0, 0, 2, 0], [4, -1, 2, 1]]
+# R: 90° about x through (0, 1, 1), block rows (1, 0, 0), (0, 0, 1), (0, -1, 0), row t = Q - Q R = (0, 2, 0);
+# R⁻¹: block Rᵀ, row -t Rᵀ = (0, 0, 2); S⁻¹ R⁻¹ halves the block rows and keeps the last row
+INVERSE = [[0.5, 0, 0, 0], [0, 0, -0.5, 0], [0, 0.5, 0, 0], [0, 0, 2, 1]]
 
 CHECKERS = [
     (ch13.check_rotation_block, BLOCK),
@@ -28,6 +35,8 @@ CHECKERS = [
     (ch13.check_composite_matrix, COMPOSITE),
     (ch13.check_perspective_image, PERSPECTIVE),
     (ch13.check_point_and_vector, POINT_AND_VECTOR),
+    (ch13.check_frame_matrix, FRAME),
+    (ch13.check_inverse_matrix, INVERSE),
 ]
 IDS = [c.__name__ for c, _ in CHECKERS]
 
@@ -86,6 +95,54 @@ def test_perspective_and_vector_slips():
     assert "swapped" in v([[-2, 1, 3], [0, 0, 6]])
     assert "block L still acts" in v([[0, 0, 6], [1, 2, 3]])
     assert "column convention" in v([[4, -2, 6], [2, -1, 3]])
+
+
+def test_frame_matrix_by_lstsq_and_slips():
+    P, Q = ch13.FRAME_SOURCES, ch13.FRAME_IMAGES
+    H = np.c_[P, np.ones(4)]
+    X = np.linalg.lstsq(H, np.c_[Q, np.ones(4)], rcond=None)[0]      # an independent reference
+    assert np.allclose(X, FRAME)
+    m = lambda a: ch13.check_frame_matrix(a).message  # noqa: E731
+    assert "column convention" in m(np.array(FRAME).T.tolist())
+    inverse = np.linalg.lstsq(np.c_[Q, np.ones(4)], H, rcond=None)[0]
+    assert "inverse of the map" in m(inverse.tolist())
+    row = [r[:] for r in FRAME]
+    row[3] = [2, 0, 1, 1]
+    assert "not Q0" in m(row)
+    row[3] = [1, -1, 1, 1]
+    assert "before L acts" in m(row)
+    assert "as if P_i - P0 were the unit vectors" in m([[0, 1, 0, 0], [-2, 0, 1, 0], [0, 0, 2, 0], [4, -1, 0, 1]])
+
+
+def test_inverse_matrix_against_numpy_and_slips():
+    M = np.linalg.inv(INVERSE)                                         # M = R S, by numpy
+    R = np.array([[1, 0, 0, 0], [0, 0, 1, 0], [0, -1, 0, 0], [0, 2, 0, 1]])
+    assert np.allclose(M, R @ np.diag([2, 2, 2, 1]))
+    m = lambda a: ch13.check_inverse_matrix(a).message  # noqa: E731
+    same_order = np.linalg.inv(R) @ np.diag([0.5, 0.5, 0.5, 1])
+    assert "same order" in m(same_order.tolist())
+    assert "transpose of M" in m(M.T.tolist())
+    negated = np.array(INVERSE, float)
+    negated[3, :3] = -M[3, :3]
+    assert "not just -t" in m(negated.tolist())
+
+
+def test_dealt_instances_are_checked_on_their_own_numbers():
+    try:
+        ch13.deal("check_frame_matrix", seed=5)
+        _, p = ch13.current("check_frame_matrix")
+        P, Q = np.array(p["P"]), np.array(p["Q"])
+        X = np.linalg.lstsq(np.c_[P, np.ones(4)], np.c_[Q, np.ones(4)], rcond=None)[0]
+        assert ch13.check_frame_matrix(X.tolist()).correct
+        assert not ch13.check_frame_matrix(FRAME).correct or np.allclose(X, FRAME)
+        assert np.linalg.cond(P[1:] - P[0]) <= ch13.FRAME_MAX_CONDITION
+        ch13.deal("check_inverse_matrix", seed=9)
+        _, p = ch13.current("check_inverse_matrix")
+        R = ch13.transforms.rotation(p["axis"], p["angle"], point=p["Q"])
+        M = R @ np.diag([p["s"], p["s"], p["s"], 1.0])
+        assert ch13.check_inverse_matrix(np.linalg.inv(M).tolist()).correct
+    finally:
+        ch13.DECK.reset()
 
 
 # -- the programming project (its corpus of right and wrong solutions: tests/projects/test_ch13_project.py) --

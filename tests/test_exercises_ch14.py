@@ -1,6 +1,8 @@
 """Chapter 14 checkers: hand-worked right answers pass, each recognised slip gets its reason, other
 wrong answers say how far off or how many are wrong, and garbage gets a message."""
 
+import numpy as np
+
 from goldman_lib.exercises import ch14
 
 
@@ -122,3 +124,42 @@ def test_unanswered():
     for name in ch14.PROBLEMS:
         r = getattr(ch14, name)(None)
         assert not r.answered and repr(r).startswith("Not answered yet: replace None with")
+
+
+def test_dealt_instances_are_checked_on_their_own_numbers():
+    """A few dealt seeds, each answer worked here from the statement's data by the book's formulas."""
+    try:
+        for seed in (1, 2, 3):
+            ch14.deal("check_center_of_mass", seed=seed)
+            p = ch14.current("check_center_of_mass")[1]
+            m, P = np.array(p["masses"]), np.array(p["points"])
+            assert ch14.check_center_of_mass(list(m @ P / m.sum()) + [m.sum()]).correct
+            ch14.deal("check_point_at_infinity", seed=seed)
+            a, b, _ = ch14.current("check_point_at_infinity")[1]["line"]
+            assert ch14.check_point_at_infinity([-2 * b, 2 * a, 0]).correct     # any nonzero multiple
+            ch14.deal("check_perspective_by_lever", seed=seed)
+            p = ch14.current("check_perspective_by_lever")[1]
+            E, Q, N, X = (np.array(p[k]) for k in ("E", "Q", "N", "P"))
+            t = (Q - E) @ N / ((X - E) @ N)                                     # the line E + t (P - E)
+            assert ch14.check_perspective_by_lever(list(E + t * (X - E))).correct
+            ch14.deal("check_pseudodepth", seed=seed)
+            p = ch14.current("check_pseudodepth")[1]
+            E, Q, N = (np.array(p[k]) for k in ("E", "Q", "N"))
+            s = (np.array(p["points"]) - E) @ N
+            assert ch14.check_pseudodepth(list(1 - ((Q - E) @ N) / s)).correct
+            ch14.deal("check_depth_order", seed=seed)
+            p = ch14.current("check_depth_order")[1]
+            E, N = np.array(p["E"]), np.array(p["N"])
+            s = (np.array(p["points"]) - E) @ N
+            assert ch14.check_depth_order("".join("ABCD"[i] for i in np.argsort(s))).correct
+            ch14.deal("check_point_or_vector", seed=seed)
+            p = ch14.current("check_point_or_vector")[1]
+            assert ch14.check_point_or_vector(ch14.DECK.exercises["check_point_or_vector"].answer(p).split()).correct
+    finally:
+        ch14.DECK.reset()
+
+
+def test_point_or_vector_reads_one_string_too():
+    assert ch14.check_point_or_vector("vector point point vector point vector").correct
+    assert ch14.check_point_or_vector("vector, point, point, vector, point, vector").correct
+    _assert_wrong(ch14.check_point_or_vector("vector point"), "list of 6 words")

@@ -67,6 +67,29 @@ def test_hemicube_within_two_percent_of_the_closed_forms():
     assert np.all(np.diag(par) == 0)
 
 
+def test_hemicube_progress_counts_the_hemicubes_and_changes_nothing():
+    box = rd.cornell_box(4)                                   # 128 patches, blocks included
+    calls = []
+    F = rd.hemicube_form_factors(box, resolution=16, subdivisions=2, progress=lambda k, n: calls.append((k, n)))
+    assert len(calls) >= 2                                    # several batches, each reported
+    done = [k for k, _ in calls]
+    assert done == sorted(done) and len(set(done)) == len(done)
+    assert {n for _, n in calls} == {len(box) * 4} and calls[-1] == (len(box) * 4, len(box) * 4)
+    assert np.array_equal(F, rd.hemicube_form_factors(box, resolution=16, subdivisions=2))
+    with pytest.raises(TypeError, match="progress must be a function"):
+        rd.hemicube_form_factors(box, resolution=16, progress=3)
+
+
+def test_hemicube_stops_when_interrupted():
+    """The kernel's stop button raises KeyboardInterrupt inside the loop; here the callback raises it
+    after the first batch, and nothing of the half-done work is returned."""
+    def stop(done, total):
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        rd.hemicube_form_factors(rd.cornell_box(4), resolution=16, progress=stop)
+
+
 def test_hemicube_rows_against_the_point_formula():
     box = rd.cornell_box(4, blocks=False)
     F = rd.hemicube_form_factors(box, resolution=64)

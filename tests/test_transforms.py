@@ -98,3 +98,46 @@ def test_homogeneous_coordinates_before_the_divide_and_vectors_ignore_translatio
     assert np.allclose(tf.apply_to_vectors(P - R, A), tf.apply(P, A) - tf.apply(R, A))
     with pytest.raises(ValueError, match="M must be affine"):
         tf.apply_to_vectors([[1, 0, 0]], M)
+
+
+# -- the map fixed by four points and their images; the inverse of a rigid motion (§13.1, §13.3) --------
+
+def test_affine_from_points_by_hand_and_against_lstsq():
+    # sources: the unit frame moved to (1, 0, 0); images: turned 90° about z, then sent down by 1 in y
+    M = tf.affine_from_points([[1, 0, 0], [2, 0, 0], [1, 1, 0], [1, 0, 1]],
+                                      [[0, 0, 0], [0, 1, 0], [-1, 0, 0], [0, 0, 1]])
+    assert M.tolist() == [[0, 1, 0, 0], [-1, 0, 0, 0], [0, 0, 1, 0], [0, -1, 0, 1]]
+    rng = np.random.default_rng(13)
+    for _ in range(50):
+        P, Q = rng.uniform(-3, 3, (4, 3)), rng.uniform(-3, 3, (4, 3))
+        if abs(np.linalg.det(P[1:] - P[0])) < 0.5:
+            continue
+        H = np.c_[P, np.ones(4)]                         # [P_i 1] X = [Q_i 1], solved by least squares
+        X = np.linalg.lstsq(H, np.c_[Q, np.ones(4)], rcond=None)[0]
+        M = tf.affine_from_points(P, Q)
+        assert np.allclose(M, X, atol=1e-9)
+        assert np.allclose(M[:, 3], [0, 0, 0, 1])
+        assert np.allclose(np.c_[P, np.ones(4)] @ M, np.c_[Q, np.ones(4)], atol=1e-9)   # row convention
+
+
+def test_affine_from_points_refuses_a_coplanar_frame():
+    with pytest.raises(ValueError, match="sources must be affinely independent"):
+        tf.affine_from_points([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]], np.eye(4)[:, :3])
+    with pytest.raises(ValueError, match="sources must hold four 3D points"):
+        tf.affine_from_points(np.zeros((3, 3)), np.zeros((3, 3)))
+
+
+def test_rigid_inverse_against_numpy_and_by_hand():
+    # 90° about z through (1, 0, 0): back by -90° about the same line; the row -t Rᵀ is (1, 1, 0)
+    M = tf.rotation([0, 0, 1], 90, point=[1, 0, 0])
+    assert np.allclose(tf.rigid_inverse(M), [[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0], [1, 1, 0, 1]])
+    rng = np.random.default_rng(31)
+    for _ in range(30):
+        M = tf.compose(tf.rotation(rng.normal(size=3), rng.uniform(-180, 180), point=rng.normal(size=3)),
+                               tf.mirror(rng.normal(size=3), rng.normal(size=3)),
+                               tf.translation(rng.normal(size=3)))
+        assert np.allclose(tf.rigid_inverse(M), np.linalg.inv(M), atol=1e-12)
+    with pytest.raises(ValueError, match="must be a rigid motion"):
+        tf.rigid_inverse(tf.scaling(2))
+    with pytest.raises(ValueError, match="must be affine"):
+        tf.rigid_inverse(tf.perspective([0, 0, 5], [0, 0, 0], [0, 0, 1]))

@@ -55,3 +55,15 @@ def test_the_light_is_dragged_on_the_ceiling_map():
     assert abs(view.values()["light0_x"] - 0.25) < 0.02 and abs(view.values()["light0_y"] - 0.7) < 0.02
     glow = view.figure.axes[0].images[0].get_array()
     assert glow.max() == 1.0 and glow[5, 2] > 0 and glow[2, 5] == 0          # lit near (0.25, 0.7), not at (0.7, 0.25)
+
+
+def test_the_scene_reports_its_hemicubes_to_a_progress_bar():
+    from goldman_lib.views.render_control import ProgressBar
+
+    bar = ProgressBar("hemi-cubes")
+    box, F = rv.cornell_scene(2, 8, progress=bar)             # a size of its own: computed here
+    assert (bar.done, bar.total) == (len(box), len(box)) and bar.fraction == 1.0
+    calls = []
+    again = rv.cornell_scene(2, 8, progress=lambda k, n: calls.append((k, n)))
+    assert again[1] is F and calls == [(len(box), len(box))]  # cached: done at once
+    assert rv.cornell_scene(2, 8)[1] is F

@@ -1,11 +1,14 @@
 """Exercise checkers for chapter 23, radiosity (Goldman §23.2-23.5).
 
-Each exercise's data are module constants, so the notebook prints the problem from here and the
-checker and the statement never disagree; ``PROBLEMS`` holds the statements by checker name and
-``SLIPS`` the wrong answers each checker recognises.  ``None`` or ``...`` means "not answered yet".
-The data differ from the chapter's worked examples.  The programming project,
-:func:`check_progressive_refinement_project`, runs the learner's shooting solver on generated scenes
-with reciprocal form factors and compares with the exact solution of B = E + rho F B.
+Every numeric exercise deals new instances (issue 17 §3, :mod:`goldman_lib.exercises.deal`): instance 0
+is the module constants below, which the stored notebook shows; ``deal("check_...")`` (or the button
+beside the exercise) deals another, and the checker, ``PROBLEMS`` and ``steps("check_...")`` follow the
+current instance.  ``SLIPS`` holds the wrong answers each checker recognises, for the stored instance.
+``None`` or ``...`` means "not answered yet".  The data differ from the chapter's worked examples.
+The chapter's "show that" exercises (in :mod:`goldman_lib.exercises.proofs`) ask for an identity and
+the programming project, :func:`check_progressive_refinement_project` (the learner's shooting solver
+on generated scenes with reciprocal form factors, against the exact solution of B = E + rho F B),
+already runs on generated cases: neither deals.
 
 >>> print(check_reciprocity(0.12).message)
 that is F_ij itself: form factors are not symmetric; A_i F_ij = A_j F_ji, so F_ji = A_i F_ij / A_j.
@@ -19,11 +22,13 @@ from goldman_lib import radiosity as rd
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _pair  # the shared reader
+from goldman_lib.exercises.deal import Deck, within
 from goldman_lib.exercises.projects import Case, check_project, describe
 
 __all__ = ["PROBLEMS", "SLIPS", "JACOBI_F", "JACOBI_RHO", "JACOBI_E", "GS_F", "GS_RHO", "GS_E", "RECIPROCITY",
            "SQUARE_SIDE", "SQUARE_DISTANCE", "SHOT_AREA", "SHOT_F", "SHOT_RHO", "SHOT_DB",
            "check_jacobi_step", "check_gauss_seidel_step", "check_reciprocity", "check_parallel_form_factor",
+           "DECK", "deal", "steps", "current", "deal_button",
            "check_shot", "check_progressive_refinement_project", "project_cases"]
 
 #: Exercise 1 (§23.5): a 2-patch system (A_1 = 1, A_2 = 2, so A_1 F_12 = A_2 F_21).
@@ -45,34 +50,21 @@ SHOT_F = (0.0, 0.3, 0.1)           # F_1j: what patch 1 sees
 SHOT_RHO = (0.5, 0.5, 0.8)
 SHOT_DB = (1.5, 1.0, 2.0)
 
+DECK = Deck("ch23")
+
 
 def _m(rows) -> str:
     return "[" + ", ".join("[" + ", ".join(fmt(v) for v in r) + "]" for r in rows) + "]"
 
 
-PROBLEMS = {
-    "check_jacobi_step": (
-        f"Two patches have form factors F = {_m(JACOBI_F)} (F_12 = {fmt(JACOBI_F[0][1])}: patch 1 sends that "
-        f"fraction of its light to patch 2), reflectances rho = {fmt(JACOBI_RHO)} and emissions E = {fmt(JACOBI_E)}. "
-        f"Start from B^(0) = E and make one Jacobi step B_i^(1) = E_i + rho_i sum_j F_ij B_j^(0). Give "
-        f"[B_1, B_2] (Goldman §23.5)."),
-    "check_gauss_seidel_step": (
-        f"Same form factors F = {_m(GS_F)}, now rho = {fmt(GS_RHO)} and E = {fmt(GS_E)}. Start from B^(0) = E and "
-        f"make one Gauss-Seidel sweep, patch 1 first, each patch gathering from the newest radiosities. Give "
-        f"[B_1, B_2] after the sweep (Goldman §23.5)."),
-    "check_reciprocity": (
-        f"Patch i has area {fmt(RECIPROCITY[0])}, patch j area {fmt(RECIPROCITY[1])}, and F_ij = "
-        f"{fmt(RECIPROCITY[2])}. What is F_ji (Goldman §23.3)?"),
-    "check_parallel_form_factor": (
-        f"Two {fmt(SQUARE_SIDE)} x {fmt(SQUARE_SIDE)} squares face each other, directly opposed, "
-        f"{fmt(SQUARE_DISTANCE)} apart. Use the closed form for directly opposed rectangles to give their form "
-        f"factor F to 3 decimals (Goldman §23.3)."),
-    "check_shot": (
-        f"Progressive refinement: three patches with areas {fmt(SHOT_AREA)}, reflectances {fmt(SHOT_RHO)} and unshot "
-        f"radiosities dB = {fmt(SHOT_DB)}. Patch 1 has the most unshot power A dB, so it shoots; its form factors are "
-        f"F_12 = {fmt(SHOT_F[1])}, F_13 = {fmt(SHOT_F[2])}. Give the unshot radiosities [dB_1, dB_2, dB_3] after the "
-        f"shot (Goldman §23.5)."),
-}
+def _f(x) -> str:
+    """A number of the worked steps, to six digits (enough for the checkers' tolerances)."""
+    return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
+
+
+def _tenths(rng, lo, hi) -> float:
+    """A multiple of 0.1 in [lo, hi] (hand-friendly reflectances and form factors)."""
+    return round(int(rng.integers(round(lo * 10), round(hi * 10) + 1)) / 10, 1)
 
 
 def _close(a, b, tol=1e-4) -> bool:
@@ -96,15 +88,76 @@ def _gs(F, rho, E, order=(0, 1)):
     return B
 
 
-def check_jacobi_step(answer) -> Result:
-    """Check one Jacobi step ``B^(1) = E + rho F E`` (Goldman §23.5).  Recognises a Gauss-Seidel sweep,
-    the transposed form factors, a missing reflectance and a missing emission.
+def _system(p):
+    return np.array(p["F"], float), np.array(p["rho"], float), np.array(p["E"], float)
+
+
+def _first_sweep(solver, p):
+    """The first iterate of the library's ``solver`` (:func:`radiosity.jacobi` or
+    :func:`radiosity.gauss_seidel`) from B^(0) = E."""
+    F, rho, E = _system(p)
+    return solver(F, rho, E, tol=1e-300, max_iterations=1, return_history=True).iterates[1]
+
+
+def _two_patch_generate(rng) -> dict:
+    F12, F21 = _tenths(rng, 0.1, 0.6), _tenths(rng, 0.1, 0.6)
+    return {"F": ((0.0, F12), (F21, 0.0)), "rho": (_tenths(rng, 0.2, 0.9), _tenths(rng, 0.2, 0.9)),
+            "E": (float(rng.integers(1, 5)), float(rng.integers(1, 5)))}
+
+
+def _two_patch_ok(p):
+    F = p["F"]
+    if F[0][1] == F[1][0]:
+        return "F_12 = F_21 (equal areas): the transposed form factors would be right too"
+    return None
+
+
+#: the checkers' tolerance is relative 1e-4; instances keep their answers 1e-3 apart
+_SAME = within(1e-3, relative=True)
+
+# -- §23.5: Jacobi ----------------------------------------------------------------------------------------
+
+_STORED_JACOBI = {"F": JACOBI_F, "rho": JACOBI_RHO, "E": JACOBI_E}
+
+
+def _jacobi_answer(p):
+    return _first_sweep(rd.jacobi, p)
+
+
+def _jacobi_slips(p):
+    F, rho, E = _system(p)
+    return {"Gauss-Seidel": _gs(F, rho, E), "F transposed": _jacobi(F.T, rho, E), "no reflectance": E + F @ E,
+            "no emission": rho * (F @ E)}
+
+
+def _jacobi_statement(p) -> str:
+    F = p["F"]
+    return (f"Two patches have form factors F = {_m(F)} (F_12 = {fmt(F[0][1])}: patch 1 sends that "
+            f"fraction of its light to patch 2), reflectances rho = {fmt(p['rho'])} and emissions E = {fmt(p['E'])}. "
+            f"Start from B^(0) = E and make one Jacobi step B_i^(1) = E_i + rho_i sum_j F_ij B_j^(0). Give "
+            f"[B_1, B_2] (Goldman §23.5).")
+
+
+def _jacobi_steps(p) -> str:
+    F, rho, E = _system(p)
+    B = _jacobi_answer(p)
+    return (f"1. Jacobi gathers from B^(0) = E = {fmt(E)} only.\n"
+            f"2. B_1 = E_1 + rho_1 F_12 B_2^(0) = {fmt(E[0])} + {fmt(rho[0])}·{fmt(F[0, 1])}·{fmt(E[1])} = {_f(B[0])}.\n"
+            f"3. B_2 = E_2 + rho_2 F_21 B_1^(0) = {fmt(E[1])} + {fmt(rho[1])}·{fmt(F[1, 0])}·{fmt(E[0])} = {_f(B[1])} "
+            f"(B_1^(0) = E_1, not the new B_1).")
+
+
+@DECK.exercise(stored=_STORED_JACOBI, generate=_two_patch_generate, answer=_jacobi_answer, slips=_jacobi_slips,
+               statement=_jacobi_statement, steps=_jacobi_steps, same=_SAME, well_posed=_two_patch_ok)
+def check_jacobi_step(answer, p) -> Result:
+    """Check one Jacobi step ``B^(1) = E + rho F E`` of the statement's two patches (Goldman §23.5).
+    Recognises a Gauss-Seidel sweep, the transposed form factors, a missing reflectance and a missing emission.
     """
     got, err = _pair(answer, "your [B_1, B_2]", 2, "[B_1, B_2]")
     if err is not None:
         return err
-    F, rho, E = np.array(JACOBI_F), np.array(JACOBI_RHO), np.array(JACOBI_E)
-    right = _jacobi(F, rho, E)
+    F, rho, E = _system(p)
+    right = _jacobi_answer(p)
     if _close(got, right):
         return correct("one bounce of light: each patch keeps its emission and gathers rho_i F_ij B_j from the other.")
     if _close(got, _gs(F, rho, E)):
@@ -119,15 +172,48 @@ def check_jacobi_step(answer) -> Result:
     return wrong(f"your [B_1, B_2] is {_dist(got, right)}; compute E_i + rho_i (F_i1 B_1 + F_i2 B_2) with B = E.")
 
 
-def check_gauss_seidel_step(answer) -> Result:
-    """Check one Gauss-Seidel sweep, patch 1 first (Goldman §23.5).  Recognises the Jacobi step,
-    the sweep in the other order and a missing emission.
+# -- §23.5: Gauss-Seidel ------------------------------------------------------------------------------------
+
+_STORED_GS = {"F": GS_F, "rho": GS_RHO, "E": GS_E}
+
+
+def _gs_answer(p):
+    return _first_sweep(rd.gauss_seidel, p)
+
+
+def _gs_slips(p):
+    F, rho, E = _system(p)
+    return {"Jacobi": _jacobi(F, rho, E), "patch 2 first": _gs(F, rho, E, order=(1, 0)),
+            "no emission": _gs_answer(p) - E}
+
+
+def _gs_statement(p) -> str:
+    head = ("Same form factors F = " if p["F"] == JACOBI_F else "Two patches have form factors F = ")
+    return (f"{head}{_m(p['F'])}, now rho = {fmt(p['rho'])} and E = {fmt(p['E'])}. Start from B^(0) = E and "
+            f"make one Gauss-Seidel sweep, patch 1 first, each patch gathering from the newest radiosities. Give "
+            f"[B_1, B_2] after the sweep (Goldman §23.5).")
+
+
+def _gs_steps(p) -> str:
+    F, rho, E = _system(p)
+    B = _gs_answer(p)
+    return (f"1. Start from B = E = {fmt(E)}.\n"
+            f"2. Patch 1: B_1 = E_1 + rho_1 F_12 B_2 = {fmt(E[0])} + {fmt(rho[0])}·{fmt(F[0, 1])}·{fmt(E[1])} = {_f(B[0])}.\n"
+            f"3. Patch 2 gathers from the new B_1: B_2 = E_2 + rho_2 F_21 B_1 = {fmt(E[1])} + "
+            f"{fmt(rho[1])}·{fmt(F[1, 0])}·{_f(B[0])} = {_f(B[1])}.")
+
+
+@DECK.exercise(stored=_STORED_GS, generate=_two_patch_generate, answer=_gs_answer, slips=_gs_slips,
+               statement=_gs_statement, steps=_gs_steps, same=_SAME, well_posed=_two_patch_ok)
+def check_gauss_seidel_step(answer, p) -> Result:
+    """Check one Gauss-Seidel sweep, patch 1 first, of the statement's two patches (Goldman §23.5).
+    Recognises the Jacobi step, the sweep in the other order and a missing emission.
     """
     got, err = _pair(answer, "your [B_1, B_2]", 2, "[B_1, B_2]")
     if err is not None:
         return err
-    F, rho, E = np.array(GS_F), np.array(GS_RHO), np.array(GS_E)
-    right = _gs(F, rho, E)
+    F, rho, E = _system(p)
+    right = _gs_answer(p)
     if _close(got, right):
         return correct("patch 2 already saw patch 1's updated radiosity: that is why Gauss-Seidel needs fewer sweeps.")
     if _close(got, _jacobi(F, rho, E)):
@@ -139,9 +225,48 @@ def check_gauss_seidel_step(answer) -> Result:
     return wrong(f"your [B_1, B_2] is {_dist(got, right)}; update B_1 first, then use it for B_2.")
 
 
-def check_reciprocity(answer) -> Result:
-    """Check ``F_ji = A_i F_ij / A_j`` (Goldman §23.3).  Recognises the ratio upside down, F_ij itself
-    and the complement ``1 - F_ij``.
+# -- §23.3: reciprocity -------------------------------------------------------------------------------------
+
+_STORED_RECIPROCITY = {"Ai": RECIPROCITY[0], "Aj": RECIPROCITY[1], "Fij": RECIPROCITY[2]}
+_AREAS = (0.5, 0.8, 1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0)
+_FIJ = (0.05, 0.1, 0.12, 0.15, 0.2, 0.24, 0.25, 0.3, 0.4)
+
+
+def _reciprocity_answer(p) -> float:
+    return p["Ai"] * p["Fij"] / p["Aj"]
+
+
+def _reciprocity_slips(p):
+    return {"upside down": p["Aj"] * p["Fij"] / p["Ai"], "F_ij itself": p["Fij"], "1 - F_ij": 1 - p["Fij"]}
+
+
+def _reciprocity_generate(rng) -> dict:
+    Ai, Aj = rng.choice(_AREAS, size=2, replace=False)
+    return {"Ai": float(Ai), "Aj": float(Aj), "Fij": float(rng.choice(_FIJ))}
+
+
+def _reciprocity_ok(p):
+    if _reciprocity_answer(p) > 1:
+        return "F_ji would exceed 1: patch i cannot send that much to a smaller patch j"
+    return None
+
+
+def _reciprocity_statement(p) -> str:
+    return (f"Patch i has area {fmt(p['Ai'])}, patch j area {fmt(p['Aj'])}, and F_ij = "
+            f"{fmt(p['Fij'])}. What is F_ji (Goldman §23.3)?")
+
+
+def _reciprocity_steps(p) -> str:
+    return (f"1. Reciprocity: A_i F_ij = A_j F_ji (both are the power exchanged between the patches, per unit radiosity).\n"
+            f"2. F_ji = A_i F_ij / A_j = {fmt(p['Ai'])}·{fmt(p['Fij'])}/{fmt(p['Aj'])} = {_f(_reciprocity_answer(p))}.")
+
+
+@DECK.exercise(stored=_STORED_RECIPROCITY, generate=_reciprocity_generate, answer=_reciprocity_answer,
+               slips=_reciprocity_slips, statement=_reciprocity_statement, steps=_reciprocity_steps,
+               same=within(1e-3), well_posed=_reciprocity_ok)
+def check_reciprocity(answer, p) -> Result:
+    """Check ``F_ji = A_i F_ij / A_j`` for the statement's areas (Goldman §23.3).  Recognises the ratio
+    upside down, F_ij itself and the complement ``1 - F_ij``.
 
     >>> print(check_reciprocity(0.0384).message)
     you divided the wrong way: A_i F_ij = A_j F_ji, so F_ji = A_i F_ij / A_j (the smaller patch sees more of the bigger one).
@@ -149,7 +274,7 @@ def check_reciprocity(answer) -> Result:
     value, err = read_number(answer, "your F_ji")
     if err is not None:
         return err
-    Ai, Aj, Fij = RECIPROCITY
+    Ai, Aj, Fij = p["Ai"], p["Aj"], p["Fij"]
     right = Ai * Fij / Aj
     if abs(value - right) <= 1e-4:
         return correct("A_i F_ij = A_j F_ji: the smaller patch sees a larger share of the bigger one.")
@@ -163,9 +288,50 @@ def check_reciprocity(answer) -> Result:
     return wrong(f"your F_ji is {off_by(value, right)}; use A_i F_ij = A_j F_ji.")
 
 
-def check_parallel_form_factor(answer) -> Result:
-    """Check the closed form for two directly opposed squares (Goldman §23.3).  Recognises the ratio
-    X = distance / side, the small-patch estimate A / (pi d^2) and the unit-square value.
+# -- §23.3: the closed form for opposed squares ---------------------------------------------------------
+
+_STORED_SQUARES = {"side": SQUARE_SIDE, "d": SQUARE_DISTANCE}
+
+
+def _squares_answer(p) -> float:
+    return rd.form_factor_parallel_rectangles(p["side"], p["side"], p["d"])
+
+
+def _squares_slips(p):
+    s, d = p["side"], p["d"]
+    return {"X = distance / side": rd.form_factor_parallel_rectangles(d, d, s),
+            "A / (pi d^2)": s ** 2 / (np.pi * d ** 2), "unit squares": rd.form_factor_parallel_rectangles(1, 1, 1)}
+
+
+def _squares_generate(rng) -> dict:
+    return {"side": float(rng.choice([0.5, 1.0, 1.5, 2.0, 3.0, 4.0])), "d": float(rng.choice([0.5, 1.0, 2.0, 3.0]))}
+
+
+def _squares_ok(p):
+    if p["side"] == p["d"]:
+        return "side = distance: X = Y = 1, the unit squares' value would be right"
+    return None
+
+
+def _squares_statement(p) -> str:
+    return (f"Two {fmt(p['side'])} x {fmt(p['side'])} squares face each other, directly opposed, "
+            f"{fmt(p['d'])} apart. Use the closed form for directly opposed rectangles to give their form "
+            f"factor F to 3 decimals (Goldman §23.3).")
+
+
+def _squares_steps(p) -> str:
+    X = p["side"] / p["d"]
+    return (f"1. X = Y = side / distance = {fmt(p['side'])}/{fmt(p['d'])} = {_f(X)}.\n"
+            f"2. The closed form for directly opposed rectangles (Goldman §23.3) with these X and Y "
+            f"(radiosity.form_factor_parallel_rectangles({fmt(p['side'])}, {fmt(p['side'])}, {fmt(p['d'])})) "
+            f"gives F = {_f(_squares_answer(p))}.")
+
+
+@DECK.exercise(stored=_STORED_SQUARES, generate=_squares_generate, answer=_squares_answer, slips=_squares_slips,
+               statement=_squares_statement, steps=_squares_steps, same=within(2e-3), well_posed=_squares_ok)
+def check_parallel_form_factor(answer, p) -> Result:
+    """Check the closed form for the statement's two directly opposed squares (Goldman §23.3).  Recognises
+    the ratio X = distance / side, the small-patch estimate A / (pi d^2) and the unit-square value.
 
     >>> print(check_parallel_form_factor(1.2732).message)
     that is A / (pi d^2), the estimate for small, distant patches: it even exceeds 1 here. Use the closed form.
@@ -173,17 +339,27 @@ def check_parallel_form_factor(answer) -> Result:
     value, err = read_number(answer, "your F")
     if err is not None:
         return err
-    right = rd.form_factor_parallel_rectangles(SQUARE_SIDE, SQUARE_SIDE, SQUARE_DISTANCE)
+    side, d = p["side"], p["d"]
+    right = _squares_answer(p)
     if abs(value - right) <= 6e-4:
-        return correct("bigger squares at the same distance catch much more of each other's light than unit squares.")
-    if abs(value - rd.form_factor_parallel_rectangles(SQUARE_DISTANCE, SQUARE_DISTANCE, SQUARE_SIDE)) <= 6e-4:
+        if side > d:
+            return correct("bigger squares at the same distance catch much more of each other's light than unit squares.")
+        return correct("squares small against their distance catch little of each other's light.")
+    if abs(value - rd.form_factor_parallel_rectangles(d, d, side)) <= 6e-4:
         return wrong("you used X = distance / side; the closed form takes X = width / distance and Y = height / distance.")
-    if abs(value - SQUARE_SIDE ** 2 / (np.pi * SQUARE_DISTANCE ** 2)) <= 6e-4:
-        return wrong("that is A / (pi d^2), the estimate for small, distant patches: it even exceeds 1 here. Use the "
-                     "closed form.")
+    small = side ** 2 / (np.pi * d ** 2)
+    if abs(value - small) <= 6e-4:
+        return wrong("that is A / (pi d^2), the estimate for small, distant patches"
+                     + (": it even exceeds 1 here. Use the closed form." if small > 1 else
+                        ", which ignores the angles across the squares. Use the closed form."))
     if abs(value - rd.form_factor_parallel_rectangles(1, 1, 1)) <= 6e-4:
         return wrong("that is the value for unit squares at unit distance; here X = Y = side / distance is not 1.")
     return wrong(f"your F is {off_by(value, right)}; evaluate the closed form with X = Y = side / distance.")
+
+
+# -- §23.5: one shot of progressive refinement -------------------------------------------------------------
+
+_STORED_SHOT = {"area": SHOT_AREA, "F": SHOT_F, "rho": SHOT_RHO, "dB": SHOT_DB}
 
 
 def _shot(F_row, area, rho, dB, reciprocal=True, zero=True, reflect=True):
@@ -194,9 +370,69 @@ def _shot(F_row, area, rho, dB, reciprocal=True, zero=True, reflect=True):
     return out
 
 
-def check_shot(answer) -> Result:
-    """Check one shot of progressive refinement (Goldman §23.5).  Recognises F_1j used without
-    reciprocity, the shooter's unshot radiosity not cleared, and a missing reflectance.
+def _shot_args(p):
+    return p["F"], p["area"], p["rho"], p["dB"]
+
+
+def _shot_answer(p):
+    """The unshot radiosities after one shot of :func:`radiosity.progressive_refinement` from the unshot
+    radiosities dB (only row 1 of F is known, and only row 1 is read: patch 1 shoots)."""
+    F = np.zeros((3, 3))
+    F[0] = p["F"]
+    dB = np.array(p["dB"], float)
+    h = rd.progressive_refinement(F, p["rho"], dB, p["area"], tol=1e-300, max_iterations=1, return_history=True)
+    out = h.iterates[1].copy()          # B after the shot = dB + what arrived; the shooter's dB is cleared
+    out[h.shooters[0]] = 0.0
+    return out
+
+
+def _shot_slips(p):
+    args = _shot_args(p)
+    return {"no reciprocity": _shot(*args, reciprocal=False), "dB_1 kept": _shot(*args, zero=False),
+            "no reflectance": _shot(*args, reflect=False)}
+
+
+def _shot_generate(rng) -> dict:
+    return {"area": tuple(float(a) for a in rng.choice([0.5, 1.0, 2.0, 3.0], size=3)),
+            "F": (0.0, _tenths(rng, 0.1, 0.5), _tenths(rng, 0.1, 0.4)),
+            "rho": tuple(_tenths(rng, 0.2, 0.9) for _ in range(3)),
+            "dB": tuple(float(v) / 2 for v in rng.integers(1, 7, size=3))}
+
+
+def _shot_ok(p):
+    A, dB, F = np.array(p["area"]), np.array(p["dB"]), np.array(p["F"])
+    power = A * dB
+    if not power[0] > max(power[1], power[2]):
+        return "patch 1 does not have the most unshot power A dB: it would not shoot"
+    if np.any(F * A[0] / A > 1):
+        return "a form factor F_j1 = A_1 F_1j / A_j would exceed 1"
+    return None
+
+
+def _shot_statement(p) -> str:
+    F = p["F"]
+    return (f"Progressive refinement: three patches with areas {fmt(p['area'])}, reflectances {fmt(p['rho'])} and "
+            f"unshot radiosities dB = {fmt(p['dB'])}. Patch 1 has the most unshot power A dB, so it shoots; its form "
+            f"factors are F_12 = {fmt(F[1])}, F_13 = {fmt(F[2])}. Give the unshot radiosities [dB_1, dB_2, dB_3] after "
+            f"the shot (Goldman §23.5).")
+
+
+def _shot_steps(p) -> str:
+    A, F, rho, dB = (np.array(p[k], float) for k in ("area", "F", "rho", "dB"))
+    out = _shot_answer(p)
+    back = F * A[0] / A
+    return (f"1. The unshot powers A dB = {fmt(A * dB)}: patch 1 shoots.\n"
+            f"2. Reciprocity: F_21 = A_1 F_12 / A_2 = {_f(back[1])}, F_31 = A_1 F_13 / A_3 = {_f(back[2])}.\n"
+            f"3. Patch j receives rho_j F_j1 dB_1: dB_2 = {fmt(dB[1])} + {fmt(rho[1])}·{_f(back[1])}·{fmt(dB[0])} = "
+            f"{_f(out[1])}, dB_3 = {fmt(dB[2])} + {fmt(rho[2])}·{_f(back[2])}·{fmt(dB[0])} = {_f(out[2])}.\n"
+            f"4. Patch 1 has shot all it had: dB_1 = 0.")
+
+
+@DECK.exercise(stored=_STORED_SHOT, generate=_shot_generate, answer=_shot_answer, slips=_shot_slips,
+               statement=_shot_statement, steps=_shot_steps, same=_SAME, well_posed=_shot_ok)
+def check_shot(answer, p) -> Result:
+    """Check one shot of progressive refinement from the statement's patch 1 (Goldman §23.5).  Recognises
+    F_1j used without reciprocity, the shooter's unshot radiosity not cleared, and a missing reflectance.
 
     >>> print(check_shot([0, 1.225, 2.12]).message)
     you used F_1j where patch j receives through F_j1 = A_1 F_1j / A_j (reciprocity).
@@ -204,8 +440,8 @@ def check_shot(answer) -> Result:
     got, err = _pair(answer, "your [dB_1, dB_2, dB_3]", 3, "[dB_1, dB_2, dB_3]")
     if err is not None:
         return err
-    args = (SHOT_F, SHOT_AREA, SHOT_RHO, SHOT_DB)
-    right = _shot(*args)
+    args = _shot_args(p)
+    right = _shot_answer(p)
     if _close(got, right):
         return correct("patch 1's unshot light is now spread to the others, each receiving rho_j F_j1 dB_1.")
     if _close(got, _shot(*args, reciprocal=False)):
@@ -215,6 +451,12 @@ def check_shot(answer) -> Result:
     if _close(got, _shot(*args, reflect=False)):
         return wrong("the reflectance is missing: patch j keeps rho_j of what arrives.")
     return wrong(f"your [dB_1, dB_2, dB_3] is {_dist(got, right)}; add rho_j F_j1 dB_1 to each dB_j, then clear dB_1.")
+
+
+#: Deal another instance of an exercise (``deal("check_shot")``, or with ``seed=``; 0 is the stored
+#: one), show the worked steps of the current one, read it, or get a button.
+deal, steps, current, deal_button = DECK.deal, DECK.steps, DECK.current, DECK.button
+PROBLEMS = DECK.problems({})
 
 
 # -- the programming project --------------------------------------------------------------------------

@@ -45,16 +45,29 @@ WHITE = 0.3
 _SLIDER = {"jacobi": "jacobi_k", "gauss_seidel": "gs_k", "progressive": "shots"}
 
 
-@functools.lru_cache(maxsize=4)
-def cornell_scene(n: int = 8, resolution: int = 16):
+_SCENES: dict = {}
+
+
+def cornell_scene(n: int = 8, resolution: int = 16, progress=None):
     """The Cornell box of :func:`goldman_lib.radiosity.cornell_box` (``n`` x ``n`` patches a wall) and
     its hemi-cube form factors at ``resolution``, made reciprocal (cached: computed once per size).
-    Returns ``(box, F)``."""
+    Returns ``(box, F)``.
+
+    progress: ``progress(done, total)`` for the hemi-cubes as they are made (about a second at the
+    default size; see :func:`goldman_lib.radiosity.hemicube_form_factors`), for instance a
+    :class:`goldman_lib.views.render_control.ProgressBar`; a cached scene reports itself done at once."""
     n = as_int(n, "n", minimum=1)
-    box = rd.cornell_box(n)
-    F = rd.enforce_reciprocity(rd.hemicube_form_factors(box, resolution), box.areas)
-    F.setflags(write=False)
-    return box, F
+    key = (n, resolution)
+    if key not in _SCENES:
+        box = rd.cornell_box(n)
+        F = rd.enforce_reciprocity(rd.hemicube_form_factors(box, resolution, progress=progress), box.areas)
+        F.setflags(write=False)
+        if len(_SCENES) >= 4:                       # keep a few sizes, as the view needs one
+            _SCENES.pop(next(iter(_SCENES)))
+        _SCENES[key] = (box, F)
+    elif progress is not None:
+        progress(len(_SCENES[key][0]), len(_SCENES[key][0]))
+    return _SCENES[key]
 
 
 def _side_by_side(*pngs) -> bytes:

@@ -20,7 +20,7 @@ import time
 
 from .conftest import SCREENSHOTS
 from .live_deck import DECKS, live_deck_view_responds
-from .labdriver import drag_until, wait_changed, wait_for, wait_nonblank
+from .labdriver import drag_until, nudge_slider, wait_changed, wait_for, wait_nonblank
 
 
 def _view_with(nb, text: str):
@@ -91,6 +91,48 @@ def play_moves_the_key_frame_animation(lab, nb) -> str:
         buttons.nth(1).click()
     assert frac > 0.001, "the three.js picture did not change while playing"
     return f"  key frames: Play moved the frame from {frame0} to {frame1}; {frac:.1%} of the view changed"
+
+
+def render_button_renders(lab, nb, rc, where: str, shot: str) -> str:
+    """Press a render control's button (``views.render_control.RenderControl``): its progress bar
+    must reach the end and a non-blank picture show; then the first slider of the view it renders
+    moves (``goldman-renders-<uid>``), a second press must change the picture."""
+    page = lab.page
+    button = rc.locator("button").first
+    status = rc.locator(".widget-html").first
+    label = rc.locator(".goldman-progress .widget-label").last      # the bar's own description comes first
+    image = rc.locator("img").first
+
+    def press() -> tuple[str, str]:
+        button.scroll_into_view_if_needed()
+        # blank the status line in the page first: the kernel then writes "rendering..." and the
+        # final line, so a status that reads "rendered in" again comes from this press
+        status.evaluate("e => { (e.querySelector('.widget-html-content') || e).innerText = ''; }")
+        button.click()
+        text = wait_for(lambda: (lambda t: t if "rendered in" in t else None)(status.inner_text()),
+                        180, interval=0.25, message=f"{where}: the render to finish")
+        shown = label.inner_text().strip()
+        done, _, total = shown.partition(" / ")
+        assert done and done == total, f"{where}: the progress bar stopped at {shown!r} ({text})"
+        return text, shown
+
+    text, shown = press()
+    first, st = wait_nonblank(image)
+    (SCREENSHOTS / f"{shot}-first.png").write_bytes(first)
+    assert st.nonblank(), f"{where}: the rendered picture looks blank ({st})"
+    uid = rc.evaluate("e => ([...e.classList].find(c => c.startsWith('goldman-renders-')) || '').slice(16)")
+    if not uid:
+        return f"  render control: {text}; progress {shown}"
+    view = nb.locator(f".goldman-view-{uid}").first
+    display = view.locator(".goldman-display").first
+    before, _ = wait_nonblank(display)
+    nudge_slider(view.locator(".goldman-controls .noUi-handle").first, display, before, 0.001)
+    page.wait_for_timeout(500)
+    text2, shown2 = press()
+    second, frac = wait_changed(image, first, 0.001, timeout=30)
+    (SCREENSHOTS / f"{shot}-second.png").write_bytes(second)
+    assert frac > 0.001, f"{where}: moving the view's first slider and rendering again did not change the picture"
+    return f"  render control: {text} (progress {shown}); after a slider move, {text2}: {frac:.1%} of the picture changed"
 
 
 #: The chapter's own checks, by notebook stem: ``first`` ones run right after the chapter has run,

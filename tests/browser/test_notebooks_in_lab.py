@@ -17,7 +17,7 @@ import json
 import numpy as np
 import pytest
 
-from .chapter_checks import EXTRAS
+from .chapter_checks import EXTRAS, render_button_renders
 from .conftest import SCREENSHOTS, course_notebooks
 from .labdriver import drag_until, nudge_slider, pixel_stats, wait_changed, wait_for, wait_nonblank
 
@@ -251,6 +251,14 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             assert lit_frac > CHANGE_TOLERANCE, (
                 f"{rel}: moving the light of interactive view {i} changed only {lit_frac:.2%} of its {kind} "
                 f"(see screenshots/{stem}-view{i}-light.png)")
+    # A render button (views.render_control.RenderControl) under a view: pressed, its progress bar
+    # must reach the end and a full-size picture show; after the view's first slider moves, a
+    # second render must change the picture.
+    renders = nb.locator(".goldman-render-control")
+    for r in range(renders.count()):
+        rc = renders.nth(r)
+        rc.scroll_into_view_if_needed()
+        report.append(render_button_renders(lab, nb, rc, f"{rel}: render control {r}", f"{stem}-render{r}"))
     for extra in EXTRAS.get(stem, {}).get("last", []):     # the live decks (chapter_checks.py)
         report.append(extra(lab, nb))
     problems = lab.dom_problems()
