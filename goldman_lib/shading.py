@@ -20,6 +20,10 @@ course (chapter 22's z-buffer calls it too).  :func:`render` shades what it cove
 * ``slerp`` (§21.4.4): normals interpolated by spherical linear interpolation
   (:func:`goldman_lib.vector_geometry.slerp`), so they stay unit length.
 
+Mach bands (§21.3-21.4): :func:`scanline_profile` reads the intensity along one row of a rendered
+image and its slope per pixel, and :func:`edge_slopes` measures the slope on each side of every mesh
+edge the row crosses -- Gouraud's slope jumps at the edges, Phong's changes (nearly) continuously.
+
 All light comes from :func:`goldman_lib.lighting.intensity`, except the fast-Phong mode, which
 combines its approximate cosines with the same material and lights term by term as that function
 does (the tests check the two agree when the cosines are exact).
