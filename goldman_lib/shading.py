@@ -20,6 +20,10 @@ course (chapter 22's z-buffer calls it too).  :func:`render` shades what it cove
 * ``slerp`` (§21.4.4): normals interpolated by spherical linear interpolation
   (:func:`goldman_lib.vector_geometry.slerp`), so they stay unit length.
 
+Mach bands (§21.3-21.4): :func:`scanline_profile` reads the intensity along one row of a rendered
+image and its slope per pixel, and :func:`edge_slopes` measures the slope on each side of every mesh
+edge the row crosses -- Gouraud's slope jumps at the edges, Phong's changes (nearly) continuously.
+
 All light comes from :func:`goldman_lib.lighting.intensity`, except the fast-Phong mode, which
 combines its approximate cosines with the same material and lights term by term as that function
 does (the tests check the two agree when the cosines are exact).
@@ -42,7 +46,8 @@ from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int,
 
 __all__ = ["newell_normal", "face_normals", "vertex_normals", "newell_face_normals", "average_vertex_normals",
            "uv_sphere", "Camera", "Fragments", "rasterise_triangles", "SHADING_MODES", "render",
-           "slerp_normals", "taylor_cosines", "forward_differences", "gouraud_triangle"]
+           "slerp_normals", "taylor_cosines", "forward_differences", "gouraud_triangle", "EdgeSlopes", "edge_slopes",
+           "scanline_profile"]
 
 
 def newell_normal(polygon) -> np.ndarray:
@@ -492,6 +497,90 @@ def gouraud_triangle(screen, intensities, width: int, height: int) -> np.ndarray
 
 
 # -- §21.4.2-3 fast Phong: Taylor expansions evaluated by forward differences ----------------------
+
+
+def scanline_profile(image, row: int) -> tuple[np.ndarray, np.ndarray]:
+    """The intensity along one scan line of a rendered image and its slope (Goldman §21.3-21.4):
+    ``(grey, slope)``, the grey level of each pixel of row ``row`` (w,) -- the mean of its colour
+    channels -- and the first differences ``grey[j + 1] - grey[j]`` (w - 1,), the slope per pixel
+    between neighbours.  A Gouraud-shaded face gives a constant slope, which steps at each edge.
+
+    image: (h, w, c) colours or (h, w) intensities.  row: 0 <= row < h.
+
+    >>> grey, slope = scanline_profile([[[0.0, 0.2, 0.4], [0.4, 0.4, 0.4], [0.6, 0.6, 0.6]]], 0)
+    >>> np.round(grey, 6).tolist(), np.round(slope, 6).tolist()
+    ([0.2, 0.4, 0.6], [0.2, 0.2])
+    """
+    img = check_finite(as_float_array(image, "image"), "image")
+    if img.ndim not in (2, 3):
+        raise ValueError(f"image must be (h, w) intensities or (h, w, c) colours; got shape {img.shape}")
+    row = as_int(row, "row", minimum=0, maximum=img.shape[0] - 1)
+    grey = img[row] if img.ndim == 2 else img[row].mean(axis=1)
+    return grey, np.diff(grey)
+
+
+class EdgeSlopes(NamedTuple):
+    """What :func:`edge_slopes` measures at each mesh edge a scan line crosses: ``columns`` (k,) the
+    pixel column j where the covering triangle changes (the edge lies between columns j - 1 and j),
+    ``left`` and ``right`` (k,) the intensity's slope per pixel just left and just right of it, and
+    ``jump`` (k,) ``right - left``."""
+
+    columns: np.ndarray
+    left: np.ndarray
+    right: np.ndarray
+    jump: np.ndarray
+
+
+def edge_slopes(values, triangle_ids, width: int = 2) -> EdgeSlopes:
+    """The slope of an intensity profile on each side of every mesh edge along one scan line, and its
+    jump there (Goldman §21.3, Mach bands): Gouraud shading is linear on each face, so its profile is
+    continuous but its slope jumps at the edges -- the kinks the eye exaggerates into Mach bands;
+    Phong shading (§21.4) interpolates normals, and its slope changes (nearly) continuously.  (The
+    measurement is ours, not the book's.)
+
+    values: (w,) intensities along a row of a rendered image, or (w, c) colours (their channels are
+    averaged: a grey level).  triangle_ids: (w,) the triangle covering each pixel of that row (the
+    row of :attr:`Fragments.triangle`; -1 for none).  An edge is a change of triangle between two
+    covered neighbours; the slope on each side is the mean first difference over ``width`` pixel
+    pairs lying wholly in that side's triangle (edges without that much room on both sides, and the
+    outline, where a pixel is not covered, are skipped).  Returns :class:`EdgeSlopes`, slopes in
+    intensity per pixel.
+
+    >>> profile = [0.0, 0.1, 0.2, 0.3, 0.35, 0.4, 0.45]     # the slope drops from 0.1 to 0.05 at column 3
+    >>> e = edge_slopes(profile, [0, 0, 0, 1, 1, 1, 1])
+    >>> e.columns.tolist(), np.round(e.left, 6).tolist(), np.round(e.right, 6).tolist()
+    ([3], [0.1], [0.05])
+    """
+    v = check_finite(as_float_array(values, "values"), "values")
+    if v.size > MAX_ITEMS:
+        raise ValueError(f"values must hold at most {MAX_ITEMS:,} numbers (one row of an image); got {v.size:,}")
+    if v.ndim == 2:
+        v = v.mean(axis=1)
+    if v.ndim != 1:
+        raise ValueError(f"values must be (w,) intensities or (w, c) colours of one row; got shape {v.shape}")
+    ids = np.asarray(triangle_ids)
+    if ids.shape != v.shape:
+        raise ValueError(f"triangle_ids must give one triangle per pixel, shape {v.shape}; got {ids.shape}")
+    if ids.dtype.kind not in "iu":
+        if ids.dtype.kind != "f" or not np.all(np.isfinite(ids)) or np.any(ids != np.round(ids)):
+            raise ValueError("triangle_ids must be whole numbers (-1 for an uncovered pixel)")
+        ids = ids.astype(np.intp)
+    width = as_int(width, "width")
+    if width < 1:
+        raise ValueError(f"width must be at least 1 pixel pair; got {width}")
+    d = np.diff(v)
+    cols, left, right = [], [], []
+    for j in np.flatnonzero((ids[1:] != ids[:-1]) & (ids[1:] >= 0) & (ids[:-1] >= 0)) + 1:
+        a, b = ids[j - 1], ids[j]
+        lo, hi = j - 1 - width, j + width           # pixels lo..j-1 in triangle a, j..hi in triangle b
+        if lo < 0 or hi >= len(v) or np.any(ids[lo:j] != a) or np.any(ids[j:hi + 1] != b):
+            continue
+        cols.append(j)
+        left.append(d[lo:j - 1].mean())
+        right.append(d[j:hi].mean())
+    cols, left, right = np.array(cols, dtype=np.intp), np.array(left, float), np.array(right, float)
+    return EdgeSlopes(cols, left, right, right - left)
+
 
 def taylor_cosines(normal, normal_x, normal_y, light_direction, eye_direction):
     """The fast-Phong quadratics (Goldman §21.4.2-3): second-order Taylor expansions, in the screen

@@ -235,3 +235,87 @@ def test_gouraud_triangle_by_hand():
     assert out[1, 2] == pytest.approx(0.0 * 0.2 + 2.5 / 4 * 1.0 + 1.5 / 4 * 0.6)   # centre (2.5, 1.5) on the edge
     assert out[3, 3] == 0.0 and (out > 0).sum() == 10                      # 4 + 3 + 2 + 1 centres
     assert np.all(shading.gouraud_triangle([[0, 0], [2, 2], [4, 4]], [1, 1, 1], 4, 4) == 0)   # edge-on
+
+
+# -- Mach bands: the slope of a scan line's profile at the mesh edges (issue 18 §3) ------------------
+
+def test_edge_slopes_of_a_kink_and_of_a_parabola():
+    # |x - 10| sampled at the pixel centres x = j + 0.5 - 0.5: slope -1 left of the kink, +1 right of it
+    j = np.arange(21)
+    e = shading.edge_slopes(np.abs(j - 10.0), np.where(j < 10, 3, 7), width=3)
+    assert e.columns.tolist() == [10]
+    assert e.left.tolist() == [-1.0] and e.right.tolist() == [1.0] and e.jump.tolist() == [2.0]
+    # a smooth x^2 has no kink: its first differences 2k + 1 grow steadily, so the one-sided means
+    # over `width` pairs (k = c-1-w .. c-2 on the left, c .. c+w-1 on the right) differ by 2 (w + 1)
+    x = np.arange(30.0)
+    for w in (1, 2, 4):
+        e = shading.edge_slopes(x ** 2, np.where(x < 15, 0, 1), width=w)
+        assert e.columns.tolist() == [15]
+        assert e.left[0] == pytest.approx(np.mean([2 * k + 1 for k in range(15 - 1 - w, 15 - 1)]))
+        assert e.jump[0] == pytest.approx(2 * (w + 1))
+
+
+def test_edge_slopes_of_gouraud_on_two_triangles():
+    # a 16 x 16 square split along its diagonal y = x; on each triangle the intensity is the plane
+    # through its vertex values: A (0,0)->0, (16,0)->1, (16,16)->0.5 has slope 1/16 in x;
+    # B (0,0)->0, (16,16)->0.5, (0,16)->0.8 has slope -0.3/16 in x
+    S = np.array([[0, 0, 0.5], [16, 0, 0.5], [16, 16, 0.5], [0, 16, 0.5]], float)
+    f = shading.rasterise_triangles(S, [[0, 1, 2], [0, 2, 3]], 16, 16)
+    i = 8
+    x = np.arange(16) + 0.5
+    ids = f.triangle[i]
+    values = np.where(ids == 0, x / 16 - (i + 0.5) / 32, -0.3 * x / 16 + 0.05 * (i + 0.5))
+    e = shading.edge_slopes(values, ids)
+    assert len(e.columns) == 1 and ids[e.columns[0] - 1] == 1 and ids[e.columns[0]] == 0
+    assert e.left[0] == pytest.approx(-0.3 / 16) and e.right[0] == pytest.approx(1 / 16)
+    assert e.jump[0] == pytest.approx(1 / 16 + 0.3 / 16)
+
+
+def test_edge_slopes_skips_the_outline_and_edges_without_room():
+    ids = np.array([-1, -1, 0, 0, 0, 0, 1, 2, 2, 2, 2, -1])
+    e = shading.edge_slopes(np.linspace(0, 1, 12), ids, width=2)
+    assert e.columns.tolist() == []           # 0 -> 1 and 1 -> 2: triangle 1 is one pixel wide
+    assert shading.edge_slopes(np.linspace(0, 1, 12), ids, width=1).columns.tolist() == []
+    e = shading.edge_slopes(np.c_[np.arange(6.0), np.arange(6.0) * 3], [0, 0, 0, 1, 1, 1], width=2)
+    assert e.left.tolist() == [2.0] and e.right.tolist() == [2.0]     # colours: the channels averaged
+
+
+def test_edge_slopes_and_scanline_profile_reject_bad_input():
+    with pytest.raises(ValueError, match="triangle_ids"):
+        shading.edge_slopes([0.0, 1.0, 2.0], [0, 1])
+    with pytest.raises(ValueError, match="width"):
+        shading.edge_slopes([0.0, 1.0, 2.0], [0, 1, 1], width=0)
+    with pytest.raises(ValueError, match="values"):
+        shading.edge_slopes([0.0, np.nan], [0, 1])
+    with pytest.raises(ValueError, match="triangle_ids"):
+        shading.edge_slopes([0.0, 1.0], [0.5, 1])
+    with pytest.raises(ValueError, match="row"):
+        shading.scanline_profile(np.zeros((4, 4, 3)), 4)
+    with pytest.raises(ValueError, match="image"):
+        shading.scanline_profile(np.zeros(4), 0)
+
+
+def test_scanline_profile_is_the_grey_level_and_its_differences():
+    image = np.zeros((3, 5, 3))
+    image[1] = np.c_[np.arange(5.0), 2 * np.arange(5.0), 3 * np.arange(5.0)]
+    grey, slope = shading.scanline_profile(image, 1)
+    assert grey.tolist() == [0.0, 2.0, 4.0, 6.0, 8.0] and slope.tolist() == [2.0] * 4
+
+
+def test_gouraud_kinks_at_the_edges_phong_does_not():
+    # a coarse sphere seen head-on, lit from near the eye: at the meridian edge in the middle of the
+    # picture Gouraud's slope jumps (the piecewise linear intensity's kink: I'' dx per pixel), while
+    # Phong's slope changes only by its curvature over the measuring window
+    V, T = shading.uv_sphere(6, 12)
+    cam = shading.Camera(eye=(0, -6, 0), target=(0, 0, 0), up=(0, 0, 1), fov=28, width=160, height=160)
+    light = lighting.Light((-1.0, -5.0, 1.0))
+    matte = lighting.Material(colour=(1, 1, 1), ambient=0.1, diffuse=0.9, specular=0.0)
+    ids = shading.rasterise_triangles(cam.project(V)[:, :3], T, 160, 160).triangle[86]
+    jumps = {}
+    for mode in ("gouraud", "phong"):
+        image = shading.render(V, T, cam, light, matte, mode=mode, ambient_light=0.3, background=(1, 1, 1))
+        e = shading.edge_slopes(shading.scanline_profile(image, 86)[0], ids)
+        k = int(np.argmin(np.abs(e.columns - 80)))
+        jumps[mode] = e.jump[k]
+    assert abs(jumps["gouraud"]) > 5 * abs(jumps["phong"])
+    assert jumps["gouraud"] < -0.005            # the slope falls: a bright ridge along the edge

@@ -49,3 +49,38 @@ def test_dragging_the_light_marker_moves_the_light():
     assert np.allclose(view.last_result["light"], [-3.0, -4.0, -2.0])
     marker = view.figure.axes[0].lines[0]
     assert np.allclose(marker.get_data(), [[-3.0], [-2.0]])
+
+
+def test_mach_band_view_draws_the_rendered_profiles_and_the_library_slopes():
+    view = sv.mach_band_view()
+    r = view.set_values(row=86, facets=6, show="Gouraud and Phong")
+    V, T = shading.uv_sphere(6, 12)
+    cam = shading.Camera(width=160, height=160, **sv.SHADING_CAMERA)
+    m = lighting.Material(**sv.MACH_MATERIAL)
+    ids = shading.rasterise_triangles(cam.project(V)[:, :3], T, 160, 160).triangle[86]
+    for k, mode in enumerate(("gouraud", "phong")):
+        image = shading.render(V, T, cam, lighting.Light(sv.MACH_LIGHT), m, mode=mode, ambient_light=0.3,
+                               background=(1, 1, 1))
+        assert np.allclose(r["images"][k], image)
+        grey, slope = shading.scanline_profile(image, 86)
+        assert np.allclose(r["grey"][k], grey) and np.allclose(r["slope"][k], slope)
+        e = shading.edge_slopes(grey, ids)
+        assert r["edges"].tolist() == e.columns.tolist() and np.allclose(r["jumps"][k], e.jump)
+    assert "column 80" in r["status"]
+    grey_axes = view.figure.axes[2]
+    assert np.allclose(grey_axes.lines[0].get_ydata(), r["grey"][0])
+
+
+def test_mach_band_view_toggles_the_profiles_and_follows_the_row():
+    view = sv.mach_band_view()
+    view.set_values(show="Phong")
+    grey_axes = view.figure.axes[2]
+    assert [line.get_visible() for line in grey_axes.lines[:2]] == [False, True]
+    view.set_values(show="Gouraud")
+    assert [line.get_visible() for line in grey_axes.lines[:2]] == [True, False]
+    first = view.figure.axes[0].images[0]
+    r = view.set_values(row=3)
+    assert view.figure.axes[0].images[0] is first                      # updated in place
+    assert len(r["edges"]) == 0 and "no mesh edge" in r["status"]      # the row misses the sphere
+    with pytest.raises(ValueError, match="show"):
+        sv.mach_band_view(show="both")

@@ -74,3 +74,34 @@ def test_octree_view_cells_change_with_depth():
     assert len(view.scene.data("partial")["segments"]) == 12 * r["counts"]["partial"]
     r = view.set_values(solid="lens A ∩ B", depth=3)
     assert r["volume"] > 0 and view.last_error is None
+
+
+def test_csg_render_is_the_ray_traced_tree_with_the_ray_drawn_as_a_rod():
+    from goldman_lib import lighting, ray_tracing
+    from goldman_lib.simple_surfaces import Cylinder
+
+    values = dict(first="ball A (left)", op="union", second="ball B (right)", op2="none",
+                  third="ball C (small, front)", ray_z=-0.6)
+    small = dict(width=32, height=24, samples=2, depth=2)
+    done = []
+    image = sv.csg_render(lambda k, n: done.append((k, n)), **values, **small)
+    tree, _ = sv.csg_tree("ball A (left)", "union", "ball B (right)")
+    rod = Cylinder([-4, 0, -0.6], [1, 0, 0], 0.012, height=8.0, material=sv._ROD["material"])
+    scene = ray_tracing.Scene([tree, rod], (lighting.Light((-1.5, -6.0, 3.0), intensity=1.0),), ambient_light=0.3,
+                              background=sv._BACKGROUND)
+    assert np.allclose(image, ray_tracing.render(scene, sv._camera(), 32, 24, depth=2, samples=2))
+    assert done and done[-1] == (24, 24)                           # the progress reached the last row
+    fine = dict(width=128, height=96, samples=2, depth=1)         # rays 0.0125 apart: the rod (0.024 wide) shows
+    low, high = (sv.csg_render(None, **dict(values, ray_z=z), **fine) for z in (-0.6, 0.9))
+    assert not np.allclose(low, high)                              # the rod follows the ray slider
+
+
+def test_csg_render_control_renders_the_views_tree():
+    view = sv.csg_view()
+    rc = sv.csg_render_control(view)
+    assert "640 x 480" in rc.button.description and "depth 5" in rc.button.description
+    view.set_values(op="intersection")
+    image = rc.render(**view.values(), width=16, height=12, samples=1, depth=1)
+    assert image.shape == (12, 16, 3) and rc.progress.fraction == 1.0 and rc.last_error is None
+    assert np.allclose(image, sv.csg_render(None, **view.values(), width=16, height=12, samples=1, depth=1))
+    assert rc.render(**dict(view.values(), op="xor"), width=16, height=12) is None and "op" in rc.last_error

@@ -1,6 +1,7 @@
 """The view of chapter 21 (Goldman, shading): one polygonal sphere rendered by the course's software
 rasteriser in two shading modes side by side (§21.2 uniform, §21.3 Gouraud, §21.4 Phong, fast Phong,
-Phong with slerp), lit by the shared light-position control.  The light is also a marker in a 2D
+Phong with slerp), lit by the shared light-position control; and the Mach-band view, Gouraud beside
+Phong with the intensity profile and its slope along one scan line across the mesh edges.  The light is also a marker in a 2D
 picture of the scene as the camera sees it (the xz plane; the camera looks along +y), where the mouse
 drags it.  Both images update in place (``imshow`` data), never by rebuilding the figure.
 
@@ -21,7 +22,8 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
 from goldman_lib.views.light_control import LightControl
 
-__all__ = ["shading_view", "plot_images", "MODE_LABELS", "SHADING_CAMERA"]
+__all__ = ["shading_view", "mach_band_view", "plot_images", "MODE_LABELS", "SHADING_CAMERA", "MACH_LIGHT",
+           "MACH_MATERIAL"]
 
 #: The shading modes as the picker shows them, with their sections.
 MODE_LABELS = {"uniform": "uniform (§21.2)", "gouraud": "Gouraud (§21.3)", "phong": "Phong (§21.4.1)",
@@ -105,6 +107,117 @@ def shading_view(mode_a: str = "gouraud", mode_b: str = "phong", facets: int = 8
     control.drag_in(view, ax_scene, plane="xz")
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
     return view
+
+
+#: The light and the matte white material of the Mach-band view (a light in front, a little up and
+#: to the left; no highlight: the profile's kinks come from the diffuse term alone).
+MACH_LIGHT = (-1.0, -5.0, 1.0)
+MACH_MATERIAL = dict(colour=(1.0, 1.0, 1.0), ambient=0.1, diffuse=0.9, specular=0.0)
+
+
+def mach_band_view(row: int = 86, facets: int = 6, show: str = "Gouraud and Phong", size: int = 160) -> InteractiveView:
+    """Mach bands, the failure and the fix (Goldman §21.3-21.4): a coarse polygonal sphere shaded by
+    Gouraud and by Phong, each with the scan line ``row`` drawn across it, and beside them the
+    intensity along that scan line and its slope per pixel (:func:`goldman_lib.shading.scanline_profile`),
+    with the mesh edges it crosses marked (:func:`goldman_lib.shading.edge_slopes`).  Gouraud's
+    intensity is linear on each face: its slope is a staircase that steps at every edge, kinks the
+    eye exaggerates into bright and dark bands.  Phong's slope changes (nearly) continuously.
+    ``show`` picks which profiles are drawn: both, or one of them.
+
+    ``update(row, facets, show)`` returns ``{"images" (2, size, size, 3), "grey" (2, size),
+    "slope" (2, size - 1), "edges" (k,), "jumps" (2, k), "status"}`` (index 0 Gouraud, 1 Phong).
+
+    >>> r = mach_band_view().set_values(row=86)
+    >>> k = int(np.argmin(abs(r["edges"] - 80)))        # the edge nearest the middle of the sphere
+    >>> int(r["edges"][k]), bool(abs(r["jumps"][0, k]) > 5 * abs(r["jumps"][1, k]))
+    (80, True)
+    """
+    size = int(size)
+    choices = ["Gouraud and Phong", "Gouraud", "Phong"]
+    if show not in choices:
+        raise ValueError(f"show must be one of {choices}; got {show!r}")
+    controls = {"row": int_slider("row", int(row), 0, size - 1), "facets": int_slider("facets", facets, 3, 16),
+                "show": dropdown("show", choices, show)}
+    camera = shading.Camera(width=size, height=size, **SHADING_CAMERA)
+    light = lighting.Light(MACH_LIGHT)
+    material = lighting.Material(**MACH_MATERIAL)
+    modes = ("gouraud", "phong")
+    colours = {"gouraud": "#d1495b", "phong": "#2e6f95"}
+
+    fig = style.new_figure(figsize=(9.6, 3.2))
+    grid = fig.add_gridspec(2, 3, width_ratios=[1, 1, 1.5])
+    images, lines = [], []
+    blank = np.zeros((size, size, 3))
+    for k, mode in enumerate(modes):
+        ax = fig.add_subplot(grid[:, k])
+        ax.set_axis_off()
+        images.append(ax.imshow(blank, interpolation="nearest", vmin=0, vmax=1))
+        ax.set_title(MODE_LABELS[mode], fontsize=9)
+        lines.append(ax.axhline(row, color=colours[mode], linewidth=0.8))
+    ax_grey = fig.add_subplot(grid[0, 2])
+    ax_slope = fig.add_subplot(grid[1, 2], sharex=ax_grey)
+    for ax in (ax_grey, ax_slope):
+        style.style_axes(ax, equal=False)
+        ax.set_xlim(0, size)
+        ax.tick_params(labelsize=7)
+    ax_grey.set_ylim(0, 1)
+    ax_slope.set_ylim(-0.04, 0.04)
+    ax_grey.set_ylabel("intensity", fontsize=8)
+    ax_slope.set_ylabel("slope / pixel", fontsize=8)
+    ax_slope.set_xlabel("x (pixels along the scan line)", fontsize=8)
+    x = np.arange(size) + 0.5
+    grey_lines = [ax_grey.plot(x, np.zeros(size), color=colours[m], linewidth=1.2, label=MODE_LABELS[m])[0] for m in modes]
+    slope_lines = [ax_slope.step(x[1:], np.zeros(size - 1), where="mid", color=colours[m], linewidth=1.0)[0]
+                   for m in modes]
+    edge_marks = ax_slope.vlines([], -0.04, 0.04, colors="#9a9a9a", linewidth=0.6, linestyles="dotted",
+                                 label="mesh edges")
+    ax_grey.legend(loc="lower center", fontsize=7)
+    ax_slope.legend(loc="lower right", fontsize=7)
+    fig.tight_layout()
+    style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+    mesh_cache: dict = {}
+
+    def mesh(n):
+        """The sphere of n bands, its triangle per pixel and its two renders (a row or show move
+        re-renders nothing)."""
+        if n not in mesh_cache:
+            mesh_cache.clear()
+            V, T = shading.uv_sphere(n, 2 * n)
+            ids = shading.rasterise_triangles(camera.project(V)[:, :3], T, size, size).triangle
+            pictures = [shading.render(V, T, camera, light, material, mode=mode, ambient_light=0.3,
+                                       background=(1.0, 1.0, 1.0)) for mode in modes]
+            mesh_cache[n] = (ids, pictures)
+        return mesh_cache[n]
+
+    def update(row, facets, show):
+        ids, rendered = mesh(int(facets))
+        pictures, greys, slopes, jumps = [], [], [], []
+        measured = shading.edge_slopes(np.zeros(size), ids[row])
+        for k, mode in enumerate(modes):
+            picture = rendered[k]
+            grey, slope = shading.scanline_profile(picture, row)
+            edges = shading.edge_slopes(grey, ids[row])
+            images[k].set_data(picture)
+            lines[k].set_ydata([row, row])
+            drawn = show in ("Gouraud and Phong", MODE_LABELS[mode].split(" ")[0])
+            grey_lines[k].set_ydata(grey)
+            slope_lines[k].set_ydata(np.r_[slope, slope[-1:]][:size - 1])
+            grey_lines[k].set_visible(drawn)
+            slope_lines[k].set_visible(drawn)
+            pictures.append(picture), greys.append(grey), slopes.append(slope), jumps.append(edges.jump)
+        edge_marks.set_segments([[(c, -0.04), (c, 0.04)] for c in measured.columns])
+        if len(measured.columns):
+            k = int(np.argmin(np.abs(measured.columns - size / 2)))
+            status = (f"row {row}: {len(measured.columns)} mesh edges measured; at the one nearest the middle "
+                      f"(column {measured.columns[k]}) the slope jumps by {jumps[0][k]:+.4f} per pixel with Gouraud, "
+                      f"{jumps[1][k]:+.4f} with Phong")
+        else:
+            status = f"row {row}: the scan line crosses no mesh edge with room on both sides to measure a slope"
+        return {"images": np.stack(pictures), "grey": np.stack(greys), "slope": np.stack(slopes),
+                "edges": measured.columns, "jumps": np.stack(jumps), "status": status}
+
+    return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
+                           title="§21.3-21.4 Mach bands: Gouraud's slope steps at the edges, Phong's does not")
 
 
 def plot_images(images, titles=(), width: float = 2.4):

@@ -1,6 +1,7 @@
 """The views of chapter 20 (Goldman, solid modeling): a CSG tree picker shown as a ray-traced image
-beside the ray-classification intervals of one ray (§20.2), a B-rep validity readout (§20.3) and
-an octree depth slider with the octree's cells in three.js (§20.4).
+beside the ray-classification intervals of one ray (§20.2), with a render button for a full-size
+picture of the tree (issue 18 §4), a B-rep validity readout (§20.3) and an octree depth slider with
+the octree's cells in three.js (§20.4).
 
 Every number a view shows comes from :mod:`goldman_lib.solid_modeling`; this module only draws.
 
@@ -23,7 +24,7 @@ from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
 
 __all__ = ["PRIMITIVES", "OPERATIONS", "BREPS", "SOLIDS", "csg_tree", "csg_view", "octree_view", "brep_view",
-           "EXTENT"]
+           "EXTENT", "FULL_SIZE", "csg_render", "csg_render_control"]
 
 #: The primitives the CSG picker offers (they overlap around the origin).
 PRIMITIVES = {
@@ -185,6 +186,50 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
                            title="§20.2 CSG by ray classification")
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
     return view
+
+
+#: The full-size picture of the CSG view's render button: pixels, anti-aliasing (samples x samples
+#: rays per pixel) and the depth of the reflected rays.
+FULL_SIZE = dict(width=640, height=480, samples=2, depth=5)
+#: The classification ray drawn in the full-size picture: a thin dark rod along it.
+_ROD = dict(radius=0.012, material=Material(colour=(0.1, 0.1, 0.1), ambient=1.0, diffuse=0.0, specular=0.0))
+
+
+def csg_render(progress=None, first: str = "ball A (left)", op: str = "difference", second: str = "ball B (right)",
+               op2: str = "none", third: str = "ball C (small, front)", ray_z: float = 0.3, *,
+               width: int = FULL_SIZE["width"], height: int = FULL_SIZE["height"],
+               samples: int = FULL_SIZE["samples"], depth: int = FULL_SIZE["depth"]) -> np.ndarray:
+    """The CSG view's solid as a full-size picture (Goldman §20.2, issue 18 §4): the tree of
+    :func:`csg_tree` ray traced by ray classification (:func:`goldman_lib.ray_tracing.render`,
+    ``samples x samples`` rays per pixel, reflections to ``depth``) with the view's camera, light and
+    window, the classification ray ``(-3, 0, ray_z) + t (1, 0, 0)`` drawn as a thin dark rod.
+    ``progress(done, total)`` is called as bands of rows are finished (a
+    :class:`goldman_lib.views.render_control.ProgressBar`, say).  Returns ``(height, width, 3)``.
+
+    >>> csg_render(None, op="intersection", width=8, height=6, samples=1, depth=1).shape
+    (6, 8, 3)
+    """
+    from goldman_lib import ray_tracing
+
+    ray_z = as_float(ray_z, "ray_z")
+    tree, _ = csg_tree(first, op, second, op2, third)
+    rod = Cylinder([-4.0, 0.0, ray_z], [1.0, 0.0, 0.0], _ROD["radius"], height=8.0, material=_ROD["material"])
+    scene = ray_tracing.Scene([tree, rod], (lighting.Light((-1.5, -6.0, 3.0), intensity=1.0),), ambient_light=0.3,
+                              background=_BACKGROUND)
+    return ray_tracing.render(scene, _camera(), width, height, depth=depth, samples=samples, progress=progress)
+
+
+def csg_render_control(view):
+    """The render button under :func:`csg_view` (issue 18 §4): a
+    :class:`goldman_lib.views.render_control.RenderControl` that renders the view's current tree with
+    :func:`csg_render` at :data:`FULL_SIZE` (640 x 480, 2 x 2 anti-aliased, depth 5; several seconds)
+    while a progress bar fills.  ``.render()`` does it from the keyboard."""
+    from goldman_lib.views.render_control import RenderControl
+
+    f = FULL_SIZE
+    return RenderControl(csg_render, view=view,
+                         label=f"Render {f['width']} x {f['height']}, {f['samples']} x {f['samples']} anti-aliased, "
+                               f"depth {f['depth']}")
 
 
 # -- §20.3 ---------------------------------------------------------------------------------------------
