@@ -247,6 +247,21 @@ def _right_and_wrong():
     cases["ch30_euler_characteristic"] = (
         [[nV + nE, 2 * nE + 3 * nF, 4 * nF], sympy.Matrix([[1, 1, 0], [0, 2, 3], [0, 0, 4]]) * sympy.Matrix([nV, nE, nF])],
         [([nV + nE, 2 * nE, 4 * nF], "interior edges"), ([nV + nE, 2 * nE + 3 * nF, 3 * nF], "four")])
+    s1, n1 = S("ch01_spiral_ink")
+    k1 = sympy.symbols("k", integer=True, nonnegative=True)
+    summed = sympy.summation(s1**k1, (k1, 0, n1 - 1))          # sympy's own sum: Piecewise on s = 1
+    cases["ch01_spiral_ink"] = (
+        [summed.args[1][0] if isinstance(summed, sympy.Piecewise) else summed, (1 - s1**n1) / (1 - s1)],
+        [((s1**(n1 + 1) - 1) / (s1 - 1), "one side too many"), (n1 * s1**(n1 - 1), "n copies")])
+
+    r1, c1 = S("ch01_circle_step")
+    P0 = sympy.Matrix([r1, 0])
+    P1 = sympy.Matrix([r1 * c1, r1 * sympy.sqrt(1 - c1**2)])
+    chord = (P1 - P0).dot(P1 - P0)                 # the square of the distance between two vertices
+    cases["ch01_circle_step"] = (
+        [sympy.expand(chord), r1**2 + r1**2 - 2 * r1 * r1 * c1],
+        [(2 * r1**2 * (1 + c1), "sign"), (r1**2 * (1 - c1), "factor 2")])
+
     c, sn = S("ch02_three_steps")
     cr, sr = sympy.symbols("c s", real=True)
     closed = sympy.expand(1 + (cr + sympy.I * sr) + (cr + sympy.I * sr)**2)       # 1 + z + z², as a complex number
@@ -499,12 +514,13 @@ def test_every_exercise_is_tested_here():
 
 
 def test_two_show_that_exercises_in_every_chapter_that_proves_and_in_its_notebook():
-    """Chapters 2-30 prove things (chapter 1 introduces turtle commands); each has at least two
-    exercises, and each exercise has its cell (answer = None) and a worked solution in its notebook."""
+    """Chapters 1-30 prove things (chapter 1: the closed forms of its spirals and circles); each has
+    at least two exercises, and each exercise has its cell (answer = None) and a worked solution in
+    its notebook."""
     from pathlib import Path
 
     course = Path(__file__).resolve().parents[1] / "course"
-    for number in range(2, 31):
+    for number in range(1, 31):
         names = [n for n in proofs.PROBLEMS if n.startswith(f"ch{number:02d}_")]
         assert len(names) >= 2, f"chapter {number} has {len(names)} show-that exercises"
         text = next(course.glob(f"{number:02d}_*.ipynb")).read_text()

@@ -99,6 +99,42 @@ def _define(name, statement, symbol_names, doc, **assumptions):
     return build
 
 
+# == Chapter 1: turtle programs ====================================================================
+
+@_define("ch01_spiral_ink", (
+    "The spiral REPEAT n [FORWARD 1 TURN a RESIZE s] (s > 0, s ≠ 1) starts with step |w| = 1. Show that its "
+    "ink (the total length it draws) is a geometric sum in closed form: give it in terms of s and n "
+    "(n a whole number) (Goldman §1.3)."),
+    "s n", "Check the ink of the spiral in closed form.", positive=True, integer=True)
+def _(s, n):
+    return dict(expected=(s**n - 1) / (s - 1), what="the ink",
+                slips=[((s**(n + 1) - 1) / (s - 1), "adds one side too many: the last RESIZE lengthens no side, "
+                        "so the sides are 1, s, ..., s^(n-1)."),
+                       (s**n / (s - 1), "leaves out the -1 of the geometric sum (1 + s + ... + s^(n-1))(s - 1) "
+                        "= s^n - 1."),
+                       ((1 - s**n) / (s - 1), "has the sign of the numerator turned: for s > 1 the ink must be "
+                        "positive."),
+                       (n * s**(n - 1), "adds n copies of the last side: the sides grow by a factor s each time.")],
+                success="the sides are 1, s, ..., s^(n-1), and (1 + s + ... + s^(n-1))(s - 1) = s^n - 1 telescopes.")
+
+
+@_define("ch01_circle_step", (
+    "REPEAT n [FORWARD d TURN 360/n] draws a regular n-gon whose vertices lie on a circle of radius r. "
+    "Two neighbouring vertices and the centre make a triangle with sides r, r, d and angle 360°/n at "
+    "the centre. Show how d depends on r: give d² in terms of r and c = cos(360°/n) (Goldman §1.3)."),
+    "r c", "Check the square of the polygon's step.")
+def _(r, c):
+    return dict(expected=2 * r**2 * (1 - c), what="d²",
+                slips=[(2 * r**2 * (1 + c), "has the sign of the cosine term turned: the law of cosines is "
+                        "d² = r² + r² - 2 r r cos t."),
+                       (r**2 * (1 - c), "loses a factor 2: both sides r² + r² count."),
+                       (2 * r * (1 - c), "forgets to square r: every term of the law of cosines is a square "
+                        "of a length."),
+                       (2 * r**2 - c, "drops r² from the cosine term: it is 2 r r cos t.")],
+                success="d² = 2r²(1 - cos t) = 4r² sin²(t/2), so d = 2r sin(180°/n): the chord, a little shorter "
+                        "than the arc 2πr/n.")
+
+
 # == Chapter 2: looping lemmas ====================================================================
 
 @_define("ch02_three_steps", (
