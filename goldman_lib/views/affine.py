@@ -29,7 +29,7 @@ from goldman_lib.angles import cos_sin_degrees
 from goldman_lib.validation import as_points
 from goldman_lib.views import style
 from goldman_lib.views.drag import PointDrag, _snap, drag_sliders
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, InteractiveView
 from goldman_lib.views.turtle import stroke_data
 
 __all__ = ["FIGURES", "KINDS", "plot_map", "format_matrix", "transform_explorer", "three_point_explorer",
@@ -176,16 +176,13 @@ def transform_explorer(kind: str = "rotation", figure: str = "letter F") -> Inte
     ``update(kind, figure, tx, ty, angle, cx, cy, factor, direction, shear)`` returns
     ``{"original", "image", "matrix", "center", "status"}``; the status shows the matrix.
     """
-    import ipywidgets as widgets
 
     if kind not in KINDS:
         raise ValueError(f"kind must be one of {list(KINDS)}; got {kind!r}")
     _figure(figure)
     controls = {
-        "kind": widgets.Dropdown(options=list(KINDS), value=kind, description="map",
-                                 style={"description_width": "70px"}, layout=widgets.Layout(width="290px")),
-        "figure": widgets.Dropdown(options=list(FIGURES), value=figure, description="figure",
-                                   style={"description_width": "70px"}, layout=widgets.Layout(width="290px")),
+        "kind": dropdown("map", list(KINDS), kind, label_width="70px", width="290px"),
+        "figure": dropdown("figure", list(FIGURES), figure, label_width="70px", width="290px"),
         "tx": float_slider("v_x", 1.5, -3, 3, 0.1, label_width="70px"),
         "ty": float_slider("v_y", 0.5, -3, 3, 0.1, label_width="70px"),
         "angle": float_slider("angle °", 60, -180, 180, 1, readout=".0f", label_width="70px"),
@@ -271,14 +268,12 @@ def three_point_explorer(images=((1.0, 0.5), (3.0, 1.0), (1.5, 2.5)), figure: st
     the image of the figure collapses onto a line (the status says so).  ``update(figure, x1, y1,
     x2, y2, x3, y3)`` returns ``{"original", "image", "source", "target", "matrix", "status"}``.
     """
-    import ipywidgets as widgets
 
     Q = as_points(images, "images", dim=2)
     if Q.shape != (3, 2):
         raise ValueError(f"images must hold three 2D points, shape (3, 2); got {Q.shape}")
     _figure(figure)
-    controls = {"figure": widgets.Dropdown(options=list(FIGURES), value=figure, description="figure",
-                                           style={"description_width": "48px"}, layout=widgets.Layout(width="290px"))}
+    controls = {"figure": dropdown("figure", list(FIGURES), figure, label_width="48px", width="290px")}
     for k, (x, y) in enumerate(Q, start=1):
         controls[f"x{k}"] = float_slider(f"Q{k} x", float(x), -3, 4, 0.1)
         controls[f"y{k}"] = float_slider(f"Q{k} y", float(y), -3, 4, 0.1)

@@ -24,7 +24,7 @@ from goldman_lib.validation import as_float, as_int, as_points
 from goldman_lib.views import style
 from goldman_lib.views.bezier import DEFAULT_CUBIC, plot_control_polygon, plot_curve
 from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 
 __all__ = ["plot_pieces", "plot_boxes", "plot_patch_domains", "bezier_subdivision_view", "adaptive_rendering_view",
            "intersection_view", "patch_rendering_view", "patch_subdivision_3d_view", "INTERSECTION_EXAMPLES", "WAVY", "DEFAULT_PATCH_25"]
@@ -243,7 +243,6 @@ def intersection_view(case: str = "two cubics, three crossings", level: int = 3,
     """
     if case not in INTERSECTION_EXAMPLES:
         raise ValueError(f"case must be one of {', '.join(INTERSECTION_EXAMPLES)}; got {case!r}")
-    import ipywidgets as widgets
 
     fig, ax = style.new_axes()
     a0, b0 = INTERSECTION_EXAMPLES[case]
@@ -293,8 +292,7 @@ def intersection_view(case: str = "two cubics, three crossings", level: int = 3,
                 "status": f"{len(st)} intersection(s): {found}"}
 
     level = as_int(level, "level", minimum=0, maximum=max_level)
-    controls = {"case": widgets.Dropdown(options=list(INTERSECTION_EXAMPLES), value=case, description="curves",
-                                         style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+    controls = {"case": dropdown("curves", list(INTERSECTION_EXAMPLES), case, label_width="48px", width="290px"),
                 "level": int_slider("level", level, 0, max_level),
                 "shift": float_slider("shift", shift, -1.0, 1.0, 0.05)}
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
@@ -374,7 +372,6 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
     rectangles (k, 4), the surface grid, and in intersection mode the curve's points (k, 3),
     parameters (k, 4) and drawn segments (j, 2, 3).
     """
-    import ipywidgets as widgets
 
     from goldman_lib.views.three import SceneView, grid_triangles
 
@@ -457,8 +454,7 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
                 "points": points, "params": params, "segments": segs, "status": status}
 
     level = as_int(level, "level", minimum=0, maximum=4)
-    controls = {"mode": widgets.Dropdown(options=list(modes), value=mode, description="show",
-                                         style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+    controls = {"mode": dropdown("show", list(modes), mode, label_width="48px", width="290px"),
                 "level": int_slider("level", level, 0, 4),
                 "height": float_slider("plane z", height, 0.05, 0.6, 0.05)}
     view = InteractiveView(controls=controls, views=[scene.widget], update=update, static=scene.to_png,

@@ -18,7 +18,7 @@ from goldman_lib import affine, codo, turtle
 from goldman_lib.views import style
 from goldman_lib.views import _checks
 from goldman_lib.views._program_editor import program_editor
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, InteractiveView
 from goldman_lib.views.turtle import stroke_data
 
 __all__ = ["DEFAULT_PROGRAM", "TRY_PROGRAM", "plot_drawing", "plot_program", "codo_program_editor", "TURTLE_PROGRAMS",
@@ -150,8 +150,7 @@ def turtle_shortcoming_view(program: str = "square", sx: float = 2.0, sy: float 
     if program not in TURTLE_PROGRAMS:
         raise ValueError(f"program must be one of {list(TURTLE_PROGRAMS)}; got {program!r}")
     controls = {
-        "program": widgets.Dropdown(options=list(TURTLE_PROGRAMS), value=program, description="turtle",
-                                    style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+        "program": dropdown("turtle", list(TURTLE_PROGRAMS), program, label_width="48px", width="290px"),
         "sx": float_slider("s_x", sx, 0.2, 3, 0.05),
         "sy": float_slider("s_y", sy, 0.2, 3, 0.05),
         "shear": float_slider("shear", shear, -1.5, 1.5, 0.05),

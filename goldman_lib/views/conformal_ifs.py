@@ -36,7 +36,7 @@ from goldman_lib.validation import as_float, as_int
 from goldman_lib.views import style
 from goldman_lib.views import _checks
 from goldman_lib.views.drag import drag_sliders
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 from goldman_lib.views.turtle import stroke_data
 
 __all__ = ["plot_turtle_and_ifs", "initial_state_view", "turtle_ifs_view", "tao_view", "bump_view",
@@ -174,13 +174,11 @@ def initial_state_view(fractal: str = "Koch curve", level: int = 2, x: float = 0
     >>> initial_state_view().last_result["error"] < 1e-12
     True
     """
-    import ipywidgets as widgets
 
     if fractal not in fractals.PROGRAMS:
         raise ValueError(f"fractal must be one of {sorted(fractals.PROGRAMS)}; got {fractal!r}")
     controls = {
-        "fractal": widgets.Dropdown(options=list(fractals.PROGRAMS), value=fractal, description="fractal",
-                                    style={"description_width": "60px"}, layout=widgets.Layout(width="290px")),
+        "fractal": dropdown("fractal", list(fractals.PROGRAMS), fractal, label_width="60px", width="290px"),
         "level": int_slider("level", as_int(level, "level", minimum=0, maximum=5), 0, 5),
         "x": float_slider("P x", as_float(x, "x"), -2, 2, 0.05),
         "y": float_slider("P y", as_float(y, "y"), -2, 2, 0.05),
@@ -282,13 +280,11 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
     >>> view.last_result["maps"].shape, view.last_result["distance"] < 1e-12
     ((2, 3, 3), True)
     """
-    import ipywidgets as widgets
 
     if fractal not in fractals.PROGRAMS:
         raise ValueError(f"fractal must be one of {sorted(fractals.PROGRAMS)}; got {fractal!r}")
     controls = {
-        "fractal": widgets.Dropdown(options=list(fractals.PROGRAMS), value=fractal, description="fractal",
-                                    style={"description_width": "60px"}, layout=widgets.Layout(width="290px")),
+        "fractal": dropdown("fractal", list(fractals.PROGRAMS), fractal, label_width="60px", width="290px"),
         "level": int_slider("level", as_int(level, "level", minimum=0, maximum=8), 0, 8),
         "x": float_slider("P x", as_float(x, "x"), -1, 1, 0.05),
         "y": float_slider("P y", as_float(y, "y"), -1, 1, 0.05),
@@ -469,13 +465,11 @@ def bump_view(bump: str = "Koch curve", level: int = 4, height: float = 1.0) -> 
     >>> bump_view("dragon", 8).last_result["distance"] < 1e-12
     True
     """
-    import ipywidgets as widgets
 
     if bump not in cf.BUMPS:
         raise ValueError(f"bump must be one of {sorted(cf.BUMPS)}; got {bump!r}")
     controls = {
-        "bump": widgets.Dropdown(options=list(cf.BUMPS), value=bump, description="bump",
-                                 style={"description_width": "60px"}, layout=widgets.Layout(width="290px")),
+        "bump": dropdown("bump", list(cf.BUMPS), bump, label_width="60px", width="290px"),
         "level": int_slider("level", as_int(level, "level", minimum=0, maximum=8), 0, 8),
         "height": float_slider("height", as_float(height, "height"), -1.5, 1.5, 0.05),
     }

@@ -17,7 +17,7 @@ from goldman_lib import ifs
 from goldman_lib.validation import as_int
 from goldman_lib.views import style
 from goldman_lib.views import _checks
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 
 __all__ = ["NEWTON_FUNCTIONS", "newton_view", "relaxation_view", "fractal_theorem_view", "START_SETS", "cobweb",
            "convergence_plot"]
@@ -36,7 +36,6 @@ def newton_view(function: str = "x^2 - 2", x0: float = 2.5, steps: int = 1) -> I
     axis at ``x_{n+1}``.  ``update(function, x0, steps)`` returns the iterates ``xs`` and the
     tangent segments; the status names the outcome (converged, zero derivative, cycle, diverged).
     """
-    import ipywidgets as widgets
 
     if function not in NEWTON_FUNCTIONS:
         raise ValueError(f"function must be one of {list(NEWTON_FUNCTIONS)}; got {function!r}")
@@ -77,8 +76,7 @@ def newton_view(function: str = "x^2 - 2", x0: float = 2.5, steps: int = 1) -> I
 
     controls = {"steps": int_slider("steps", steps, 0, 10),
                 "x0": float_slider("x0", x0, -2.5, 3.0, 0.01),
-                "function": widgets.Dropdown(options=list(NEWTON_FUNCTIONS), value=function, description="f",
-                                             layout=widgets.Layout(width="300px"))}
+                "function": dropdown("f", list(NEWTON_FUNCTIONS), function, label_width="initial", width="300px")}
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="Newton's method")
 
@@ -162,7 +160,6 @@ def fractal_theorem_view(system: str = "Sierpinski gasket", start: str = "unit s
 
     ``update(system, start, level)`` returns the iterate and the distances and bounds.
     """
-    import ipywidgets as widgets
 
     names = ["Sierpinski gasket", "Koch curve", "dragon", "C-curve", "Cantor set", "Barnsley fern"]
     fig = style.new_figure(style.WIDE_FIGSIZE)
@@ -217,10 +214,8 @@ def fractal_theorem_view(system: str = "Sierpinski gasket", start: str = "unit s
                           f"{r.bounds[n]:.4f}"}
 
     controls = {"level": int_slider("level", as_int(level, "level", minimum=0, maximum=8), 0, 8),
-                "system": widgets.Dropdown(options=names, value=system, description="IFS",
-                                           layout=widgets.Layout(width="260px")),
-                "start": widgets.Dropdown(options=list(START_SETS), value=start, description="A0",
-                                          layout=widgets.Layout(width="260px"))}
+                "system": dropdown("IFS", names, system, label_width="initial", width="260px"),
+                "start": dropdown("A0", list(START_SETS), start, label_width="initial", width="260px")}
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="the fractal theorem")
 

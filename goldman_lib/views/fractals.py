@@ -22,7 +22,7 @@ from goldman_lib import fractals, turtle
 from goldman_lib.validation import as_float, as_int
 from goldman_lib.views import style
 from goldman_lib.views import _checks
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 from goldman_lib.views.turtle import _PathArtists, plot_polylines, stroke_data
 
 __all__ = ["plot_fractal", "fractal_explorer", "looping_lemma_explorer", "base_case_explorer",
@@ -91,8 +91,7 @@ def fractal_explorer(name: str = "Koch curve", level: int = 4, *, figsize=style.
         raise ValueError(f"name must be one of {sorted(fractals.PROGRAMS)}; got {name!r}")
     level = as_int(level, "level", minimum=0, maximum=8)
     controls = {
-        "name": widgets.Dropdown(options=list(fractals.PROGRAMS), value=name, description="fractal",
-                                 style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+        "name": dropdown("fractal", list(fractals.PROGRAMS), name, label_width="48px", width="290px"),
         "level": int_slider("level", level, 0, 8),
     }
     fig, ax = style.new_axes(figsize)
@@ -249,14 +248,12 @@ def base_case_explorer(base: str = "Koch: tent", level: int = 1, *, figsize=styl
     >>> round(base_case_explorer("gasket: square", 0).last_result["distance"], 6)
     0.517638
     """
-    import ipywidgets as widgets
 
     if base not in BASE_OPTIONS:
         raise ValueError(f"base must be one of {list(BASE_OPTIONS)}; got {base!r}")
     level = as_int(level, "level", minimum=0, maximum=5)
     controls = {
-        "base": widgets.Dropdown(options=list(BASE_OPTIONS), value=base, description="base case",
-                                 style={"description_width": "64px"}, layout=widgets.Layout(width="300px")),
+        "base": dropdown("base case", list(BASE_OPTIONS), base, label_width="64px", width="300px"),
         "level": int_slider("level", level, 0, 5),
     }
     fig = style.new_figure(figsize)

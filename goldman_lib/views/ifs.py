@@ -15,7 +15,7 @@ from goldman_lib import ifs
 from goldman_lib.validation import as_int
 from goldman_lib.views import style
 from goldman_lib.views import _checks
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 
 __all__ = ["START_SHAPES", "plot_copies", "iteration_view", "condensation_view"]
 
@@ -63,7 +63,6 @@ def iteration_view(system: str = "Sierpinski gasket", start: str = "unit square"
     Whatever the start, the copies shrink onto the same attractor (grey).  ``update(system,
     start, level)`` returns ``copies`` ``(k**n, m, 2)``; levels are capped at 60,000 points.
     """
-    import ipywidgets as widgets
 
     names = [n for n in ifs.STANDARD if ifs.STANDARD[n]().condensation is None]
     if system not in names:
@@ -102,10 +101,8 @@ def iteration_view(system: str = "Sierpinski gasket", start: str = "unit square"
                 "status": f"level {used}: {len(copies):,} copies of the {start}{capped}"}
 
     controls = {"level": int_slider("level", level, 0, max_level),
-                "system": widgets.Dropdown(options=names, value=system, description="IFS",
-                                           layout=widgets.Layout(width="260px")),
-                "start": widgets.Dropdown(options=list(START_SHAPES), value=start, description="start",
-                                          layout=widgets.Layout(width="260px"))}
+                "system": dropdown("IFS", names, system, label_width="initial", width="260px"),
+                "start": dropdown("start", list(START_SHAPES), start, label_width="initial", width="260px")}
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="iterating an IFS on a start shape")
 

@@ -42,7 +42,7 @@ from goldman_lib import affine, ifs
 from goldman_lib.validation import as_int
 from goldman_lib.views import style
 from goldman_lib.views import _checks
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 
 __all__ = ["ifs_editor", "system_from_values", "values_from_system", "MAX_MAPS", "PARAMETERS",
            "CONDENSATIONS", "MAP_COLOURS", "attractor_points", "REFERENCE_TRIANGLE", "map_values_from_points"]
@@ -249,9 +249,7 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
     controls["points"] = int_slider("points", points, 1000, 100_000)
     controls["points"].step = 1000
     controls["levels"] = int_slider("levels", levels, 0, 12)
-    controls["condensation"] = widgets.Dropdown(options=list(CONDENSATIONS), value=initial["condensation"],
-                                                description="condensation", style={"description_width": "90px"},
-                                                layout=widgets.Layout(width="290px"))
+    controls["condensation"] = dropdown("condensation", list(CONDENSATIONS), initial["condensation"], label_width="90px", width="290px")
 
     # While a grip is dragged the frame holds still, so the grip stays under the mouse; the view
     # fits the new attractor when the mouse lets go.
@@ -306,9 +304,7 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
         return {"points": pts, "labels": labels, "images": images, "factors": factors, "status": status}
 
     # -- the layout: preset picker, maps +/-, the selected map's sliders, the algorithm -------------------
-    preset = widgets.Dropdown(options=["(choose a preset)"] + list(ifs.STANDARD), value="(choose a preset)",
-                              description="preset", style={"description_width": "60px"},
-                              layout=widgets.Layout(width="260px"))
+    preset = dropdown("preset", ["(choose a preset)"] + list(ifs.STANDARD), "(choose a preset)", label_width="60px", width="260px")
     add = widgets.Button(description="+ map", layout=widgets.Layout(width="64px"))
     remove = widgets.Button(description="− map", layout=widgets.Layout(width="64px"))
     rows = []

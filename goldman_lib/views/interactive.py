@@ -223,9 +223,12 @@ class InteractiveView(widgets.VBox):
     click_cid = None
     #: The Play widget of an animated view (it drives a frame slider).
     play = None
+    #: The full-size picture of the view's current state, ``render_full(progress, **values)``, for a
+    #: :class:`goldman_lib.views.render_control.RenderControl` under the view.
+    render_full = None
     #: Everything above, by name: the sweep tests fail a factory that sets any other attribute.
     CARRIES = frozenset({"ax", "axes", "scene", "drag", "light_control", "light", "editor", "editors", "examples",
-                         "preset", "load", "readout", "click_cid", "play"})
+                         "preset", "load", "readout", "click_cid", "play", "render_full"})
 
     #: Every live view by its number (``uid``), which its box also carries as the CSS class
     #: ``goldman-view-<uid>``: how a browser test asks the kernel about the view it sees.

@@ -43,7 +43,7 @@ from goldman_lib import bspline
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
 from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, InteractiveView
 from goldman_lib.views.three import SceneView, grid_triangles
 
 __all__ = ["PRESETS", "RULE_TEXT", "knots_from_values", "push_knots", "interior_values", "KnotEditor",
@@ -193,11 +193,8 @@ class KnotEditor:
         self.degree_name, self.preset_name = f"{pre}degree", f"{pre}preset"
         self.knot_names = [f"{pre}k{i + 1}" for i in range(self.max_interior)]
         self.weight_names = [f"{pre}w{i}" for i in range(n_ctrl)] if weights is not None else []
-        degree_w = widgets.Dropdown(options=list(range(1, max_degree + 1)), value=degree,
-                                    description=f"{label}degree", style={"description_width": "70px"},
-                                    layout=widgets.Layout(width="150px"))
-        preset_w = widgets.Dropdown(options=list(PRESETS), value=preset, description=f"{label}knots",
-                                    style={"description_width": "70px"}, layout=widgets.Layout(width="190px"))
+        degree_w = dropdown(f"{label}degree", list(range(1, max_degree + 1)), degree, label_width="70px", width="150px")
+        preset_w = dropdown(f"{label}knots", list(PRESETS), preset, label_width="70px", width="190px")
         self.controls = {self.degree_name: degree_w, self.preset_name: preset_w}
         start = knots_from_values(interior, degree, n_ctrl, preset)
         shown = list(interior_values(start, degree))

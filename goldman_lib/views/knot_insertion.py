@@ -20,6 +20,7 @@ from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
 from goldman_lib.views.interactive import (
     InteractiveView,
+    dropdown,
     figure_widget,
     float_slider,
     int_slider,
@@ -294,7 +295,6 @@ def bspline_subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE,
     degree = as_int(degree, "degree", minimum=1, maximum=max_degree)
     if algorithm not in _ALGORITHMS:
         raise ValueError(f"algorithm must be one of {_ALGORITHMS}; got {algorithm!r}")
-    import ipywidgets as widgets
 
     fig, ax = style.new_axes()
     plot_polygon(ctrl, ax, alpha=0.45)
@@ -362,9 +362,7 @@ def bspline_subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE,
         status = f"{alg}, degree {p}, level {L}: {len(P)} points; {dist_text}"
         return {"polygon": P, "curve": crv, "distance": d, "status": status, "labels": labels}
 
-    controls = {"algorithm": widgets.Dropdown(options=list(_ALGORITHMS), value=algorithm, description="algorithm",
-                                              style={"description_width": "70px"},
-                                              layout=widgets.Layout(width="290px")),
+    controls = {"algorithm": dropdown("algorithm", list(_ALGORITHMS), algorithm, label_width="70px", width="290px"),
                 "degree": int_slider("degree", degree, 1, max_degree),
                 "level": int_slider("level", level, 0, max_level),
                 "round": int_slider("round", degree if rnd is None else rnd, 0, max_degree)}
@@ -448,7 +446,6 @@ def render_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT
 
     ``update(method, digits, shift)`` returns the polyline, the intersection points and parameters.
     """
-    import ipywidgets as widgets
 
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=2)
     p = as_int(degree, "degree", minimum=1)
@@ -483,9 +480,7 @@ def render_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT
                   f"{len(xs)} intersection{'s' if len(xs) != 1 else ''}")
         return {"polyline": pts, "points": xs, "params": params, "status": status}
 
-    controls = {"method": widgets.Dropdown(options=list(_RENDER_METHODS), value=list(_RENDER_METHODS)[0],
-                                           description="method", style={"description_width": "60px"},
-                                           layout=widgets.Layout(width="290px")),
+    controls = {"method": dropdown("method", list(_RENDER_METHODS), list(_RENDER_METHODS)[0], label_width="60px", width="290px"),
                 "digits": int_slider("tol 1e-", digits, 1, 4),
                 "shift": float_slider("shift", shift, -1.2, 1.2, 0.05)}
     return InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,

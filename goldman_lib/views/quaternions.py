@@ -23,7 +23,7 @@ from goldman_lib import quaternions as qt
 from goldman_lib.validation import as_float
 from goldman_lib.views import style
 from goldman_lib.views.drag import drag_sliders
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 from goldman_lib.views.vectors3d import COLOURS, VectorScene
 
 __all__ = ["complex_plane_view", "quaternion_rotation_view", "key_frame_view", "double_cover_view", "slerp_s3_view",
@@ -228,8 +228,7 @@ def key_frame_view(keys: str = "tumble", frame: int = FRAMES // 8) -> Interactiv
     if not 0 <= frame <= FRAMES:
         raise ValueError(f"frame must be in [0, {FRAMES}]; got {frame}")
     controls = {
-        "keys": widgets.Dropdown(options=list(KEY_SETS), value=keys, description="keys",
-                                 style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+        "keys": dropdown("keys", list(KEY_SETS), keys, label_width="48px", width="290px"),
         "frame": int_slider("frame", frame, 0, FRAMES, width="240px"),
     }
     play = widgets.Play(value=frame, min=0, max=FRAMES, step=1, interval=60, description="play",
@@ -473,14 +472,12 @@ def slerp_s3_view(keys: str = "150° about x to 150° about y", t: float = 0.3) 
     >>> bool(np.allclose(r["slerp"], r["nlerp"])), round(r["slerp_turned"] / r["total"], 9)
     (True, 0.5)
     """
-    import ipywidgets as widgets
 
     if keys not in S3_KEYS:
         raise ValueError(f"keys must be one of {sorted(S3_KEYS)}; got {keys!r}")
     t = as_float(t, "t")
     controls = {
-        "keys": widgets.Dropdown(options=list(S3_KEYS), value=keys, description="keys",
-                                 style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+        "keys": dropdown("keys", list(S3_KEYS), keys, label_width="48px", width="290px"),
         "t": float_slider("t", t, 0.0, 1.0, 0.01),
     }
     fig = style.new_figure(figsize=(10.4, 3.7))

@@ -17,7 +17,7 @@ from goldman_lib import lighting, shading
 from goldman_lib import subdivision_surfaces as ss
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, figure_widget, int_slider
+from goldman_lib.views.interactive import dropdown, figure_widget, int_slider, InteractiveView
 from goldman_lib.views.three import SceneView
 
 __all__ = ["MESHES", "DEFAULT_POLYGON", "plot_polygon_levels", "plot_mesh", "plot_quad_stencils",
@@ -337,8 +337,7 @@ def subdivision_surface_view(mesh: str = "cube", scheme: str = "quad", level: in
                           f"V-E+F={euler}{extra}"}
 
     controls = {
-        "mesh": widgets.Dropdown(options=list(MESHES), value=mesh, description="mesh",
-                                 style={"description_width": "48px"}, layout=widgets.Layout(width="290px")),
+        "mesh": dropdown("mesh", list(MESHES), mesh, label_width="48px", width="290px"),
         "scheme": widgets.ToggleButtons(options=["quad", "triangle"], value=scheme, description="scheme",
                                         style={"description_width": "48px", "button_width": "80px"}),
         "level": int_slider("level", level, 0, max_level),
