@@ -72,49 +72,6 @@ class PointDrag:
         k = int(np.argmin(d))
         return k if d[k] <= self.radius else None
 
-    def plan(self, distance: float = 40.0) -> dict | None:
-        """A drag a test can make with a real mouse: a draggable point well inside the axes that a
-        press on it grabs (no other point nearer), and where to take it, ``distance`` display pixels
-        away in one of the four axis directions and still inside the axes.  Returns ``{"index",
-        "start", "end", "figure", "start_data", "end_data", "pixels_per_unit"}``: positions in
-        figure pixels (origin bottom left), the figure's width and height in pixels, the two
-        positions in data coordinates and the axes' scale now (a view may refit its axes when the
-        mouse lets go, so a test compares where the point ends in data coordinates).  None if no
-        point can be dragged that far.
-
-        >>> from matplotlib.figure import Figure
-        >>> fig = Figure(figsize=(4, 3), dpi=100); ax = fig.add_subplot(); _ = ax.set_xlim(0, 10), ax.set_ylim(0, 10)
-        >>> d = PointDrag(ax, lambda: np.array([[5.0, 5.0]]), lambda k, x, y: None)
-        >>> p = d.plan(); p["index"], p["end"][0] - p["start"][0], p["figure"]
-        (0, 40.0, [400.0, 300.0])
-        """
-        if isinstance(distance, bool) or not isinstance(distance, (int, float)) or not 0 < distance < 1e4:
-            raise ValueError(f"distance must be a number of pixels in (0, 10000); got {distance!r}")
-        pts = np.asarray(self.get_points(), dtype=float).reshape(-1, 2)
-        if len(pts) == 0:
-            return None
-        screen = self.ax.transData.transform(pts)
-        box = self.ax.bbox
-        margin = 6.0
-
-        def inside(x, y):
-            return box.x0 + margin <= x <= box.x1 - margin and box.y0 + margin <= y <= box.y1 - margin
-
-        for k, (x, y) in enumerate(screen):
-            if not (np.isfinite(x) and np.isfinite(y) and inside(x, y)) or self.nearest(x, y) != k:
-                continue
-            for dx, dy in ((distance, 0.0), (-distance, 0.0), (0.0, distance), (0.0, -distance)):
-                if inside(x + dx, y + dy):
-                    w, h = self.ax.figure.bbox.width, self.ax.figure.bbox.height
-                    inverse = self.ax.transData.inverted()
-                    end_data = inverse.transform((x + dx, y + dy))
-                    one = self.ax.transData.transform(pts[k] + 1.0) - self.ax.transData.transform(pts[k])
-                    return {"index": k, "start": [float(x), float(y)], "end": [float(x + dx), float(y + dy)],
-                            "figure": [float(w), float(h)], "start_data": [float(v) for v in pts[k]],
-                            "end_data": [float(v) for v in end_data],
-                            "pixels_per_unit": [float(abs(v)) for v in one]}
-        return None
-
     def position(self, index: int) -> list[float]:
         """Where point ``index`` is now, in data coordinates."""
         pts = np.asarray(self.get_points(), dtype=float).reshape(-1, 2)

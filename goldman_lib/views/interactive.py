@@ -231,7 +231,8 @@ class InteractiveView(widgets.VBox):
                          "preset", "load", "readout", "click_cid", "play", "render_full"})
 
     #: Every live view by its number (``uid``), which its box also carries as the CSS class
-    #: ``goldman-view-<uid>``: how a browser test asks the kernel about the view it sees.
+    #: ``goldman-view-<uid>``: how a browser test asks the kernel about the view it sees
+    #: (``tests/browser/kernel_hooks.py``).
     _live: "weakref.WeakValueDictionary[int, InteractiveView]" = weakref.WeakValueDictionary()
     _count = itertools.count()
 
@@ -279,21 +280,6 @@ class InteractiveView(widgets.VBox):
         for w in self.controls.values():
             w.observe(self._on_change, names="value")
         self.refresh()
-
-    @classmethod
-    def find(cls, uid: int) -> "InteractiveView":
-        """The live view numbered ``uid`` (its box has the CSS class ``goldman-view-<uid>``).
-
-        >>> v = InteractiveView(controls={}, views=[], update=lambda: {})
-        >>> InteractiveView.find(v.uid) is v
-        True
-        """
-        if isinstance(uid, bool) or not isinstance(uid, (int, np.integer)):
-            raise TypeError(f"uid must be an integer; got {type(uid).__name__}")
-        try:
-            return cls._live[int(uid)]
-        except KeyError:
-            raise ValueError(f"uid must name a live view; no view numbered {uid}") from None
 
     # -- the plain-function side -------------------------------------------------------------
     def values(self) -> dict:

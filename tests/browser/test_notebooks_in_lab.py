@@ -13,6 +13,7 @@ tests/browser/screenshots/ on every run, so a person can look at what the test s
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -33,19 +34,20 @@ CHANGE_TOLERANCE = 0.001
 DRAG_TOLERANCE = 10.0
 
 # Whether view UID has points the mouse drags on an ipympl canvas, and the drag a real mouse can
-# make there (PointDrag.plan; None if no point can be dragged 40 px).
+# make there (kernel_hooks.drag_plan, run in the kernel; None if no point can be dragged 40 px).
+_HOOKS = str(Path(__file__).resolve().parent / "kernel_hooks.py")
 _PLAN = """
-import json as _json
-from goldman_lib.views.interactive import InteractiveView as _IV
+import json as _json, runpy as _runpy
+_goldman = _runpy.run_path(HOOKS)
 def _goldman_plan(v):
     d = getattr(v, "drag", None)
     live = d is not None and d.enabled and type(d.ax.figure.canvas).__module__.startswith("ipympl")
-    return {"drag": live, "plan": d.plan() if live else None}
-print(_json.dumps(_goldman_plan(_IV.find(UID))))
+    return {"drag": live, "plan": _goldman["drag_plan"](d) if live else None}
+print(_json.dumps(_goldman_plan(_goldman["find_view"](UID))))
 del _goldman_plan
-"""
+""".replace("HOOKS", repr(_HOOKS))
 # Where point K of view UID is now (data coordinates).
-_WHERE = "import json as _json; print(_json.dumps(_IV.find(UID).drag.position(K)))"
+_WHERE = "import json as _json; print(_json.dumps(_goldman['find_view'](UID).drag.position(K)))"
 # The label and the readout (as the slider formats it) of the sliders that point K of view UID
 # moves, or null if its drag moves no slider.
 _SLIDERS = """
@@ -57,7 +59,7 @@ def _goldman_sliders(v, k):
         c = v.controls[n]
         out.append([c.description, format(c.value, getattr(c, "readout_format", None) or "")])
     return out or None
-print(_json.dumps(_goldman_sliders(_IV.find(UID), K)))
+print(_json.dumps(_goldman_sliders(_goldman["find_view"](UID), K)))
 del _goldman_sliders
 """
 # The readout a slider shows in the page, found by its label (exact text) in one view.
@@ -137,7 +139,7 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             continue
         # A view whose points the mouse drags: drag one with the real mouse, at the view's first
         # values (before the sliders move a point out of the axes).  The kernel says which point a
-        # press grabs and where to take it (PointDrag.plan); the point must follow the mouse and the
+        # press grabs and where to take it (kernel_hooks.drag_plan); the point must follow the mouse and the
         # picture must change.
         uid = view.evaluate("e => ([...e.classList].find(c => c.startsWith('goldman-view-')) || '').slice(13)")
         assert uid, f"{rel}: interactive view {i} has no goldman-view-<uid> class"
