@@ -46,7 +46,7 @@ __all__ = [
     "de_boor", "basis", "global_de_boor",
     "derivative_ctrl", "derivative", "continuity_at", "derivative_jumps",
     "global_pyramid_labels", "global_pyramid",
-    "spline_to_bspline", "bspline_to_pieces",
+    "spline_to_bspline", "bspline_to_pieces", "rational_basis",
     "support", "affected_span",
     "surface_de_boor", "surface_grid",
     "nurbs_curve", "nurbs_surface", "nurbs_surface_grid", "nurbs_circle", "nurbs_sphere",
@@ -956,6 +956,139 @@ def nurbs_curve(ctrl, weights, knots, degree, u) -> np.ndarray:
 
 
 _WEIGHTS_TOO_WIDE = "are too large (or too far apart) for float64 times the control points"
+
+
+def rational_basis(knots, degree, weights, u) -> np.ndarray:
+    """The rational basis functions of a NURBS curve, ``R_k(u) = w_k N_k,p(u) / sum_j w_j N_j,p(u)``
+    (Goldman §27.9): ``u.shape + (n+1,)``, summing to 1 at every ``u`` like the B-splines they
+    weight.  weights: (n+1,) positive; other arguments as :func:`basis`.
+
+    >>> R = rational_basis([0, 0, 0, 1, 1, 1], 2, [1, 2 ** -0.5, 1], [0.0, 0.5, 1.0])
+    >>> R.sum(axis=-1).round(12).tolist(), R[1].round(6).tolist()
+    ([1.0, 1.0, 1.0], [0.292893, 0.414214, 0.292893])
+    """
+    N = basis(knots, degree, u)
+    w = _weights(weights, (N.shape[-1],))
+    weighted = N * w
+    return weighted / weighted.sum(axis=-1, keepdims=True)
+
+
+# -- knot vectors an editor can hold (the knot-vector editor of chapters 27-28) ---------------------
+# Public for the views (no underscore) but out of __all__: they map any slider values to a legal
+# knot vector instead of refusing them, so the learner-facing checks of __all__ do not apply.
+
+#: The knot-vector presets of :func:`knots_from_values` (the knot-vector editor of chapters 27-28).
+KNOT_PRESETS = ("clamped", "uniform", "custom")
+
+#: The least gap kept between interior knots where more than ``max(p, 1)`` would coincide, and
+#: between interior knots and the ends 0 and 1 (a slider step).
+KNOT_GAP = 0.01
+
+def _knot_cap(degree: int) -> int:
+    return max(int(degree), 1)
+
+
+def knots_from_values(values, degree, n_ctrl, preset: str = "custom") -> np.ndarray:
+    """Map any slider values to a valid knot vector with domain [0, 1] (Goldman §27.3: knots never
+    decrease, at most ``p`` interior knots coincide; the rule is ours, for the knot-vector editor).
+
+    ``preset="clamped"``: p+1 zeros, ``n_ctrl-p-1`` evenly spaced interior knots, p+1 ones.
+    ``preset="uniform"``: :func:`uniform_knots`.  ``preset="custom"``:
+    clamped ends, interior knots from the first ``n_ctrl-p-1`` values: each clipped into
+    [KNOT_GAP, 1-KNOT_GAP], raised to its left neighbour if below it, and moved apart by KNOT_GAP where more than
+    ``max(p, 1)`` would coincide (a backward pass then keeps them below 1-KNOT_GAP).  Extra values are
+    ignored; missing or non-finite ones are taken from the clamped preset.
+
+    values: sequence of floats.  degree: int >= 0 (clipped into [0, n_ctrl-1]).  n_ctrl: >= 1.
+    Returns (n_ctrl + p + 1,) knots that :func:`check_knots` accepts.
+    Raises ValueError only for an unknown preset.
+
+    >>> knots_from_values([0.5, 0.5, 0.5], 2, 6, "custom").tolist()
+    [0.0, 0.0, 0.0, 0.5, 0.5, 0.51, 1.0, 1.0, 1.0]
+    >>> knots_from_values([], 2, 4, "uniform").tolist()
+    [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0]
+    """
+    if preset not in KNOT_PRESETS:
+        raise ValueError(f"preset must be one of {KNOT_PRESETS}; got {preset!r}")
+    n_ctrl = max(int(n_ctrl), 1)
+    p = int(min(max(int(degree), 0), n_ctrl - 1))
+    if preset == "uniform":
+        return uniform_knots(n_ctrl, p)
+    m = n_ctrl - p - 1
+    even = np.arange(1, m + 1) / (m + 1)
+    if preset == "clamped" or m == 0:
+        inner = even
+    else:
+        v = np.asarray(list(values)[:m] if values is not None else [], dtype=float)
+        v = np.concatenate([v, even[v.size:]])
+        v = np.where(np.isfinite(v), v, even)
+        inner = _legal_interior_knots(v, _knot_cap(p))
+    return np.concatenate([np.zeros(p + 1), inner, np.ones(p + 1)])
+
+
+def _legal_interior_knots(v: np.ndarray, cap: int) -> np.ndarray:
+    """Forward pass (clip, raise to the left neighbour, keep cap+1 apart) then backward pass."""
+    m = v.size
+    lo, hi = KNOT_GAP, 1.0 - KNOT_GAP
+    gap = min(KNOT_GAP, (hi - lo) / (m // cap + 1))
+    t = np.clip(v, lo, hi).astype(float)
+    for i in range(m):
+        if i:
+            t[i] = max(t[i], t[i - 1])
+        if i >= cap:
+            t[i] = max(t[i], t[i - cap] + gap)
+    for i in range(m - 1, -1, -1):
+        t[i] = min(t[i], hi)
+        if i + 1 < m:
+            t[i] = min(t[i], t[i + 1])
+        if i + cap < m:
+            t[i] = min(t[i], t[i + cap] - gap)
+    return np.round(t, 12)
+
+
+def push_knots(values, moved: int, degree) -> np.ndarray:
+    """The push rule applied to the sliders when knot ``moved`` is dragged: its neighbours on the
+    side it moved to are pushed along, so the moved knot keeps its value where it can.
+
+    >>> push_knots([0.2, 0.4, 0.6], 0, 2).tolist()      # unchanged: already legal
+    [0.2, 0.4, 0.6]
+    >>> push_knots([0.7, 0.4, 0.6], 0, 2).tolist()      # knot 0 dragged to 0.7 pushes 1 and 2
+    [0.7, 0.7, 0.71]
+    >>> push_knots([0.2, 0.1, 0.6], 1, 2).tolist()      # knot 1 dragged to 0.1 pushes 0 down
+    [0.1, 0.1, 0.6]
+    """
+    v = np.asarray(values, dtype=float).copy()
+    m = v.size
+    cap = _knot_cap(degree)
+    lo, hi = KNOT_GAP, 1.0 - KNOT_GAP
+    gap = min(KNOT_GAP, (hi - lo) / (m // cap + 1))
+    v = np.clip(v, lo, hi)
+    x = v[moved]
+    # where can the moved knot go so that the knots on both sides still fit?
+    left_room = lo + (moved // cap) * gap
+    right_room = hi - ((m - 1 - moved) // cap) * gap
+    x = min(max(x, left_room), right_room)
+    v[moved] = x
+    for i in range(moved + 1, m):             # push right neighbours up
+        v[i] = max(v[i], v[i - 1])
+        if i - cap >= 0:
+            v[i] = max(v[i], v[i - cap] + gap)
+    for i in range(moved - 1, -1, -1):        # push left neighbours down
+        v[i] = min(v[i], v[i + 1])
+        if i + cap < m:
+            v[i] = min(v[i], v[i + cap] - gap)
+    return np.round(_legal_interior_knots(v, cap), 12)
+
+
+def interior_values(knots, degree) -> np.ndarray:
+    """The interior knots ``t_{p+1} .. t_n`` of a knot vector (what the sliders show).
+
+    >>> interior_values([0, 0, 0, 0.3, 0.6, 1, 1, 1], 2).tolist()
+    [0.3, 0.6]
+    """
+    t = np.asarray(knots, dtype=float)
+    p = int(degree)
+    return t[p + 1:t.size - p - 1]
 
 
 def _homogeneous_net(ctrl, weights, knots_u, knots_v, degree_u, degree_v):

@@ -313,6 +313,9 @@ def curvature_deformed(f, grad, hess, M, points, shift=(0.0, 0.0, 0.0)) -> tuple
     scale = float(np.abs(M).max())
     if not scale > 0 or abs(np.linalg.det(M / scale)) < 1e-12:
         raise ValueError("M must be invertible (a singular M flattens the surface: it has no curvature)")
+    if not 1e-100 <= scale <= 1e100:
+        raise ValueError(f"M must have entries of moderate size (largest between 1e-100 and 1e100); got "
+                         f"{scale:.3g}: the curvatures scale by its inverse and leave float64")
     shift = as_points(shift, "shift", ndim=1, dim=3)
     Q = as_points(points, "points", dim=3)
     N = np.linalg.inv(M)
@@ -976,7 +979,11 @@ class AffineInstance(Surface):
         self._set_material(material if material is not None else base.material)
 
     def apply(self, points) -> np.ndarray:
-        """``A(P) = P M + shift`` for points ``(n, 3)`` of the base surface: their images."""
+        """``A(P) = P M + shift`` for points ``(n, 3)`` of the base surface: their images.
+
+        >>> AffineInstance(Sphere([0, 0, 0], 1.0), np.diag([3.0, 2.0, 1.0]), [0, 0, 1]).apply([[1, 1, 1]]).tolist()
+        [[3.0, 2.0, 2.0]]
+        """
         P = np.atleast_2d(as_points(points, "points", ndim=None, dim=3))
         return P @ self.M + self.shift
 

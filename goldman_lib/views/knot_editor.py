@@ -40,6 +40,7 @@ import html
 import numpy as np
 
 from goldman_lib import bspline
+from goldman_lib.bspline import KNOT_GAP as GAP, KNOT_PRESETS as PRESETS, interior_values, knots_from_values, push_knots
 from goldman_lib.validation import as_int, as_points
 from goldman_lib.views import style
 from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
@@ -51,123 +52,11 @@ __all__ = ["PRESETS", "RULE_TEXT", "knots_from_values", "push_knots", "interior_
            "bspline_curve_editor", "nurbs_curve_editor", "bspline_surface_editor",
            "DEFAULT_POLYGON", "DEFAULT_NET"]
 
-PRESETS = ("clamped", "uniform", "custom")
-
-#: The least gap kept between interior knots where more than ``max(p, 1)`` would coincide, and
-#: between interior knots and the ends 0 and 1 (a slider step).
-GAP = 0.01
-
 RULE_TEXT = ("Knots never decrease: dragging a knot past a neighbour pushes the neighbour along "
              "(a knot set below its left neighbour is raised to it). At most p interior knots may "
              "coincide (the curve stays continuous), and interior knots stay inside (0, 1). "
              "Presets: clamped = p+1 knots at each end, interior evenly spaced; uniform = all knots "
              "evenly spaced (floating ends); custom = clamped ends, interior from the sliders.")
-
-
-def _cap(degree: int) -> int:
-    return max(int(degree), 1)
-
-
-def knots_from_values(values, degree, n_ctrl, preset: str = "custom") -> np.ndarray:
-    """Map any slider values to a valid knot vector with domain [0, 1] (the editor's rule).
-
-    ``preset="clamped"``: p+1 zeros, ``n_ctrl-p-1`` evenly spaced interior knots, p+1 ones.
-    ``preset="uniform"``: :func:`goldman_lib.bspline.uniform_knots`.  ``preset="custom"``:
-    clamped ends, interior knots from the first ``n_ctrl-p-1`` values: each clipped into
-    [GAP, 1-GAP], raised to its left neighbour if below it, and moved apart by GAP where more than
-    ``max(p, 1)`` would coincide (a backward pass then keeps them below 1-GAP).  Extra values are
-    ignored; missing or non-finite ones are taken from the clamped preset.
-
-    values: sequence of floats.  degree: int >= 0 (clipped into [0, n_ctrl-1]).  n_ctrl: >= 1.
-    Returns (n_ctrl + p + 1,) knots that :func:`goldman_lib.bspline.check_knots` accepts.
-    Raises ValueError only for an unknown preset.
-
-    >>> knots_from_values([0.5, 0.5, 0.5], 2, 6, "custom").tolist()
-    [0.0, 0.0, 0.0, 0.5, 0.5, 0.51, 1.0, 1.0, 1.0]
-    >>> knots_from_values([], 2, 4, "uniform").tolist()
-    [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0]
-    """
-    if preset not in PRESETS:
-        raise ValueError(f"preset must be one of {PRESETS}; got {preset!r}")
-    n_ctrl = max(int(n_ctrl), 1)
-    p = int(min(max(int(degree), 0), n_ctrl - 1))
-    if preset == "uniform":
-        return bspline.uniform_knots(n_ctrl, p)
-    m = n_ctrl - p - 1
-    even = np.arange(1, m + 1) / (m + 1)
-    if preset == "clamped" or m == 0:
-        inner = even
-    else:
-        v = np.asarray(list(values)[:m] if values is not None else [], dtype=float)
-        v = np.concatenate([v, even[v.size:]])
-        v = np.where(np.isfinite(v), v, even)
-        inner = _legal_interior(v, _cap(p))
-    return np.concatenate([np.zeros(p + 1), inner, np.ones(p + 1)])
-
-
-def _legal_interior(v: np.ndarray, cap: int) -> np.ndarray:
-    """Forward pass (clip, raise to the left neighbour, keep cap+1 apart) then backward pass."""
-    m = v.size
-    lo, hi = GAP, 1.0 - GAP
-    gap = min(GAP, (hi - lo) / (m // cap + 1))
-    t = np.clip(v, lo, hi).astype(float)
-    for i in range(m):
-        if i:
-            t[i] = max(t[i], t[i - 1])
-        if i >= cap:
-            t[i] = max(t[i], t[i - cap] + gap)
-    for i in range(m - 1, -1, -1):
-        t[i] = min(t[i], hi)
-        if i + 1 < m:
-            t[i] = min(t[i], t[i + 1])
-        if i + cap < m:
-            t[i] = min(t[i], t[i + cap] - gap)
-    return np.round(t, 12)
-
-
-def push_knots(values, moved: int, degree) -> np.ndarray:
-    """The push rule applied to the sliders when knot ``moved`` is dragged: its neighbours on the
-    side it moved to are pushed along, so the moved knot keeps its value where it can.
-
-    >>> push_knots([0.2, 0.4, 0.6], 0, 2).tolist()      # unchanged: already legal
-    [0.2, 0.4, 0.6]
-    >>> push_knots([0.7, 0.4, 0.6], 0, 2).tolist()      # knot 0 dragged to 0.7 pushes 1 and 2
-    [0.7, 0.7, 0.71]
-    >>> push_knots([0.2, 0.1, 0.6], 1, 2).tolist()      # knot 1 dragged to 0.1 pushes 0 down
-    [0.1, 0.1, 0.6]
-    """
-    v = np.asarray(values, dtype=float).copy()
-    m = v.size
-    cap = _cap(degree)
-    lo, hi = GAP, 1.0 - GAP
-    gap = min(GAP, (hi - lo) / (m // cap + 1))
-    v = np.clip(v, lo, hi)
-    x = v[moved]
-    # where can the moved knot go so that the knots on both sides still fit?
-    left_room = lo + (moved // cap) * gap
-    right_room = hi - ((m - 1 - moved) // cap) * gap
-    x = min(max(x, left_room), right_room)
-    v[moved] = x
-    for i in range(moved + 1, m):             # push right neighbours up
-        v[i] = max(v[i], v[i - 1])
-        if i - cap >= 0:
-            v[i] = max(v[i], v[i - cap] + gap)
-    for i in range(moved - 1, -1, -1):        # push left neighbours down
-        v[i] = min(v[i], v[i + 1])
-        if i + cap < m:
-            v[i] = min(v[i], v[i + cap] - gap)
-    return np.round(_legal_interior(v, cap), 12)
-
-
-def interior_values(knots, degree) -> np.ndarray:
-    """The interior knots ``t_{p+1} .. t_n`` of a knot vector (what the sliders show).
-
-    >>> interior_values([0, 0, 0, 0.3, 0.6, 1, 1, 1], 2).tolist()
-    [0.3, 0.6]
-    """
-    t = np.asarray(knots, dtype=float)
-    p = int(degree)
-    return t[p + 1:t.size - p - 1]
 
 
 class KnotEditor:
@@ -457,8 +346,7 @@ def _curve_editor(ctrl, degree, max_degree, preset, interior, weights, samples, 
         polygon.set_data(ctrl[:, 0], ctrl[:, 1])
         if rational:
             pts = bspline.nurbs_curve(ctrl, w, knots, p, u)
-            N = bspline.basis(knots, p, u) * w
-            N = N / N.sum(-1, keepdims=True)                 # the rational basis R_k(u)
+            N = bspline.rational_basis(knots, p, w, u)
         else:
             pts = bspline.de_boor(ctrl, knots, p, u)
             N = bspline.basis(knots, p, u)
