@@ -24,8 +24,9 @@ __all__ = [
     "subdivide", "subdivide_uniform", "flatness", "is_flat", "polygon_distance", "render_by_subdivision",
     "subdivide_patch", "subdivide_patch_uniform", "net_distance", "patch_flatness", "render_patch_by_subdivision",
     "subdivision_variation_counts", "smooth_continuation", "join_order",
-    "check_subdivision_budget", "resolvable_tolerance",
 ]
+# Public inside the package (knot_insertion renders B-splines by subdivision too), not learner-facing
+# and so not in __all__: check_subdivision_budget, resolvable_tolerance.
 
 
 def _ctrl(ctrl, name: str = "ctrl") -> np.ndarray:
@@ -172,7 +173,7 @@ def check_subdivision_budget(count: int, per_piece: int, tol: float, depth_name:
     """The work budget of adaptive subdivision (Goldman §25.3), whose depth the tolerance sets: raise
     a ValueError naming ``tol`` before a level of ``count`` pieces of ``per_piece`` coordinates that
     would hold more than :data:`~goldman_lib.validation.MAX_ITEMS` coordinates (a tol far below the
-    curve's size in float64).
+    curve's size in float64).  For library modules, on validated numbers (not in ``__all__``).
 
     >>> check_subdivision_budget(10, 8, 1e-3)      # well within the budget: nothing happens
     """
@@ -189,7 +190,8 @@ def _tolerance(tol, name="tol") -> float:
 def resolvable_tolerance(tol: float, P: np.ndarray, name: str = "ctrl") -> float:
     """``tol`` if float64 can resolve it at the scale of ``P``: at least 1e-15 times its largest
     coordinate (below that, adaptive subdivision would split down to rounding noise, Goldman §25.3);
-    else a ValueError naming ``tol`` and ``name``.
+    else a ValueError naming ``tol`` and ``name``.  For library modules, on a validated tol and P (not in
+    ``__all__``).
 
     >>> resolvable_tolerance(1e-3, np.array([[0.0, 0.0], [2.0, 1.0]]))
     0.001

@@ -21,7 +21,9 @@ import numpy as np
 
 __all__ = ["as_points", "as_parameter", "as_int", "as_float", "as_float_array", "check_finite", "within_budget",
            "largest_within", "MAX_ITEMS", "MAX_ITERATIONS", "as_tolerance", "finite_result",
-           "MAX_SQUARABLE", "moderate", "overflow_culprit", "as_hyperplane", "as_colour"]
+           "MAX_SQUARABLE", "as_colour"]
+# Public inside the package, for the library's modules (not learner-facing, so not in __all__):
+# moderate, overflow_culprit, as_hyperplane -- checks on arrays a public function already validated.
 
 #: The most points, segments, triangles or matrix entries one call may produce or allocate: about
 #: 160 MB of float64 pairs, a second or two of numpy work on a 2-core machine.  Every level, count,
@@ -293,7 +295,11 @@ MAX_SQUARABLE = 1e150
 
 def moderate(P: np.ndarray, name: str = "ctrl") -> np.ndarray:
     """``P`` if its coordinates are at most :data:`MAX_SQUARABLE` in magnitude (the algorithms that
-    square distances need it), else a ValueError naming ``name``.
+    square distances need it), else a ValueError naming ``name``.  For library modules, on an array
+    already validated (not in ``__all__``).
+
+    >>> moderate(np.array([1.0, -2.0])).tolist()
+    [1.0, -2.0]
 
     >>> moderate(np.array([1e200]), "a")
     Traceback (most recent call last):
@@ -310,7 +316,7 @@ def moderate(P: np.ndarray, name: str = "ctrl") -> np.ndarray:
 def overflow_culprit(t, ctrl: str = "ctrl") -> tuple:
     """Who made a curve point overflow, as the ``(name, value)`` arguments of :func:`finite_result`:
     the parameter if it lies outside [-1, 1] (extrapolating multiplies by powers of t), else the
-    control points.
+    control points.  For library modules, on a validated t (not in ``__all__``).
 
     >>> overflow_culprit(np.array(2.0))[0], overflow_culprit(np.array(0.5))
     ('t', ('ctrl', None))
@@ -320,7 +326,11 @@ def overflow_culprit(t, ctrl: str = "ctrl") -> tuple:
 
 def as_hyperplane(point, normal, d: int, names=("line_point", "line_normal")) -> tuple[np.ndarray, np.ndarray]:
     """A point ``(d,)`` and a nonzero normal ``(d,)`` of a line (a plane in 3D, a hyperplane in
-    general) checked against the dimension d of the points it will be compared with.
+    general) checked against the dimension d of the points it will be compared with (for library
+    modules, not in ``__all__``).
+
+    >>> [v.tolist() for v in as_hyperplane([0, 1], [0, 2], 2)]
+    [[0.0, 1.0], [0.0, 2.0]]
 
     >>> as_hyperplane([0, 0], [0, 0], 2)
     Traceback (most recent call last):
