@@ -18,6 +18,8 @@ import math
 import numpy as np
 
 from goldman_lib.kernels import polygons, pyramids
+from goldman_lib.kernels.pyramids import point_and_tangent as _point_and_tangent
+from goldman_lib.kernels.pyramids import split_xy as _split_xy
 from goldman_lib.validation import MAX_SQUARABLE as MAX_COORDINATE
 from goldman_lib.validation import as_float, as_int, as_points
 from goldman_lib.validation import moderate as _moderate
@@ -260,8 +262,7 @@ class _Piece:
         if self._halves is None:
             mid = 0.5 * (self.lo + self.hi)
             xs, ys = self.xs, self.ys
-            lx, rx = pyramids.split(xs, 0.5)
-            ly, ry = pyramids.split(ys, 0.5)
+            lx, rx, ly, ry = _split_xy(xs, ys, 0.5)
             self._halves = (_Piece(lx, ly, self.lo, mid), _Piece(rx, ry, mid, self.hi))
         return self._halves
 
@@ -390,8 +391,8 @@ def _newton_small(A, B, s, t, scale, iterations=100, patience=0):
     step), the doubled step is tried too and kept if it meets better -- Newton's method for a
     double root -- so a tangential contact converges in a few steps instead of fifty."""
     (ax, ay), (bx, by) = A, B
-    pa = pyramids.point_and_tangent(ax, ay, s)
-    pb = pyramids.point_and_tangent(bx, by, t)
+    pa = _point_and_tangent(ax, ay, s)
+    pb = _point_and_tangent(bx, by, t)
     f0, f1 = pa[0] - pb[0], pa[1] - pb[1]
     res = (f0 * f0 + f1 * f1) ** 0.5
     stalled = 0
@@ -402,14 +403,14 @@ def _newton_small(A, B, s, t, scale, iterations=100, patience=0):
             break
         ds, dt = _step2(pa[2], -pb[2], pa[3], -pb[3], f0, f1)
         ns, nt = min(max(s + ds, 0.0), 1.0), min(max(t + dt, 0.0), 1.0)
-        pa2 = pyramids.point_and_tangent(ax, ay, ns)
-        pb2 = pyramids.point_and_tangent(bx, by, nt)
+        pa2 = _point_and_tangent(ax, ay, ns)
+        pb2 = _point_and_tangent(bx, by, nt)
         g0, g1 = pa2[0] - pb2[0], pa2[1] - pb2[1]
         new_res = (g0 * g0 + g1 * g1) ** 0.5
         if new_res > 0.2 * res:
             s2, t2 = min(max(s + 2.0 * ds, 0.0), 1.0), min(max(t + 2.0 * dt, 0.0), 1.0)
-            pa3 = pyramids.point_and_tangent(ax, ay, s2)
-            pb3 = pyramids.point_and_tangent(bx, by, t2)
+            pa3 = _point_and_tangent(ax, ay, s2)
+            pb3 = _point_and_tangent(bx, by, t2)
             h0, h1 = pa3[0] - pb3[0], pa3[1] - pb3[1]
             res3 = (h0 * h0 + h1 * h1) ** 0.5
             if res3 < new_res:
@@ -520,8 +521,8 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
     # so close that its midpoint with the contact meets within tol, merging the two anyway
     # (transversal solutions skip nothing: two close crossings can share a flat pair).
     def gap_at(st):
-        pa = pyramids.point_and_tangent(ca[0], ca[1], st[0])
-        pb = pyramids.point_and_tangent(cb[0], cb[1], st[1])
+        pa = _point_and_tangent(ca[0], ca[1], st[0])
+        pb = _point_and_tangent(cb[0], cb[1], st[1])
         return (pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2
 
     starts = sorted(guesses, key=lambda st: (gap_at(st), st))
@@ -545,8 +546,8 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
             if gap <= 1e-9:
                 break
             if gap <= 1e-3:
-                pa = pyramids.point_and_tangent(ca[0], ca[1], 0.5 * (s + u))
-                pb = pyramids.point_and_tangent(cb[0], cb[1], 0.5 * (t + v))
+                pa = _point_and_tangent(ca[0], ca[1], 0.5 * (s + u))
+                pb = _point_and_tangent(cb[0], cb[1], 0.5 * (t + v))
                 if ((pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2) ** 0.5 <= tol_abs:
                     break
         else:

@@ -629,11 +629,12 @@ def global_pyramid(ctrl, knots, degree, u) -> list[np.ndarray]:
     n = P.shape[0] - 1
     levels = []
 
-    def weight(r, j, q):
-        den = t[j + p + 1 - r] - t[j]
-        return (x - t[j]) / den if den > 0 else math.nan
+    def weight(r):                      # nodes i = r .. n of level r
+        lo, hi = t[r:n + 1], t[r + p + 1 - r:n + p + 2 - r]
+        den = hi - lo
+        return np.divide(x - lo, den, out=np.full(den.shape, np.nan), where=den > 0)
     with np.errstate(over="ignore", invalid="ignore"):
-        pyramids.de_boor_pyramid(P.copy(), weight, p, top=n, record=levels)
+        pyramids.de_boor_pyramid(P.copy(), weight, p, top=n, record=levels, per_level=True)
     for r in range(1, p + 1):
         ok = t[r + p + 1 - r:n + p + 2 - r] - t[r:n + 1] > 0
         finite_result(levels[r][ok], "u", x)   # an overflow (|u| huge) is reported naming u; undefined nodes stay NaN

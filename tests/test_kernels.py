@@ -278,3 +278,27 @@ def test_rasterise_covers_the_pixel_centres_inside_and_keeps_the_nearest():
     assert np.all(tri[in_first & ~in_second] == 0)
     assert np.allclose(weights[tri >= 0].sum(axis=1), 1.0)
     assert np.all(tri[~(in_first | in_second)] == -1) and np.all(depth[tri < 0] == 1.0)
+
+
+def test_split_xy_is_split_of_each_coordinate():
+    for k in (2, 3, 4, 6):
+        P = RNG.normal(size=(k, 2))
+        xs, ys = tuple(P[:, 0].tolist()), tuple(P[:, 1].tolist())
+        assert pyramids.split_xy(xs, ys, 0.5) == pyramids.split(xs, 0.5) + pyramids.split(ys, 0.5)
+
+
+def test_de_boor_pyramid_per_level_is_node_by_node_bit_for_bit():
+    P, t, p = spline_case()
+    n, x = len(P) - 1, 1.2
+
+    def node(r, j, q):
+        return (x - t[j]) / (t[j + p + 1 - r] - t[j]) if t[j + p + 1 - r] > t[j] else math.nan
+
+    def level(r):
+        lo, hi = t[r:n + 1], t[p + 1:n + p + 2 - r]
+        return np.divide(x - lo, hi - lo, out=np.full(lo.shape, np.nan), where=hi > lo)
+    a, b = [], []
+    with np.errstate(invalid="ignore"):
+        pyramids.de_boor_pyramid(P.copy(), node, p, top=n, record=a)
+        pyramids.de_boor_pyramid(P.copy(), level, p, top=n, record=b, per_level=True)
+    assert all(np.array_equal(u, v, equal_nan=True) for u, v in zip(a, b))

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 __all__ = ["casteljau_level", "casteljau_levels", "casteljau_apex", "curve_points", "patch_points",
-           "casteljau_blossom", "split", "split_patches", "quarter", "point_and_tangent", "bernstein_rows",
+           "casteljau_blossom", "split", "split_xy", "split_patches", "quarter", "point_and_tangent", "bernstein_rows",
            "POWER_FORM_MAX_DEGREE", "domain", "de_boor_pyramid", "de_boor_tables", "de_boor_points",
            "de_boor_blossom"]
 
@@ -32,14 +32,16 @@ __all__ = ["casteljau_level", "casteljau_levels", "casteljau_apex", "curve_point
 # de Casteljau (§24.2)
 # --------------------------------------------------------------------------------------------
 
-def casteljau_level(level, t, s=None, inplace: bool = False):
+def casteljau_level(level, t, s=None, inplace: bool = False, buf=None, axis: int = 0):
     """One level of de Casteljau's pyramid (Goldman §24.2): the ``k - 1`` affine combinations
     ``s P_j + t P_{j+1}`` (``s = 1 - t`` unless given) of ``k`` consecutive points.
 
-    level: an array ``(k, ...)`` of points along axis 0 (``t`` broadcasting against ``level[0]``),
-    returning an array ``(k - 1, ...)``; or a list of ``k`` numbers or arrays, returning a list.
+    level: an array ``(k, ...)`` of points along axis 0 (or ``axis``; ``t`` broadcasting against the
+    rest), returning an array ``(k - 1, ...)``; or a list of ``k`` numbers or arrays, returning a list.
     inplace (a list of arrays only): overwrite ``level[j]`` and drop the last entry, allocating
-    nothing but one buffer (about 4x faster than one operation on a whole large level).
+    nothing but one buffer ``buf`` (made if not given; pass one to reuse it across levels), about 4x
+    faster than one operation on a whole large level.  A list of arrays not in place also uses ``buf``
+    (of the level's broadcast shape) if given.
 
     >>> casteljau_level(np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]]), 0.5).tolist()
     [[0.5, 1.0], [1.5, 1.0]]
@@ -49,9 +51,12 @@ def casteljau_level(level, t, s=None, inplace: bool = False):
     if s is None:
         s = 1.0 - t
     if isinstance(level, np.ndarray):
-        return s * level[:-1] + t * level[1:]
+        if axis == 0:
+            return s * level[:-1] + t * level[1:]
+        head = (slice(None),) * axis
+        return s * level[head + (slice(None, -1),)] + t * level[head + (slice(1, None),)]
     if inplace:
-        buf = np.empty_like(level[0])
+        buf = np.empty_like(level[0]) if buf is None else buf
         for j in range(len(level) - 1):
             row = level[j]
             row *= s
@@ -59,7 +64,7 @@ def casteljau_level(level, t, s=None, inplace: bool = False):
         level.pop()
         return level
     if isinstance(level[0], np.ndarray):      # arrays: one new array per point, one shared buffer
-        out, buf = [], None
+        out = []
         for a, b in zip(level[:-1], level[1:]):
             row = np.multiply(a, s)
             buf = np.multiply(b, t, out=buf)
@@ -93,9 +98,10 @@ def casteljau_apex(rows, t: np.ndarray) -> np.ndarray:
     if k == 1:
         return np.broadcast_to(rows[0], (rows[0].shape[0], t.shape[0])).copy()
     s = 1.0 - t
-    level = casteljau_level(list(rows), t, s)
+    buf = np.empty((rows[0].shape[0], t.shape[0]))     # one buffer for every level, warm in cache
+    level = casteljau_level(list(rows), t, s, buf=buf)
     while len(level) > 1:
-        casteljau_level(level, t, s, inplace=True)
+        casteljau_level(level, t, s, inplace=True, buf=buf)
     return level[0]
 
 
@@ -125,10 +131,10 @@ def casteljau_blossom(P: np.ndarray, U: np.ndarray) -> np.ndarray:
     >>> casteljau_blossom(np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]]), np.array([[0.5, 1.0]])).tolist()
     [[1.5, 1.0]]
     """
-    cur = np.broadcast_to(P[:, None, :], (P.shape[0], U.shape[0], P.shape[1]))
+    cur = np.broadcast_to(P, (U.shape[0],) + P.shape)
     for r in range(U.shape[1]):
-        cur = casteljau_level(cur, U[:, r, None])
-    return cur[0]
+        cur = casteljau_level(cur, U[:, r, None, None], axis=1)
+    return cur[:, 0]
 
 
 def split(P, t, axis: int = 0):
@@ -198,6 +204,29 @@ def quarter(nets: np.ndarray, dom: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             kids.append(np.stack([np.where(i, um, dom[:, 0]), np.where(i, dom[:, 1], um),
                                   np.where(j, vm, dom[:, 2]), np.where(j, dom[:, 3], vm)], axis=1))
     return nets, np.stack(kids, axis=1).reshape(-1, 4)
+
+
+def split_xy(xs, ys, t):
+    """:func:`split` of both coordinates of a planar polygon given as two sequences of numbers, in one
+    call (the inner loop of curve intersection, §25.3.1): ``(left_x, right_x, left_y, right_y)``.
+
+    >>> split_xy([0.0, 2.0], [4.0, 0.0], 0.5)
+    ((0.0, 1.0), (1.0, 2.0), (4.0, 2.0), (2.0, 0.0))
+    """
+    if len(xs) == 4:           # cubics written out: the same arithmetic as casteljau_level
+        s = 1.0 - t
+        a, b, c, d = xs
+        ab, bc, cd = s * a + t * b, s * b + t * c, s * c + t * d
+        abc, bcd = s * ab + t * bc, s * bc + t * cd
+        m = s * abc + t * bcd
+        e, f, g, h = ys
+        ef, fg, gh = s * e + t * f, s * f + t * g, s * g + t * h
+        efg, fgh = s * ef + t * fg, s * fg + t * gh
+        k = s * efg + t * fgh
+        return (a, ab, abc, m), (m, bcd, cd, d), (e, ef, efg, k), (k, fgh, gh, h)
+    lx, rx = split(xs, t)
+    ly, ry = split(ys, t)
+    return lx, rx, ly, ry
 
 
 def point_and_tangent(xs, ys, t):
@@ -283,7 +312,8 @@ def domain(t: np.ndarray, p: int) -> tuple[float, float]:
     return float(t[p]), float(t[t.size - p - 1])
 
 
-def de_boor_pyramid(rows, weight, levels: int, top: int | None = None, record: list | None = None):
+def de_boor_pyramid(rows, weight, levels: int, top: int | None = None, record: list | None = None,
+                    per_level: bool = False):
     """de Boor's pyramid in place (Goldman §27.2-27.3): for ``r = 1 .. levels`` and ``j = top .. r``
     (downwards), ``rows[j] <- rows[j-1] + a (rows[j] - rows[j-1])`` with ``a = weight(r, j, q)``
     (q counts the nodes from 0).  rows: a list of arrays, or an array whose rows are points.
@@ -291,7 +321,10 @@ def de_boor_pyramid(rows, weight, levels: int, top: int | None = None, record: l
     ``top`` defaults to ``levels`` (the local pyramid of one span: rows hold ``P_{k-p} .. P_k``,
     and ``rows[p]`` ends as the apex); the global pyramid (§27.5) passes ``top = n`` with all
     ``n+1`` control points.  record: a list to which a copy of the nodes of each level,
-    ``rows[0:]`` then ``rows[r:]``, is appended.  Returns ``rows``.
+    ``rows[0:]`` then ``rows[r:]``, is appended.  per_level (rows an array): ``weight(r)`` gives the
+    weights of the level's nodes ``j = r .. top`` at once, and the level is one array operation
+    with the same arithmetic per node (the descending order only protects ``rows[j-1]``, which the
+    whole-level form reads before it writes).  Returns ``rows``.
 
     >>> rows = np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])
     >>> de_boor_pyramid(rows, lambda r, j, q: 0.5, 2)[2].tolist()
@@ -302,6 +335,13 @@ def de_boor_pyramid(rows, weight, levels: int, top: int | None = None, record: l
         record.append(np.array(rows[0:], dtype=float))
     q = 0
     for r in range(1, levels + 1):
+        if per_level:
+            a = weight(r)[:, None]
+            prev = rows[r - 1:top]
+            rows[r:top + 1] = prev + a * (rows[r:top + 1] - prev)
+            if record is not None:
+                record.append(np.array(rows[r:], dtype=float))
+            continue
         for j in range(top, r - 1, -1):
             a = weight(r, j, q)
             row, prev = rows[j], rows[j - 1]
