@@ -180,11 +180,11 @@ def homogeneous_blossom(ctrl, args) -> np.ndarray:
     lead = A.shape[:-2]
     A = A.reshape(math.prod(lead), n, 2)
     M = np.concatenate([P, np.ones((n + 1, 1))], axis=1)           # mass points (P_k, 1)
-    cur = np.broadcast_to(M[:, None, :], (n + 1, A.shape[0], M.shape[1]))
+    cur = np.broadcast_to(M, (A.shape[0],) + M.shape)
     for r in range(n):
-        t = A[:, r, 0, None]
-        cur = pyramids.casteljau_level(cur, t, s=A[:, r, 1, None] - t)    # (w - t) P_j + t P_{j+1}
-    return finite_result(cur[0].reshape(lead + (P.shape[1] + 1,)), "args", None)
+        t = A[:, r, 0, None, None]
+        cur = pyramids.casteljau_level(cur, t, s=A[:, r, 1, None, None] - t, axis=1)   # (w - t) P_j + t P_{j+1}
+    return finite_result(cur[:, 0].reshape(lead + (P.shape[1] + 1,)), "args", None)
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input

@@ -314,7 +314,7 @@ def _relax(A, b, x0, tol, max_iter, full_output, method):
     max_iter = _iterations(max_iter, len(b))
     d = np.diag(A)
     R = A - np.diag(d)
-    w = np.full(len(b), -1.0)               # x = (b - R x) / d is relaxation's (c + w (G x)) / d
+    G = -R                                  # x = (b - R x) / d is relaxation's (c + G x) / d, bit for bit
     scale_A = float(np.abs(A).sum(axis=1).max())
     scale_b = float(np.abs(b).max())
     history = [x.copy()]
@@ -327,9 +327,9 @@ def _relax(A, b, x0, tol, max_iter, full_output, method):
     with np.errstate(all="ignore"):
         for it in range(1, max_iter + 1):
             if method == "Jacobi":
-                x = relaxation.jacobi_update(b, relaxation.gather(R, x, w), d)
+                x = relaxation.jacobi_update(b, relaxation.gather(G, x), d)
             else:  # Gauss-Seidel: each new component is used at once
-                relaxation.gauss_seidel_sweep(R, b, x, w, d)
+                relaxation.gauss_seidel_sweep(G, b, x, d=d)
             res = float(np.abs(b - A @ x).max())
             history.append(x.copy())
             residuals.append(res)

@@ -390,9 +390,10 @@ def slerp(v0, v1, t) -> np.ndarray:
                          f"|v0| = {l0:.6g} and |v1| = {l1:.6g}{where}: normalise them, or interpolate the lengths "
                          f"separately")
     t = as_parameter(t, "t")
-    if np.any(np.clip(_dot(a, b) / (la * lb), -1, 1) <= -1 + 1e-12):
+    cos = np.clip(_dot(a, b) / (la * lb), -1, 1)
+    if np.any(cos <= -1 + 1e-12):
         raise ValueError("v0 and v1 must not point in opposite directions: the great arc between them is not unique")
-    return frames.slerp(a, b, t, la, lb)
+    return frames.slerp(a, b, t, la, lb, cos)
 
 
 def nlerp(v0, v1, t) -> np.ndarray:

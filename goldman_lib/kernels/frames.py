@@ -79,10 +79,11 @@ def newell(P: np.ndarray) -> np.ndarray:
                     axis=-1)
 
 
-def slerp(a: np.ndarray, b: np.ndarray, t: np.ndarray, la=None, lb=None) -> np.ndarray:
+def slerp(a: np.ndarray, b: np.ndarray, t: np.ndarray, la=None, lb=None, cos=None) -> np.ndarray:
     """Spherical linear interpolation ``sin((1-t)θ)/sin θ a + sin(tθ)/sin θ b`` of nonzero vectors a, b
     ``(..., d)`` of equal length that are not opposite, at t ``(...)`` (Goldman §11.6); linear
-    interpolation where ``sin θ < 1e-9``.  la, lb: their lengths if known (default :func:`norm`).
+    interpolation where ``sin θ < 1e-9``.  la, lb: their lengths if known (default :func:`norm`);
+    cos: ``cos θ`` clipped to [-1, 1], if the caller has it.
 
     >>> np.round(slerp(np.array([1.0, 0.0]), np.array([0.0, 1.0]), np.array(0.5)), 12).tolist()
     [0.707106781187, 0.707106781187]
@@ -90,7 +91,9 @@ def slerp(a: np.ndarray, b: np.ndarray, t: np.ndarray, la=None, lb=None) -> np.n
     la = norm(a, axis=-1) if la is None else la
     lb = norm(b, axis=-1) if lb is None else lb
     tt = t[..., None]
-    cos = np.clip(row_dots(*np.broadcast_arrays(a, b)) / (la * lb), -1, 1)[..., None]
+    if cos is None:
+        cos = np.clip(row_dots(*np.broadcast_arrays(a, b)) / (la * lb), -1, 1)
+    cos = cos[..., None]
     theta = np.arccos(cos)
     sin = np.sin(theta)
     small = sin < 1e-9

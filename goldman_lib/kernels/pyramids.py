@@ -213,7 +213,7 @@ def split_xy(xs, ys, t):
     >>> split_xy([0.0, 2.0], [4.0, 0.0], 0.5)
     ((0.0, 1.0), (1.0, 2.0), (4.0, 2.0), (2.0, 0.0))
     """
-    if len(xs) == 4:           # cubics written out: the same arithmetic as casteljau_level
+    if len(xs) == 4:           # cubics and quadratics written out: the same arithmetic as casteljau_level
         s = 1.0 - t
         a, b, c, d = xs
         ab, bc, cd = s * a + t * b, s * b + t * c, s * c + t * d
@@ -224,6 +224,15 @@ def split_xy(xs, ys, t):
         efg, fgh = s * ef + t * fg, s * fg + t * gh
         k = s * efg + t * fgh
         return (a, ab, abc, m), (m, bcd, cd, d), (e, ef, efg, k), (k, fgh, gh, h)
+    if len(xs) == 3:           # and quadratics
+        s = 1.0 - t
+        a, b, c = xs
+        ab, bc = s * a + t * b, s * b + t * c
+        m = s * ab + t * bc
+        e, f, g = ys
+        ef, fg = s * e + t * f, s * f + t * g
+        k = s * ef + t * fg
+        return (a, ab, m), (m, bc, c), (e, ef, k), (k, fg, g)
     lx, rx = split(xs, t)
     ly, ry = split(ys, t)
     return lx, rx, ly, ry

@@ -2,8 +2,8 @@
 
 One form serves both chapters that relax a linear system:
 
-- ``A x = b`` split as ``A = D + R`` (§7.3.2): ``x = (b - R x) / d`` is ``c = b``, ``G = R``,
-  ``w = -1``, ``d = diag(A)``;
+- ``A x = b`` split as ``A = D + R`` (§7.3.2): ``x = (b - R x) / d`` is ``c = b``, ``G = -R``,
+  no ``w``, ``d = diag(A)`` (``b + (-R) x`` is ``b - R x`` to the last bit: negation is exact);
 - the radiosity equation ``B = E + rho F B`` (§23.5): ``c = E``, ``G = F``, ``w = rho``, no ``d``.
 
 A Jacobi step is :func:`gather` then :func:`jacobi_update` (so a caller that needs ``w (G x)``
