@@ -22,15 +22,18 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``split``, ``split_patches``, ``quarter``: subdivision (§25.2, §25.3.2): ``bezier_subdivision``
         (``subdivide``, ``subdivide_uniform``, ``render_by_subdivision``, ``subdivide_patch``,
         ``subdivide_patch_uniform``, ``render_patch_by_subdivision``, ``smooth_continuation``,
-        ``join_order``), ``bezier_intersection`` (curve and patch intersection, and the scalar
-        halving of its curve pieces), ``knot_insertion.render``.
-    ``point_and_tangent``: point and derivative from one scalar pyramid (§24.5):
+        ``join_order``), ``bezier_intersection`` (curve and patch intersection), ``knot_insertion.render``.
+    ``split_xy``: both coordinates of a planar polygon of plain floats halved in one call (§25.3.1): the
+        inner loop of ``bezier_intersection.intersect_curves`` (cubics and quadratics written out with
+        ``casteljau_level``'s arithmetic; ``tests/test_kernels.py`` checks them against it bit for bit).
+    ``point_and_tangent``: point and derivative from one scalar pyramid (§24.5; cubics and quadratics
+        written out the same way):
         ``bezier_intersection``'s Newton refinement of curve intersections (§25.3.1).
     ``bernstein_rows``: the Bernstein table (§24.3): ``bezier.bernstein``, ``bernstein_evaluate``,
         ``patch_evaluate_grid``; ``bezier_subdivision.polygon_distance``, ``net_distance``.
     ``de_boor_pyramid``: de Boor's pyramid in place with caller-supplied node weights (§27.2-27.5),
-        the one de Boor / blossom routine; it runs the three below and ``bspline.de_boor_steps``,
-        ``bspline.global_pyramid``.
+        the one de Boor / blossom routine; it runs the two below and ``bspline.de_boor_steps``,
+        ``bspline.global_pyramid`` (a level at a time), ``knot_insertion.oslo_steps``.
     ``de_boor_points``, ``de_boor_tables``: B-spline points for many parameters, weights tabulated
         per span (§27.3): ``bspline.de_boor``, ``bspline.derivative``, ``bspline.curve_points``.
     ``de_boor_blossom``: B-spline blossoms at many label sets (§27.2, §28.2): ``bspline.blossom``,
@@ -48,9 +51,12 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``norm`` (§3): lengths at any magnitude: ``vectors``, ``vector_geometry``, ``transforms``,
         ``quaternions``, ``mass_points``, ``lighting``, ``ray_tracing``.
     ``unit_rows``, ``row_dots`` (§16.5): ``lighting`` (``unit_rows`` and the shading model),
-        ``ray_tracing``'s inner levels, ``vector_geometry``.
+        ``ray_tracing``'s inner levels (reflected and refracted directions), ``vector_geometry``.
     ``newell`` (§11.4, §21.1): Newell's normal, unnormalised: ``vector_geometry.newell_normal``
-        (unnormalised) and ``shading.newell_normal`` (unit), ``solid_modeling``'s faces.
+        (unnormalised), ``solid_modeling``'s face normals (unit).  ``shading.newell_normal`` (unit) still
+        has its own copy of the formula: its body is in a file other branches edit today.
+    ``slerp`` (§11.6, §21.4.4): ``vector_geometry.slerp`` (checked) and, per pixel, Phong shading with
+        slerp (``shading._slerp_pair``).
 
 :mod:`~goldman_lib.kernels.iteration` -- iterated function systems
     ``apply_affine_maps`` (§6.1): ``ifs.deterministic``, ``ifs.map_images``.
