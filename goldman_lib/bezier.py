@@ -42,7 +42,7 @@ import numpy as np
 
 from goldman_lib import affine, transforms
 from goldman_lib.kernels import polygons, pyramids
-from goldman_lib.validation import (MAX_ITEMS, MAX_SQUARABLE, as_float, as_float_array, as_hyperplane, as_int,
+from goldman_lib.validation import (MAX_ITEMS, MAX_SQUARABLE, as_float, as_hyperplane, as_int,
                                      as_parameter, as_points, finite_result, overflow_culprit, within_budget)
 
 __all__ = [
