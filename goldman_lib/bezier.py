@@ -41,8 +41,9 @@ import math
 import numpy as np
 
 from goldman_lib import affine, transforms
-from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_parameter, as_points,
-                                     finite_result, within_budget)
+from goldman_lib.kernels import polygons, pyramids
+from goldman_lib.validation import (MAX_ITEMS, MAX_SQUARABLE, as_float, as_hyperplane, as_int,
+                                     as_parameter, as_points, finite_result, overflow_culprit, within_budget)
 
 __all__ = [
     "neville", "de_casteljau", "de_casteljau_steps", "bernstein", "bernstein_evaluate",
@@ -52,10 +53,6 @@ __all__ = [
     "patch_de_casteljau", "patch_evaluate_grid", "patch_grid", "patch_derivatives", "patch_normal",
     "BezierCurve", "BezierPatch",
 ]
-
-# Above this degree the binomial coefficients overflow a float; bernstein() then switches from
-# "binomial times powers" to the (slower, equally stable) de Casteljau-like recurrence.
-_POWER_FORM_MAX_DEGREE = 1000
 
 
 # --------------------------------------------------------------------------------------------
@@ -67,89 +64,13 @@ def _ctrl(ctrl, name: str = "ctrl") -> np.ndarray:
 
 
 #: Coordinates of at most this magnitude keep squared distances (flatness, boxes, Newton steps)
-#: inside float64.
-MAX_COORDINATE = 1e150
-
-
-def _moderate(P: np.ndarray, name: str = "ctrl") -> np.ndarray:
-    """``P`` if its coordinates are at most :data:`MAX_COORDINATE` in magnitude (the algorithms that
-    square distances need it), else a ValueError naming ``name``."""
-    big = float(np.abs(P).max()) if P.size else 0.0
-    if big > MAX_COORDINATE:
-        raise ValueError(f"{name} is too large in magnitude: coordinates must stay within {MAX_COORDINATE:g} so "
-                         f"that squared distances fit in float64; got {big:g}")
-    return P
-
-
-def _blame(t, ctrl: str = "ctrl"):
-    """Who made a curve point overflow: the parameter if it lies outside [-1, 1] (extrapolating
-    multiplies by powers of t), else the control points."""
-    return ("t", t) if np.any(np.abs(t) > 1) else (ctrl, None)
+#: inside float64 (:data:`goldman_lib.validation.MAX_SQUARABLE`, checked by
+#: :func:`goldman_lib.validation.moderate`).
+MAX_COORDINATE = MAX_SQUARABLE
 
 
 def _net(ctrl, name: str = "ctrl") -> np.ndarray:
     return as_points(ctrl, name, ndim=3)
-
-
-def _levels(pts: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """de Casteljau on a stack of polygons laid out (n+1, D, 1 or N) with t of shape (N,).
-
-    Each level replaces the k points by k-1 affine combinations (1-t) P_j + t P_{j+1}, for all
-    N parameters at once.  The points of a level are kept as separate (D, N) arrays updated in
-    place: each array operation then works on a cache-sized block, which is about 4x faster than
-    one operation on the whole (k, D, N) level.  Returns (D, N).
-    """
-    k = pts.shape[0]
-    shape = (pts.shape[1], t.shape[0])
-    if k == 1:
-        return np.broadcast_to(pts[0], shape).copy()
-    s = 1.0 - t
-    buf = np.empty(shape)
-    level = []
-    for j in range(k - 1):
-        row = np.multiply(pts[j], s)
-        row += np.multiply(pts[j + 1], t, out=buf)
-        level.append(row)
-    for m in range(k - 2, 0, -1):          # level k-m: m+1 points become m
-        for j in range(m):
-            row = level[j]
-            row *= s
-            row += np.multiply(level[j + 1], t, out=buf)
-    return level[0]
-
-
-def _curve_points(ctrl: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """Evaluate validated ctrl (n+1, d) at validated t by de Casteljau; returns t.shape + (d,)."""
-    flat = t.reshape(-1)
-    out = _levels(ctrl[:, :, None], flat)  # (d, N)
-    return out.T.reshape(t.shape + (ctrl.shape[1],))
-
-
-def _bernstein_rows(n: int, t: np.ndarray) -> np.ndarray:
-    """B_k^n(t) for flat t (N,), laid out (n+1, N)."""
-    N = t.shape[0]
-    if n > _POWER_FORM_MAX_DEGREE:
-        rows = np.zeros((n + 1, N))
-        rows[0] = 1.0
-        s = 1.0 - t
-        for j in range(1, n + 1):
-            # B_k^j = (1-t) B_k^{j-1} + t B_{k-1}^{j-1}, computed from the top down in place
-            rows[1:j + 1] = rows[1:j + 1] * s + rows[0:j] * t
-            rows[0] *= s
-        return rows
-    s = 1.0 - t
-    tp = np.empty((n + 1, N))
-    sp = np.empty((n + 1, N))
-    tp[0] = 1.0
-    sp[0] = 1.0
-    for k in range(1, n + 1):
-        np.multiply(tp[k - 1], t, out=tp[k])
-        np.multiply(sp[k - 1], s, out=sp[k])
-    binom = np.array([float(math.comb(n, k)) for k in range(n + 1)])
-    tp *= binom[:, None]
-    tp *= sp[::-1]
-    return tp
-
 
 
 # --------------------------------------------------------------------------------------------
@@ -226,7 +147,7 @@ def de_casteljau(ctrl, t) -> np.ndarray:
     """
     P = _ctrl(ctrl)
     t = as_parameter(t, "t")
-    return finite_result(_curve_points(P, t), *_blame(t))
+    return finite_result(pyramids.curve_points(P, t), *overflow_culprit(t))
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -249,12 +170,8 @@ def de_casteljau_steps(ctrl, t) -> list[np.ndarray]:
     if t.ndim != 0:
         raise ValueError(f"t must be a scalar for de_casteljau_steps; got shape {t.shape}")
     t = float(t)
-    levels = [P.copy()]
-    cur = P
-    while cur.shape[0] > 1:
-        cur = (1.0 - t) * cur[:-1] + t * cur[1:]
-        levels.append(finite_result(cur, *_blame(t)))
-    return levels
+    levels = pyramids.casteljau_levels(P, [t] * (P.shape[0] - 1))
+    return [levels[0]] + [finite_result(cur, *overflow_culprit(t)) for cur in levels[1:]]
 
 
 # --------------------------------------------------------------------------------------------
@@ -284,14 +201,14 @@ def bernstein(n, t) -> np.ndarray:
     t = as_parameter(t, "t")
     n = within_budget(n, "n", cost=lambda v: _bernstein_cost(v, t.size), what=f"the Bernstein basis at {t.size} parameter(s)",
                       unit="values computed")
-    rows = _bernstein_rows(n, t.reshape(-1))
+    rows = pyramids.bernstein_rows(n, t.reshape(-1))
     return finite_result(np.ascontiguousarray(rows.T).reshape(t.shape + (n + 1,)), "t", t)
 
 
 def _bernstein_cost(n: int, count: int) -> int:
-    """Values :func:`_bernstein_rows` computes: the (n+1) x count table, or the recurrence's
+    """Values :func:`goldman_lib.kernels.pyramids.bernstein_rows` computes: the (n+1) x count table, or the recurrence's
     (n+1)^2/2 per parameter above the power-form degree."""
-    per = n + 1 if n <= _POWER_FORM_MAX_DEGREE else (n + 1) ** 2 // 2
+    per = n + 1 if n <= pyramids.POWER_FORM_MAX_DEGREE else (n + 1) ** 2 // 2
     return per * max(count, 1)
 
 
@@ -319,8 +236,8 @@ def bernstein_evaluate(ctrl, t) -> np.ndarray:
     tf = t.reshape(-1)
     if n == 0:
         out = np.broadcast_to(P[0][:, None], (d, tf.shape[0])).copy()
-    elif n > _POWER_FORM_MAX_DEGREE:
-        out = P.T @ _bernstein_rows(n, tf)
+    elif n > pyramids.POWER_FORM_MAX_DEGREE:
+        out = P.T @ pyramids.bernstein_rows(n, tf)
     else:
         s = 1.0 - tf
         out = np.multiply(P[0][:, None], s)          # (d, N)
@@ -331,7 +248,7 @@ def bernstein_evaluate(ctrl, t) -> np.ndarray:
             out *= s
             tpow *= tf
         out += np.multiply(P[n][:, None], tpow, out=buf)
-    return finite_result(out.T.reshape(t.shape + (d,)), *_blame(t))
+    return finite_result(out.T.reshape(t.shape + (d,)), *overflow_culprit(t))
 
 
 # --------------------------------------------------------------------------------------------
@@ -382,7 +299,7 @@ def derivative(ctrl, t, order=1) -> np.ndarray:
     if order > n:
         return np.zeros(t.shape + (P.shape[1],))
     D = np.diff(P, n=order, axis=0) * float(math.perm(n, order)) if order else P
-    return finite_result(_curve_points(D, t), *_blame(t))
+    return finite_result(pyramids.curve_points(D, t), *overflow_culprit(t))
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -407,10 +324,9 @@ def de_casteljau_with_derivative(ctrl, t) -> tuple[np.ndarray, np.ndarray]:
     t = as_parameter(t, "t")
     n = P.shape[0] - 1
     if n == 0:
-        return finite_result(_curve_points(P, t), "t", t), np.zeros(t.shape + (P.shape[1],))
-    first, second = _curve_points(P[:-1], t), _curve_points(P[1:], t)
-    tt = t[..., None]
-    point = (1.0 - tt) * first + tt * second
+        return finite_result(pyramids.curve_points(P, t), "t", t), np.zeros(t.shape + (P.shape[1],))
+    first, second = pyramids.curve_points(P[:-1], t), pyramids.curve_points(P[1:], t)
+    point, = pyramids.casteljau_level([first, second], t[..., None])
     return finite_result(point, "t", t), finite_result(n * (second - first), "t", t)
 
 
@@ -437,14 +353,7 @@ def elevate_degree(ctrl, times=1) -> np.ndarray:
     n1, d = P.shape
     times = within_budget(times, "times", cost=lambda v: d * (v * n1 + v * (v + 1) // 2),
                           what=f"elevating a degree-{n1 - 1} curve", unit="coordinates computed")
-    for _ in range(times):
-        n1 = P.shape[0]  # n + 1
-        a = (np.arange(1, n1) / n1)[:, None]
-        Q = np.empty((n1 + 1, P.shape[1]))
-        Q[0], Q[-1] = P[0], P[-1]
-        Q[1:-1] = a * P[:-1] + (1.0 - a) * P[1:]
-        P = Q
-    return P.copy() if times == 0 else P
+    return P.copy() if times == 0 else polygons.elevate(P, times)
 
 
 # --------------------------------------------------------------------------------------------
@@ -566,21 +475,8 @@ def join_continuity(a, b, tol=1e-9, ratio=1.0) -> dict[str, bool]:
 # --------------------------------------------------------------------------------------------
 
 def _signed_distances(points, line_point, line_normal, d):
-    for name, value in (("line_point", line_point), ("line_normal", line_normal)):
-        shape = as_float_array(value, name).shape
-        if len(shape) == 1 and shape != (d,):
-            raise ValueError(f"{name} must hold {d}-dimensional points (last axis of length {d}), as ctrl does; "
-                             f"got shape {shape}")
-    p = as_points(line_point, "line_point", ndim=1, dim=d)
-    nrm = as_points(line_normal, "line_normal", ndim=1, dim=d)
-    if not np.any(nrm):
-        raise ValueError("line_normal must be a nonzero vector; got all zeros")
-    return (points - p) @ (nrm / np.linalg.norm(nrm))
-
-
-def _sign_changes(s: np.ndarray, tol: float) -> int:
-    signs = np.sign(s[np.abs(s) > tol])
-    return int(np.count_nonzero(signs[1:] != signs[:-1]))
+    p, nrm = as_hyperplane(line_point, line_normal, d)
+    return polygons.signed_distances(points, p, nrm)
 
 
 def variation_count(ctrl, line_point, line_normal, tol=1e-12) -> int:
@@ -601,7 +497,7 @@ def variation_count(ctrl, line_point, line_normal, tol=1e-12) -> int:
     """
     P = _ctrl(ctrl)
     tol = as_float(tol, "tol")
-    return _sign_changes(_signed_distances(P, line_point, line_normal, P.shape[1]), tol)
+    return polygons.sign_changes(_signed_distances(P, line_point, line_normal, P.shape[1]), tol)
 
 
 def curve_crossings(ctrl, line_point, line_normal, samples=1001, tol=1e-12) -> int:
@@ -623,8 +519,8 @@ def curve_crossings(ctrl, line_point, line_normal, samples=1001, tol=1e-12) -> i
     samples = within_budget(samples, "samples", cost=lambda v: v * P.shape[1], what="the sampled curve",
                             unit="coordinates", minimum=2)
     tol = as_float(tol, "tol")
-    pts = _curve_points(P, np.linspace(0.0, 1.0, samples))
-    return _sign_changes(_signed_distances(pts, line_point, line_normal, P.shape[1]), tol)
+    pts = pyramids.curve_points(P, np.linspace(0.0, 1.0, samples))
+    return polygons.sign_changes(_signed_distances(pts, line_point, line_normal, P.shape[1]), tol)
 
 
 def _cross2(o, a, b):
@@ -767,16 +663,6 @@ def _patch_finite(result: np.ndarray, u, v) -> np.ndarray:
     return finite_result(result, name, x.flat[int(np.argmax(np.abs(x)))] if x.size else None)
 
 
-def _patch_points(P: np.ndarray, uf: np.ndarray, vf: np.ndarray) -> np.ndarray:
-    """de Casteljau in v on every row, then in u on the resulting points: returns (d, N)."""
-    m1, n1, d = P.shape
-    # rows: (n+1, d*(m+1)... ) -> evaluate each row at v: stack rows along the coordinate axis
-    rows = P.transpose(1, 0, 2).reshape(n1, m1 * d)[:, :, None]   # (n+1, (m+1)*d, 1)
-    along_v = _levels(rows, vf)                                      # ((m+1)*d, N)
-    cols = along_v.reshape(m1, d, -1)                               # (m+1, d, N)
-    return _levels(cols, uf)                                         # (d, N)
-
-
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
 def patch_de_casteljau(ctrl, u, v) -> np.ndarray:
     """Evaluate a tensor-product Bezier patch by de Casteljau in v then in u (Goldman §24.6).
@@ -795,7 +681,7 @@ def patch_de_casteljau(ctrl, u, v) -> np.ndarray:
     """
     P = _net(ctrl)
     uf, vf, shape = _uv(u, v)
-    return _patch_finite(_patch_points(P, uf, vf).T.reshape(shape + (P.shape[2],)), uf, vf)
+    return _patch_finite(pyramids.patch_points(P, uf, vf).T.reshape(shape + (P.shape[2],)), uf, vf)
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -819,8 +705,8 @@ def patch_evaluate_grid(ctrl, u, v) -> np.ndarray:
     for name, arr in (("u", u), ("v", v)):
         if arr.ndim != 1:
             raise ValueError(f"{name} must be a 1-D array of parameters; got shape {arr.shape}")
-    Bu = _bernstein_rows(P.shape[0] - 1, u)           # (m+1, a)
-    Bv = _bernstein_rows(P.shape[1] - 1, v)           # (n+1, b)
+    Bu = pyramids.bernstein_rows(P.shape[0] - 1, u)           # (m+1, a)
+    Bv = pyramids.bernstein_rows(P.shape[1] - 1, v)           # (n+1, b)
     # one (a, m+1) @ (m+1, n+1) @ (n+1, b) product per coordinate, batched over d by matmul
     out = Bu.T @ P.transpose(2, 0, 1) @ Bv          # (d, a, b)
     return _patch_finite(np.ascontiguousarray(np.moveaxis(out, 0, -1)), u, v)
@@ -868,7 +754,7 @@ def patch_derivatives(ctrl, u, v) -> tuple[np.ndarray, np.ndarray]:
             out.append(np.zeros(shape + (d,)))
             continue
         D = deg * np.diff(P, axis=axis)
-        out.append(_patch_points(D, uf, vf).T.reshape(shape + (d,)))
+        out.append(pyramids.patch_points(D, uf, vf).T.reshape(shape + (d,)))
     return _patch_finite(out[0], uf, vf), _patch_finite(out[1], uf, vf)
 
 
@@ -999,25 +885,14 @@ class BezierPatch:
 # Chapter 25 lives in its own modules; its public names stay importable from here.
 # --------------------------------------------------------------------------------------------
 
-_CHAPTER_25 = {
-    **dict.fromkeys(["subdivide", "subdivide_uniform", "flatness", "is_flat", "polygon_distance", "render_by_subdivision",
-                     "subdivide_patch", "subdivide_patch_uniform", "net_distance", "patch_flatness",
-                     "render_patch_by_subdivision",
-                     "subdivision_variation_counts", "smooth_continuation", "join_order"], "bezier_subdivision"),
-    **dict.fromkeys(["intersect_curves", "intersection_boxes", "intersect_ray_patch", "intersect_patches"],
-                    "bezier_intersection"),
-}
-__all__ += list(_CHAPTER_25)
+from goldman_lib.bezier_intersection import (intersect_curves, intersect_patches, intersect_ray_patch,  # noqa: E402
+                                             intersection_boxes)
+from goldman_lib.bezier_subdivision import (flatness, is_flat, join_order, net_distance, patch_flatness,  # noqa: E402
+                                            polygon_distance, render_by_subdivision, render_patch_by_subdivision,
+                                            smooth_continuation, subdivide, subdivide_patch, subdivide_patch_uniform,
+                                            subdivide_uniform, subdivision_variation_counts)
 
-
-def __getattr__(name):
-    """``bezier.subdivide`` and the other chapter-25 names, loaded from their modules on first use
-    (lazily, so that importing ``bezier_subdivision`` or ``bezier_intersection`` first works too)."""
-    home = _CHAPTER_25.get(name)
-    if home is None:
-        raise AttributeError(f"module 'goldman_lib.bezier' has no attribute {name!r}")
-    import importlib
-
-    value = getattr(importlib.import_module(f"goldman_lib.{home}"), name)
-    globals()[name] = value
-    return value
+__all__ += ["subdivide", "subdivide_uniform", "flatness", "is_flat", "polygon_distance", "render_by_subdivision",
+            "subdivide_patch", "subdivide_patch_uniform", "net_distance", "patch_flatness",
+            "render_patch_by_subdivision", "subdivision_variation_counts", "smooth_continuation", "join_order",
+            "intersect_curves", "intersection_boxes", "intersect_ray_patch", "intersect_patches"]

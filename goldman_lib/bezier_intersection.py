@@ -17,12 +17,19 @@ import math
 
 import numpy as np
 
-from goldman_lib._kernels import flatness as _flatness, split as _split
-from goldman_lib.bezier import MAX_COORDINATE, _curve_points, _moderate, _patch_points
-from goldman_lib.bezier_subdivision import _patch_flatness, _quarter, _tolerance
-from goldman_lib.validation import as_int, as_points
+from goldman_lib.kernels import polygons, pyramids
+from goldman_lib.kernels.pyramids import point_and_tangent as _point_and_tangent
+from goldman_lib.kernels.pyramids import split_xy as _split_xy
+from goldman_lib.validation import MAX_SQUARABLE as MAX_COORDINATE
+from goldman_lib.validation import as_float, as_int, as_points
+from goldman_lib.validation import moderate as _moderate
 
 __all__ = ["intersect_curves", "intersection_boxes", "intersect_ray_patch", "intersect_patches"]
+
+
+def _tolerance(tol, name="tol") -> float:
+    return as_float(tol, name, positive=True)
+
 
 # -- §25.3.1 curve-curve intersection ----------------------------------------------------------
 
@@ -49,7 +56,7 @@ def _pair_levels(A: np.ndarray, B: np.ndarray, pad: float, flat_tol: float, max_
     for level in range(max_depth + 1):
         keep = _overlap(_boxes(pa), _boxes(pb), pad)
         pa, pb, ia, ib = pa[keep], pb[keep], ia[keep], ib[keep]
-        flat = (_flatness(pa) <= flat_tol) & (_flatness(pb) <= flat_tol)
+        flat = (polygons.flatness(pa) <= flat_tol) & (polygons.flatness(pb) <= flat_tol)
         if level == max_depth or 4 * np.count_nonzero(~flat) > max_pairs:
             flat[:] = True
         yield level, pa, pb, ia, ib, flat
@@ -57,8 +64,8 @@ def _pair_levels(A: np.ndarray, B: np.ndarray, pad: float, flat_tol: float, max_
         if len(pa) == 0:
             return
         # both pieces of every pair are halved: four child pairs
-        al, ar = _split(pa, 0.5, axis=1)
-        bl, br = _split(pb, 0.5, axis=1)
+        al, ar = pyramids.split(pa, 0.5, axis=1)
+        bl, br = pyramids.split(pb, 0.5, axis=1)
         am = ia.mean(axis=1)
         bm = ib.mean(axis=1)
         ial = np.stack([ia[:, 0], am], 1)
@@ -142,7 +149,7 @@ def _newton_pairs(A: np.ndarray, B: np.ndarray, st: np.ndarray, iterations: int 
         if idx.size == 0:
             break
         s, t = st[idx, 0], st[idx, 1]
-        F = _curve_points(A, s) - _curve_points(B, t)
+        F = pyramids.curve_points(A, s) - pyramids.curve_points(B, t)
         if it == 12:
             hopeless = np.linalg.norm(F, axis=1) > 1e-3 * scale
             active[idx[hopeless]] = False
@@ -151,12 +158,12 @@ def _newton_pairs(A: np.ndarray, B: np.ndarray, st: np.ndarray, iterations: int 
         exact = np.linalg.norm(F, axis=1) <= 4e-16 * scale      # nothing left to improve
         active[idx[exact]] = False
         idx, s, t, F = idx[~exact], s[~exact], t[~exact], F[~exact]
-        J = np.stack([_curve_points(HA, s), -_curve_points(HB, t)], axis=-1)   # (N, 2, 2)
+        J = np.stack([pyramids.curve_points(HA, s), -pyramids.curve_points(HB, t)], axis=-1)   # (N, 2, 2)
         new = np.clip(st[idx] + _solve2(J, F), 0.0, 1.0)
         moved = np.abs(new - st[idx]).max(axis=1)
         st[idx] = new
         active[idx[moved <= 1e-15]] = False
-    res = np.linalg.norm(_curve_points(A, st[:, 0]) - _curve_points(B, st[:, 1]), axis=1)
+    res = np.linalg.norm(pyramids.curve_points(A, st[:, 0]) - pyramids.curve_points(B, st[:, 1]), axis=1)
     return st, res
 
 
@@ -235,7 +242,7 @@ class _Piece:
         return self._turn
 
     def flat(self) -> float:
-        """:func:`goldman_lib._kernels.flatness` (even) of this piece."""
+        """:func:`goldman_lib.kernels.polygons.flatness` (even) of this piece."""
         if self._flat is None:
             xs, ys = self.xs, self.ys
             n = len(xs) - 1
@@ -255,89 +262,9 @@ class _Piece:
         if self._halves is None:
             mid = 0.5 * (self.lo + self.hi)
             xs, ys = self.xs, self.ys
-            n = len(xs)
-            if n == 4:                   # cubics and quadratics inline: most of the work
-                a, b, c, d = xs
-                ab, bc, cd = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c, 0.5 * c + 0.5 * d
-                abc, bcd = 0.5 * ab + 0.5 * bc, 0.5 * bc + 0.5 * cd
-                m = 0.5 * abc + 0.5 * bcd
-                lx, rx = (a, ab, abc, m), (m, bcd, cd, d)
-                a, b, c, d = ys
-                ab, bc, cd = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c, 0.5 * c + 0.5 * d
-                abc, bcd = 0.5 * ab + 0.5 * bc, 0.5 * bc + 0.5 * cd
-                m = 0.5 * abc + 0.5 * bcd
-                ly, ry = (a, ab, abc, m), (m, bcd, cd, d)
-            elif n == 3:
-                a, b, c = xs
-                ab, bc = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c
-                m = 0.5 * ab + 0.5 * bc
-                lx, rx = (a, ab, m), (m, bc, c)
-                a, b, c = ys
-                ab, bc = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c
-                m = 0.5 * ab + 0.5 * bc
-                ly, ry = (a, ab, m), (m, bc, c)
-            else:
-                lx, rx = _halve(xs)
-                ly, ry = _halve(ys)
+            lx, rx, ly, ry = _split_xy(xs, ys, 0.5)
             self._halves = (_Piece(lx, ly, self.lo, mid), _Piece(rx, ry, mid, self.hi))
         return self._halves
-
-
-def _halve(xs):
-    """de Casteljau at 1/2 of one coordinate: (left, right) control values (unrolled for 2-4 points)."""
-    n = len(xs)
-    if n == 4:
-        a, b, c, d = xs
-        ab, bc, cd = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c, 0.5 * c + 0.5 * d
-        abc, bcd = 0.5 * ab + 0.5 * bc, 0.5 * bc + 0.5 * cd
-        m = 0.5 * abc + 0.5 * bcd
-        return (a, ab, abc, m), (m, bcd, cd, d)
-    if n == 3:
-        a, b, c = xs
-        ab, bc = 0.5 * a + 0.5 * b, 0.5 * b + 0.5 * c
-        m = 0.5 * ab + 0.5 * bc
-        return (a, ab, m), (m, bc, c)
-    if n == 2:
-        a, b = xs
-        m = 0.5 * a + 0.5 * b
-        return (a, m), (m, b)
-    cur = xs
-    left = [xs[0]]
-    right = [xs[-1]]
-    while len(cur) > 1:
-        cur = [0.5 * cur[j] + 0.5 * cur[j + 1] for j in range(len(cur) - 1)]
-        left.append(cur[0])
-        right.append(cur[-1])
-    right.reverse()
-    return tuple(left), tuple(right)
-
-
-def _point_and_tangent(xs, ys, t):
-    """Curve point and derivative at t from one de Casteljau pyramid (the last leg is the tangent)."""
-    n = len(xs) - 1
-    s = 1.0 - t
-    if n == 3:                           # the usual cubic and quadratic unrolled (the same arithmetic)
-        x0, x1, x2, x3 = xs
-        y0, y1, y2, y3 = ys
-        x0, x1, x2 = s * x0 + t * x1, s * x1 + t * x2, s * x2 + t * x3
-        y0, y1, y2 = s * y0 + t * y1, s * y1 + t * y2, s * y2 + t * y3
-        x0, x1 = s * x0 + t * x1, s * x1 + t * x2
-        y0, y1 = s * y0 + t * y1, s * y1 + t * y2
-        return s * x0 + t * x1, s * y0 + t * y1, 3 * (x1 - x0), 3 * (y1 - y0)
-    if n == 2:
-        x0, x1, x2 = xs
-        y0, y1, y2 = ys
-        x0, x1 = s * x0 + t * x1, s * x1 + t * x2
-        y0, y1 = s * y0 + t * y1, s * y1 + t * y2
-        return s * x0 + t * x1, s * y0 + t * y1, 2 * (x1 - x0), 2 * (y1 - y0)
-    if n == 0:
-        return xs[0], ys[0], 0.0, 0.0
-    x, y = list(xs), list(ys)
-    for m in range(n, 1, -1):
-        for j in range(m):
-            x[j] = s * x[j] + t * x[j + 1]
-            y[j] = s * y[j] + t * y[j + 1]
-    return s * x[0] + t * x[1], s * y[0] + t * y[1], n * (x[1] - x[0]), n * (y[1] - y[0])
 
 
 def _chord_guess(p: _Piece, q: _Piece):
@@ -720,7 +647,7 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
     good = res <= tol_abs
 
     def meet(p):
-        return float(np.linalg.norm(_curve_points(A, np.array(p[0])) - _curve_points(B, np.array(p[1]))))
+        return float(np.linalg.norm(pyramids.curve_points(A, np.array(p[0])) - pyramids.curve_points(B, np.array(p[1]))))
 
     return _merge_solutions(st[good], res[good], meet, tol_abs)
 
@@ -816,14 +743,14 @@ def intersect_ray_patch(ctrl, origin, direction, tol=1e-10, max_depth=16) -> np.
         nets, dom = nets[keep], dom[keep]
         if len(nets) == 0:
             break
-        flat = _patch_flatness(nets) <= flat_tol
+        flat = polygons.patch_flatness(nets) <= flat_tol
         if depth == max_depth or 4 * np.count_nonzero(~flat) > 20000:
             flat[:] = True
         guesses.append(np.stack([(dom[flat, 0] + dom[flat, 1]) / 2, (dom[flat, 2] + dom[flat, 3]) / 2], 1))
         nets, dom = nets[~flat], dom[~flat]
         if len(nets) == 0:
             break
-        nets, dom = _quarter(nets, dom)
+        nets, dom = pyramids.quarter(nets, dom)
     if not guesses:
         return np.zeros((0, 3))
     uv = np.concatenate(guesses)
@@ -834,7 +761,7 @@ def intersect_ray_patch(ctrl, origin, direction, tol=1e-10, max_depth=16) -> np.
     good = (res <= tol_abs) & (uvs[:, 2] >= -tol)
 
     def meet(p):
-        return float(np.linalg.norm(_patch_points(P, np.array([p[0]]), np.array([p[1]]))[:, 0] - o - p[2] * d))
+        return float(np.linalg.norm(pyramids.patch_points(P, np.array([p[0]]), np.array([p[1]]))[:, 0] - o - p[2] * d))
 
     out = _merge_solutions(uvs[good], res[good], meet, tol_abs)
     return out[np.argsort(out[:, 2], kind="stable")] if len(out) else out
@@ -846,13 +773,13 @@ def _newton_ray(P, o, d, uv, iterations=60):
     Du = m * np.diff(P, axis=0) if m else np.zeros_like(P)
     Dv = n * np.diff(P, axis=1) if n else np.zeros_like(P)
     u, v = uv[:, 0].copy(), uv[:, 1].copy()
-    S = _patch_points(P, u, v).T
+    S = pyramids.patch_points(P, u, v).T
     s = (S - o) @ d / (d @ d)
     x = np.stack([u, v, s], 1)
     for _ in range(iterations):
-        S = _patch_points(P, x[:, 0], x[:, 1]).T
+        S = pyramids.patch_points(P, x[:, 0], x[:, 1]).T
         F = S - o - x[:, 2:3] * d
-        J = np.stack([_patch_points(Du, x[:, 0], x[:, 1]).T, _patch_points(Dv, x[:, 0], x[:, 1]).T,
+        J = np.stack([pyramids.patch_points(Du, x[:, 0], x[:, 1]).T, pyramids.patch_points(Dv, x[:, 0], x[:, 1]).T,
                       np.broadcast_to(-d, F.shape)], axis=-1)
         step = -(np.linalg.pinv(J, rcond=1e-13) @ F[:, :, None])[:, :, 0]
         new = x + step
@@ -861,7 +788,7 @@ def _newton_ray(P, o, d, uv, iterations=60):
         x = new
         if moved <= 1e-15:
             break
-    S = _patch_points(P, x[:, 0], x[:, 1]).T
+    S = pyramids.patch_points(P, x[:, 0], x[:, 1]).T
     res = np.linalg.norm(S - o - x[:, 2:3] * d, axis=1)
     return x, res
 
@@ -947,8 +874,8 @@ def _patch_pair_segments(A: np.ndarray, B: np.ndarray, tol: float, max_depth: in
         na, da, nb, db = na[keep], da[keep], nb[keep], db[keep]
         if len(na) == 0:
             break
-        fa = _patch_flatness(na) <= tol
-        fb = _patch_flatness(nb) <= tol
+        fa = polygons.patch_flatness(na) <= tol
+        fb = polygons.patch_flatness(nb) <= tol
         done = fa & fb
         growth = np.where(fa | fb, 4, 16)[~done].sum()
         if depth == max_depth or growth > max_pairs:
@@ -967,10 +894,10 @@ def _patch_pair_segments(A: np.ndarray, B: np.ndarray, tol: float, max_depth: in
             ga, gda, gb, gdb = na[g], da[g], nb[g], db[g]
             ka = kb = 1
             if split_a:
-                ga, gda = _quarter(ga, gda)
+                ga, gda = pyramids.quarter(ga, gda)
                 ka = 4
             if split_b:
-                gb, gdb = _quarter(gb, gdb)
+                gb, gdb = pyramids.quarter(gb, gdb)
                 kb = 4
             k = len(na[g])
             # every child of the piece of a meets every child of the piece of b
@@ -1012,16 +939,16 @@ def _newton_patches(A: np.ndarray, B: np.ndarray, x: np.ndarray, iterations: int
     Bs, Bt = derivs(B)
     x = x.copy()
     for _ in range(iterations):
-        F = _patch_points(A, x[:, 0], x[:, 1]).T - _patch_points(B, x[:, 2], x[:, 3]).T
-        J = np.stack([_patch_points(Au, x[:, 0], x[:, 1]).T, _patch_points(Av, x[:, 0], x[:, 1]).T,
-                      -_patch_points(Bs, x[:, 2], x[:, 3]).T, -_patch_points(Bt, x[:, 2], x[:, 3]).T], axis=-1)
+        F = pyramids.patch_points(A, x[:, 0], x[:, 1]).T - pyramids.patch_points(B, x[:, 2], x[:, 3]).T
+        J = np.stack([pyramids.patch_points(Au, x[:, 0], x[:, 1]).T, pyramids.patch_points(Av, x[:, 0], x[:, 1]).T,
+                      -pyramids.patch_points(Bs, x[:, 2], x[:, 3]).T, -pyramids.patch_points(Bt, x[:, 2], x[:, 3]).T], axis=-1)
         step = -(np.linalg.pinv(J, rcond=1e-12) @ F[:, :, None])[:, :, 0]
         new = np.clip(x + step, 0.0, 1.0)
         moved = float(np.abs(new - x).max()) if len(x) else 0.0
         x = new
         if moved <= 1e-15:
             break
-    res = np.linalg.norm(_patch_points(A, x[:, 0], x[:, 1]).T - _patch_points(B, x[:, 2], x[:, 3]).T, axis=1)
+    res = np.linalg.norm(pyramids.patch_points(A, x[:, 0], x[:, 1]).T - pyramids.patch_points(B, x[:, 2], x[:, 3]).T, axis=1)
     return x, res
 
 
@@ -1079,11 +1006,11 @@ def intersect_patches(a, b, tol=1e-2, max_depth=10, polish=True, segments=False)
     if polish:
         x0 = x
         x, res = _newton_patches(A, B, x0)
-        res0 = np.linalg.norm(_patch_points(A, x0[:, 0], x0[:, 1]).T - _patch_points(B, x0[:, 2], x0[:, 3]).T, axis=1)
+        res0 = np.linalg.norm(pyramids.patch_points(A, x0[:, 0], x0[:, 1]).T - pyramids.patch_points(B, x0[:, 2], x0[:, 3]).T, axis=1)
         better = res <= res0
         x = np.where(better[:, None], x, x0)
-        pa = _patch_points(A, x[:, 0], x[:, 1]).T
-        pb = _patch_points(B, x[:, 2], x[:, 3]).T
+        pa = pyramids.patch_points(A, x[:, 0], x[:, 1]).T
+        pb = pyramids.patch_points(B, x[:, 2], x[:, 3]).T
         pts = np.where(better[:, None], (pa + pb) / 2, pts)
     # merge repeated samples (segment ends shared by neighbouring triangles and pieces)
     key = np.round(np.concatenate([pts / scale, x], axis=1), 9)

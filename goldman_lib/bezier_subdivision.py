@@ -16,15 +16,26 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib._kernels import flatness as _flatness, split as _split
-from goldman_lib.bezier import _blame, _ctrl, _moderate, _net, _sign_changes, _signed_distances, bernstein, elevate_degree
-from goldman_lib.validation import MAX_ITEMS, as_float, as_int, as_parameter, as_points, finite_result, within_budget
+from goldman_lib.kernels import polygons, pyramids
+from goldman_lib.validation import (MAX_ITEMS, as_float, as_hyperplane, as_int, as_parameter, as_points, finite_result,
+                                    moderate, overflow_culprit, within_budget)
 
 __all__ = [
     "subdivide", "subdivide_uniform", "flatness", "is_flat", "polygon_distance", "render_by_subdivision",
     "subdivide_patch", "subdivide_patch_uniform", "net_distance", "patch_flatness", "render_patch_by_subdivision",
     "subdivision_variation_counts", "smooth_continuation", "join_order",
 ]
+# Public inside the package (knot_insertion renders B-splines by subdivision too), not learner-facing
+# and so not in __all__: check_subdivision_budget, resolvable_tolerance.
+
+
+def _ctrl(ctrl, name: str = "ctrl") -> np.ndarray:
+    return as_points(ctrl, name, ndim=2)
+
+
+def _net(ctrl, name: str = "ctrl") -> np.ndarray:
+    return as_points(ctrl, name, ndim=3)
+
 
 def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     """Split a Bezier curve at ``t`` into two Bezier curves by the de Casteljau algorithm (Goldman §25.2).
@@ -48,8 +59,8 @@ def subdivide(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     t = as_parameter(t, "t")
     if t.ndim != 0:
         raise ValueError(f"t must be a scalar for subdivide; got shape {t.shape}")
-    left, right = _split(P, float(t))
-    return finite_result(left, *_blame(t)), finite_result(right, *_blame(t))
+    left, right = pyramids.split(P, float(t))
+    return finite_result(left, *overflow_culprit(t)), finite_result(right, *overflow_culprit(t))
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -81,9 +92,9 @@ def subdivide_uniform(ctrl, depth, t=0.5) -> np.ndarray:
                           unit="coordinates")
     pieces = P[None]
     for _ in range(depth):
-        left, right = _split(pieces, t, axis=1)
+        left, right = pyramids.split(pieces, t, axis=1)
         pieces = np.stack([left, right], axis=1).reshape((-1,) + P.shape)
-    return finite_result(pieces.copy() if depth == 0 else pieces, *_blame(np.asarray(t)))
+    return finite_result(pieces.copy() if depth == 0 else pieces, *overflow_culprit(np.asarray(t)))
 
 
 def flatness(ctrl, even=True):
@@ -109,10 +120,10 @@ def flatness(ctrl, even=True):
     >>> flatness([[[0, 0], [1, 2], [2, 0]], [[0, 0], [1, 0], [2, 0]]]).tolist()   # a stack of polygons
     [2.0, 0.0]
     """
-    P = _moderate(as_points(ctrl, "ctrl", ndim=None))
+    P = moderate(as_points(ctrl, "ctrl", ndim=None))
     if P.ndim < 2:
         raise ValueError(f"ctrl must have shape (n+1, d) or a stack (..., n+1, d); got shape {P.shape}")
-    out = _flatness(P, bool(even))
+    out = polygons.flatness(P, bool(even))
     return float(out) if P.ndim == 2 else out
 
 
@@ -131,13 +142,13 @@ def polygon_distance(ctrl) -> float:
     >>> polygon_distance(subdivide_uniform([[0, 0], [1, 2], [2, 0]], 1))
     0.25
     """
-    P = _moderate(as_points(ctrl, "ctrl", ndim=None))
+    P = moderate(as_points(ctrl, "ctrl", ndim=None))
     if P.ndim < 2:
         raise ValueError(f"ctrl must have shape (n+1, d) or a stack (..., n+1, d); got shape {P.shape}")
     n = P.shape[-2] - 1
     if n == 0 or P.size == 0:
         return 0.0
-    B = bernstein(n, np.arange(n + 1) / n)               # B[k, j] = B_j^n(k/n)
+    B = np.ascontiguousarray(pyramids.bernstein_rows(n, np.arange(n + 1) / n).T)   # B[k, j] = B_j^n(k/n)
     on_curve = np.einsum("kj,...jd->...kd", B, P)
     return float(finite_result(np.linalg.norm(P - on_curve, axis=-1), "ctrl").max())
 
@@ -157,9 +168,15 @@ def is_flat(ctrl, tol, even=True) -> bool:
     return flatness(ctrl, even) <= tol
 
 
-def _check_pieces(count: int, per_piece: int, tol: float, depth_name: str = "max_depth", what: str = "curve") -> None:
-    """The work budget of adaptive subdivision, whose depth the tolerance sets: raise before a level
-    that would hold more than MAX_ITEMS coordinates (a tol far below the curve's size in float64)."""
+def check_subdivision_budget(count: int, per_piece: int, tol: float, depth_name: str = "max_depth",
+                             what: str = "curve") -> None:
+    """The work budget of adaptive subdivision (Goldman §25.3), whose depth the tolerance sets: raise
+    a ValueError naming ``tol`` before a level of ``count`` pieces of ``per_piece`` coordinates that
+    would hold more than :data:`~goldman_lib.validation.MAX_ITEMS` coordinates (a tol far below the
+    curve's size in float64).  For library modules, on validated numbers (not in ``__all__``).
+
+    >>> check_subdivision_budget(10, 8, 1e-3)      # well within the budget: nothing happens
+    """
     if count * per_piece > MAX_ITEMS:
         raise ValueError(f"tol = {tol:g} is too small for this {what}: the next level of subdivision would hold "
                          f"{count:,} pieces ({count * per_piece:,} coordinates, over the limit of {MAX_ITEMS:,}); "
@@ -167,13 +184,18 @@ def _check_pieces(count: int, per_piece: int, tol: float, depth_name: str = "max
 
 
 def _tolerance(tol, name="tol") -> float:
-    tol = as_float(tol, name, positive=True)
-    return tol
+    return as_float(tol, name, positive=True)
 
 
-def _resolvable(tol: float, P: np.ndarray, name: str = "ctrl") -> float:
+def resolvable_tolerance(tol: float, P: np.ndarray, name: str = "ctrl") -> float:
     """``tol`` if float64 can resolve it at the scale of ``P``: at least 1e-15 times its largest
-    coordinate (below that, adaptive subdivision would split down to rounding noise)."""
+    coordinate (below that, adaptive subdivision would split down to rounding noise, Goldman §25.3);
+    else a ValueError naming ``tol`` and ``name``.  For library modules, on a validated tol and P (not in
+    ``__all__``).
+
+    >>> resolvable_tolerance(1e-3, np.array([[0.0, 0.0], [2.0, 1.0]]))
+    0.001
+    """
     scale = float(np.abs(P).max()) if P.size else 0.0
     if tol < 1e-15 * scale:
         raise ValueError(f"tol must be at least 1e-15 times the size of {name} (float64 resolves no less): "
@@ -199,15 +221,15 @@ def render_by_subdivision(ctrl, tol=1e-3, max_depth=24) -> tuple[np.ndarray, np.
     >>> t.tolist()
     [0.0, 0.25, 0.5, 0.75, 1.0]
     """
-    P = _moderate(_ctrl(ctrl))
-    tol = _resolvable(_tolerance(tol), P)
+    P = moderate(_ctrl(ctrl))
+    tol = resolvable_tolerance(_tolerance(tol), P)
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=40)
     pieces = P[None]
     starts = np.zeros(1)
     width = 1.0
     done_t, done_p = [np.zeros(1)], [P[:1]]
     for depth in range(max_depth + 1):
-        flat = _flatness(pieces) <= tol
+        flat = polygons.flatness(pieces) <= tol
         if depth == max_depth:
             flat[:] = True
         done_t.append(starts[flat] + width)
@@ -215,8 +237,8 @@ def render_by_subdivision(ctrl, tol=1e-3, max_depth=24) -> tuple[np.ndarray, np.
         pieces, starts = pieces[~flat], starts[~flat]
         if len(pieces) == 0:
             break
-        _check_pieces(2 * len(pieces), P.size, tol)
-        left, right = _split(pieces, 0.5, axis=1)
+        check_subdivision_budget(2 * len(pieces), P.size, tol)
+        left, right = pyramids.split(pieces, 0.5, axis=1)
         width /= 2
         pieces = np.concatenate([left, right])
         starts = np.concatenate([starts, starts + width])
@@ -250,7 +272,7 @@ def subdivide_patch(ctrl, u=0.5, v=0.5) -> np.ndarray:
     for name, x in (("u", u), ("v", v)):
         if x.ndim != 0:
             raise ValueError(f"{name} must be a scalar for subdivide_patch; got shape {x.shape}")
-    return _split_patches(P[None], float(u), float(v))[0]
+    return pyramids.split_patches(P[None], float(u), float(v))[0]
 
 
 def subdivide_patch_uniform(ctrl, depth) -> tuple[np.ndarray, np.ndarray]:
@@ -272,7 +294,7 @@ def subdivide_patch_uniform(ctrl, depth) -> tuple[np.ndarray, np.ndarray]:
                           unit="coordinates")
     nets, dom = P[None], np.array([[0.0, 1.0, 0.0, 1.0]])
     for _ in range(depth):
-        nets, dom = _quarter(nets, dom)
+        nets, dom = pyramids.quarter(nets, dom)
     return (nets.copy() if depth == 0 else nets), dom
 
 
@@ -289,37 +311,14 @@ def net_distance(ctrl) -> float:
     >>> net_distance([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]], [[2, 0, 0], [2, 1, 0]]])
     0.0
     """
-    P = _moderate(as_points(ctrl, "ctrl", ndim=None))
+    P = moderate(as_points(ctrl, "ctrl", ndim=None))
     if P.ndim < 3:
         raise ValueError(f"ctrl must have shape (m+1, n+1, d) or a stack (..., m+1, n+1, d); got shape {P.shape}")
     m, n = P.shape[-3] - 1, P.shape[-2] - 1
-    Bu = bernstein(m, np.arange(m + 1) / m) if m else np.ones((1, 1))
-    Bv = bernstein(n, np.arange(n + 1) / n) if n else np.ones((1, 1))
+    Bu = np.ascontiguousarray(pyramids.bernstein_rows(m, np.arange(m + 1) / m).T) if m else np.ones((1, 1))
+    Bv = np.ascontiguousarray(pyramids.bernstein_rows(n, np.arange(n + 1) / n).T) if n else np.ones((1, 1))
     on = np.einsum("ia,jb,...abd->...ijd", Bu, Bv, P)
     return float(finite_result(np.linalg.norm(P - on, axis=-1), "ctrl").max())
-
-
-def _split_patches(P: np.ndarray, u: float = 0.5, v: float = 0.5) -> np.ndarray:
-    """Four-way split of a stack of nets (N, m+1, n+1, d) -> (N, 2, 2, m+1, n+1, d)."""
-    lo, hi = _split(P, u, axis=1)
-    out = []
-    for half in (lo, hi):
-        a, b = _split(half, v, axis=2)
-        out.append(np.stack([a, b], axis=1))
-    return np.stack(out, axis=1)
-
-
-def _patch_flatness(P: np.ndarray) -> np.ndarray:
-    """Flatness of a stack of nets (N, m+1, n+1, d) (no validation): (N,)."""
-    m, n = P.shape[1] - 1, P.shape[2] - 1
-    u = (np.arange(m + 1) / max(m, 1))[:, None, None]
-    v = (np.arange(n + 1) / max(n, 1))[None, :, None]
-    c00, c01 = P[:, :1, :1], P[:, :1, -1:]
-    c10, c11 = P[:, -1:, :1], P[:, -1:, -1:]
-    bilinear = (1 - u) * (1 - v) * c00 + (1 - u) * v * c01 + u * (1 - v) * c10 + u * v * c11
-    off = np.linalg.norm(P - bilinear, axis=-1).max(axis=(1, 2))
-    twist = np.linalg.norm((c00 - c01 - c10 + c11)[:, 0, 0], axis=-1)
-    return off + twist / 4
 
 
 def patch_flatness(ctrl) -> float:
@@ -339,7 +338,7 @@ def patch_flatness(ctrl) -> float:
     >>> patch_flatness([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
     0.25
     """
-    return float(_patch_flatness(_moderate(_net(ctrl))[None])[0])
+    return float(polygons.patch_flatness(moderate(_net(ctrl))[None])[0])
 
 
 def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarray, np.ndarray]:
@@ -360,14 +359,14 @@ def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarra
     >>> len(domains)
     4
     """
-    P = _moderate(_net(ctrl))
-    tol = _resolvable(_tolerance(tol), P)
+    P = moderate(_net(ctrl))
+    tol = resolvable_tolerance(_tolerance(tol), P)
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=12)
     nets = P[None]
     dom = np.array([[0.0, 1.0, 0.0, 1.0]])
     out_c, out_d = [], []
     for depth in range(max_depth + 1):
-        flat = _patch_flatness(nets) <= tol
+        flat = polygons.patch_flatness(nets) <= tol
         if depth == max_depth:
             flat[:] = True
         f = nets[flat]
@@ -376,23 +375,9 @@ def render_patch_by_subdivision(ctrl, tol=1e-2, max_depth=10) -> tuple[np.ndarra
         nets, dom = nets[~flat], dom[~flat]
         if len(nets) == 0:
             break
-        _check_pieces(4 * len(nets), P.size, tol, what="patch")
-        nets, dom = _quarter(nets, dom)
+        check_subdivision_budget(4 * len(nets), P.size, tol, what="patch")
+        nets, dom = pyramids.quarter(nets, dom)
     return np.concatenate(out_c), np.concatenate(out_d)
-
-
-def _quarter(nets: np.ndarray, dom: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Split nets (N, ...) and their domains (N, 4) into four: (4N, ...) and (4N, 4)."""
-    split = _split_patches(nets)
-    nets = split.reshape((-1,) + nets.shape[1:])
-    um = (dom[:, 0] + dom[:, 1]) / 2
-    vm = (dom[:, 2] + dom[:, 3]) / 2
-    kids = []
-    for i in (0, 1):
-        for j in (0, 1):
-            kids.append(np.stack([np.where(i, um, dom[:, 0]), np.where(i, dom[:, 1], um),
-                                  np.where(j, vm, dom[:, 2]), np.where(j, dom[:, 3], vm)], axis=1))
-    return nets, np.stack(kids, axis=1).reshape(-1, 4)
 
 
 # -- §25.4 variation diminishing by subdivision ----------------------------------------------
@@ -415,14 +400,15 @@ def subdivision_variation_counts(ctrl, line_point, line_normal, max_depth=8, tol
     >>> subdivision_variation_counts([[0, 1], [1, -2], [2, 0], [3, 1]], [0, -0.7], [0, 1], 4)
     [2, 2, 0, 0, 0]
     """
-    P = _moderate(_ctrl(ctrl))
+    P = moderate(_ctrl(ctrl))
     max_depth = as_int(max_depth, "max_depth", minimum=0, maximum=16)
     tol = as_float(tol, "tol")
+    line = as_hyperplane(line_point, line_normal, P.shape[1])
     counts = []
     for depth in range(max_depth + 1):
         pieces = subdivide_uniform(P, depth)
         joined = np.concatenate([pieces[:, :-1].reshape(-1, P.shape[1]), pieces[-1, -1:]])
-        counts.append(_sign_changes(_signed_distances(joined, line_point, line_normal, P.shape[1]), tol))
+        counts.append(polygons.sign_changes(polygons.signed_distances(joined, *line), tol))
     return counts
 
 
@@ -449,7 +435,7 @@ def smooth_continuation(ctrl, ratio=1.0) -> np.ndarray:
     """
     P = _ctrl(ctrl)
     ratio = as_float(ratio, "ratio", positive=True)
-    return finite_result(_split(P[::-1], -ratio)[0], "ratio", ratio)
+    return finite_result(pyramids.split(P[::-1], -ratio)[0], "ratio", ratio)
 
 
 def join_order(a, b, ratio=1.0, tol=1e-9) -> int:
@@ -482,14 +468,14 @@ def join_order(a, b, ratio=1.0, tol=1e-9) -> int:
     ratio = as_float(ratio, "ratio", positive=True)
     tol = as_float(tol, "tol", positive=True)
     n = max(A.shape[0], B.shape[0]) - 1
-    A = elevate_degree(A, n - (A.shape[0] - 1))
-    B = elevate_degree(B, n - (B.shape[0] - 1))
+    A = polygons.elevate(A, n - (A.shape[0] - 1))
+    B = polygons.elevate(B, n - (B.shape[0] - 1))
     # Extrapolate over the shorter interval (ratio <= 1): extrapolation multiplies rounding errors
     # by up to (1 + 2 ratio)^n.  Continuing b backwards over a's interval gives a reversed.
     if ratio <= 1.0:
-        Q, target = _split(A[::-1], -ratio)[0], B
+        Q, target = pyramids.split(A[::-1], -ratio)[0], B
     else:
-        Q, target = _split(B, -1.0 / ratio)[0], A[::-1]
+        Q, target = pyramids.split(B, -1.0 / ratio)[0], A[::-1]
     scale = max(1.0, float(np.abs(A).max()), float(np.abs(B).max()), float(np.abs(Q).max()))
     order = -1
     for k in range(n + 1):

@@ -31,6 +31,7 @@ import math
 
 import numpy as np
 
+from goldman_lib.kernels import pyramids
 from goldman_lib.validation import as_float, as_int, as_parameter, as_points, finite_result
 
 __all__ = ["blossom", "blossom_steps", "control_points_on_interval", "subdivide_by_blossom",
@@ -50,15 +51,6 @@ def _args(args, n: int, name: str = "args") -> np.ndarray:
         raise ValueError(f"{name} must have shape (..., n) with n = {n} (the degree of ctrl) arguments in the last axis; "
                          f"got shape {u.shape}")
     return u
-
-
-def _blossom_levels(P: np.ndarray, U: np.ndarray) -> np.ndarray:
-    """de Casteljau with argument U[..., r] at level r: P (n+1, d), U (N, n) -> (N, d)."""
-    cur = np.broadcast_to(P, (U.shape[0],) + P.shape)
-    for r in range(U.shape[1]):
-        u = U[:, r, None, None]
-        cur = (1.0 - u) * cur[:, :-1] + u * cur[:, 1:]
-    return cur[:, 0]
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -82,7 +74,7 @@ def blossom(ctrl, args) -> np.ndarray:
     n = P.shape[0] - 1
     U = _args(args, n)
     lead = U.shape[:-1]
-    out = _blossom_levels(P, U.reshape(math.prod(lead), n)).reshape(lead + (P.shape[1],))
+    out = pyramids.casteljau_blossom(P, U.reshape(math.prod(lead), n)).reshape(lead + (P.shape[1],))
     return finite_result(out, "args", None)
 
 
@@ -105,12 +97,8 @@ def blossom_steps(ctrl, args) -> list[np.ndarray]:
     U = _args(args, n)
     if U.ndim != 1:
         raise ValueError(f"args must have shape ({n},) for blossom_steps; got shape {U.shape}")
-    levels = [P.copy()]
-    cur = P
-    for u in U:
-        cur = (1.0 - u) * cur[:-1] + u * cur[1:]
-        levels.append(finite_result(cur, "args", None))
-    return levels
+    levels = pyramids.casteljau_levels(P, U)
+    return [levels[0]] + [finite_result(cur, "args", None) for cur in levels[1:]]
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -135,7 +123,7 @@ def control_points_on_interval(ctrl, a, b) -> np.ndarray:
     k = np.arange(n + 1)
     U = np.where(np.arange(n)[None, :] < (n - k)[:, None], a, b)   # row k: a^(n-k) b^k
     far = "a" if abs(a) >= abs(b) else "b"
-    return finite_result(_blossom_levels(P, U.reshape(n + 1, n)), far, a if far == "a" else b)
+    return finite_result(pyramids.casteljau_blossom(P, U.reshape(n + 1, n)), far, a if far == "a" else b)
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -159,7 +147,7 @@ def subdivide_by_blossom(ctrl, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     halves = []
     for a, b in ((0.0, t), (t, 1.0)):
         U = np.where(np.arange(n)[None, :] < (n - k)[:, None], a, b)
-        halves.append(finite_result(_blossom_levels(P, U.reshape(n + 1, n)), "t", t))
+        halves.append(finite_result(pyramids.casteljau_blossom(P, U.reshape(n + 1, n)), "t", t))
     return halves[0], halves[1]
 
 
@@ -195,8 +183,7 @@ def homogeneous_blossom(ctrl, args) -> np.ndarray:
     cur = np.broadcast_to(M, (A.shape[0],) + M.shape)
     for r in range(n):
         t = A[:, r, 0, None, None]
-        w = A[:, r, 1, None, None]
-        cur = (w - t) * cur[:, :-1] + t * cur[:, 1:]
+        cur = pyramids.casteljau_level(cur, t, s=A[:, r, 1, None, None] - t, axis=1)   # (w - t) P_j + t P_{j+1}
     return finite_result(cur[:, 0].reshape(lead + (P.shape[1] + 1,)), "args", None)
 
 

@@ -36,7 +36,7 @@ import math
 
 import numpy as np
 
-from goldman_lib import _kernels
+from goldman_lib.kernels import number, pyramids
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points, check_finite,
                                      finite_result, within_budget)
 
@@ -58,7 +58,7 @@ __all__ = [
 # knot vectors
 # --------------------------------------------------------------------------------------------
 
-_fmt = _kernels.number
+_fmt = number
 
 
 def check_knots(knots, degree, n_ctrl=None, name: str = "knots", *, degree_name: str = "degree",
@@ -180,7 +180,7 @@ def domain(knots, degree) -> tuple[float, float]:
     (0.0, 1.0)
     """
     t = check_knots(knots, degree)
-    return _kernels.domain(t, int(degree))
+    return pyramids.domain(t, int(degree))
 
 
 def multiplicity(knots, value, tol: float = 0.0) -> int:
@@ -199,7 +199,7 @@ def multiplicity(knots, value, tol: float = 0.0) -> int:
 
 def _check_u(u, t: np.ndarray, p: int, name: str = "u") -> np.ndarray:
     arr = as_parameter(u, name)
-    lo, hi = _kernels.domain(t, p)
+    lo, hi = pyramids.domain(t, p)
     bad = (arr < lo) | (arr > hi)
     if bad.any():
         flat = int(np.flatnonzero(bad)[0])
@@ -297,14 +297,14 @@ def blossom(ctrl, knots, degree, args, span=None) -> np.ndarray:
     if span is None:
         if p == 0:
             raise ValueError("span must be given for degree 0 (there are no arguments to locate it)")
-        lo, hi = _kernels.domain(t, p)
+        lo, hi = pyramids.domain(t, p)
         k = int(_spans(t, p, np.clip(a[0], lo, hi)))
     else:
         k = as_int(span, "span", minimum=p, maximum=n)
         if not t[k] < t[k + 1]:
             raise ValueError(f"span must index a non-empty knot span; knots[{k}] = knots[{k + 1}] = {_fmt(t[k])}")
     with np.errstate(over='ignore', invalid='ignore'):
-        out = _kernels.blossom(P, t, p, np.array([k]), a[None, :])[0]
+        out = pyramids.de_boor_blossom(P, t, p, np.array([k]), a[None, :])[0]
     return finite_result(out, "args")
 
 
@@ -346,68 +346,18 @@ def de_boor_steps(ctrl, knots, degree, u) -> list[np.ndarray]:
     x = float(u)
     k = int(_spans(t, p, u))
     pts = P[k - p:k + 1].copy()
-    levels = [pts.copy()]
-    for r in range(1, p + 1):
-        for j in range(p, r - 1, -1):
-            i = k - p + j
-            alpha = (x - t[i]) / (t[i + p + 1 - r] - t[i])
-            pts[j] = (1.0 - alpha) * pts[j - 1] + alpha * pts[j]
-        levels.append(pts[r:].copy())
+    levels = []
+
+    def weight(r, j, q):
+        i = k - p + j
+        return (x - t[i]) / (t[i + p + 1 - r] - t[i])
+    pyramids.de_boor_pyramid(pts, weight, p, record=levels)
     return levels
 
 
 # --------------------------------------------------------------------------------------------
 # §27.3 the global de Boor algorithm and the B-spline basis
 # --------------------------------------------------------------------------------------------
-
-# de Boor's pyramid for many parameters.  The per-span data (the p+1 control points of each span,
-# and the weights a = (u - t_i)/(t_{i+p+1-r} - t_i) = A u + B of every pyramid node) are tabulated
-# once, then gathered for each parameter with one row-gather per table.  Parameters are processed
-# in blocks of about 1000: every temporary then stays below glibc's 128 KB mmap threshold, so no
-# call pays page faults on freshly mapped memory (that, not the arithmetic, would dominate).
-_BLOCK_BYTES = 96 * 1024
-
-
-def _pyramid_tables(P: np.ndarray, t: np.ndarray, p: int):
-    n, d = P.shape[0] - 1, P.shape[1]
-    ks = np.arange(p, n + 1)
-    win = np.lib.stride_tricks.sliding_window_view(P, (p + 1, d))[:, 0]      # (n+1-p, p+1, d)
-    ctab = np.ascontiguousarray(win.reshape(n + 1 - p, (p + 1) * d))
-    nodes = [(r, j) for r in range(1, p + 1) for j in range(p, r - 1, -1)]
-    if not nodes:
-        return ctab, np.zeros((n + 1 - p, 0)), nodes
-    lo = np.stack([t[ks - p + j] for r, j in nodes], 1)
-    hi = np.stack([t[ks + j + 1 - r] for r, j in nodes], 1)
-    den = hi - lo
-    A = np.divide(1.0, den, out=np.zeros_like(den), where=den > 0)  # den = 0 only on empty spans
-    return ctab, np.ascontiguousarray(np.concatenate([A, -lo * A], 1)), nodes
-
-
-def _pyramid(P: np.ndarray, t: np.ndarray, p: int, u: np.ndarray, k: np.ndarray) -> np.ndarray:
-    """de Boor's pyramid for flat u (N,) with non-empty spans k (N,), ctrl P (n+1, d); returns (d, N)."""
-    d = P.shape[1]
-    ctab, wtab, nodes = _pyramid_tables(P, t, p)
-    idx = k - p
-    out = np.empty((d, u.size))
-    block = max(64, _BLOCK_BYTES // (8 * max(ctab.shape[1], wtab.shape[1], 1)))
-    m = len(nodes)
-    for s in range(0, u.size, block):
-        ub, ib = u[s:s + block], idx[s:s + block]
-        C = np.take(ctab, ib, axis=0).T.reshape(p + 1, d, ub.size)
-        rows = [np.ascontiguousarray(C[j]) for j in range(p + 1)]
-        if m:
-            G = np.take(wtab, ib, axis=0).T
-            alpha = np.empty(ub.size)
-            for q, (r, j) in enumerate(nodes):
-                np.multiply(G[q], ub, out=alpha)
-                alpha += G[m + q]
-                row = rows[j]                # P_j <- P_{j-1} + a (P_j - P_{j-1})
-                row -= rows[j - 1]
-                row *= alpha
-                row += rows[j - 1]
-        out[:, s:s + block] = rows[p]
-    return out
-
 
 def _basis_local(t: np.ndarray, p: int, u: np.ndarray, k: np.ndarray) -> np.ndarray:
     """The p+1 B-splines that are non-zero on span k, N_{k-p,p}(u) .. N_{k,p}(u): (p+1, N)."""
@@ -449,7 +399,7 @@ def de_boor(ctrl, knots, degree, u) -> np.ndarray:
     u = _check_u(u, t, p)
     flat = u.reshape(-1)
     k = _spans(t, p, flat)
-    out = _pyramid(P, t, p, flat, k)
+    out = pyramids.de_boor_points(P, t, p, flat, k)
     return out.T.reshape(u.shape + (P.shape[1],))
 
 
@@ -535,7 +485,7 @@ def derivative_ctrl(ctrl, knots, degree):
 def _evaluate(P: np.ndarray, t: np.ndarray, p: int, flat: np.ndarray, side: str = "right") -> np.ndarray:
     """Validated data, flat u: (N, d)."""
     k = _spans(t, p, flat, side)
-    return _pyramid(P, t, p, flat, k).T
+    return pyramids.de_boor_points(P, t, p, flat, k).T
 
 
 def derivative(ctrl, knots, degree, u, order: int = 1, side: str = "right") -> np.ndarray:
@@ -566,7 +516,7 @@ def derivative(ctrl, knots, degree, u, order: int = 1, side: str = "right") -> n
     k = _spans(t, p, flat, side)
     for _ in range(order):
         Q, s, q = _derivative_ctrl(Q, s, q)
-    out = _pyramid(Q, s, q, flat, k - order).T
+    out = pyramids.de_boor_points(Q, s, q, flat, k - order).T
     return out.reshape(u.shape + (P.shape[1],))
 
 
@@ -597,7 +547,7 @@ def derivative_jumps(ctrl, knots, degree, value) -> np.ndarray:
     """
     P, t, p = _curve_args(ctrl, knots, degree)
     x = _check_u(as_float(value, "value"), t, p, "value")
-    lo, hi = _kernels.domain(t, p)
+    lo, hi = pyramids.domain(t, p)
     if not lo < x < hi:
         raise ValueError(f"value must lie strictly inside the domain ({_fmt(lo)}, {_fmt(hi)}); got {_fmt(x)}")
     out = np.empty(p + 1)
@@ -677,19 +627,17 @@ def global_pyramid(ctrl, knots, degree, u) -> list[np.ndarray]:
         raise ValueError(f"u must be a scalar for global_pyramid; got shape {x.shape}")
     x = float(x)
     n = P.shape[0] - 1
-    levels = [P.copy()]
-    cur = P
-    for r in range(1, p + 1):
-        i = np.arange(r, n + 1)
-        lo, hi = t[i], t[i + p + 1 - r]
+    levels = []
+
+    def weight(r):                      # nodes i = r .. n of level r
+        lo, hi = t[r:n + 1], t[r + p + 1 - r:n + p + 2 - r]
         den = hi - lo
-        ok = den > 0
-        a = np.divide(x - lo, den, out=np.full(den.shape, np.nan), where=ok)[:, None]
-        with np.errstate(over="ignore", invalid="ignore"):
-            nxt = (1.0 - a) * cur[:-1] + a * cur[1:]
-        finite_result(nxt[ok], "u", x)       # an overflow (|u| huge) is reported naming u; undefined nodes stay NaN
-        levels.append(nxt)
-        cur = nxt
+        return np.divide(x - lo, den, out=np.full(den.shape, np.nan), where=den > 0)
+    with np.errstate(over="ignore", invalid="ignore"):
+        pyramids.de_boor_pyramid(P.copy(), weight, p, top=n, record=levels, per_level=True)
+    for r in range(1, p + 1):
+        ok = t[r + p + 1 - r:n + p + 2 - r] - t[r:n + 1] > 0
+        finite_result(levels[r][ok], "u", x)   # an overflow (|u| huge) is reported naming u; undefined nodes stay NaN
     return levels
 
 
@@ -830,7 +778,7 @@ def affected_span(knots, degree, i) -> tuple[float, float]:
     t = check_knots(knots, degree)
     p = int(degree)
     lo, hi = support(t, p, i)
-    dlo, dhi = _kernels.domain(t, p)
+    dlo, dhi = pyramids.domain(t, p)
     return max(lo, dlo), min(hi, dhi)
 
 
@@ -1203,7 +1151,7 @@ class BSplineCurve:
 
     @property
     def domain(self) -> tuple[float, float]:
-        return _kernels.domain(self.knots, self.degree)
+        return pyramids.domain(self.knots, self.degree)
 
     def evaluate(self, u) -> np.ndarray:
         """Points ``C(u)`` by :func:`de_boor`."""

@@ -675,7 +675,7 @@ def base_case_gaps(program, other_base, levels: int) -> np.ndarray:
     """
     if not isinstance(program, RecursiveTurtleProgram):
         raise TypeError(f"program must be a goldman_lib.fractals.RecursiveTurtleProgram; got {type(program).__name__}")
-    other = program.with_base(fractals._as_commands(other_base, "other_base", allow_recurse=False))
+    other = program.with_base(fractals.as_commands(other_base, "other_base", allow_recurse=False))
     a, b = rons_algorithm(program), rons_algorithm(other)
     if a.maps.shape != b.maps.shape or not _close(a.maps, b.maps, 1e-8):
         raise ValueError("other_base and the program's base case change the turtle's state differently, so "

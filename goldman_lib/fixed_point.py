@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import affine
+from .kernels import relaxation
 from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points, as_tolerance,
                          check_finite, finite_result, within_budget)
 
@@ -313,6 +314,7 @@ def _relax(A, b, x0, tol, max_iter, full_output, method):
     max_iter = _iterations(max_iter, len(b))
     d = np.diag(A)
     R = A - np.diag(d)
+    G = -R                                  # x = (b - R x) / d is relaxation's (c + G x) / d, bit for bit
     scale_A = float(np.abs(A).sum(axis=1).max())
     scale_b = float(np.abs(b).max())
     history = [x.copy()]
@@ -325,10 +327,9 @@ def _relax(A, b, x0, tol, max_iter, full_output, method):
     with np.errstate(all="ignore"):
         for it in range(1, max_iter + 1):
             if method == "Jacobi":
-                x = (b - R @ x) / d
+                x = relaxation.jacobi_update(b, relaxation.gather(G, x), d)
             else:  # Gauss-Seidel: each new component is used at once
-                for i in range(len(b)):
-                    x[i] = (b[i] - R[i] @ x) / d[i]
+                relaxation.gauss_seidel_sweep(G, b, x, d=d)
             res = float(np.abs(b - A @ x).max())
             history.append(x.copy())
             residuals.append(res)

@@ -66,7 +66,7 @@ __all__ = [
     "state_change", "Loop", "loop_analysis", "loop_period", "repeat_closes",
     "similarity_dimension", "recursion_scales", "program_dimension",
     "ink_length", "chord_angles", "difference_quotients", "headings_at",
-    "BASE_CASES", "points_on", "base_case_distances",
+    "BASE_CASES", "points_on", "base_case_distances", "as_commands",
 ]
 
 #: The name of the recursive call in a program's ``body``.
@@ -83,8 +83,14 @@ _CODES = {name: code for code, name in enumerate(turtle.COMMANDS)}
 # Recursive turtle programs (§2.3)
 # ---------------------------------------------------------------------------------------------
 
-def _as_commands(seq, name: str, *, allow_recurse: bool) -> tuple:
-    """Validate a sequence of ``(command, value)`` pairs; return them as a tuple of tuples."""
+def as_commands(seq, name: str, *, allow_recurse: bool) -> tuple:
+    """A recursive turtle program's commands (Goldman §2.3): a sequence of ``(command, value)`` pairs
+    checked (known commands, finite values, RECURSE only where ``allow_recurse``) and returned as a
+    tuple of tuples with upper-case commands; TypeError/ValueError naming ``name`` otherwise.
+
+    >>> as_commands([("forward", 1), ("TURN", 60)], "base", allow_recurse=False)
+    (('FORWARD', 1.0), ('TURN', 60.0))
+    """
     if isinstance(seq, (str, bytes)) or not hasattr(seq, "__iter__"):
         raise TypeError(f"{name} must be a sequence of (command, value) pairs; got {type(seq).__name__}")
     out = []
@@ -106,7 +112,7 @@ def _as_commands(seq, name: str, *, allow_recurse: bool) -> tuple:
         if cmd not in _CODES:
             raise ValueError(f"{name}[{i}]: unknown command {cmd!r}; use FORWARD, MOVE, TURN, RESIZE "
                              f"or RECURSE")
-        value = turtle._value(value, f"{name}[{i}] value")
+        value = turtle.command_value(value, f"{name}[{i}] value")
         if cmd == "RESIZE" and value == 0:
             raise ValueError(f"{name}[{i}]: RESIZE 0 would shrink the turtle's step to nothing")
         out.append((cmd, value))
@@ -151,15 +157,15 @@ class RecursiveTurtleProgram:
     """
 
     def __init__(self, body, base, name: str = "", start=None):
-        self.body = _as_commands(body, "body", allow_recurse=True)
-        self.base = _as_commands(base, "base", allow_recurse=False)
+        self.body = as_commands(body, "body", allow_recurse=True)
+        self.base = as_commands(base, "base", allow_recurse=False)
         if not any(c == RECURSE for c, _ in self.body):
             raise ValueError("body must RECURSE at least once (otherwise the program is not recursive)")
         if not isinstance(name, str):
             raise TypeError(f"name must be a string; got {type(name).__name__}")
         self.name = name
         default = ((RECURSE, None),)
-        self.start = default if start is None else _as_commands(start, "start", allow_recurse=True)
+        self.start = default if start is None else as_commands(start, "start", allow_recurse=True)
         self._mirrored = any(c == RECURSE and v == -1 for c, v in self.body + self.start)
 
     # -- sizes ---------------------------------------------------------------------------------
@@ -723,7 +729,7 @@ def _flat_program(program, name: str = "program") -> tuple[np.ndarray, np.ndarra
     """Codes and values of a turtle program: text, a parsed Program, or (command, value) pairs."""
     if isinstance(program, (str, turtle.Program)):
         return turtle.expand(program)
-    commands = _as_commands(program, name, allow_recurse=False)
+    commands = as_commands(program, name, allow_recurse=False)
     return _flat(commands, 1.0)
 
 
@@ -1203,7 +1209,7 @@ def base_case_distances(program, bases, levels, *, per_segment: int = 2) -> np.n
     levels = _levels(program, levels)
     if isinstance(bases, (str, bytes)) or not hasattr(bases, "__len__"):
         raise TypeError(f"bases must be a list of base cases; got {type(bases).__name__}")
-    others = [program.with_base(_as_commands(b, f"bases[{i}]", allow_recurse=False)) for i, b in enumerate(bases)]
+    others = [program.with_base(as_commands(b, f"bases[{i}]", allow_recurse=False)) for i, b in enumerate(bases)]
     out = np.zeros((len(others), len(levels)))
     for j, n in enumerate(levels):
         ref_polys = program.polylines(n)
@@ -1230,7 +1236,7 @@ def program_text(commands) -> str:
     >>> program_text([("FORWARD", 1.0), ("TURN", 60.0), ("RECURSE", None), ("RECURSE", -1)])
     'FORWARD 1 TURN 60 RECURSE RECURSE(mirror)'
     """
-    return _text(_as_commands(commands, "commands", allow_recurse=True))
+    return _text(as_commands(commands, "commands", allow_recurse=True))
 
 
 def program_codes(program) -> tuple[np.ndarray, np.ndarray]:

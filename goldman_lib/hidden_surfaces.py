@@ -44,8 +44,9 @@ from typing import NamedTuple
 import numpy as np
 
 from goldman_lib import lighting, shading
+from goldman_lib.kernels import meshes
 from goldman_lib.simple_surfaces import Polygon
-from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_points, check_finite,
+from goldman_lib.validation import (MAX_ITEMS, as_colour, as_float, as_float_array, as_points, check_finite,
                                     finite_result, within_budget)
 
 __all__ = ["Rendering", "default_scene", "default_camera", "split_polygon", "heedless_painter", "z_buffer",
@@ -264,7 +265,7 @@ def _cover(camera, P, S=None) -> np.ndarray:
     S[:, 2] = 0.5
     if np.abs(S[:, :2]).max() > 1e9:
         raise ValueError("polygons must project within 1e9 pixels of the image (move them away from the eye's plane)")
-    return shading._rasterise(S, _fan(len(P)), camera.width, camera.height).triangle >= 0
+    return meshes.rasterise(S, _fan(len(P)), camera.width, camera.height)[0] >= 0
 
 
 def _paint(camera, pieces, keep_frames=False):
@@ -825,7 +826,7 @@ def shade(ids, polygons, colours, camera, lights=None, background=(1.0, 1.0, 1.0
     eye = np.asarray(camera.eye)
     lights = (lighting.Light(tuple(eye + [2.0, 0.0, 3.0])),) if lights is None else lights
     table = np.zeros((len(polys) + 1, 3))
-    table[-1] = lighting._colour(background, "background")
+    table[-1] = as_colour(background, "background")
     for k, P in enumerate(polys):
         centroid = P.mean(0, keepdims=True)
         n = shading.newell_normal(P)[None]

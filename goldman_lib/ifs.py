@@ -36,6 +36,7 @@ import math
 import numpy as np
 
 from . import affine
+from .kernels import iteration
 from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points, check_finite,
                          finite_result, within_budget)
 
@@ -167,26 +168,6 @@ def as_ifs(system) -> IFS:
         raise TypeError(f"system must be an IFS or a list of 3x3 affine maps ({exc})") from exc
 
 
-def _apply_all(pts: np.ndarray, L: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """Every map applied to every point: ``(k * N, 2)``, in blocks of N per map.
-
-    Written out per coordinate (``x' = x a + y c + e``, ``y' = x b + y d + f``) into one output
-    array: the same operations in the same order as ``pts @ L[i] + t[i]``, so the same bits, but
-    about 6x faster than numpy's batched matmul, whose 2x2 inner products do not vectorise.
-    """
-    k, n = len(L), len(pts)
-    out = np.empty((k, n, 2))
-    x, y = pts[:, 0], pts[:, 1]
-    tmp = np.empty(n)
-    for i in range(k):
-        for j in (0, 1):
-            col = out[i, :, j]
-            np.multiply(x, L[i, 0, j], out=col)
-            col += np.multiply(y, L[i, 1, j], out=tmp)
-            col += t[i, j]
-    return out.reshape(-1, 2)
-
-
 def deterministic(system, levels, start=None) -> np.ndarray:
     """The deterministic algorithm: apply every map of the IFS to the set, ``levels`` times (Goldman §6.1, §6.3).
 
@@ -224,7 +205,7 @@ def deterministic(system, levels, start=None) -> np.ndarray:
     L, t = s.linear_parts, s.translations
     with np.errstate(over="ignore", invalid="ignore"):
         for level in range(levels):
-            pts = _apply_all(pts, L, t)
+            pts = iteration.apply_affine_maps(pts, L, t)
             if C is not None:
                 pts = np.concatenate([C, pts])
             if not np.isfinite(pts).all():
@@ -431,7 +412,7 @@ def map_images(system, shape=None) -> np.ndarray:
     """
     s = as_ifs(system)
     P = UNIT_SQUARE if shape is None else as_points(shape, "shape", dim=2)
-    return np.matmul(P[None], s.linear_parts) + s.translations[:, None, :]
+    return iteration.apply_affine_maps(P, s.linear_parts, s.translations).reshape(len(s), len(P), 2)
 
 
 def ifs_from_points(reference, images, probabilities=None, name: str = "") -> IFS:

@@ -35,8 +35,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib import _kernels, bezier, bezier_intersection, bezier_subdivision, bspline
-from goldman_lib.validation import as_float, as_int, as_parameter, as_points, within_budget
+from goldman_lib import bezier, bezier_intersection, bezier_subdivision, bspline
+from goldman_lib.kernels import number, polygons, pyramids
+from goldman_lib.validation import as_float, as_int, as_parameter, as_points, moderate, within_budget
 
 __all__ = [
     "boehm_insert", "boehm_steps", "oslo", "oslo_steps", "to_piecewise_bezier",
@@ -65,7 +66,7 @@ def _refined_count(m: int, p: int, levels: int, closed: bool = False) -> int:
     return 2 ** levels * m if closed else 2 ** levels * (m - p) + p
 
 
-_fmt = _kernels.number
+_fmt = number
 
 
 def _domain_spans(t: np.ndarray, p: int, x: np.ndarray) -> np.ndarray:
@@ -82,7 +83,7 @@ def _refinement_spans(t: np.ndarray, tau: np.ndarray, p: int) -> np.ndarray:
     n_new = tau.size - p - 2
     j = np.arange(n_new + 1)
     m = np.full(j.shape, -1)
-    lo, hi = _kernels.domain(t, p)
+    lo, hi = pyramids.domain(t, p)
     for off in range(p + 1):                         # first non-empty new span tau_m < tau_{m+1} with j <= m <= j+p
         cand = j + off
         ok = (m < 0) & (cand >= p) & (cand <= n_new)
@@ -109,7 +110,7 @@ def _check_refinement(t: np.ndarray, tau: np.ndarray, p: int) -> None:
     if i < t.size:
         raise ValueError(f"new_knots must contain every old knot; knots[{i}]={_fmt(t[i])} is missing in new_knots")
     extra.extend(tau[j:])
-    lo, hi = _kernels.domain(t, p)
+    lo, hi = pyramids.domain(t, p)
     for x in extra:
         if not lo <= x <= hi:
             raise ValueError(f"new_knots may only add knots inside the domain [{_fmt(lo)}, {_fmt(hi)}]; "
@@ -138,7 +139,7 @@ def _boehm_once(P: np.ndarray, t: np.ndarray, p: int, u: float):
 
 
 def _check_insert(t: np.ndarray, p: int, u: float, times: int) -> None:
-    lo, hi = _kernels.domain(t, p)
+    lo, hi = pyramids.domain(t, p)
     if not lo <= u <= hi:
         raise ValueError(f"u must lie in the domain [knots[{p}], knots[{t.size - p - 1}]] = [{_fmt(lo)}, {_fmt(hi)}]; "
                          f"u is {_fmt(u)}")
@@ -234,7 +235,7 @@ def _oslo(P, t, p, tau):
     n_new = tau.size - p - 2
     spans = _refinement_spans(t, tau, p)
     idx = np.arange(n_new + 1)[:, None] + np.arange(1, p + 1)[None, :]
-    return _kernels.blossom(P, t, p, spans, tau[idx])
+    return pyramids.de_boor_blossom(P, t, p, spans, tau[idx])
 
 
 def oslo_steps(ctrl, knots, degree, new_knots) -> list[dict]:
@@ -262,14 +263,12 @@ def oslo_steps(ctrl, knots, degree, new_knots) -> list[dict]:
         k = int(k)
         label = tau[j + 1:j + p + 1].copy()
         pts = P[k - p:k + 1].copy()
-        levels = [pts.copy()]
-        for r in range(1, p + 1):
-            x = label[r - 1]
-            for jj in range(p, r - 1, -1):
-                i = k - p + jj
-                a = (x - t[i]) / (t[i + p + 1 - r] - t[i])
-                pts[jj] = (1.0 - a) * pts[jj - 1] + a * pts[jj]
-            levels.append(pts[r:].copy())
+        levels = []
+
+        def weight(r, jj, q, k=k, label=label):
+            i = k - p + jj
+            return (label[r - 1] - t[i]) / (t[i + p + 1 - r] - t[i])
+        pyramids.de_boor_pyramid(pts, weight, p, record=levels)
         labels = [[tuple(sorted(float(x) for x in np.r_[label[:r], t[k - p + jj + 1:k + jj - r + 1]]))
                    for jj in range(r, p + 1)] for r in range(p + 1)]
         out.append({"point": pts[p].copy(), "label": label, "span": k, "levels": levels, "labels": labels})
@@ -300,7 +299,7 @@ def to_piecewise_bezier(ctrl, knots, degree):
     [0.0, 0.5, 1.0]
     """
     P, t, p = _curve(ctrl, knots, degree)
-    lo, hi = _kernels.domain(t, p)
+    lo, hi = pyramids.domain(t, p)
     breaks = np.unique(t[(t >= lo) & (t <= hi)])
     a, b = breaks[:-1], breaks[1:]
     m = a.size
@@ -309,7 +308,7 @@ def to_piecewise_bezier(ctrl, knots, degree):
     # args[piece, i, level]: p - i copies of a, then i copies of b
     lev = np.arange(p)[None, None, :]
     args = np.where(lev < (p - i)[None, :, None], a[:, None, None], b[:, None, None])
-    flat = _kernels.blossom(P, t, p, np.repeat(spans, p + 1), args.reshape(m * (p + 1), p))
+    flat = pyramids.de_boor_blossom(P, t, p, np.repeat(spans, p + 1), args.reshape(m * (p + 1), p))
     return flat.reshape(m, p + 1, P.shape[1]), breaks
 
 
@@ -338,7 +337,7 @@ def variation_diminishing(ctrl, knots, degree, line_point, line_normal, samples=
     samples = within_budget(samples, "samples", cost=lambda v: v * P.shape[1], what="the sampled curve",
                             unit="coordinates", minimum=2)
     poly = bezier.variation_count(P, line_point, line_normal)
-    lo, hi = _kernels.domain(t, p)
+    lo, hi = pyramids.domain(t, p)
     pts = bspline.de_boor(P, t, p, np.linspace(lo, hi, samples))
     # crossings of the sampled curve: sign changes of the signed distances
     nrm = np.asarray(line_normal, dtype=float)
@@ -696,10 +695,10 @@ def control_polygon_distance(ctrl, knots, degree, *, closed: bool = False, skip_
         skip_outside = True
     else:
         P, t, p = _curve(ctrl, knots, degree)
-    bezier._moderate(P)
+    moderate(P)
     if p < 1:
         raise ValueError("degree must be >= 1 for control_polygon_distance (Greville abscissae need a knot)")
-    lo, hi = _kernels.domain(t, p)
+    lo, hi = pyramids.domain(t, p)
     xi = greville(t, p)
     Q = P
     if skip_outside:
@@ -732,7 +731,7 @@ def convergence_study(ctrl, knots, degree, levels=6) -> dict:
     [4.0, 4.0, 4.0]
     """
     P, t, p = _curve(ctrl, knots, degree)
-    bezier._moderate(P)
+    moderate(P)
     if p < 1:
         raise ValueError("degree must be >= 1 for a convergence study")
     levels = as_int(levels, "levels", minimum=1, maximum=12)
@@ -774,7 +773,7 @@ def split(ctrl, knots, degree, u):
     if p < 1:
         raise ValueError("degree must be >= 1 to split a curve by knot insertion")
     u = as_float(u, "u")
-    lo, hi = _kernels.domain(t, p)
+    lo, hi = pyramids.domain(t, p)
     if not lo < u < hi:
         raise ValueError(f"u must lie strictly inside the domain ({_fmt(lo)}, {_fmt(hi)}); u is {_fmt(u)}")
     s = int(np.count_nonzero(t == u))
@@ -825,25 +824,25 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     P, t, p = _curve(ctrl, knots, degree)
     if p < 1:
         raise ValueError("degree must be >= 1 to render by subdivision")
-    tol = bezier_subdivision._resolvable(as_float(tol, "tol", positive=True), bezier._moderate(P))
+    tol = bezier_subdivision.resolvable_tolerance(as_float(tol, "tol", positive=True), moderate(P))
     max_levels = as_int(max_levels, "max_levels", minimum=0, maximum=20)
     if method not in ("bezier", "subdivision"):
         raise ValueError(f"method must be 'bezier' or 'subdivision'; got {method!r}")
     if method == "subdivision":
         level = 0
         while level < max_levels and _corner_flatness(P) > tol:
-            bezier_subdivision._check_pieces(_refined_count(P.shape[0], p, 1), P.shape[1] * (p + 1), tol, "max_levels")
+            bezier_subdivision.check_subdivision_budget(_refined_count(P.shape[0], p, 1), P.shape[1] * (p + 1), tol, "max_levels")
             _, P, t = _schaefer_refine(P, t, p)
             level += 1
         return P.copy(), level
     pieces, _ = to_piecewise_bezier(P, t, p)
     level = 0
     while True:
-        flat = _kernels.flatness(pieces, even=False) <= tol
+        flat = polygons.flatness(pieces, even=False) <= tol
         if flat.all() or level >= max_levels:
             break
-        bezier_subdivision._check_pieces(len(pieces) + int(np.count_nonzero(~flat)), pieces[0].size, tol, "max_levels")
-        left, right = _kernels.split(pieces[~flat], 0.5, axis=1)
+        bezier_subdivision.check_subdivision_budget(len(pieces) + int(np.count_nonzero(~flat)), pieces[0].size, tol, "max_levels")
+        left, right = pyramids.split(pieces[~flat], 0.5, axis=1)
         counts = np.where(flat, 1, 2)
         start = np.cumsum(counts) - counts
         new = np.empty((int(counts.sum()),) + pieces.shape[1:])

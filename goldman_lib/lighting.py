@@ -39,21 +39,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
-from goldman_lib._kernels import norm as _norm
+from goldman_lib.validation import as_colour, as_float, as_float_array, as_points, check_finite, finite_result
+from goldman_lib.kernels import frames
 
 __all__ = ["Light", "Material", "unit_rows", "reflect", "ambient", "diffuse", "specular", "blinn_specular",
            "intensity", "to_image", "light_direction", "default_lights", "shade_faces", "highlight_half_width"]
 
 
 def _colour(value, name: str) -> tuple[float, float, float]:
-    c = as_float_array(value, name)
-    if c.shape != (3,):
-        raise ValueError(f"{name} must be an RGB triple (3 numbers in [0, 1]); got shape {c.shape}")
-    check_finite(c, name)
-    if np.any(c < 0) or np.any(c > 1):
-        raise ValueError(f"{name} must hold numbers in [0, 1] (an RGB colour); got {c.tolist()}")
-    return tuple(float(v) for v in c)
+    return as_colour(value, name)
 
 
 def _non_negative(value, name: str) -> float:
@@ -136,7 +130,7 @@ def unit_rows(vectors, name: str = "vectors") -> np.ndarray:
 
 
 def _dot(a, b):
-    return np.einsum("...i,...i->...", a, b)
+    return frames.row_dots(a, b)
 
 
 def reflect(vectors, normals) -> np.ndarray:
@@ -210,11 +204,7 @@ def ambient(ka, ambient_intensity) -> np.ndarray:
 
 def _unit(v):
     """Unchecked: rows of ``v`` scaled to length 1 (zero rows stay zero)."""
-    with np.errstate(over="ignore", under="ignore"):
-        length = np.sqrt(np.einsum("...i,...i->...", v, v))[..., None]
-    if not np.all(np.isfinite(length) & (length > 1e-150)) and np.all(np.isfinite(v)):
-        length = _norm(v, keepdims=True)     # |v|^2 overflowed or underflowed: scale before squaring
-    return np.divide(v, length, out=np.zeros_like(v), where=length > 0)
+    return frames.unit_rows(v)
 
 
 def _check_clamp(clamp) -> bool:

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_int, as_points, check_finite, finite_result
-from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
+from goldman_lib.kernels.frames import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 
 __all__ = ["mass_point", "vector", "add", "scale", "mass_of", "point_of", "center_of_mass", "same_projective_point",
            "projective_factor",

@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_parameter, as_points, check_finite, finite_result
-from goldman_lib._kernels import norm as _length
+from goldman_lib.kernels.frames import norm as _length
 
 __all__ = ["complex_rotation", "complex_polar", "complex_multiply", "multiply", "conjugate", "norm", "inverse", "normalize",
            "from_axis_angle", "to_axis_angle", "rotate", "conformal_map", "to_matrix", "from_matrix", "slerp",

@@ -49,6 +49,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from goldman_lib.kernels import relaxation
 from goldman_lib.validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points,
                                     as_tolerance, check_finite, within_budget)
 
@@ -725,13 +726,13 @@ def jacobi(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
         kmax = min(kmax, max(1, 100 * MAX_ITEMS // (len(F) ** 2 * channels)))
     _check_solvable(F, rho)
     B = E.copy()
-    gathered = rho * (F @ B)
+    gathered = relaxation.gather(F, B, rho)
     residuals = [float(np.abs(E + gathered - B).max())]
     watch = _Watch("Jacobi", residuals[0], tol, kmax, max_iterations is None)
     iterates = [B]
     while residuals[-1] > tol and len(residuals) <= kmax:
-        B = E + gathered
-        gathered = rho * (F @ B)
+        B = relaxation.jacobi_update(E, gathered)
+        gathered = relaxation.gather(F, B, rho)
         residuals.append(float(np.abs(E + gathered - B).max()))
         iterates.append(B) if return_history else iterates.__setitem__(0, B)
         watch(len(residuals) - 1, residuals[-1], residuals)
@@ -763,8 +764,7 @@ def gauss_seidel(F, rho, E, tol=1e-6, max_iterations=None, return_history=False)
     watch = _Watch("Gauss-Seidel", residuals[0], tol, kmax, max_iterations is None)
     iterates = [B.copy()]
     while residuals[-1] > tol and len(residuals) <= kmax:
-        for i in range(len(F)):
-            B[i] = E[i] + rho[i] * (F[i] @ B)
+        relaxation.gauss_seidel_sweep(F, E, B, rho)
         residuals.append(float(np.abs(E + rho * (F @ B) - B).max()))
         iterates.append(B.copy()) if return_history else iterates.__setitem__(0, B.copy())
         watch(len(residuals) - 1, residuals[-1], residuals)

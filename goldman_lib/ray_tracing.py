@@ -46,7 +46,8 @@ import numpy as np
 from goldman_lib import lighting, shading
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Plane, Sphere
-from goldman_lib._kernels import norm as _norm
+from goldman_lib.kernels import frames
+from goldman_lib.kernels.frames import norm as _norm
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
                                     within_budget)
 
@@ -76,7 +77,7 @@ def _unit(v, name):
 
 
 def _dot(a, b):
-    return np.einsum("...i,...i->...", a, b)
+    return frames.row_dots(a, b)
 
 
 # -- the camera (§17.2) ------------------------------------------------------------------------------
@@ -279,7 +280,7 @@ def _refract(d, N, eta):
     tir = sin2 > 1.0
     cos2 = np.sqrt(np.maximum(1.0 - sin2, 0.0))
     T = eta[:, None] * d + (eta * cos1 - cos2)[:, None] * N
-    T = lighting.unit_rows(T)
+    T = frames.unit_rows(T)
     T[tir] = 0.0
     return T, tir
 
@@ -676,7 +677,7 @@ def _trace(scene, o, d, depth, record, miss_length, counts, max_rays=MAX_ITEMS):
             go = sel[keep]
             if len(go):
                 next_o.append(outside[go])
-                next_d.append(lighting.unit_rows(lighting.reflect(-d_h[go], N_f[go])))
+                next_d.append(frames.unit_rows(lighting.reflect(-d_h[go], N_f[go])))
                 next_w.append(w[go] * r_weight[keep])
                 next_p.append(pix[go])
                 next_k.append(np.full(len(go), 1))

@@ -35,6 +35,7 @@ from typing import Callable
 
 import numpy as np
 
+from goldman_lib.kernels import frames
 from goldman_lib.lighting import Material
 from goldman_lib.simple_surfaces import EPS, MAX_COORDINATE, Sphere, Surface, rays
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_int, as_points, as_tolerance, as_float_array,
@@ -299,10 +300,7 @@ class BRep:
 
 
 def _newell(pts: np.ndarray) -> np.ndarray:
-    q = np.roll(pts, -1, axis=0)
-    n = np.array([((pts[:, 1] - q[:, 1]) * (pts[:, 2] + q[:, 2])).sum(),
-                  ((pts[:, 2] - q[:, 2]) * (pts[:, 0] + q[:, 0])).sum(),
-                  ((pts[:, 0] - q[:, 0]) * (pts[:, 1] + q[:, 1])).sum()])
+    n = frames.newell(pts)
     length = np.linalg.norm(n)
     return n / length if length > 0 else n
 

@@ -32,7 +32,8 @@ import math
 
 import numpy as np
 
-from goldman_lib import _kernels, ifs
+from goldman_lib import ifs
+from goldman_lib.kernels import iteration
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_parameter, as_points, as_tolerance,
                                      check_finite, finite_result, within_budget)
 
@@ -276,7 +277,7 @@ def attractor(maps, levels: int, start) -> np.ndarray:
         raise ValueError(f"start must hold points with {D1 - 1} coordinates (or {D1} homogeneous); got shape {X.shape}")
     levels = within_budget(levels, "levels", cost=lambda v: len(X) * len(M) ** v, what="the attractor",
                            unit="points", limit=MAX_POINTS)
-    X = _kernels.iterate_maps(X, M, levels)
+    X = iteration.iterate_maps(X, M, levels)
     with np.errstate(all="ignore"):
         out = X[:, :-1] / X[:, -1:]
     if not np.all(np.isfinite(out)):
@@ -307,7 +308,7 @@ def barycentric_attractor(matrices, levels: int, start_rows=(0, -1)) -> np.ndarr
     X = np.eye(M.shape[1])[rows.astype(np.intp)]
     levels = within_budget(levels, "levels", cost=lambda v: len(X) * len(M) ** v, what="the attractor",
                            unit="points", limit=MAX_POINTS)
-    return _kernels.iterate_maps(X, M, levels)
+    return iteration.iterate_maps(X, M, levels)
 
 
 def curve_as_attractor(ctrl, levels: int = 8, kind: str = "bezier") -> np.ndarray:

@@ -26,7 +26,7 @@ import functools
 import numpy as np
 
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result
-from goldman_lib._kernels import norm as _norm
+from goldman_lib.kernels.frames import norm as _norm
 
 __all__ = ["translation", "rotation", "mirror", "scaling", "nonuniform_scaling", "orthogonal_projection",
            "perspective", "apply", "homogeneous", "apply_to_vectors", "compose", "affine_from_points",

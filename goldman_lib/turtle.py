@@ -51,7 +51,7 @@ __all__ = ["FORWARD", "MOVE", "TURN", "RESIZE", "COMMANDS", "MAX_COMMANDS", "MAX
            "TurtleSyntaxError", "Command", "Repeat", "Program", "Trace", "Turtle",
            "parse", "expand", "trace", "run", "final_state", "total_turning", "closes",
            "closing_gap", "length", "perimeter", "turning_angles",
-           "polygon", "star", "spiral", "circle", "rosette", "format_number"]
+           "polygon", "star", "spiral", "circle", "rosette", "format_number", "command_value"]
 
 #: Codes of the four commands in the flat arrays of :func:`expand`.
 FORWARD, MOVE, TURN, RESIZE = 0, 1, 2, 3
@@ -93,8 +93,13 @@ def _big(n: int) -> str:
     return f"about 10^{len(str(n)) - 1}"
 
 
-def _value(value: float, name: str) -> float:
-    """A command's number: finite and at most :data:`MAX_VALUE` in magnitude (ValueError naming it)."""
+def command_value(value: float, name: str) -> float:
+    """A command's number (Goldman §1.2): finite and at most :data:`MAX_VALUE` in magnitude, else a
+    ValueError naming ``name``; used by every module that builds turtle commands.
+
+    >>> command_value(90, "angle")
+    90.0
+    """
     value = as_float(value, name)
     if abs(value) > MAX_VALUE:
         raise ValueError(f"{name} must be at most {MAX_VALUE:g} in magnitude (a turtle step, angle or "
@@ -686,7 +691,7 @@ def polygon(n: int, step: float = 1.0) -> str:
     'REPEAT 6 [FORWARD 2 TURN 60]'
     """
     n = _sides(n, "n", minimum=3, per=2)
-    step = _value(as_float(step, "step", positive=True), "step")
+    step = command_value(as_float(step, "step", positive=True), "step")
     return f"REPEAT {n} [FORWARD {format_number(step)} TURN {format_number(360 / n)}]"
 
 
@@ -703,7 +708,7 @@ def star(n: int, k: int, step: float = 1.0) -> str:
     """
     n = _sides(n, "n", minimum=2, per=2)
     k = as_int(k, "k", minimum=1, maximum=n - 1)
-    step = _value(as_float(step, "step", positive=True), "step")
+    step = command_value(as_float(step, "step", positive=True), "step")
     return f"REPEAT {n} [FORWARD {format_number(step)} TURN {format_number(360 * k / n)}]"
 
 
@@ -724,19 +729,19 @@ def spiral(n: int, angle: float = 90.0, step: float = 1.0, *, factor: float | No
     'FORWARD 1 TURN 90\\nFORWARD 2 TURN 90\\nFORWARD 3 TURN 90'
     """
     n = _sides(n, "n", minimum=0, per=3)
-    angle = _value(angle, "angle")
-    step = _value(step, "step")
+    angle = command_value(angle, "angle")
+    step = command_value(step, "step")
     if factor is not None and increment is not None:
         raise ValueError("give factor or increment, not both")
     a = format_number(angle)
     if increment is not None:
-        increment = _value(increment, "increment")
+        increment = command_value(increment, "increment")
         last = step + (n - 1) * increment if n else step
         if abs(last) > MAX_VALUE:
             raise ValueError(f"increment is too large for n = {n}: the last step step + (n - 1)*increment = "
                              f"{last:g} is over {MAX_VALUE:g} in magnitude")
         return "\n".join(f"FORWARD {format_number(step + i * increment)} TURN {a}" for i in range(n))
-    factor = 1.1 if factor is None else _value(as_float(factor, "factor", nonzero=True), "factor")
+    factor = 1.1 if factor is None else command_value(as_float(factor, "factor", nonzero=True), "factor")
     return f"REPEAT {n} [FORWARD {format_number(step)} TURN {a} RESIZE {format_number(factor)}]"
 
 
@@ -806,7 +811,7 @@ class Turtle:
         self._turning = 0.0
 
     def _do(self, code: int, value, name: str):
-        value = _value(value, name)
+        value = command_value(value, name)
         t = trace_arrays(np.array([code], dtype=np.int8), np.array([value]), self.point, self.direction)
         self.point, self.direction = t.point, t.direction
         self._turning += t.total_turning

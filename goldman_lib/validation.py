@@ -20,7 +20,10 @@ import numbers
 import numpy as np
 
 __all__ = ["as_points", "as_parameter", "as_int", "as_float", "as_float_array", "check_finite", "within_budget",
-           "largest_within", "MAX_ITEMS", "MAX_ITERATIONS", "as_tolerance", "finite_result"]
+           "largest_within", "MAX_ITEMS", "MAX_ITERATIONS", "as_tolerance", "finite_result",
+           "MAX_SQUARABLE", "as_colour"]
+# Public inside the package, for the library's modules (not learner-facing, so not in __all__):
+# moderate, overflow_culprit, as_hyperplane -- checks on arrays a public function already validated.
 
 #: The most points, segments, triangles or matrix entries one call may produce or allocate: about
 #: 160 MB of float64 pairs, a second or two of numpy work on a 2-core machine.  Every level, count,
@@ -284,3 +287,78 @@ def finite_result(result, name: str, value=None, *, why: str = "is too large in 
             where = f" at {name}[{', '.join(str(int(i)) for i in idx)}] = {val[idx]:g}"
     raise ValueError(f"{name} {why}: the result overflows float64{where}")
 
+
+#: Coordinates of at most this magnitude keep squared distances (flatness, boxes, Newton steps of
+#: the Bezier chapters 24-25) inside float64; ``goldman_lib.bezier.MAX_COORDINATE`` is this bound.
+MAX_SQUARABLE = 1e150
+
+
+def moderate(P: np.ndarray, name: str = "ctrl") -> np.ndarray:
+    """``P`` if its coordinates are at most :data:`MAX_SQUARABLE` in magnitude (the algorithms that
+    square distances need it), else a ValueError naming ``name``.  For library modules, on an array
+    already validated (not in ``__all__``).
+
+    >>> moderate(np.array([1.0, -2.0])).tolist()
+    [1.0, -2.0]
+
+    >>> moderate(np.array([1e200]), "a")
+    Traceback (most recent call last):
+    ...
+    ValueError: a is too large in magnitude: coordinates must stay within 1e+150 so that squared distances fit in float64; got 1e+200
+    """
+    big = float(np.abs(P).max()) if P.size else 0.0
+    if big > MAX_SQUARABLE:
+        raise ValueError(f"{name} is too large in magnitude: coordinates must stay within {MAX_SQUARABLE:g} so "
+                         f"that squared distances fit in float64; got {big:g}")
+    return P
+
+
+def overflow_culprit(t, ctrl: str = "ctrl") -> tuple:
+    """Who made a curve point overflow, as the ``(name, value)`` arguments of :func:`finite_result`:
+    the parameter if it lies outside [-1, 1] (extrapolating multiplies by powers of t), else the
+    control points.  For library modules, on a validated t (not in ``__all__``).
+
+    >>> overflow_culprit(np.array(2.0))[0], overflow_culprit(np.array(0.5))
+    ('t', ('ctrl', None))
+    """
+    return ("t", t) if np.any(np.abs(t) > 1) else (ctrl, None)
+
+
+def as_hyperplane(point, normal, d: int, names=("line_point", "line_normal")) -> tuple[np.ndarray, np.ndarray]:
+    """A point ``(d,)`` and a nonzero normal ``(d,)`` of a line (a plane in 3D, a hyperplane in
+    general) checked against the dimension d of the points it will be compared with (for library
+    modules, not in ``__all__``).
+
+    >>> [v.tolist() for v in as_hyperplane([0, 1], [0, 2], 2)]
+    [[0.0, 1.0], [0.0, 2.0]]
+
+    >>> as_hyperplane([0, 0], [0, 0], 2)
+    Traceback (most recent call last):
+    ...
+    ValueError: line_normal must be a nonzero vector; got all zeros
+    """
+    for name, value in zip(names, (point, normal)):
+        shape = as_float_array(value, name).shape
+        if len(shape) == 1 and shape != (d,):
+            raise ValueError(f"{name} must hold {d}-dimensional points (last axis of length {d}), as ctrl does; "
+                             f"got shape {shape}")
+    p = as_points(point, names[0], ndim=1, dim=d)
+    nrm = as_points(normal, names[1], ndim=1, dim=d)
+    if not np.any(nrm):
+        raise ValueError(f"{names[1]} must be a nonzero vector; got all zeros")
+    return p, nrm
+
+
+def as_colour(value, name: str) -> tuple[float, float, float]:
+    """An RGB colour: three finite numbers in [0, 1], as a tuple of floats.
+
+    >>> as_colour([1, 0.5, 0], "background")
+    (1.0, 0.5, 0.0)
+    """
+    c = as_float_array(value, name)
+    if c.shape != (3,):
+        raise ValueError(f"{name} must be an RGB triple (3 numbers in [0, 1]); got shape {c.shape}")
+    check_finite(c, name)
+    if np.any(c < 0) or np.any(c > 1):
+        raise ValueError(f"{name} must hold numbers in [0, 1] (an RGB colour); got {c.tolist()}")
+    return tuple(float(v) for v in c)

@@ -16,7 +16,8 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib.validation import as_float, as_parameter, as_points, check_finite, as_float_array, finite_result
-from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
+from goldman_lib.kernels import frames
+from goldman_lib.kernels.frames import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 from goldman_lib.vectors import cross
 
 __all__ = ["law_of_cosines", "law_of_sines", "plane_through", "point_line_distance", "point_plane_distance",
@@ -54,7 +55,7 @@ def _nonzero(v: np.ndarray, name: str, what: str) -> np.ndarray:
 
 
 def _dot(a, b):
-    return np.einsum("...i,...i->...", *np.broadcast_arrays(a, b))
+    return frames.row_dots(*np.broadcast_arrays(a, b))
 
 
 def _out(x):
@@ -217,21 +218,19 @@ def _polygon(polygon, name="polygon", dims=(2, 3)) -> np.ndarray:
 
 
 def newell_normal(polygon) -> np.ndarray:
-    """Newell's normal of a polygon ``(n, 3)`` (Goldman §11.4): ``N = Σ P_i × P_{i+1}``, whose
-    length is twice the area of a planar polygon and whose direction is its normal by the
-    right-hand rule on the order of the vertices; robust for nearly planar polygons.
+    """Newell's normal of a polygon ``(n, 3)`` (Goldman §11.4), *unnormalised*: ``N = Σ P_i × P_{i+1}``,
+    whose length is twice the area of a planar polygon and whose direction is its normal by the
+    right-hand rule on the order of the vertices; robust for nearly planar polygons.  Computed in
+    Newell's own form ``N_x = Σ (y_i - y_{i+1})(z_i + z_{i+1})`` (and cyclically), which does not
+    lose digits far from the origin (:func:`goldman_lib.kernels.frames.newell`).  The unit normal
+    of chapter 21 is :func:`goldman_lib.shading.newell_normal` (the same vector scaled to length 1).
 
     >>> newell_normal([[0, 0, 0], [2, 0, 0], [2, 3, 0], [0, 3, 0]]).tolist()
     [0.0, 0.0, 12.0]
     """
     pts = _polygon(polygon, dims=(3,))
-    nxt = np.roll(pts, -1, axis=0)
-    try:
-        terms = cross(pts, nxt)
-    except ValueError:
-        raise ValueError("polygon is too large in magnitude: the cross products of its vertices overflow float64") from None
     with np.errstate(over="ignore", invalid="ignore"):
-        return finite_result(terms.sum(axis=0), "polygon")
+        return finite_result(frames.newell(pts), "polygon")
 
 
 def polygon_area(polygon) -> float:
@@ -390,17 +389,11 @@ def slerp(v0, v1, t) -> np.ndarray:
         raise ValueError(f"v0 and v1 must have the same length for slerp, which moves on a sphere about the origin; "
                          f"|v0| = {l0:.6g} and |v1| = {l1:.6g}{where}: normalise them, or interpolate the lengths "
                          f"separately")
-    tt = as_parameter(t, "t")[..., None]
-    cos = np.clip(_dot(a, b) / (la * lb), -1, 1)[..., None]
-    theta = np.arccos(cos)
-    sin = np.sin(theta)
+    t = as_parameter(t, "t")
+    cos = np.clip(_dot(a, b) / (la * lb), -1, 1)
     if np.any(cos <= -1 + 1e-12):
         raise ValueError("v0 and v1 must not point in opposite directions: the great arc between them is not unique")
-    small = sin < 1e-9
-    safe = np.where(small, 1, sin)
-    wa = np.where(small, 1 - tt, np.sin((1 - tt) * theta) / safe)
-    wb = np.where(small, tt, np.sin(tt * theta) / safe)
-    return wa * a + wb * b
+    return frames.slerp(a, b, t, la, lb, cos)
 
 
 def nlerp(v0, v1, t) -> np.ndarray:

@@ -32,7 +32,7 @@ import numbers
 import numpy as np
 
 from goldman_lib.validation import as_float_array, as_tolerance, check_finite, finite_result
-from goldman_lib._kernels import norm as _norm   # np.linalg.norm, right where v·v over/underflows
+from goldman_lib.kernels.frames import norm as _norm   # np.linalg.norm, right where v·v over/underflows
 
 __all__ = ["Point", "Vector", "affine_combination", "combination_kind", "weighted_sum_from_origin", "dot", "cross",
            "det", "det_cofactor_terms", "length", "angle_between", "dot_from_lengths", "cross_from_geometry",

@@ -18,7 +18,7 @@ import pytest
 
 from goldman_lib import (bspline, lighting, mass_points, quaternions, ray_tracing, simple_surfaces, transforms,
                          vector_geometry, vectors)
-from goldman_lib._kernels import norm
+from goldman_lib.kernels.frames import norm
 
 SCALES = [1e-170, 2.0 ** -600, 1e160, 1e300]
 

@@ -26,7 +26,8 @@ def test_views_import_heavy_libraries_lazily_only_where_needed():
 
 
 def test_chapter_25_modules_import_in_any_order():
-    """bezier re-exports the chapter-25 names lazily, so importing a chapter-25 module first works."""
+    """bezier re-exports the chapter-25 names (imported eagerly: bezier_subdivision and bezier_intersection
+    import only kernels and validation, so there is no cycle), and importing a chapter-25 module first works."""
     import subprocess
     import sys
 

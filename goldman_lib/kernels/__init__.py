@@ -1,0 +1,90 @@
+"""The unchecked layer (``hazmat``): each kernel that several modules need, once, on validated arrays.
+
+No input checking, no copying beyond what the algorithm needs, stacks of problems at once.  The
+checked public functions validate their input and call these; other library modules call these
+directly on data they validated (the hot paths: the tracer's inner levels, per-pixel work).
+Views, notebooks and exercise checkers call the public functions only.  Every name here is
+public inside the package: no library module imports another module's private (``_``) name
+(``tests/test_imports_private.py`` reads the imports).
+
+The map: each kernel, what it computes, the book section it serves, and who calls it.
+
+:mod:`~goldman_lib.kernels.pyramids` -- de Casteljau's and de Boor's pyramids
+    ``casteljau_level``: one level ``s P_j + t P_{j+1}`` (§24.2), the one de Casteljau routine; it
+        runs every pyramid below, on arrays, lists of arrays, or lists of numbers.
+    ``casteljau_apex``, ``curve_points``, ``patch_points``: curve and patch points for many parameters
+        (§24.2, §24.6): ``bezier.de_casteljau``, ``derivative``, ``de_casteljau_with_derivative``,
+        ``curve_crossings``, ``patch_de_casteljau``, ``patch_derivatives``; ``bezier_intersection``'s
+        Newton steps and residuals.
+    ``casteljau_levels``: every level, one parameter per level: ``bezier.de_casteljau_steps`` (§24.2),
+        ``blossom.blossom_steps`` (§26.3).
+    ``casteljau_blossom``: the Bezier blossom at many argument sets: ``blossom.blossom`` (§26.2).
+    ``split``, ``split_patches``, ``quarter``: subdivision (§25.2, §25.3.2): ``bezier_subdivision``
+        (``subdivide``, ``subdivide_uniform``, ``render_by_subdivision``, ``subdivide_patch``,
+        ``subdivide_patch_uniform``, ``render_patch_by_subdivision``, ``smooth_continuation``,
+        ``join_order``), ``bezier_intersection`` (curve and patch intersection), ``knot_insertion.render``.
+    ``split_xy``: both coordinates of a planar polygon of plain floats halved in one call (§25.3.1): the
+        inner loop of ``bezier_intersection.intersect_curves`` (cubics and quadratics written out with
+        ``casteljau_level``'s arithmetic; ``tests/test_kernels.py`` checks them against it bit for bit).
+    ``point_and_tangent``: point and derivative from one scalar pyramid (§24.5; cubics and quadratics
+        written out the same way):
+        ``bezier_intersection``'s Newton refinement of curve intersections (§25.3.1).
+    ``bernstein_rows``: the Bernstein table (§24.3): ``bezier.bernstein``, ``bernstein_evaluate``,
+        ``patch_evaluate_grid``; ``bezier_subdivision.polygon_distance``, ``net_distance``.
+    ``de_boor_pyramid``: de Boor's pyramid in place with caller-supplied node weights (§27.2-27.5),
+        the one de Boor / blossom routine; it runs the two below and ``bspline.de_boor_steps``,
+        ``bspline.global_pyramid`` (a level at a time), ``knot_insertion.oslo_steps``.
+    ``de_boor_points``, ``de_boor_tables``: B-spline points for many parameters, weights tabulated
+        per span (§27.3): ``bspline.de_boor``, ``bspline.derivative``, ``bspline.curve_points``.
+    ``de_boor_blossom``: B-spline blossoms at many label sets (§27.2, §28.2): ``bspline.blossom``,
+        ``knot_insertion`` (``boehm_insert``, ``oslo``, ``to_piecewise_bezier``, ...).
+    ``domain``: the parameter domain of a knot vector (§27.2): ``bspline``, ``knot_insertion``.
+
+:mod:`~goldman_lib.kernels.polygons` -- control polygons measured and rewritten
+    ``flatness``, ``patch_flatness`` (§25.3): ``bezier_subdivision``, ``bezier_intersection``,
+        ``knot_insertion.render``.
+    ``signed_distances``, ``sign_changes`` (§24.4): ``bezier.variation_count``, ``curve_crossings``,
+        ``bezier_subdivision.subdivision_variation_counts``.
+    ``elevate`` (§24.5): ``bezier.elevate_degree``, ``bezier_subdivision.join_order``.
+
+:mod:`~goldman_lib.kernels.frames` -- vectors, lengths and normals
+    ``norm`` (§3): lengths at any magnitude: ``vectors``, ``vector_geometry``, ``transforms``,
+        ``quaternions``, ``mass_points``, ``lighting``, ``ray_tracing``.
+    ``unit_rows``, ``row_dots`` (§16.5): ``lighting`` (``unit_rows`` and the shading model),
+        ``ray_tracing``'s inner levels (reflected and refracted directions), ``vector_geometry``.
+    ``newell`` (§11.4, §21.1): Newell's normal, unnormalised: ``vector_geometry.newell_normal``
+        (unnormalised), ``solid_modeling``'s face normals (unit).  ``shading.newell_normal`` (unit) still
+        has its own copy of the formula: its body is in a file other branches edit today.
+    ``slerp`` (§11.6, §21.4.4): ``vector_geometry.slerp`` (checked) and, per pixel, Phong shading with
+        slerp (``shading._slerp_pair``).
+
+:mod:`~goldman_lib.kernels.iteration` -- iterated function systems
+    ``apply_affine_maps`` (§6.1): ``ifs.deterministic``, ``ifs.map_images``.
+    ``apply_maps``, ``iterate_maps`` (§29.3-29.4): ``subdivision_matrices.attractor``,
+        ``barycentric_attractor``.
+
+:mod:`~goldman_lib.kernels.relaxation` -- Jacobi and Gauss-Seidel sweeps for ``x = (c + w G x) / d``
+    ``gather``, ``jacobi_update``, ``gauss_seidel_sweep``: ``fixed_point.jacobi``,
+        ``fixed_point.gauss_seidel`` (§7.3.2), ``radiosity.jacobi``, ``radiosity.gauss_seidel`` (§23.5).
+
+:mod:`~goldman_lib.kernels.meshes` -- triangle meshes
+    ``rasterise`` (§21.2-21.3, §22.2): the one scan conversion: ``shading.rasterise_triangles`` (and
+        through it ``shading.render``, ``gouraud_triangle``), ``hidden_surfaces``' painter's coverage.
+
+``number`` (below): numbers in error messages, six significant digits: ``bspline``, ``knot_insertion``.
+"""
+
+from __future__ import annotations
+
+from goldman_lib.kernels import frames, iteration, meshes, polygons, pyramids, relaxation
+
+__all__ = ["frames", "iteration", "meshes", "polygons", "pyramids", "relaxation", "number"]
+
+
+def number(x) -> str:
+    """A number in error messages and status lines: six significant digits (``0.333333``, ``1e-07``).
+
+    >>> number(1 / 3), number(1e-7)
+    ('0.333333', '1e-07')
+    """
+    return f"{float(x):.6g}"
