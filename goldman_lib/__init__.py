@@ -46,7 +46,7 @@ Part IV, geometric modeling: freeform curves and surfaces
 - ``subdivision_surfaces``  chapter 30, subdivision surfaces
 
 Under them all: ``validation`` (argument checks and work budgets: the messages name the parameter
-and the rule), ``angles`` (degrees), the unchecked array kernels the checked functions share, and
+and the rule), ``angles`` (degrees), ``kernels`` (the unchecked array kernels the checked functions share: de Casteljau and de Boor pyramids, polygons, frames, meshes, iteration, relaxation; one home each), and
 
 - ``goldman_lib.exercises``  the checkers of the notebooks' exercises, "show that" exercises and
   programming projects (``deal`` makes numeric exercises deal new instances)

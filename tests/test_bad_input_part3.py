@@ -9,6 +9,7 @@ written here (plane intersection and a same-side point-in-polygon test), not aga
 """
 
 import signal
+import re
 import time
 from contextlib import contextmanager
 
@@ -286,8 +287,19 @@ def test_a_tolerance_below_round_off_is_a_stall_not_a_million_iterations(solver)
     F /= F.sum(1, keepdims=True)
     rho, E = rng.uniform(0.5, 0.9, n), rng.random(n)
     args = (F, rho, E) + ((np.ones(n),) if solver == "progressive_refinement" else ())
-    raises_fast(lambda: getattr(rd, solver)(*args, tol=1e-300), r"tol must be reachable: .* stalled at residual",
-                seconds=5.0)
+    # Round-off decides whether the residual ever reaches exactly 0 (on some CPUs Gauss-Seidel's does:
+    # then tol = 1e-300 is met, honestly); what must never happen is a million iterations.  So: a
+    # quick refusal naming the stall, or a quick, genuine convergence in few sweeps.
+    start = time.process_time()
+    with time_limit(5.0):
+        try:
+            history = getattr(rd, solver)(*args, tol=1e-300, return_history=True)
+        except ValueError as exc:
+            assert re.search(r"tol must be reachable: .* stalled at residual", str(exc)), str(exc)
+        else:
+            assert history.converged and history.residuals[-1] <= 1e-300, history.residuals[-3:]
+            assert history.iterations < 1000, history.iterations
+    assert time.process_time() - start < 5.0
 
 
 # -- issue 20 §3 budgets: lights, patches, intervals, tree depth ---------------------------------------------
