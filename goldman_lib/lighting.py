@@ -148,8 +148,14 @@ def reflect(vectors, normals) -> np.ndarray:
                              why="are too large in magnitude")
 
 
-def _scale(cosines, k, light_intensity, k_name, i_name):
-    """``k * I * cos`` with k and I each a number or an RGB triple: (N,) or (N, 3)."""
+def scaled_terms(cosines, k, light_intensity, k_name, i_name):
+    """``k * I * cos`` with k and I each a number or an RGB triple: (N,) or (N, 3) (the factor of
+    every term of §16.3-16.5; k and I checked, named by ``k_name`` and ``i_name``).  Public for the
+    renderers (no underscore), out of ``__all__``: its inputs are already checked arrays.
+
+    >>> scaled_terms(np.array([1.0, 0.5]), 0.8, (1.0, 0.5, 0.0), "kd", "I").tolist()
+    [[0.8, 0.4, 0.0], [0.4, 0.2, 0.0]]
+    """
     k = as_float_array(k, k_name)
     i = as_float_array(light_intensity, i_name)
     for arr, name in ((k, k_name), (i, i_name)):
@@ -180,7 +186,13 @@ def _eye(eye, P):
     return E
 
 
-def _lights(lights) -> tuple:
+def as_lights(lights) -> tuple:
+    """``lights`` as a tuple of :class:`Light` (one Light, or a sequence of them); TypeError naming
+    ``lights`` otherwise.  Public for the renderers, out of ``__all__``.
+
+    >>> len(as_lights(Light((0, 0, 5))))
+    1
+    """
     if isinstance(lights, Light):
         return (lights,)
     try:
@@ -199,7 +211,7 @@ def ambient(ka, ambient_intensity) -> np.ndarray:
     >>> ambient(0.5, [1.0, 0.5, 0.0]).tolist()
     [0.5, 0.25, 0.0]
     """
-    return _scale(np.float64(1.0), ka, ambient_intensity, "ka", "ambient_intensity")
+    return scaled_terms(np.float64(1.0), ka, ambient_intensity, "ka", "ambient_intensity")
 
 
 def _unit(v):
@@ -251,7 +263,7 @@ def diffuse(points, normals, light_position, kd, light_intensity, *, clamp: bool
     clamp = _check_clamp(clamp)
     P, N = _geometry(points, normals)
     cos_d, _ = _cosines(P, N, as_points(light_position, "light_position", ndim=1, dim=3), clamp=clamp)
-    return _scale(cos_d, kd, light_intensity, "kd", "light_intensity")
+    return scaled_terms(cos_d, kd, light_intensity, "kd", "light_intensity")
 
 
 def specular(points, normals, light_position, eye, ks, exponent, light_intensity, *, clamp: bool = True) -> np.ndarray:
@@ -271,7 +283,7 @@ def specular(points, normals, light_position, eye, ks, exponent, light_intensity
     with np.errstate(over="ignore", invalid="ignore"):
         V = unit_rows(finite_result(_eye(eye, P) - P, "eye or points", why="is too large in magnitude"), "eye - points")
     _, power = _cosines(P, N, light, V, _non_negative(exponent, "exponent"), clamp=clamp)
-    return _scale(power, ks, light_intensity, "ks", "light_intensity")
+    return scaled_terms(power, ks, light_intensity, "ks", "light_intensity")
 
 
 def blinn_specular(points, normals, light_position, eye, ks, exponent, light_intensity) -> np.ndarray:
@@ -302,7 +314,7 @@ def blinn_specular(points, normals, light_position, eye, ks, exponent, light_int
     nh = np.where(_dot(L, N) > 0, np.maximum(_dot(N, H), 0.0), 0.0)
     with np.errstate(under="ignore", divide="ignore"):
         power = np.where(nh > 0, np.power(nh, n), 0.0)
-    return _scale(power, ks, light_intensity, "ks", "light_intensity")
+    return scaled_terms(power, ks, light_intensity, "ks", "light_intensity")
 
 
 def intensity(points, normals, eye, lights, material: Material, ambient_light=0.2, shadowed=None,
@@ -331,7 +343,7 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
     if not isinstance(material, Material):
         raise TypeError(f"material must be a goldman_lib.lighting.Material; got {type(material).__name__}")
     clamp = _check_clamp(clamp)
-    lights = _lights(lights)
+    lights = as_lights(lights)
     P, N = _geometry(points, normals)
     E = _eye(eye, P)
     if two_sided:
@@ -352,7 +364,7 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
         if np.any(light_fraction < 0) or np.any(light_fraction > 1):
             raise ValueError("light_fraction must lie in [0, 1] (the fraction of a light that reaches a point)")
     C, S = np.asarray(material.colour), np.asarray(material.specular_colour)
-    ia = _scale(np.float64(1.0), material.ambient, ambient_light, "material.ambient", "ambient_light")
+    ia = scaled_terms(np.float64(1.0), material.ambient, ambient_light, "material.ambient", "ambient_light")
     total = np.broadcast_to(ia * C, P.shape).copy()
     if material.specular > 0:                                                     # once for all lights
         with np.errstate(over="ignore", invalid="ignore"):
@@ -454,7 +466,7 @@ def shade_faces(centroids, normals, eye, colour, lights=None, ambient_light=0.35
             raise ValueError(f"colour must be an RGB triple or one per face {centroids.shape} in [0, 1]")
     material = Material(colour=(1.0, 1.0, 1.0) if per_face else colour, ambient=1.0, diffuse=0.8,
                         specular=0.0 if per_face else 0.15, exponent=20)
-    lights = default_lights() if lights is None else _lights(lights)
+    lights = default_lights() if lights is None else as_lights(lights)
     with np.errstate(over="ignore", invalid="ignore"):
         shade = intensity(centroids, normals, eye, lights, material, ambient_light, two_sided=True)
         if per_face:

@@ -40,9 +40,8 @@ from typing import NamedTuple
 import numpy as np
 
 from goldman_lib import lighting, transforms
-from goldman_lib import vector_geometry as vg
 from goldman_lib.kernels import frames, meshes
-from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
+from goldman_lib.validation import (MAX_ITEMS, as_colour, as_float, as_float_array, as_int, as_points, check_finite,
                                     finite_result, within_budget)
 
 __all__ = ["newell_normal", "face_normals", "vertex_normals", "newell_face_normals", "average_vertex_normals",
@@ -718,8 +717,8 @@ def render(positions, triangles, camera: Camera, lights, material=None, mode: st
     material = lighting.Material() if material is None else material
     if not isinstance(material, lighting.Material):
         raise TypeError(f"material must be a goldman_lib.lighting.Material; got {type(material).__name__}")
-    lights = lighting._lights(lights)
-    bg = np.asarray(lighting._colour(background, "background"))
+    lights = lighting.as_lights(lights)
+    bg = np.asarray(as_colour(background, "background"))
     V, T = _mesh(positions, triangles)
     if normals is None:
         N = average_vertex_normals(V, T)
@@ -727,7 +726,7 @@ def render(positions, triangles, camera: Camera, lights, material=None, mode: st
         N = lighting.unit_rows(as_points(normals, "normals", dim=3), "normals")
         if N.shape != V.shape:
             raise ValueError(f"normals must have the shape of positions {V.shape}; got {N.shape}")
-    ambient_light = lighting._scale(np.float64(1.0), 1.0, ambient_light, "ambient_light", "ambient_light")
+    ambient_light = lighting.scaled_terms(np.float64(1.0), 1.0, ambient_light, "ambient_light", "ambient_light")
     eye = np.asarray(camera.eye)
     S = camera.project(V)
     if cull_backfaces and len(T):

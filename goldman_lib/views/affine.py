@@ -28,7 +28,7 @@ from goldman_lib import affine
 from goldman_lib.angles import cos_sin_degrees
 from goldman_lib.validation import as_points
 from goldman_lib.views import style
-from goldman_lib.views.drag import PointDrag, _snap, drag_sliders
+from goldman_lib.views.drag import PointDrag, drag_sliders, snap_to_slider
 from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, InteractiveView
 from goldman_lib.views.turtle import stroke_data
 
@@ -249,7 +249,7 @@ def transform_explorer(kind: str = "rotation", figure: str = "letter F") -> Inte
 
     def on_drag(k, x, y):
         xs, ys = ("tx", "ty") if view.controls["kind"].value == "translation" else ("cx", "cy")
-        view.set_values(**{xs: _snap(controls[xs], x), ys: _snap(controls[ys], y)})
+        view.set_values(**{xs: snap_to_slider(controls[xs], x), ys: snap_to_slider(controls[ys], y)})
 
     view.drag = PointDrag(ax, grips, on_drag)
     return view

@@ -142,7 +142,7 @@ class PointDrag:
             self._event("button_release_event", x, y)
 
 
-def _snap(slider, value: float) -> float:
+def snap_to_slider(slider, value: float) -> float:
     """``value`` clamped to a slider's range and rounded to its step (what the slider would hold)."""
     lo, hi = slider.min, slider.max
     value = min(max(value, lo), hi)
@@ -172,7 +172,7 @@ def drag_sliders(view, ax, pairs: Sequence[tuple[str, str]], radius: float = 12.
 
     def on_drag(k, x, y):
         x_name, y_name = pairs[k]
-        view.set_values(**{x_name: _snap(view.controls[x_name], x), y_name: _snap(view.controls[y_name], y)})
+        view.set_values(**{x_name: snap_to_slider(view.controls[x_name], x), y_name: snap_to_slider(view.controls[y_name], y)})
 
     drag = PointDrag(ax, points, on_drag, radius=radius)
     drag.sliders = [(x_name, y_name) for x_name, y_name in pairs]

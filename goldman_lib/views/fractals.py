@@ -23,7 +23,7 @@ from goldman_lib.validation import as_float, as_int
 from goldman_lib.views import style
 from goldman_lib.views import _checks
 from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
-from goldman_lib.views.turtle import _PathArtists, plot_polylines, stroke_data
+from goldman_lib.views.turtle import PathArtists, plot_polylines, stroke_data
 
 __all__ = ["plot_fractal", "fractal_explorer", "looping_lemma_explorer", "base_case_explorer",
            "GROWS_UP", "MAX_DRAWN", "shown_level", "BASE_OPTIONS"]
@@ -95,7 +95,7 @@ def fractal_explorer(name: str = "Koch curve", level: int = 4, *, figsize=style.
         "level": int_slider("level", level, 0, 8),
     }
     fig, ax = style.new_axes(figsize)
-    artists = _PathArtists(ax, linewidth=1.0)
+    artists = PathArtists(ax, linewidth=1.0)
     programs = {k: f() for k, f in fractals.PROGRAMS.items()}
     text = widgets.HTML(layout=widgets.Layout(width="290px"))
 
@@ -168,7 +168,7 @@ def looping_lemma_explorer(angle: float = 150.0, repetitions: int = 12, bend: fl
         "bend": float_slider("inner bend", bend, -90, 90, 5, readout=".0f", **wide),
     }
     fig, ax = style.new_axes(figsize)
-    artists = _PathArtists(ax, linewidth=1.4)
+    artists = PathArtists(ax, linewidth=1.4)
     pal = style.PALETTE
     (circle,) = ax.plot([], [], ":", color=pal["control"], linewidth=1, zorder=1)
     (starts_line,) = ax.plot([], [], "o", color=pal["accent"], markersize=4, zorder=3)
@@ -265,7 +265,7 @@ def base_case_explorer(base: str = "Koch: tent", level: int = 1, *, figsize=styl
     pal = style.PALETTE
     (ref_line,) = ax1.plot([], [], color="#c8c8c8", linewidth=2.0, zorder=1)
     (cur_line,) = ax1.plot([], [], color=pal["curve"], linewidth=1.0, zorder=2)
-    base_artists = _PathArtists(ax0, linewidth=1.6)
+    base_artists = PathArtists(ax0, linewidth=1.6)
     programs = {f: fractals.PROGRAMS[f]() for f in fractals.BASE_CASES}
     reference = {f: p.polylines(5) for f, p in programs.items()}
     distances: dict = {}  # (base, level) -> Hausdorff distance, computed on the first visit

@@ -385,7 +385,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
                                                   widgets.VBox(list(control.controls.values()))])])
 
     # drag the light in the plane of the drawing (it keeps its distance from that plane)
-    from goldman_lib.views.drag import PointDrag, _snap
+    from goldman_lib.views.drag import PointDrag, snap_to_slider
 
     def light_point():
         return project(frame["plane"], control.marker_positions(view.values()))
@@ -397,7 +397,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         N = np.cross(U, V)
         P = origin + a * U + b * V + float(np.dot(lamp - origin, N)) * N
         names = [control.name(0, axis) for axis in "xyz"]
-        view.set_values(**{name: _snap(view.controls[name], float(v)) for name, v in zip(names, P)})
+        view.set_values(**{name: snap_to_slider(view.controls[name], float(v)) for name, v in zip(names, P)})
 
     def on_release(k):
         if frame.pop("hold", False):

@@ -96,7 +96,7 @@ def _limits(polylines, point, pad=0.08):
     return (lo[0] - margin, hi[0] + margin), (lo[1] - margin, hi[1] + margin)
 
 
-class _PathArtists:
+class PathArtists:
     """The artists of one turtle drawing: the strokes (one Line2D), the start, the turtle."""
 
     def __init__(self, ax, color=None, linewidth=1.6):
@@ -153,7 +153,7 @@ def plot_polylines(polylines, ax=None, *, point=None, direction=None, start=None
         start = polys[0][0] if polys else point
     start = as_points(start, "start", ndim=1, dim=2)
     ax = style.get_axes(ax)
-    _PathArtists(ax, color=color, linewidth=linewidth).set(polys, start, point, direction)
+    PathArtists(ax, color=color, linewidth=linewidth).set(polys, start, point, direction)
     if title:
         ax.set_title(title, fontsize=10)
     return ax
@@ -214,7 +214,7 @@ def polygon_explorer(angle: float = 72.0, step: float = 1.0, repetitions: int = 
         "factor": float_slider("RESIZE", factor, 0.8, 1.2, 0.01, **wide),
     }
     fig, ax = style.new_axes(figsize)
-    artists = _PathArtists(ax)
+    artists = PathArtists(ax)
 
     def update(angle, step, repetitions, factor):
         angle = _checks.number(angle, "angle", 0.0, 360.0)
@@ -262,7 +262,7 @@ def turtle_program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSI
     'TurtleSyntaxError: line 1, column 26: expected a number after FORWARD, found end of program'
     """
     def make_runner(ax):
-        artists = _PathArtists(ax)
+        artists = PathArtists(ax)
 
         def run(program):
             t = turtle.trace(program)
