@@ -10,7 +10,7 @@ the kernel (``NPY_DISABLE_CPU_FEATURES``), this process and every other one keep
 comparison of the ``nbval-check-output`` cells is then the portability check of *Portable results*
 (a residual printed to its last bits differs there), with each notebook executed once.  On top of
 nbval, every cell must produce the same kinds of text output as stored and no error (so stale
-outputs fail too); ``tests/test_notebook_determinism.py`` re-runs a notebook on its own only when
+outputs fail too); ``tests/notebooks/test_notebook_determinism.py`` re-runs a notebook on its own only when
 nbval does not run it in the same session.
 """
 

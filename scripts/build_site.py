@@ -382,7 +382,7 @@ def write_source(src: Path, cfg: dict, quiet: bool = False) -> dict:
     existing = sorted(p.stem for p in COURSE.glob("[0-9][0-9]_*.ipynb"))
     if sorted(chapters) != existing:
         raise SystemExit(f"build_site: the course map lists {sorted(set(chapters) ^ set(existing))} "
-                         "differently from course/ (tests/test_course_index.py says how they must agree)")
+                         "differently from course/ (tests/notebooks/test_course_index.py says how they must agree)")
     _write_if_changed(src / "_toc.yml", toc_yaml(parts))
     _write_if_changed(src / "_config.yml", config_yaml(cfg))
     _write_if_changed(src / STATIC / "site.css", SITE_CSS)

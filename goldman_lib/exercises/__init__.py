@@ -26,10 +26,10 @@ it in a message, without calling the answer's own ``__repr__``.  :func:`read_num
 
 A wrong answer is explained, never answered: messages name the slip, or say which way an answer
 is off and roughly how much in words ("a little too large"), never the gap in digits, nor what the
-answer is (``tests/test_exercises.py`` feeds every checker its recognised slips
+answer is (``tests/exercises/test_exercises.py`` feeds every checker its recognised slips
 and fails if a message gives the expected value away).  A right answer may confirm it.  Worked
 solutions are not printed by code: they sit in collapsed ``<details>`` blocks of the notebook
-(``tests/test_solutions.py`` runs their code and checks each one passes its checker), and the
+(``tests/exercises/test_solutions.py`` runs their code and checks each one passes its checker), and the
 programming projects' checker is :mod:`goldman_lib.exercises.projects`.
 
 Numeric exercises deal new instances (issue 17 §3): a chapter registers them on a

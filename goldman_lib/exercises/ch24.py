@@ -5,7 +5,7 @@ is the module constants below, which the stored notebook shows; ``deal("check_..
 beside the exercise) deals another, and the checker, ``PROBLEMS`` and ``steps("check_...")`` follow the
 current instance.  The chapter's "show that" exercises (in :mod:`goldman_lib.exercises.proofs`) ask for
 an identity, not a number, so they do not deal.  ``SLIPS`` holds the wrong answers of the kinds each
-checker recognises, for the stored instance (``tests/test_solutions.py`` feeds them to the checkers and
+checker recognises, for the stored instance (``tests/exercises/test_solutions.py`` feeds them to the checkers and
 fails a message that gives the answer away).  The data differ from the chapter's worked examples (the
 cubic (0, 0), (1, 2.5), (3, 2.5), (4, 0.5) and the bicubic patch of §24.6), so no exercise asks for a
 number the chapter printed.

@@ -781,7 +781,7 @@ deal, steps, current, deal_button = DECK.deal, DECK.steps, DECK.current, DECK.bu
 PROBLEMS = DECK.problems({})
 
 
-#: Wrong answers of the kinds each checker recognises (tests/test_solutions.py feeds them in).
+#: Wrong answers of the kinds each checker recognises (tests/exercises/test_solutions.py feeds them in).
 SLIPS = {
     "check_local_de_boor": [[4.0, 3.75], [3.0, 5.0], [5.0, 4.0], [4.0, 4.0], [5.0, 10.0], [0.0, 0.0]],
     "check_basis_values": [[0.0625, 0.375, 0.5625], [0.375, 7 / 12, 1 / 24], [0.1, 0.5, 0.3], [0.05, 0.575, 0.375]],

@@ -659,7 +659,7 @@ deal, steps, current, deal_button = DECK.deal, DECK.steps, DECK.current, DECK.bu
 PROBLEMS = DECK.problems({})
 
 
-#: Wrong answers of the kinds each checker recognises (tests/test_solutions.py feeds them in).
+#: Wrong answers of the kinds each checker recognises (tests/exercises/test_solutions.py feeds them in).
 SLIPS = {
     "check_boehm_insert": [QUAD_CTRL.tolist(), [[0, 0], [1, 2], [3.5, 4], [4, 4], [6, 0]],
                            [[0, 0], [0.5, 1], [2.5, 4], [4, 4], [6, 0]], [[0, 0], [2, 4], [2.5, 4], [3, 6], [6, 0]],

@@ -36,7 +36,7 @@ an :class:`Exercise`:
 - ``statement(params)``, ``steps(params)``: the problem text (citing the book's section) and the worked
   steps (markdown text).
 
-``tests/test_exercise_generators.py`` draws a few hundred seeds of every exercise that deals and
+``tests/exercises/test_exercise_generators.py`` draws a few hundred seeds of every exercise that deals and
 checks these properties against the checker itself.
 """
 

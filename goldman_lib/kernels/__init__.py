@@ -5,7 +5,7 @@ checked public functions validate their input and call these; other library modu
 directly on data they validated (the hot paths: the tracer's inner levels, per-pixel work).
 Views, notebooks and exercise checkers call the public functions only.  Every name here is
 public inside the package: no library module imports another module's private (``_``) name
-(``tests/test_imports_private.py`` reads the imports).
+(``tests/library/test_imports_private.py`` reads the imports).
 
 The map: each kernel, what it computes, the book section it serves, and who calls it.
 
@@ -25,7 +25,7 @@ The map: each kernel, what it computes, the book section it serves, and who call
         ``join_order``), ``bezier_intersection`` (curve and patch intersection), ``knot_insertion.render``.
     ``split_xy``: both coordinates of a planar polygon of plain floats halved in one call (§25.3.1): the
         inner loop of ``bezier_intersection.intersect_curves`` (cubics and quadratics written out with
-        ``casteljau_level``'s arithmetic; ``tests/test_kernels.py`` checks them against it bit for bit).
+        ``casteljau_level``'s arithmetic; ``tests/library/test_kernels.py`` checks them against it bit for bit).
     ``point_and_tangent``: point and derivative from one scalar pyramid (§24.5; cubics and quadratics
         written out the same way):
         ``bezier_intersection``'s Newton refinement of curve intersections (§25.3.1).

@@ -7,7 +7,7 @@
 - distinguishable: no named slip equals the answer and no two named slips coincide, within the
   checker's own tolerance (``same``); each slip fed to the checker is rejected, answered, with a
   message of its own (the messages of the slips differ pairwise, the learner's quoted answer
-  removed) that gives neither the answer's numbers away (the rule of ``tests/test_solutions.py``);
+  removed) that gives neither the answer's numbers away (the rule of ``tests/exercises/test_solutions.py``);
 - reproducible: the same seed twice gives the same instance (checked on every tenth seed); seed 0 is
   the stored instance.
 
@@ -154,7 +154,7 @@ def test_every_dealt_instance_is_well_posed_and_its_slips_are_told_apart(module,
 
 def _small_int(value: float) -> bool:
     """A small whole number (a coordinate 0, 1, 2 or the "2" of "2x2") is in too many words and data
-    to count as the answer given away (the rule of ``tests/test_exercises_leaks.py`` for docstrings)."""
+    to count as the answer given away (the rule of ``tests/exercises/test_exercises_leaks.py`` for docstrings)."""
     return abs(value - round(value)) <= 1e-9 and abs(value) <= 12
 
 

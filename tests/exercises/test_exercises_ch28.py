@@ -1,7 +1,7 @@
 """Tests of the chapter-28 exercise checkers and of the Boehm project checker.  Right answers are
 worked by hand from the problem constants (so a bug in goldman_lib.knot_insertion cannot make a
-checker accept a wrong answer); the generic checks of every checker are in tests/test_exercises.py
-and tests/test_solutions.py."""
+checker accept a wrong answer); the generic checks of every checker are in tests/exercises/test_exercises.py
+and tests/exercises/test_solutions.py."""
 
 import numpy as np
 import pytest

@@ -46,7 +46,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 TOC_PATH = ROOT / "BOOK_TOC.md"
 SHARED_TOC = ROOT.parent / "shared" / "BOOK_TOC.md"
 THIS = Path(__file__).resolve()

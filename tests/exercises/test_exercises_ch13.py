@@ -145,7 +145,7 @@ def test_dealt_instances_are_checked_on_their_own_numbers():
         ch13.DECK.reset()
 
 
-# -- the programming project (its corpus of right and wrong solutions: tests/projects/test_ch13_project.py) --
+# -- the programming project (its corpus of right and wrong solutions: tests/exercises/projects/test_ch13_project.py) --
 
 def test_project_reports_a_crash_with_the_learners_line():
     def broken(sources, images):

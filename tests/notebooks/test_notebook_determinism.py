@@ -17,7 +17,7 @@ Only widget model ids (random per run) and images are left out.
 In ``make test`` nbval itself runs its kernels under that dispatch (see the root ``conftest.py``):
 each notebook is executed once, for nbval and this check together, and the stand-alone re-run below
 is left out.  It runs when nbval does not execute the notebook in the same session, for example
-``pytest tests/test_notebook_determinism.py -k 16_`` while writing chapter 16.
+``pytest tests/notebooks/test_notebook_determinism.py -k 16_`` while writing chapter 16.
 """
 
 import importlib.util
@@ -28,7 +28,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 NOTEBOOKS = sorted((ROOT / "course").glob("*.ipynb"))
 
 spec = importlib.util.spec_from_file_location("execute_notebooks", ROOT / "scripts" / "execute_notebooks.py")

@@ -15,7 +15,7 @@ from hypothesis.extra.numpy import arrays
 
 from goldman_lib import bezier
 
-PEER = Path(__file__).resolve().parents[2] / "shared" / "peer-data"
+PEER = Path(__file__).resolve().parents[3] / "shared" / "peer-data"
 CASES_FILE = PEER / "bezier_curve_intersections.json"
 
 coord = st.floats(-10, 10, allow_nan=False, allow_infinity=False)

@@ -4,7 +4,7 @@ at tangencies, near-tangencies and contacts within tolerance.
 Expected values come from closed forms (parabolas y = +-x^2, a cubic and its tangent line, the
 reflection of a parabola arc across one of its tangent lines, symmetric cubic circle arcs) and
 from the ``bezier`` package (dhermes/bezier, ``Curve.intersect``); the transversal cases and the
-scalar/array agreement are in ``tests/test_bezier_subdivision.py``.
+scalar/array agreement are in ``tests/library/test_bezier_subdivision.py``.
 """
 
 from __future__ import annotations

@@ -519,7 +519,7 @@ def test_two_show_that_exercises_in_every_chapter_that_proves_and_in_its_noteboo
     its notebook."""
     from pathlib import Path
 
-    course = Path(__file__).resolve().parents[1] / "course"
+    course = Path(__file__).resolve().parents[2] / "course"
     for number in range(1, 31):
         names = [n for n in proofs.PROBLEMS if n.startswith(f"ch{number:02d}_")]
         assert len(names) >= 2, f"chapter {number} has {len(names)} show-that exercises"
@@ -546,7 +546,7 @@ def test_slips_are_rejected_and_named(name):
         assert words in r.message, f"{name}: expected {words!r} in {r}"
 
 
-# Every form in proofs.SLIPS is fed to its checker by tests/test_solutions.py
+# Every form in proofs.SLIPS is fed to its checker by tests/exercises/test_solutions.py
 # (test_wrong_answers_are_explained_without_the_answer), which finds these checkers through the
 # worked solutions in the notebooks: wrong, answered, explained, no number of the answer printed.
 

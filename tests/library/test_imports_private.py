@@ -23,7 +23,7 @@ import sys
 
 import pytest
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 PACKAGE = ROOT / "goldman_lib"
 
 # Exceptions, each with a reason: (file relative to the repository, the private name used) -> why.

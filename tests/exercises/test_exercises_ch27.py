@@ -1,6 +1,6 @@
 """Chapter 27 exercise checkers: right answers (worked by hand here, not by the library) pass, each
 recognised slip gets its own explanation, and no message gives the answer away (the generic
-checks of every checker are in tests/test_exercises.py and tests/test_solutions.py)."""
+checks of every checker are in tests/exercises/test_exercises.py and tests/exercises/test_solutions.py)."""
 
 import numpy as np
 import pytest

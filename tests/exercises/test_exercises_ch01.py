@@ -1,5 +1,5 @@
 """Chapter 1 checkers: right for answers worked by hand, wrong with the specific reason for each
-recognised slip.  (None / ... / garbage are checked for every chapter in tests/test_exercises.py.)"""
+recognised slip.  (None / ... / garbage are checked for every chapter in tests/exercises/test_exercises.py.)"""
 
 import math
 

@@ -4,7 +4,7 @@ past a slider's ends, hostile programs.  ``update`` either draws (finite arrays 
 a ValueError/TypeError, and the view then shows that message in its status line; nothing hangs
 (issue 10: every input gets bounded work and a clear answer).
 
-The in-range sweep is tests/test_widget_sweeps.py.
+The in-range sweep is tests/views/test_widget_sweeps.py.
 """
 
 import re

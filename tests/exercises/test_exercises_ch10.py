@@ -1,6 +1,6 @@
 """Tests of the chapter-10 exercise checkers.  Right answers are worked by hand from the problem
 constants (so a bug in goldman_lib.vectors cannot make a checker accept a wrong answer); the
-generic checks of every checker are in tests/test_exercises.py and tests/test_solutions.py."""
+generic checks of every checker are in tests/exercises/test_exercises.py and tests/exercises/test_solutions.py."""
 
 import math
 

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 CHAPTERS = sorted((ROOT / "course").glob("[0-9][0-9]_*.ipynb"))
 # The repository's copy of the book outline (its chapter and section list); the shared folder's
 # original, where it sits beside the clone, must agree with it (test_outline_copy_is_current).
@@ -88,7 +88,7 @@ def test_summary_and_at_least_five_checked_exercises_with_collapsed_solutions(pa
         assert "nbval-check-output" in c["tags"]
     for c in solution:
         assert c["cell_type"] == "markdown" and c["text"].lstrip().startswith("<details"), (
-            "a worked solution is a collapsed <details> block in markdown (tests/test_solutions.py)")
+            "a worked solution is a collapsed <details> block in markdown (tests/exercises/test_solutions.py)")
 
 
 @chapter

@@ -4,7 +4,7 @@ it to two significant digits ("off by 0.033" with the learner's own 1.2 gives 1.
 checker's docstring (what Shift+Tab shows inside ``chNN.check_...(``) never states the value.
 
 Each checker's right answer comes from its worked solution in the chapter's notebook (the argument
-of the solution's last call, as ``tests/test_solutions.py`` finds it); the wrong answers fed are the
+of the solution's last call, as ``tests/exercises/test_solutions.py`` finds it); the wrong answers fed are the
 right one shifted up and down (all entries, and one entry alone, by amounts that are not round), a
 wrong type, and each slip the chapter recognises (``SLIPS``).
 """

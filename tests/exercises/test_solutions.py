@@ -27,7 +27,7 @@ import pytest
 
 from goldman_lib.exercises import Result
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 CHAPTERS = sorted((ROOT / "course").glob("[0-9][0-9]_*.ipynb"))
 FENCE = re.compile(r"```python\n(.*?)```", re.S)
 
