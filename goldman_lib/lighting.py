@@ -40,7 +40,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from goldman_lib.validation import as_colour, as_float, as_float_array, as_points, check_finite, finite_result
-from goldman_lib.kernels import frames
+from goldman_lib.kernels import frames, illumination
 
 __all__ = ["Light", "Material", "unit_rows", "reflect", "ambient", "diffuse", "specular", "blinn_specular",
            "intensity", "to_image", "light_direction", "default_lights", "shade_faces", "highlight_half_width"]
@@ -144,8 +144,7 @@ def reflect(vectors, normals) -> np.ndarray:
     v = as_points(vectors, "vectors", ndim=None, dim=3)
     n = as_points(normals, "normals", ndim=None, dim=3)
     with np.errstate(over="ignore", invalid="ignore"):
-        return finite_result(2 * _dot(v, n)[..., None] * n - v, "vectors and normals",
-                             why="are too large in magnitude")
+        return finite_result(illumination.reflect(v, n), "vectors and normals", why="are too large in magnitude")
 
 
 def scaled_terms(cosines, k, light_intensity, k_name, i_name):
@@ -226,23 +225,11 @@ def _check_clamp(clamp) -> bool:
 
 
 def _cosines(P, N, light_position, V=None, exponent=None, name="light_position", clamp=True):
-    """Unchecked kernel of the three terms for one light: ``max(L . N, 0)`` and, given unit ``V``,
-    ``(R . V)^n`` (0 where ``L . N <= 0`` or ``R . V <= 0``), using ``R . V = 2 (L . N)(N . V) - L . V``
-    so ``R`` itself is never formed.  P, N (unit), V: (..., 3).  ``name``: the light's position, blamed
-    (with points) if ``light_position - P`` overflows.  ``clamp=False`` (the unsafe setting): ``L . N``
-    as it is (negative where the light is behind the surface) and the specular term not switched off
-    there (still 0 where ``R . V <= 0``: a negative number has no real power)."""
+    """:func:`goldman_lib.kernels.illumination.cosines` after checking that ``light_position - P``
+    stays finite (``name``: the light's position, blamed with the points if it does not)."""
     with np.errstate(over="ignore", invalid="ignore"):
-        L = _unit(finite_result(light_position - P, f"{name} or points", why="is too large in magnitude"))
-    ln = _dot(L, N)
-    cos_d = np.maximum(ln, 0.0) if clamp else ln
-    if V is None:
-        return cos_d, None
-    rv = 2.0 * ln * _dot(N, V) - _dot(L, V)
-    rv = np.where(ln > 0, np.maximum(rv, 0.0), 0.0) if clamp else np.maximum(rv, 0.0)
-    with np.errstate(under="ignore", divide="ignore"):
-        power = np.where(rv > 0, np.power(rv, exponent), 0.0)
-    return cos_d, power
+        finite_result(light_position - P, f"{name} or points", why="is too large in magnitude")
+    return illumination.cosines(P, N, light_position, V, exponent, clamp)
 
 
 def diffuse(points, normals, light_position, kd, light_intensity, *, clamp: bool = True) -> np.ndarray:
@@ -365,30 +352,23 @@ def intensity(points, normals, eye, lights, material: Material, ambient_light=0.
             raise ValueError("light_fraction must lie in [0, 1] (the fraction of a light that reaches a point)")
     C, S = np.asarray(material.colour), np.asarray(material.specular_colour)
     ia = scaled_terms(np.float64(1.0), material.ambient, ambient_light, "material.ambient", "ambient_light")
-    total = np.broadcast_to(ia * C, P.shape).copy()
     if material.specular > 0:                                                     # once for all lights
         with np.errstate(over="ignore", invalid="ignore"):
             V = unit_rows(finite_result(E - P, "eye or points", why="is too large in magnitude"), "eye - points")
     else:
         V = None
-    for k, light in enumerate(lights):
-        cos_d, power = _cosines(P, N, np.asarray(light.position), V, material.exponent, f"lights[{k}].position",
-                                clamp=clamp)
-        with np.errstate(over="ignore", invalid="ignore"):
-            term = cos_d[..., None] * finite_result(material.diffuse * C * light.rgb,
-                                                    f"lights[{k}].intensity and material.diffuse",
-                                                    why="are too large in magnitude")
-            if power is not None:
-                term += power[..., None] * finite_result(material.specular * S * light.rgb,
-                                                         f"lights[{k}].intensity and material.specular",
-                                                         why="are too large in magnitude")
-            if shadowed is not None:
-                term[shadowed[..., k]] = 0.0
-            if light_fraction is not None:
-                term *= light_fraction[..., k, None]
-            total += term
-        finite_result(total, f"lights (up to lights[{k}]) and material", why="are too bright together")
-    return total
+    with np.errstate(over="ignore", invalid="ignore"):
+        for k, light in enumerate(lights):       # the checks of each light, then the terms in one kernel
+            finite_result(np.asarray(light.position) - P, f"lights[{k}].position or points",
+                          why="is too large in magnitude")
+            finite_result(material.diffuse * C * light.rgb, f"lights[{k}].intensity and material.diffuse",
+                          why="are too large in magnitude")
+            finite_result(material.specular * S * light.rgb, f"lights[{k}].intensity and material.specular",
+                          why="are too large in magnitude")
+    total = illumination.phong(P, N, V, [(np.asarray(light.position), light.rgb) for light in lights], C, S, ia,
+                               material.diffuse, material.specular if V is not None else 0.0, material.exponent,
+                               clamp=clamp, shadowed=shadowed, fraction=light_fraction)
+    return finite_result(total, "lights and material", why="are too bright together")
 
 
 def highlight_half_width(exponent, fraction=0.5) -> float:

@@ -46,7 +46,7 @@ import numpy as np
 from goldman_lib import lighting, shading
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Plane, Sphere
-from goldman_lib.kernels import frames
+from goldman_lib.kernels import frames, illumination
 from goldman_lib.kernels.frames import norm as _norm
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
                                     within_budget)
@@ -611,6 +611,8 @@ def _trace(scene, o, d, depth, record, miss_length, counts, max_rays=MAX_ITEMS):
     objects, lights = scene.objects, scene.lights
     bounds = [_bounding_sphere(obj) for obj in objects]
     offset, skip_own = scene._offset()
+    light_terms = [(np.asarray(light.position), light.rgb) for light in lights]   # checked by Scene
+    ambient = np.asarray(scene.ambient_light, dtype=float)
     for level in range(depth + 1):
         if len(o) == 0:
             break
@@ -654,8 +656,11 @@ def _trace(scene, o, d, depth, record, miss_length, counts, max_rays=MAX_ITEMS):
         firsts = np.flatnonzero(np.diff(obj_h[order], prepend=-1))
         for sel in np.split(order, firsts[1:]):      # the hits on each object, as row indices
             m = objects[obj_h[sel[0]]].material
-            local = lighting.intensity(P[sel], N_f[sel], eye_h[sel], lights, m, scene.ambient_light,
-                                       light_fraction=fraction[sel])
+            # the local light (§16.6) by the lighting kernel: rays, lights and materials are checked
+            V = frames.unit_rows(eye_h[sel] - P[sel]) if m.specular > 0 else None
+            local = illumination.phong(P[sel], frames.unit_rows(N_f[sel]), V, light_terms, np.asarray(m.colour),
+                                       np.asarray(m.specular_colour), m.ambient * ambient, m.diffuse, m.specular,
+                                       m.exponent, fraction=fraction[sel])
             brought[hit_rows[sel]] = w[sel, None] * local
             if level == depth or (m.reflect == 0 and m.transmit == 0):
                 continue
@@ -677,7 +682,7 @@ def _trace(scene, o, d, depth, record, miss_length, counts, max_rays=MAX_ITEMS):
             go = sel[keep]
             if len(go):
                 next_o.append(outside[go])
-                next_d.append(frames.unit_rows(lighting.reflect(-d_h[go], N_f[go])))
+                next_d.append(frames.unit_rows(illumination.reflect(-d_h[go], N_f[go])))
                 next_w.append(w[go] * r_weight[keep])
                 next_p.append(pix[go])
                 next_k.append(np.full(len(go), 1))

@@ -127,8 +127,10 @@ class Surface:
     def hit(self, origins, directions) -> tuple[np.ndarray, np.ndarray]:
         """The nearest parameter ``t > EPS`` per ray (``inf`` on a miss) and the unit normal of the
         surface there (a zero row on a miss): ``((N,), (N, 3))``."""
-        o, d = rays(origins, directions)
-        t = self.intersect(o, d)
+        o, d = rays(origins, directions)       # checked once: the tracer calls hit at every ray level
+        with np.errstate(all="ignore"):
+            h = self._hits(o, d)                # what intersect does, on the rays just checked
+        t = np.where(h > EPS, h, np.inf).min(axis=1)
         normals = np.zeros_like(o)
         found = np.isfinite(t)
         if found.any():

@@ -47,6 +47,10 @@ The map: each kernel, what it computes, the book section it serves, and who call
         ``bezier_subdivision.subdivision_variation_counts``.
     ``elevate`` (§24.5): ``bezier.elevate_degree``, ``bezier_subdivision.join_order``.
 
+:mod:`~goldman_lib.kernels.illumination` -- the shading model of chapter 16
+    ``phong``, ``cosines``, ``reflect`` (§16.3-16.6): ``lighting.intensity``, ``diffuse``, ``specular``,
+        ``reflect`` (checked) and, at every ray level, ``ray_tracing``'s local light and reflected rays.
+
 :mod:`~goldman_lib.kernels.frames` -- vectors, lengths and normals
     ``norm`` (§3): lengths at any magnitude: ``vectors``, ``vector_geometry``, ``transforms``,
         ``quaternions``, ``mass_points``, ``lighting``, ``ray_tracing``.
