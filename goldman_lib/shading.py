@@ -61,11 +61,8 @@ def newell_normal(polygon) -> np.ndarray:
     [-1.0, 0.0, 0.0]
     """
     P = as_points(polygon, "polygon", dim=3, min_count=3)
-    Q = np.roll(P, -1, axis=0)
     with np.errstate(over="ignore", invalid="ignore"):
-        n = finite_result(np.array([((P[:, 1] - Q[:, 1]) * (P[:, 2] + Q[:, 2])).sum(),
-                  ((P[:, 2] - Q[:, 2]) * (P[:, 0] + Q[:, 0])).sum(),
-                  ((P[:, 0] - Q[:, 0]) * (P[:, 1] + Q[:, 1])).sum()]), "polygon")
+        n = finite_result(frames.newell(P), "polygon")            # the one Newell kernel, then unit length
         length = finite_result(np.linalg.norm(n), "polygon")
     return n / length if length > 0 else n
 

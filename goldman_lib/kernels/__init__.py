@@ -57,8 +57,7 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``unit_rows``, ``row_dots`` (§16.5): ``lighting`` (``unit_rows`` and the shading model),
         ``ray_tracing``'s inner levels (reflected and refracted directions), ``vector_geometry``.
     ``newell`` (§11.4, §21.1): Newell's normal, unnormalised: ``vector_geometry.newell_normal``
-        (unnormalised), ``solid_modeling``'s face normals (unit).  ``shading.newell_normal`` (unit) still
-        has its own copy of the formula: its body is in a file other branches edit today.
+        (unnormalised), ``solid_modeling``'s face normals (unit), ``shading.newell_normal`` (unit).
     ``slerp`` (§11.6, §21.4.4): ``vector_geometry.slerp`` (checked) and, per pixel, Phong shading with
         slerp (``shading._slerp_pair``).
 
