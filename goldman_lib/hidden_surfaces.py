@@ -250,7 +250,7 @@ def _split(P, s, eps):
 
 def _plane(P):
     """(point, unit Newell normal) of a polygon; a zero normal for a degenerate one."""
-    return P[0], shading.newell_normal(P)
+    return P[0], shading.unit_newell_normal(P)
 
 
 # -- painting through the shared scan conversion ----------------------------------------------------
@@ -346,7 +346,7 @@ def _screen_planes(camera, polys):
     out = []
     for P in polys:
         S = camera.project(P)[:, :3]
-        n = shading.newell_normal(S) if len(S) >= 3 else np.zeros(3)
+        n = shading.unit_newell_normal(S) if len(S) >= 3 else np.zeros(3)
         if abs(n[2]) < 1e-12:
             out.append((S, None))                       # edge-on: covers no pixel centre
             continue
@@ -829,7 +829,7 @@ def shade(ids, polygons, colours, camera, lights=None, background=(1.0, 1.0, 1.0
     table[-1] = as_colour(background, "background")
     for k, P in enumerate(polys):
         centroid = P.mean(0, keepdims=True)
-        n = shading.newell_normal(P)[None]
+        n = shading.unit_newell_normal(P)[None]
         material = lighting.Material(colour=tuple(C[k]), ambient=1.0, diffuse=0.7, specular=0.1, exponent=10)
         table[k] = lighting.to_image(lighting.intensity(centroid, n, eye, lights, material, 0.35, two_sided=True))[0]
     return table[np.where(I >= 0, I, len(polys))]

@@ -11,7 +11,7 @@ Two layers, as everywhere in ``goldman_lib``:
   :func:`boehm_steps`), the Oslo algorithm (§28.3.2: :func:`oslo`, :func:`oslo_steps`),
   conversion to piecewise Bezier form (§28.3.3: :func:`to_piecewise_bezier`), the
   variation-diminishing property (§28.3.4: :func:`variation_diminishing`), rendering and
-  intersecting by knot insertion (§28.3.5 and §28.4.4: :func:`split`, :func:`render`,
+  intersecting by knot insertion (§28.3.5 and §28.4.4: :func:`split`, :func:`render_by_subdivision`,
   :func:`intersect`), the uniform subdivision algorithms of §28.4 (:func:`lane_riesenfeld`,
   :func:`lane_riesenfeld_steps`, :func:`lane_riesenfeld_knots`, :func:`schaefer`,
   :func:`schaefer_steps`, :func:`midpoint_knots`) and the convergence of the refined control
@@ -41,7 +41,7 @@ from goldman_lib.validation import as_float, as_int, as_parameter, as_points, mo
 
 __all__ = [
     "boehm_insert", "boehm_steps", "oslo", "oslo_steps", "to_piecewise_bezier",
-    "variation_diminishing", "split", "render", "intersect",
+    "variation_diminishing", "split", "render_by_subdivision", "intersect",
     "lane_riesenfeld", "lane_riesenfeld_steps", "lane_riesenfeld_knots",
     "midpoint_knots", "schaefer", "schaefer_steps", "schaefer_labels",
     "greville", "closed_curve", "control_polygon_distance", "convergence_study",
@@ -801,7 +801,7 @@ def _corner_flatness(P: np.ndarray) -> float:
     return float(np.linalg.norm(w - s[:, None] * ac, axis=1).max())
 
 
-def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
+def render_by_subdivision(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     """A polyline within about ``tol`` of a B-spline curve, by knot insertion (Goldman §28.3.5, §28.4.4).
 
     ``method="bezier"`` (§28.3.5): convert to piecewise Bezier form (§28.3.3), then split each
@@ -817,7 +817,7 @@ def render(ctrl, knots, degree, tol=1e-3, method="bezier", max_levels=16):
     Raises ValueError for a bad curve, degree 0, tol <= 0, an unknown method, or a tol so small that a
     level would hold more than :data:`~goldman_lib.validation.MAX_ITEMS` coordinates (the work budget).
 
-    >>> pts, used = render([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, tol=0.1)
+    >>> pts, used = render_by_subdivision([[0, 0], [1, 2], [2, 0]], [0, 0, 0, 1, 1, 1], 2, tol=0.1)
     >>> len(pts), used
     (7, 3)
     """

@@ -42,7 +42,7 @@ import numpy as np
 from goldman_lib.validation import as_colour, as_float, as_float_array, as_points, check_finite, finite_result
 from goldman_lib.kernels import frames, illumination
 
-__all__ = ["Light", "Material", "unit_rows", "reflect", "ambient", "diffuse", "specular", "blinn_specular",
+__all__ = ["Light", "Material", "unit_rows", "reflected_direction", "ambient", "diffuse", "specular", "blinn_specular",
            "intensity", "to_image", "light_direction", "default_lights", "shade_faces", "highlight_half_width"]
 
 
@@ -133,12 +133,12 @@ def _dot(a, b):
     return frames.row_dots(a, b)
 
 
-def reflect(vectors, normals) -> np.ndarray:
+def reflected_direction(vectors, normals) -> np.ndarray:
     """The mirror image ``2 (v . N) N - v`` of each vector about its unit normal (Goldman §16.5:
     ``R`` from ``L``).  A ray travelling in direction ``d`` leaves a mirror in direction
-    ``reflect(-d, N)``.
+    ``reflected_direction(-d, N)``.
 
-    >>> reflect([[1.0, 0.0, 1.0]], [[0.0, 0.0, 1.0]]).tolist()
+    >>> reflected_direction([[1.0, 0.0, 1.0]], [[0.0, 0.0, 1.0]]).tolist()
     [[-1.0, 0.0, 1.0]]
     """
     v = as_points(vectors, "vectors", ndim=None, dim=3)

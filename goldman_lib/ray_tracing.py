@@ -6,7 +6,7 @@ A ray leaves the eye through each pixel (§17.2).  Where it first meets an objec
   model: ambient, Lambert diffuse and Phong specular), where each light counts by what its
   **shadow ray** from the point lets through (§17.3): all of it if the ray meets no object, ``k_t``
   for each transparent object it passes, none past an opaque one;
-* ``k_r`` times the light arriving along the **reflected** ray ``reflect(-d, N)`` (§17.4), the
+* ``k_r`` times the light arriving along the **reflected** ray ``reflected_direction(-d, N)`` (§17.4), the
   mirror image of the incoming direction about the normal, traced recursively;
 * ``k_t`` times the light arriving along the **refracted** (transmitted) ray, bent by Snell's law
   ``n1 sin(theta1) = n2 sin(theta2)`` (§17.5); past the critical angle there is no refracted ray

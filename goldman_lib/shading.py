@@ -2,7 +2,7 @@
 
 §21.1 polygonal models: a mesh is plain arrays, vertex ``positions`` (n, 3) and ``triangles`` (m, 3)
 of vertex indices (counterclockwise seen from outside).  The normal of a polygon by Newell's formula
-(:func:`newell_normal`, :func:`newell_face_normals`) and vertex normals averaged from the faces
+(:func:`unit_newell_normal`, :func:`newell_face_normals`) and vertex normals averaged from the faces
 around a vertex (:func:`average_vertex_normals`; :func:`vertex_normals` weights by area).
 
 The rasteriser projects with a :class:`Camera` (the perspective matrix of
@@ -28,7 +28,7 @@ All light comes from :func:`goldman_lib.lighting.intensity`, except the fast-Pho
 combines its approximate cosines with the same material and lights term by term as that function
 does (the tests check the two agree when the cosines are exact).
 
->>> newell_normal([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]).tolist()
+>>> unit_newell_normal([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]).tolist()
 [0.0, 0.0, 1.0]
 """
 
@@ -44,20 +44,20 @@ from goldman_lib.kernels import frames, meshes
 from goldman_lib.validation import (MAX_ITEMS, as_colour, as_float, as_float_array, as_int, as_points, check_finite,
                                     finite_result, within_budget)
 
-__all__ = ["newell_normal", "face_normals", "vertex_normals", "newell_face_normals", "average_vertex_normals",
+__all__ = ["unit_newell_normal", "face_normals", "vertex_normals", "newell_face_normals", "average_vertex_normals",
            "uv_sphere", "Camera", "Fragments", "rasterise_triangles", "SHADING_MODES", "render",
            "slerp_normals", "taylor_cosines", "forward_differences", "gouraud_triangle", "EdgeSlopes", "edge_slopes",
            "scanline_profile"]
 
 
-def newell_normal(polygon) -> np.ndarray:
+def unit_newell_normal(polygon) -> np.ndarray:
     """The unit normal of a (possibly non-planar) polygon by Newell's formula (Goldman §21.1).
 
     ``N_x = sum (y_i - y_j)(z_i + z_j)`` and cyclically, j = i+1: twice the area vector of the
     polygon, robust for nearly collinear vertices.  polygon: (k, 3), k >= 3.  Returns (3,); zeros
     for a degenerate polygon.
 
-    >>> newell_normal([[0, 0, 0], [0, 0, 1], [0, 1, 0]]).tolist()
+    >>> unit_newell_normal([[0, 0, 0], [0, 0, 1], [0, 1, 0]]).tolist()
     [-1.0, 0.0, 0.0]
     """
     P = as_points(polygon, "polygon", dim=3, min_count=3)

@@ -223,7 +223,7 @@ def newell_normal(polygon) -> np.ndarray:
     right-hand rule on the order of the vertices; robust for nearly planar polygons.  Computed in
     Newell's own form ``N_x = Σ (y_i - y_{i+1})(z_i + z_{i+1})`` (and cyclically), which does not
     lose digits far from the origin (:func:`goldman_lib.kernels.frames.newell`).  The unit normal
-    of chapter 21 is :func:`goldman_lib.shading.newell_normal` (the same vector scaled to length 1).
+    of chapter 21 is :func:`goldman_lib.shading.unit_newell_normal` (the same vector scaled to length 1).
 
     >>> newell_normal([[0, 0, 0], [2, 0, 0], [2, 3, 0], [0, 3, 0]]).tolist()
     [0.0, 0.0, 12.0]

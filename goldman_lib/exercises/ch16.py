@@ -314,7 +314,7 @@ _NORMALS = ((1.0, 1.0, 1.0), (1.0, 2.0, 2.0), (2.0, 1.0, 2.0), (0.0, 1.0, 1.0), 
 def _mirror_answers(p):
     L, N = _a(p["L"]), _a(p["N"])
     n = N / np.linalg.norm(N)
-    expected = lighting.reflect(L, n)
+    expected = lighting.reflected_direction(L, n)
     slips = {"-R": -expected, "N not unit": 2 * (L @ N) * N - L, "factor 2 missing": (L @ n) * n - L}
     return expected, slips
 
@@ -391,7 +391,7 @@ def _specular_answers(p):
     Lp, E, ks, n = _a(p["light"]), _a(p["eye"]), p["ks"], p["n"]
     expected = float(lighting.specular(_P0, _UP, Lp, E, ks, n, 1.0)[0])
     L, V = Lp / np.linalg.norm(Lp), E / np.linalg.norm(E)
-    R = lighting.reflect(L, _UP[0])
+    R = lighting.reflected_direction(L, _UP[0])
     rv = float(R @ V)
     H = (L + V) / np.linalg.norm(L + V)
     slips = {"Blinn": ks * float(H[2]) ** n, "no exponent": ks * rv, "times L.N": expected * float(L[2]),
@@ -426,7 +426,7 @@ def _specular_statement(p) -> str:
 def _specular_steps(p) -> str:
     Lp, E = _a(p["light"]), _a(p["eye"])
     L, V = Lp / np.linalg.norm(Lp), E / np.linalg.norm(E)
-    R = lighting.reflect(L, _UP[0])
+    R = lighting.reflected_direction(L, _UP[0])
     expected, _, rv = _specular_answers(p)
     return (f"1. L = {_t(Lp)}/{_f6(np.linalg.norm(Lp))} = {_f6(L)}; V = {_t(E)}/{_f6(np.linalg.norm(E))} = {_f6(V)}.\n"
             f"2. L . N = {_f6(L[2])}, so R = 2 (L . N) N - L = {_f6(R)}.\n"
@@ -603,7 +603,7 @@ def _total_steps(p) -> str:
     for k, (q, c, i) in enumerate(p["lights"], start=1):
         L = _a(q) / np.linalg.norm(q)
         ln = max(float(L[2]), 0.0)
-        R = lighting.reflect(L, _UP[0])
+        R = lighting.reflected_direction(L, _UP[0])
         rv = max(float(R[2]), 0.0) if ln > 0 else 0.0
         rgb = i * _a(c)
         term = _total(p, ambient=False, lights=[(q, c, i)])

@@ -116,7 +116,7 @@ def _reflect_answers(p):
     d = _a(p["d"]) / p["length"]
     raw = _a(p["N"])
     N = lighting.unit_rows(raw[None])[0]
-    expected = lighting.reflect(-d[None], N[None])[0]
+    expected = lighting.reflected_direction(-d[None], N[None])[0]
     slips = {"-R": -expected, "sign of the correction": d + 2 * (d @ N) * N,
              "normal not unit": d - 2 * (d @ raw) * raw, "incoming direction": d}
     return expected, slips
@@ -183,7 +183,7 @@ def check_reflected_direction(answer, p) -> Result:
                        f"R lies in the plane of d and N.")
     if _close(got, slips["-R"], tol):
         return wrong("that points back towards the mirror: you reflected d itself, not -d. The ray leaves along the "
-                     "mirror image of -d about N, reflect(-d, N) = d - 2 (d . N) N.")
+                     "mirror image of -d about N, reflected_direction(-d, N) = d - 2 (d . N) N.")
     if _close(got, slips["sign of the correction"], tol):
         return wrong("with d + 2 (d . N) N the sign of the correction is wrong: the ray keeps going into the mirror. "
                      "Since d . N < 0, R = d - 2 (d . N) N turns the normal component of d around.")
@@ -220,7 +220,7 @@ def _refract_answers(p):
     expected = _a(rt.refract(d, N, n1, n2))
     upside = rt.refract(d, N, n2, n1)
     slips = {"incoming direction": d, "other side of the normal": expected * [-1, -1, 1],
-             "angle divided": _angle_divided(d, N, n1, n2), "reflected": lighting.reflect(-d[None], N[None])[0]}
+             "angle divided": _angle_divided(d, N, n1, n2), "reflected": lighting.reflected_direction(-d[None], N[None])[0]}
     if upside is not None:
         slips["upside down"] = _a(upside)
     return expected, slips

@@ -103,7 +103,7 @@ def _newell_raw(P) -> np.ndarray:
 
 def _newell_slips(p) -> dict:
     P = _arr(p["quad"])
-    return {"first corner": _unit(np.cross(P[1] - P[0], P[2] - P[1])), "opposite": -shading.newell_normal(P),
+    return {"first corner": _unit(np.cross(P[1] - P[0], P[2] - P[1])), "opposite": -shading.unit_newell_normal(P),
             "unnormalised": _newell_raw(P)}
 
 
@@ -126,7 +126,7 @@ def _newell_ok(p):
         return "the first corner is straight: its cross product vanishes"
     if abs(float(np.linalg.det(np.array([P[1] - P[0], P[2] - P[0], P[3] - P[0]])))) < 0.5:
         return "the quadrilateral is planar: every corner gives Newell's normal"
-    n = shading.newell_normal(P)
+    n = shading.unit_newell_normal(P)
     corner = _unit(np.cross(P[1] - P[0], P[2] - P[1]))
     if np.degrees(np.arccos(np.clip(n @ corner, -1, 1))) < 3:
         return "the first corner's normal is within 3 degrees of Newell's"
@@ -153,11 +153,11 @@ def _newell_steps(p) -> str:
     return ("1. For each edge i → i+1 (the last wraps to vertex 0) the terms (y_i - y_(i+1))(z_i + z_(i+1)), "
             "(z_i - z_(i+1))(x_i + x_(i+1)), (x_i - x_(i+1))(y_i + y_(i+1)):\n" + "\n".join(lines) + "\n"
             f"2. Their sum is Newell's vector N = {fmt(raw)}, of length √{fmt(raw @ raw)} = {fmt(_r(np.linalg.norm(raw)), 6)}.\n"
-            f"3. The unit normal N/|N| = {fmt(_r(shading.newell_normal(P)), 6)}.")
+            f"3. The unit normal N/|N| = {fmt(_r(shading.unit_newell_normal(P)), 6)}.")
 
 
 @DECK.exercise(stored={"quad": _tup(NEWELL_QUAD)}, generate=_newell_generate,
-               answer=lambda p: shading.newell_normal(_arr(p["quad"])), slips=_newell_slips,
+               answer=lambda p: shading.unit_newell_normal(_arr(p["quad"])), slips=_newell_slips,
                statement=_newell_statement, steps=_newell_steps, same=within(2e-4), well_posed=_newell_ok)
 def check_newell_normal(answer, p) -> Result:
     """Check Newell's unit normal of the statement's quadrilateral (Goldman §21.1).
@@ -169,7 +169,7 @@ def check_newell_normal(answer, p) -> Result:
     if err is not None:
         return err
     P = _arr(p["quad"])
-    expected = shading.newell_normal(P)
+    expected = shading.unit_newell_normal(P)
     raw = _newell_raw(P)
     tol = 2e-4
     if _close(got, expected, tol):

@@ -88,7 +88,7 @@ def exercise_bsp_tree() -> hs.BSPNode:
     in front of it node polygon 1 in the plane x = 1 (normal +x) with polygon 2 in front and polygon 3
     behind; behind the root, polygon 4."""
     sq = lambda pts: np.array(pts, dtype=float)  # noqa: E731
-    leaf = lambda k, pts: hs.BSPNode(sq(pts)[0], hs.shading.newell_normal(sq(pts)), [(k, sq(pts))])  # noqa: E731
+    leaf = lambda k, pts: hs.BSPNode(sq(pts)[0], hs.shading.unit_newell_normal(sq(pts)), [(k, sq(pts))])  # noqa: E731
     root = leaf(0, [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]])
     node = leaf(1, [[1, 0, 0.5], [1, 1, 0.5], [1, 1, 1.5], [1, 0, 1.5]])
     node.front = leaf(2, [[2, 0, 1], [3, 0, 1], [3, 1, 1]])

@@ -22,7 +22,7 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``split``, ``split_patches``, ``quarter``: subdivision (§25.2, §25.3.2): ``bezier_subdivision``
         (``subdivide``, ``subdivide_uniform``, ``render_by_subdivision``, ``subdivide_patch``,
         ``subdivide_patch_uniform``, ``render_patch_by_subdivision``, ``smooth_continuation``,
-        ``join_order``), ``bezier_intersection`` (curve and patch intersection), ``knot_insertion.render``.
+        ``join_order``), ``bezier_intersection`` (curve and patch intersection), ``knot_insertion.render_by_subdivision``.
     ``split_xy``: both coordinates of a planar polygon of plain floats halved in one call (§25.3.1): the
         inner loop of ``bezier_intersection.intersect_curves`` (cubics and quadratics written out with
         ``casteljau_level``'s arithmetic; ``tests/library/test_kernels.py`` checks them against it bit for bit).
@@ -42,7 +42,7 @@ The map: each kernel, what it computes, the book section it serves, and who call
 
 :mod:`~goldman_lib.kernels.polygons` -- control polygons measured and rewritten
     ``flatness``, ``patch_flatness`` (§25.3): ``bezier_subdivision``, ``bezier_intersection``,
-        ``knot_insertion.render``.
+        ``knot_insertion.render_by_subdivision``.
     ``signed_distances``, ``sign_changes`` (§24.4): ``bezier.variation_count``, ``curve_crossings``,
         ``bezier_subdivision.subdivision_variation_counts``.
     ``elevate`` (§24.5): ``bezier.elevate_degree``, ``bezier_subdivision.join_order``.
@@ -57,7 +57,7 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``unit_rows``, ``row_dots`` (§16.5): ``lighting`` (``unit_rows`` and the shading model),
         ``ray_tracing``'s inner levels (reflected and refracted directions), ``vector_geometry``.
     ``newell`` (§11.4, §21.1): Newell's normal, unnormalised: ``vector_geometry.newell_normal``
-        (unnormalised), ``solid_modeling``'s face normals (unit), ``shading.newell_normal`` (unit).
+        (unnormalised), ``solid_modeling``'s face normals (unit), ``shading.unit_newell_normal`` (unit).
     ``slerp`` (§11.6, §21.4.4): ``vector_geometry.slerp`` (checked) and, per pixel, Phong shading with
         slerp (``shading._slerp_pair``).
 

@@ -27,7 +27,7 @@ from goldman_lib.views.interactive import (
 )
 
 __all__ = ["DEFAULT_POLYGON", "DEFAULT_KNOTS", "DEFAULT_DEGREE", "plot_bspline", "plot_polygon",
-           "plot_knot_points", "plot_pieces", "boehm_view", "oslo_view", "bspline_subdivision_view",
+           "plot_knot_points", "plot_bezier_pieces", "boehm_view", "oslo_view", "bspline_subdivision_view",
            "insertion_editor", "render_view", "DEFAULT_SECOND"]
 
 #: The cubic B-spline of the chapter: seven control points, clamped, three interior knots.
@@ -117,7 +117,7 @@ def plot_knot_points(ctrl, knots, degree, ax=None, **kwargs):
     return line
 
 
-def plot_pieces(ctrl, knots, degree, ax=None):
+def plot_bezier_pieces(ctrl, knots, degree, ax=None):
     """Draw the Bezier control polygons of the pieces of a B-spline (Goldman §28.3.3), one colour
     a piece; returns the lines."""
     ax = style.get_axes(ax)
@@ -439,7 +439,7 @@ def render_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT
                 digits: int = 2, shift: float = 0.0) -> InteractiveView:
     """Rendering and intersecting a B-spline by knot insertion (Goldman §28.3.5, §28.4.4).
 
-    The curve is drawn as the polyline :func:`goldman_lib.knot_insertion.render` returns for the
+    The curve is drawn as the polyline :func:`goldman_lib.knot_insertion.render_by_subdivision` returns for the
     tolerance ``10^-digits``: the chords of flat Bezier pieces, or the subdivided control polygon.
     A second B-spline, moved up or down by ``shift``, is intersected with it
     (:func:`goldman_lib.knot_insertion.intersect`) and the crossings are marked.
@@ -468,7 +468,7 @@ def render_view(ctrl=DEFAULT_POLYGON, knots=DEFAULT_KNOTS, degree: int = DEFAULT
     def update(method, digits, shift):
         how = _RENDER_METHODS.get(method, "bezier")
         tol = 10.0 ** -int(min(max(digits, 1), 4))
-        pts, levels = ki.render(ctrl, knots, p, tol=tol, method=how)
+        pts, levels = ki.render_by_subdivision(ctrl, knots, p, tol=tol, method=how)
         drawn.set_data(pts[:, 0], pts[:, 1])
         drawn.set_marker("o" if len(pts) <= _MARKER_LIMIT else "None")
         moved = q_ctrl + np.array([0.0, float(shift)])

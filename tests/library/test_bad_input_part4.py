@@ -163,7 +163,7 @@ TOLERANCES = [
     ("intersect_curves", lambda tol: bezier.intersect_curves(C, C[::-1], tol=tol)),
     ("check_rows_sum_to_one", lambda tol: sm.check_rows_sum_to_one(np.eye(2), tol=tol)),
     ("multiplicity", lambda tol: bspline.multiplicity(KNOTS, 0, tol=tol)),
-    ("render", lambda tol: ki.render(POLYGON, KNOTS, 3, tol=tol)),
+    ("render", lambda tol: ki.render_by_subdivision(POLYGON, KNOTS, 3, tol=tol)),
 ]
 
 
@@ -212,9 +212,9 @@ def test_convergence_study_of_a_polygon_on_its_curve_is_finite():
 ADAPTIVE = [
     ("render_by_subdivision", lambda: bezier.render_by_subdivision(C, tol=1e-300)),
     ("render_patch_by_subdivision", lambda: bezier.render_patch_by_subdivision(NET, tol=1e-300, max_depth=12)),
-    ("knot_insertion.render", lambda: ki.render(POLYGON, KNOTS, 3, tol=1e-300, max_levels=20)),
-    ("knot_insertion.render subdivision",
-     lambda: ki.render(POLYGON, KNOTS, 3, tol=1e-300, method="subdivision", max_levels=20)),
+    ("knot_insertion.render_by_subdivision", lambda: ki.render_by_subdivision(POLYGON, KNOTS, 3, tol=1e-300, max_levels=20)),
+    ("knot_insertion.render_by_subdivision subdivision",
+     lambda: ki.render_by_subdivision(POLYGON, KNOTS, 3, tol=1e-300, method="subdivision", max_levels=20)),
 ]
 
 

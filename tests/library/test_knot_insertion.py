@@ -593,7 +593,7 @@ def test_render_is_within_tolerance(method):
     ctrl = np.array([[0, 0], [1, 3], [3, 3], [4, 0], [6, 2], [7, 0]], float)
     knots = np.r_[0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1.0]
     tol = 1e-3
-    pts, levels = ki.render(ctrl, knots, 3, tol=tol, method=method)
+    pts, levels = ki.render_by_subdivision(ctrl, knots, 3, tol=tol, method=method)
     dense = BSpline(knots, ctrl, 3)(np.linspace(0, 1, 4001))
     # every polyline vertex is near the curve, and every curve point is near the polyline
     d_vertices = np.min(np.linalg.norm(pts[:, None] - dense[None], axis=2), axis=1).max()
@@ -684,9 +684,9 @@ def test_split_and_render_rules():
     with pytest.raises(ValueError, match="strictly inside the domain"):
         ki.split(*c, 1.0)
     with pytest.raises(ValueError, match="tol must be"):
-        ki.render(*c, tol=0)
+        ki.render_by_subdivision(*c, tol=0)
     with pytest.raises(ValueError, match="method must be"):
-        ki.render(*c, method="magic")
+        ki.render_by_subdivision(*c, method="magic")
 
 
 def test_intersect_rules():

@@ -45,7 +45,7 @@ def test_specular_is_phong_by_hand():
 def test_reflect_keeps_the_angle():
     rng = np.random.default_rng(1)
     v, n = rng.normal(size=(50, 3)), lighting.unit_rows(rng.normal(size=(50, 3)))
-    r = lighting.reflect(v, n)
+    r = lighting.reflected_direction(v, n)
     assert np.allclose(np.linalg.norm(r, axis=1), np.linalg.norm(v, axis=1))
     assert np.allclose((r * n).sum(1), (v * n).sum(1))
     assert np.allclose(np.cross(r + v, n), 0)           # r + v lies along n

@@ -7,9 +7,9 @@ from goldman_lib import shading
 
 def test_newell_normal_of_a_tilted_square_and_a_bent_quad():
     sq = np.array([[0, 0, 0], [1, 0, 1], [1, 1, 1], [0, 1, 0]], dtype=float)   # the plane z = x
-    assert np.allclose(shading.newell_normal(sq), np.array([-1, 0, 1]) / np.sqrt(2))
+    assert np.allclose(shading.unit_newell_normal(sq), np.array([-1, 0, 1]) / np.sqrt(2))
     bent = sq + [[0, 0, 0], [0, 0, 0.1], [0, 0, 0], [0, 0, -0.1]]             # not planar: still a unit normal
-    n = shading.newell_normal(bent)
+    n = shading.unit_newell_normal(bent)
     assert abs(np.linalg.norm(n) - 1) < 1e-12 and n[2] > 0
 
 
