@@ -249,7 +249,7 @@ def check_final_state(answer, p) -> Result:
             (f"the program without {resize}", variants["resize"]),
         "TURN a with a > 0 turns counterclockwise (to the left)":
             ("the program with every TURN the other way", variants["clockwise"]),
-        f"MOVE d moves the turtle d steps like FORWARD, only without drawing":
+        "MOVE d moves the turtle d steps like FORWARD, only without drawing":
             (f"the program with {move} left out", variants["move"]),
     }
     for why, (name, program) in slips.items():

@@ -18,8 +18,8 @@ import numpy as np
 
 from goldman_lib import affine
 from goldman_lib.exercises import far_off, guard_checkers, quote
-from goldman_lib.exercises.deal import Deck, memo
-from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo
+from goldman_lib.exercises import Result, correct, fmt, is_unanswered, read_points, unanswered, wrong
 
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_P", "ROTATE_Q", "ROTATE_ANGLE", "COMPOSE_ANGLE", "COMPOSE_SCALE",
            "COMPOSE_CENTER", "COMMUTE_PAIRS", "COORD_MATRIX", "COORD_POINT", "COORD_VECTOR", "PV_POINT",
@@ -64,10 +64,6 @@ def _p(v) -> str:
 
 
 DECK = Deck("ch04")
-
-
-def _ints(rng, lo, hi, size):
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
 
 
 def _matrix_text(M) -> str:

@@ -20,7 +20,7 @@ import numpy as np
 
 from goldman_lib import codo
 from goldman_lib.exercises import far_off, guard_checkers, quote, clip
-from goldman_lib.exercises.deal import Deck, memo
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo
 from goldman_lib.exercises import (Result, correct, fmt, is_unanswered, off_by, read_number, read_points,
                                    unanswered, wrong)
 
@@ -255,10 +255,6 @@ def check_expression_types(answer) -> Result:
 
 
 DECK = Deck("ch05")
-
-
-def _ints(rng, lo, hi, size):
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
 
 
 def _connect(points) -> str:

@@ -19,7 +19,7 @@ import numpy as np
 from goldman_lib import affine, ifs
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
-from goldman_lib.exercises.deal import Deck, memo
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo
 from goldman_lib.exercises.projects import Case, check_project
 from goldman_lib.fixed_point import hausdorff_distance
 
@@ -45,10 +45,6 @@ TREE_MAPS, TREE_LEVEL = 3, 4
 DECK = Deck("ch06")
 
 _TIMES = {1: "once", 2: "twice", 3: "three times", 4: "four times", 5: "five times", 6: "six times"}
-
-
-def _ints(rng, lo, hi, size):
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
 
 
 def _close(a, b) -> bool:

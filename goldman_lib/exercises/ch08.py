@@ -33,9 +33,9 @@ import numpy as np
 from goldman_lib import affine, fractals
 from goldman_lib import conformal_ifs as cf
 from goldman_lib.exercises import far_off, guard_checkers, quote, clip
-from goldman_lib.exercises import Result, correct, fmt, is_unanswered, off_by, read_points, unanswered, wrong
+from goldman_lib.exercises import Result, correct, fmt, is_unanswered, read_points, unanswered, wrong
 from goldman_lib.exercises.deal import Deck, memo
-from goldman_lib.exercises.projects import Case, check_project, describe
+from goldman_lib.exercises.projects import Case, check_project
 from goldman_lib.turtle import Turtle
 
 __all__ = ["PROBLEMS", "SLIPS", "MOVED_POINT", "STATE_POINT", "STATE_DIRECTION", "LEVEL_BODY", "RON_BODY",

@@ -23,7 +23,7 @@ import numpy as np
 from goldman_lib import vectors
 from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, correct, fmt, off_by, read_number, read_points, wrong)
-from goldman_lib.exercises.deal import Deck, memo, within
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo, within
 
 __all__ = ["PROBLEMS", "SLIPS", "DOT_U", "DOT_V", "CROSS_U", "CROSS_V", "DET_ROWS", "ANGLE_U", "ANGLE_V",
            "AREA_POINTS", "COPLANAR_U", "COPLANAR_V", "COPLANAR_W", "DECK", "deal", "steps", "current",
@@ -62,10 +62,6 @@ def _close(value: float, target: float, rel: float = 1e-4) -> bool:
 def _nonzero_ints(rng, lo, hi, size) -> tuple:
     values = [v for v in range(lo, hi + 1) if v != 0]
     return tuple(float(values[i]) for i in rng.integers(0, len(values), size=size))
-
-
-def _ints(rng, lo, hi, size) -> tuple:
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
 
 
 def _paren(x) -> str:

@@ -19,7 +19,7 @@ from goldman_lib import vector_geometry as vg
 from goldman_lib import vectors
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_number, read_points, wrong
-from goldman_lib.exercises.deal import Deck, memo
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo, plain as _tup
 
 __all__ = ["PROBLEMS", "SLIPS", "TRIANGLE", "PLANE_POINT", "PLANE_NORMAL", "QUERY_POINT", "LINE1", "LINE2",
            "POLYGON_3D", "TETRAHEDRON", "PLANES", "WINDING_POLYGON", "WINDING_QUERY", "SLERP_V0", "SLERP_V1", "SLERP_T",
@@ -89,17 +89,8 @@ def _same_point(a, b) -> bool:
     return a.shape == b.shape and bool(np.allclose(a, b, atol=_TOL))
 
 
-def _ints(rng, lo, hi, size) -> tuple:
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
-
-
 def _arr(v):
     return np.asarray(v, dtype=float)
-
-
-def _tup(a):
-    a = np.asarray(a, dtype=float)
-    return tuple(_tup(r) for r in a) if a.ndim > 1 else tuple(float(x) for x in a)
 
 
 def _f6(x) -> str:

@@ -19,7 +19,7 @@ import numpy as np
 from goldman_lib import transforms
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, read_points, wrong
-from goldman_lib.exercises.deal import Deck, memo
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo
 
 __all__ = ["PROBLEMS", "SLIPS", "ROTATE_POINT", "ROTATE_AXIS", "ROTATE_THROUGH", "ROTATE_ANGLE", "MIRROR_POINT",
            "MIRROR_PLANE_POINT", "MIRROR_NORMAL", "SCALE_POINT", "SCALE_FACTOR", "SCALE_DIRECTION", "SCALE_CENTER",
@@ -68,10 +68,6 @@ def _arr(v):
 
 def _tup(a):
     return tuple(float(x) for x in np.asarray(a, dtype=float))
-
-
-def _ints(rng, lo, hi, size=3) -> tuple:
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
 
 
 def _f6(x) -> str:

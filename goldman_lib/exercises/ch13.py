@@ -21,7 +21,7 @@ import numpy as np
 from goldman_lib import transforms
 from goldman_lib.exercises import far_off, guard_checkers, off_by
 from goldman_lib.exercises import Result, correct, fmt, read_points, wrong
-from goldman_lib.exercises.deal import Deck, memo
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo, plain as _tup
 from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "ROT_AXIS", "ROT_ANGLE", "ROT_POINT", "MIRROR_PLANE_POINT", "MIRROR_NORMAL",
@@ -77,17 +77,6 @@ def _rows(M) -> str:
 
 def _arr(v):
     return np.asarray(v, dtype=float)
-
-
-def _tup(a):
-    a = np.asarray(a, dtype=float)
-    if a.ndim == 1:
-        return tuple(float(x) for x in a)
-    return tuple(_tup(row) for row in a)
-
-
-def _ints(rng, lo, hi, size=3) -> tuple:
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
 
 
 def _r(x):

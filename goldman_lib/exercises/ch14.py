@@ -20,7 +20,6 @@ In homogeneous coordinates (x, y, w) the line 3x + 2y = 11 of the plane is 3x + 
 
 from __future__ import annotations
 
-import math
 import re
 from fractions import Fraction
 
@@ -29,7 +28,7 @@ import numpy as np
 from goldman_lib import mass_points as mp
 from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, unanswered, is_unanswered, wrong
-from goldman_lib.exercises.deal import Deck, memo
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo
 
 __all__ = ["PROBLEMS", "SLIPS", "LEVER_POINTS", "LEVER_MASSES", "COMBO_MASSES", "COMBINATIONS", "TUPLE_PAIRS",
            "LINE", "PERSPECTIVE_EYE", "PERSPECTIVE_PLANE", "PERSPECTIVE_POINT", "DEPTH_EYE", "DEPTH_PLANE",
@@ -88,10 +87,6 @@ def _arr(v):
 def _ftup(a) -> tuple:
     a = np.asarray(a, dtype=float)
     return tuple(float(x) for x in a) if a.ndim == 1 else tuple(_ftup(r) for r in a)
-
-
-def _ints(rng, lo, hi, size=3) -> tuple:
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
 
 
 def _r(x):

@@ -29,8 +29,8 @@ from goldman_lib import quaternions as qt
 from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
-from goldman_lib.exercises.deal import Deck, memo, within
-from goldman_lib.exercises.projects import Case, check_project, describe
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo, pick as _pick, steps_number as _f6, within
+from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "COMPLEX_FROM", "COMPLEX_TO", "PRODUCT_P", "PRODUCT_Q", "ROTATION_AXIS",
            "ROTATION_ANGLE", "ROTATION_V", "CONFORMAL_Q", "CONFORMAL_V", "MATRIX_Q", "SLERP_Q0", "SLERP_Q1", "SLERP_T",
@@ -73,25 +73,12 @@ def _q5(q) -> str:
     return "(" + ", ".join(f"{v:.5f}" for v in q) + ")"
 
 
-def _f6(x) -> str:
-    """A number of the worked steps, rounded to six digits (no floating-point noise)."""
-    return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
-
-
 def _arr(v) -> np.ndarray:
     return np.asarray(v, dtype=float)
 
 
 def _tup(a) -> tuple:
     return tuple(float(x) for x in np.asarray(a, dtype=float).ravel())
-
-
-def _ints(rng, lo, hi, size) -> tuple:
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
-
-
-def _pick(rng, options):
-    return options[int(rng.integers(0, len(options)))]
 
 
 def _root_text(n2: float) -> str:

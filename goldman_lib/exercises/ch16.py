@@ -27,7 +27,7 @@ from goldman_lib import lighting
 from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
-from goldman_lib.exercises.deal import Deck, memo, within
+from goldman_lib.exercises.deal import Deck, memo, pick as _pick, steps_number as _f6, tenths as _tenths, within
 from goldman_lib.lighting import Light, Material
 
 __all__ = ["PROBLEMS", "SLIPS", "MIX_LIGHTS", "MIX_SURFACE", "DIFFUSE_POINT", "DIFFUSE_NORMAL", "DIFFUSE_LIGHT",
@@ -78,21 +78,6 @@ def _a(v):
 
 def _tup(v) -> tuple:
     return tuple(float(x) for x in np.asarray(v, dtype=float).ravel())
-
-
-def _f6(x) -> str:
-    """A number of the worked steps, to six digits (no floating-point noise)."""
-    return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
-
-
-def _pick(rng, options):
-    return options[int(rng.integers(0, len(options)))]
-
-
-def _tenths(rng, lo, hi, size=None):
-    """Multiples of 0.1 in [lo, hi] (whole tenths, so a learner works them by hand)."""
-    v = rng.integers(round(lo * 10), round(hi * 10) + 1, size=size) / 10
-    return float(v) if size is None else _tup(v)
 
 
 def _apart(groups, tol) -> bool:

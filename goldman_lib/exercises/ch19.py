@@ -27,8 +27,8 @@ from goldman_lib import simple_surfaces as S
 from goldman_lib.exercises import far_off, guard_checkers, quote
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_vector  # shared readers
-from goldman_lib.exercises.deal import Deck, memo, within
-from goldman_lib.exercises.projects import Case, check_project, describe
+from goldman_lib.exercises.deal import Deck, integers as _ints, memo, within
+from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "DECK", "deal", "steps", "current", "deal_button", "PLANE_POINT", "PLANE_NORMAL", "PLANE_RAY", "POLYGON", "POLYGON_QUERIES",
            "SPHERE_CENTER", "SPHERE_RADIUS", "SPHERE_RAY", "CYLINDER", "CYLINDER_RAY", "TORUS", "TORUS_POINT",
@@ -69,10 +69,6 @@ def _arr(v):
 def _r6(x):
     """A value rounded for worked steps (no floating-point noise)."""
     return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
-
-
-def _ints(rng, lo, hi, size=3) -> tuple:
-    return tuple(float(v) for v in rng.integers(lo, hi + 1, size=size))
 
 
 def _apart(tol, groups) -> bool:

@@ -29,9 +29,9 @@ import numpy as np
 from goldman_lib import shading
 from goldman_lib import vector_geometry as vg
 from goldman_lib.exercises import guard_checkers
-from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
+from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, wrong
 from goldman_lib.exercises import read_vector as _read_vector, all_close as _close, distance_text as _dist  # shared readers
-from goldman_lib.exercises.deal import Deck, within
+from goldman_lib.exercises.deal import Deck, plain as _tup, within
 from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "NEWELL_QUAD", "FACE_VECTORS", "COVER_TRIANGLE", "GOURAUD_TRIANGLE",
@@ -68,11 +68,6 @@ DECK = Deck("ch21")
 
 def _arr(v) -> np.ndarray:
     return np.asarray(v, dtype=float)
-
-
-def _tup(a) -> tuple:
-    a = np.asarray(a, dtype=float)
-    return tuple(_tup(x) for x in a) if a.ndim > 1 else tuple(float(x) for x in a)
 
 
 def _r(x):

@@ -24,7 +24,7 @@ from goldman_lib import hidden_surfaces as hs
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_points, wrong
 from goldman_lib.exercises import read_vector as _read_list  # the shared reader
-from goldman_lib.exercises.deal import Deck
+from goldman_lib.exercises.deal import Deck, plain as _tup
 from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "PAINTER_DEPTHS", "FRAGMENTS", "SCAN_POLYGON", "SCAN_ROW", "SPLIT_TRIANGLE",
@@ -50,11 +50,6 @@ SPLIT_NORMAL = (1.0, 2.0, 0.0)
 BSP_EYE = (-1.0, 0.0, 2.0)
 
 DECK = Deck("ch22")
-
-
-def _tup(a) -> tuple:
-    a = np.asarray(a, dtype=float)
-    return tuple(_tup(x) for x in a) if a.ndim > 1 else tuple(float(x) for x in a)
 
 
 #: The stored tree of exercise 5: which polygon sits where, on which side of the root the node hangs,

@@ -20,10 +20,10 @@ import numpy as np
 
 from goldman_lib import radiosity as rd
 from goldman_lib.exercises import far_off, guard_checkers
-from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
+from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, wrong
 from goldman_lib.exercises import read_vector as _pair  # the shared reader
-from goldman_lib.exercises.deal import Deck, within
-from goldman_lib.exercises.projects import Case, check_project, describe
+from goldman_lib.exercises.deal import Deck, steps_number as _f, within
+from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "JACOBI_F", "JACOBI_RHO", "JACOBI_E", "GS_F", "GS_RHO", "GS_E", "RECIPROCITY",
            "SQUARE_SIDE", "SQUARE_DISTANCE", "SHOT_AREA", "SHOT_F", "SHOT_RHO", "SHOT_DB",
@@ -55,11 +55,6 @@ DECK = Deck("ch23")
 
 def _m(rows) -> str:
     return "[" + ", ".join("[" + ", ".join(fmt(v) for v in r) + "]" for r in rows) + "]"
-
-
-def _f(x) -> str:
-    """A number of the worked steps, to six digits (enough for the checkers' tolerances)."""
-    return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
 
 
 def _tenths(rng, lo, hi) -> float:

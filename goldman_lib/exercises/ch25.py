@@ -22,7 +22,7 @@ from goldman_lib import bezier
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, off_by, read_number, read_points,
                                    wrong)
-from goldman_lib.exercises.deal import Deck, within
+from goldman_lib.exercises.deal import Deck, integers as _ints, plain as _tup, steps_number as _f, within
 from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "SUBDIVIDE_CTRL", "SUBDIVIDE_T", "PIECE_SPLIT_T", "PIECE_T", "FLATNESS_CTRL",
@@ -66,27 +66,12 @@ def _arr(x):
     return np.asarray(x, dtype=float)
 
 
-def _tup(a):
-    """A plain nested tuple of floats (the instance's parameters are plain data)."""
-    a = np.asarray(a, dtype=float)
-    return float(a) if a.ndim == 0 else tuple(_tup(x) for x in a)
-
-
-def _ints(rng, lo, hi, shape):
-    return _tup(rng.integers(lo, hi + 1, size=shape))
-
-
 def _apart(forms, tol=1e-3) -> bool:
     """Whether the forms a checker recognises (arrays) are pairwise apart by more than ``tol`` in
     some coordinate (forms of different shapes are apart), so that each gets its own message."""
     forms = [_arr(f) for f in forms]
     return not any(u.shape == v.shape and np.all(np.abs(u - v) <= tol)
                    for i, u in enumerate(forms) for v in forms[i + 1:])
-
-
-def _f(x) -> str:
-    """Numbers of the worked steps, to six digits (enough for the checkers' tolerances)."""
-    return fmt(np.round(_arr(x), 6) + 0.0, 6)
 
 
 def _same_count(a, b) -> bool:

@@ -23,7 +23,7 @@ from goldman_lib import blossom as bl
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, off_by, read_number, read_points,
                                    wrong)
-from goldman_lib.exercises.deal import Deck, within
+from goldman_lib.exercises.deal import Deck, integers as _ints, plain as _tup, steps_number as _f, within
 
 __all__ = ["PROBLEMS", "SLIPS", "POLAR_COEFFS", "POLAR_ARGS", "BLOSSOM_CTRL", "BLOSSOM_ARGS", "INTERVAL_CTRL",
            "INTERVAL", "SECOND_CTRL", "SECOND_T", "MONOMIAL_COEFFS", "BEZIER_COEFFS",
@@ -74,27 +74,12 @@ def _arr(x):
     return np.asarray(x, dtype=float)
 
 
-def _tup(a):
-    """A plain nested tuple of floats (the instance's parameters are plain data)."""
-    a = np.asarray(a, dtype=float)
-    return float(a) if a.ndim == 0 else tuple(_tup(x) for x in a)
-
-
-def _ints(rng, lo, hi, shape):
-    return _tup(rng.integers(lo, hi + 1, size=shape))
-
-
 def _apart(forms, tol=1e-3) -> bool:
     """Whether the forms a checker recognises are pairwise apart by more than ``tol`` in some
     coordinate (forms of different shapes are apart), so that each gets its own message."""
     forms = [_arr(f) for f in forms]
     return not any(u.shape == v.shape and np.all(np.abs(u - v) <= tol)
                    for i, u in enumerate(forms) for v in forms[i + 1:])
-
-
-def _f(x) -> str:
-    """Numbers of the worked steps, to six digits (enough for the checkers' tolerances)."""
-    return fmt(np.round(_arr(x), 6) + 0.0, 6)
 
 
 def _m(x) -> str:

@@ -22,7 +22,7 @@ import numpy as np
 from goldman_lib import bspline
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_points, wrong
-from goldman_lib.exercises.deal import Deck, memo, within
+from goldman_lib.exercises.deal import Deck, memo, plain as _tup, steps_number as _f, within
 
 __all__ = ["PROBLEMS", "SLIPS",
            "CURVE_CTRL", "CURVE_KNOTS", "CURVE_DEGREE", "DE_BOOR_U", "BASIS_U",
@@ -76,18 +76,8 @@ def _knots(t) -> str:
     return "[" + ", ".join(fmt(x) for x in t) + "]"
 
 
-def _tup(a):
-    a = np.asarray(a, dtype=float)
-    return tuple(_tup(x) for x in a) if a.ndim > 1 else tuple(float(x) for x in a)
-
-
 def _arr(v):
     return np.asarray(v, dtype=float)
-
-
-def _f(x) -> str:
-    """A number or point of the worked steps, rounded to 6 digits (no floating-point noise)."""
-    return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
 
 
 def _frac(x) -> str:

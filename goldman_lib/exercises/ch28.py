@@ -23,7 +23,7 @@ from goldman_lib import knot_insertion as ki
 from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import (Result, check_points, correct, fmt, fmt_points, read_number,
                                    read_points, wrong)
-from goldman_lib.exercises.deal import Deck, memo, within
+from goldman_lib.exercises.deal import Deck, memo, plain as _tup, within
 from goldman_lib.exercises.projects import Case, check_project, compare_points
 
 __all__ = ["PROBLEMS", "SLIPS", "QUAD_CTRL", "QUAD_KNOTS", "QUAD_DEGREE", "BOEHM_U", "OSLO_NEW_KNOTS",
@@ -56,11 +56,6 @@ _WORDS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "se
 
 def _knots(t) -> str:
     return ", ".join(fmt(x) for x in np.asarray(t))
-
-
-def _tup(a):
-    a = np.asarray(a, dtype=float)
-    return tuple(_tup(x) for x in a) if a.ndim > 1 else tuple(float(x) for x in a)
 
 
 def _arr(v):

@@ -21,7 +21,7 @@ from goldman_lib import affine
 from goldman_lib import subdivision_matrices as sm
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, fmt_points, off_by, read_points, wrong
-from goldman_lib.exercises.deal import Deck, memo, within
+from goldman_lib.exercises.deal import Deck, memo, plain as _tup, within
 from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "SPLIT_T", "BSPLINE_CTRL", "COMPOSED_CTRL", "NORMAL_DEGREE", "NORMAL_T",
@@ -47,11 +47,6 @@ FRACTAL_MIDDLE = -0.5
 REL_TOL = 1e-4
 
 DECK = Deck("ch29")
-
-
-def _tup(a):
-    a = np.asarray(a, dtype=float)
-    return tuple(_tup(x) for x in a) if a.ndim > 1 else tuple(float(x) for x in a)
 
 
 def _arr(v):

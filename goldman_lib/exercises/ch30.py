@@ -19,7 +19,7 @@ import numpy as np
 from goldman_lib import subdivision_surfaces as ss
 from goldman_lib.exercises import far_off, guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, read_points, wrong
-from goldman_lib.exercises.deal import Deck, memo, within
+from goldman_lib.exercises.deal import Deck, memo, plain as _tup, steps_number as _f, within
 from goldman_lib.exercises.projects import Case, check_project
 
 __all__ = ["PROBLEMS", "SLIPS", "BOX_MULTIPLICITIES", "PRISM_SIDES", "PRISM_LEVELS", "QUAD_EDGE_POINTS",
@@ -61,18 +61,8 @@ def _pts(P):
     return ", ".join(fmt(p) for p in P)
 
 
-def _tup(a):
-    a = np.asarray(a, dtype=float)
-    return tuple(_tup(x) for x in a) if a.ndim > 1 else tuple(float(x) for x in a)
-
-
 def _arr(v):
     return np.asarray(v, dtype=float)
-
-
-def _f(x) -> str:
-    """Numbers of the worked steps, rounded to 6 digits (no floating-point noise)."""
-    return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
 
 
 def _times(k: int) -> str:

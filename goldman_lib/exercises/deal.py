@@ -49,7 +49,8 @@ from typing import Any, Callable
 
 import numpy as np
 
-__all__ = ["Deck", "Exercise", "Steps", "IllPosed", "fresh_seed", "memo", "within"]
+__all__ = ["Deck", "Exercise", "Steps", "IllPosed", "fresh_seed", "memo", "within", "plain", "integers", "pick",
+           "tenths", "steps_number"]
 
 #: Seeds dealt when none is given lie in 1 .. SEED_RANGE - 1 (short enough to read and type).
 SEED_RANGE = 100_000
@@ -80,6 +81,61 @@ def within(tol: float, relative: bool = False):
         except ValueError:            # shapes that do not broadcast: not one answer
             return False
     return same
+
+
+# -- the generators' kit: one home for what every chapter's generators need ------------------------
+
+def plain(a):
+    """``a`` as plain data an instance can hold: a float, or nested tuples of floats (an instance
+    is a plain dict, so it prints, compares and caches by value).
+
+    >>> plain(np.array([[1, 2], [3, 4]])), plain(np.float64(2.5))
+    (((1.0, 2.0), (3.0, 4.0)), 2.5)
+    """
+    a = np.asarray(a, dtype=float)
+    return float(a) if a.ndim == 0 else tuple(plain(x) for x in a)
+
+
+def integers(rng, lo: int, hi: int, size=3):
+    """Whole numbers from ``lo`` to ``hi`` (both included) drawn by ``rng``, as plain floats:
+    ``size`` of them (a tuple), or an array of that shape as nested tuples.
+
+    >>> integers(np.random.default_rng(0), 1, 9, 3)
+    (8.0, 6.0, 5.0)
+    """
+    return plain(rng.integers(lo, hi + 1, size=size))
+
+
+def pick(rng, options):
+    """One of ``options`` (a sequence), drawn by ``rng``.
+
+    >>> pick(np.random.default_rng(1), ["a", "b", "c"])
+    'b'
+    """
+    return options[int(rng.integers(0, len(options)))]
+
+
+def tenths(rng, lo: float, hi: float, size=None):
+    """Multiples of 0.1 from ``lo`` to ``hi`` (a learner works them by hand): one float, or ``size``
+    of them as plain data.
+
+    >>> tenths(np.random.default_rng(2), 0.5, 1.5), tenths(np.random.default_rng(2), 0.5, 1.5, 2)
+    (1.4, (1.4, 0.7))
+    """
+    v = rng.integers(round(lo * 10), round(hi * 10) + 1, size=size) / 10
+    return float(v) if size is None else plain(v)
+
+
+def steps_number(x) -> str:
+    """A number (or vector) of the worked steps, rounded to six digits so no floating-point noise
+    shows (``0.30000000000000004`` is ``0.3``, ``-0.0`` is ``0``).
+
+    >>> steps_number(0.1 + 0.2), steps_number([-1e-17, 2 / 3])
+    ('0.3', '(0, 0.666667)')
+    """
+    from goldman_lib.exercises import fmt
+
+    return fmt(np.round(np.asarray(x, dtype=float), 6) + 0.0, 6)
 
 
 def memo(function):

@@ -173,7 +173,7 @@ EXAMPLES = [
     ('goldman_lib.exercises.ch08', 'check_ron_map', 'check_ron_map([[0.25, 0.25, 0.5], [-0.25, 0.25, 0.25], [0, 0, 1]])',
      'Not yet: that is the transposed matrix, for column vectors; here points are rows, Q = [x, y, 1] T, so the translation is the last row and the first row is the image of (1, 0), the direction w.'),
     ('goldman_lib.exercises.ch17', 'check_reflected_direction', 'check_reflected_direction([-1/3, -0.82667, 0.45333])',
-     'Not yet: that points back towards the mirror: you reflected d itself, not -d. The ray leaves along the mirror image of -d about N, reflect(-d, N) = d - 2 (d . N) N.'),
+     'Not yet: that points back towards the mirror: you reflected d itself, not -d. The ray leaves along the mirror image of -d about N, reflected_direction(-d, N) = d - 2 (d . N) N.'),
     ('goldman_lib.exercises.ch17', 'check_refracted_direction', 'check_refracted_direction([0.6, 0, -0.8])',
      'Not yet: that is the incoming direction: the ray changes speed at the surface and bends (the indices differ), so sin(theta2) = (n1 / n2) sin(theta1).'),
     ('goldman_lib.exercises.ch20', 'check_csg_difference', 'check_csg_difference([[5.5, 7]])',
