@@ -42,7 +42,7 @@ import numpy as np
 
 from goldman_lib import affine, transforms
 from goldman_lib.kernels import polygons, pyramids
-from goldman_lib.validation import (MAX_ITEMS, MAX_SQUARABLE, as_float, as_hyperplane, as_int,
+from goldman_lib.validation import (MAX_ITEMS, as_float, as_hyperplane, as_int,
                                      as_parameter, as_points, finite_result, overflow_culprit, within_budget)
 
 __all__ = [
@@ -62,11 +62,6 @@ __all__ = [
 def _ctrl(ctrl, name: str = "ctrl") -> np.ndarray:
     return as_points(ctrl, name, ndim=2)
 
-
-#: Coordinates of at most this magnitude keep squared distances (flatness, boxes, Newton steps)
-#: inside float64 (:data:`goldman_lib.validation.MAX_SQUARABLE`, checked by
-#: :func:`goldman_lib.validation.moderate`).
-MAX_COORDINATE = MAX_SQUARABLE
 
 
 def _net(ctrl, name: str = "ctrl") -> np.ndarray:

@@ -20,7 +20,7 @@ import numpy as np
 from goldman_lib.kernels import polygons, pyramids
 from goldman_lib.kernels.pyramids import point_and_tangent as _point_and_tangent
 from goldman_lib.kernels.pyramids import split_xy as _split_xy
-from goldman_lib.validation import MAX_SQUARABLE as MAX_COORDINATE
+from goldman_lib.validation import MAX_SQUARABLE
 from goldman_lib.validation import as_float, as_int, as_points
 from goldman_lib.validation import moderate as _moderate
 
@@ -431,7 +431,7 @@ def _newton_small(A, B, s, t, scale, iterations=100, patience=0):
 def _small_floats(P):
     """For :func:`intersect_curves`: ``((xs, ys), size)`` -- coordinate tuples and the largest
     magnitude -- if ``P`` is a float64 (k, 2) array of 2 to :data:`_SMALL` finite points within
-    :data:`MAX_COORDINATE`, the checks of :func:`_curves_pair` passed without their numpy calls
+    :data:`goldman_lib.validation.MAX_SQUARABLE`, the checks of :func:`_curves_pair` passed without their numpy calls
     (microseconds each on a few points); None for anything else, which the general checks take."""
     if type(P) is not np.ndarray or P.dtype != np.float64 or P.ndim != 2 or P.shape[1] != 2 \
             or not 2 <= P.shape[0] <= _SMALL:
@@ -440,7 +440,7 @@ def _small_floats(P):
     if not math.isfinite(sum(xs) + sum(ys)):                # a nan or an infinity anywhere
         return None
     big = max(map(abs, xs + ys))
-    if big > MAX_COORDINATE:
+    if big > MAX_SQUARABLE:
         return None
     return (tuple(xs), tuple(ys)), big
 
@@ -627,7 +627,7 @@ def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
         big_a, big_b = max(map(abs, ca[0] + ca[1])), max(map(abs, cb[0] + cb[1]))
     else:
         big_a, big_b = float(np.abs(A).max()), float(np.abs(B).max())
-    if max(big_a, big_b) > MAX_COORDINATE:
+    if max(big_a, big_b) > MAX_SQUARABLE:
         _moderate(A, "a"), _moderate(B, "b")          # raises, naming the curve
     scale = max(1.0, big_a, big_b)
     if small:

@@ -289,7 +289,7 @@ def finite_result(result, name: str, value=None, *, why: str = "is too large in 
 
 
 #: Coordinates of at most this magnitude keep squared distances (flatness, boxes, Newton steps of
-#: the Bezier chapters 24-25) inside float64; ``goldman_lib.bezier.MAX_COORDINATE`` is this bound.
+#: the Bezier chapters 24-25) inside float64.
 MAX_SQUARABLE = 1e150
 
 
