@@ -499,15 +499,13 @@ def edge_slopes(values, triangle_ids, width: int = 2) -> EdgeSlopes:
         v = v.mean(axis=1)
     if v.ndim != 1:
         raise ValueError(f"values must be (w,) intensities or (w, c) colours of one row; got shape {v.shape}")
-    ids = np.asarray(triangle_ids) if isinstance(triangle_ids, np.ndarray) and triangle_ids.dtype.kind in "iu" \
-        else as_float_array(triangle_ids, "triangle_ids")
+    ids = as_float_array(triangle_ids, "triangle_ids")
     if ids.shape != v.shape:
         raise ValueError(f"values and triangle_ids must have one entry per pixel of the row: values has shape "
                          f"{v.shape}, triangle_ids {ids.shape}")
-    if ids.dtype.kind not in "iu":
-        if ids.dtype.kind != "f" or not np.all(np.isfinite(ids)) or np.any(ids != np.round(ids)):
-            raise ValueError("triangle_ids must be whole numbers (-1 for an uncovered pixel)")
-        ids = ids.astype(np.intp)
+    if not np.all(np.isfinite(ids)) or np.any(ids != np.round(ids)):
+        raise ValueError("triangle_ids must be whole numbers (-1 for an uncovered pixel)")
+    ids = ids.astype(np.intp)
     width = as_int(width, "width", minimum=1, maximum=max(1, len(v)))
     d = np.diff(v)
     cols, left, right = [], [], []

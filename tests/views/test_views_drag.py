@@ -10,19 +10,6 @@ from goldman_lib.views.drag import PointDrag, drag_sliders
 from goldman_lib.views.interactive import InteractiveView, float_slider
 
 
-
-def _hooks():
-    """The browser tests' kernel hooks (tests/browser/kernel_hooks.py), loaded as the kernel loads them."""
-    import runpy
-    from pathlib import Path
-
-    here = Path(__file__).resolve()
-    path = next(p / "browser" / "kernel_hooks.py" for p in here.parents if (p / "browser" / "kernel_hooks.py").exists())
-    return runpy.run_path(str(path))
-
-
-HOOKS = _hooks()
-
 def _view():
     fig = Figure()
     ax = fig.add_subplot()
@@ -99,11 +86,11 @@ def _pixel_event(drag, name, px, py):
     canvas.callbacks.process(name, MouseEvent(name, canvas, px, py, button=1))
 
 
-def test_the_drag_plan_grabs_a_point_and_takes_it_where_it_says():
+def test_the_drag_plan_grabs_a_point_and_takes_it_where_it_says(hooks):
     view, ax, _ = _view()
     drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
     view.figure.canvas.draw()
-    plan = HOOKS["drag_plan"](drag, distance=40)
+    plan = hooks["drag_plan"](drag, distance=40)
     assert plan["index"] == 0
     assert np.allclose(plan["start"], drag.screen_position(0))
     assert np.hypot(*np.subtract(plan["end"], plan["start"])) == pytest.approx(40.0)
@@ -117,13 +104,13 @@ def test_the_drag_plan_grabs_a_point_and_takes_it_where_it_says():
     assert view.values()["x1"] == 5.0 and view.values()["y1"] == 5.0
 
 
-def test_the_drag_plan_is_none_when_no_point_is_inside_the_axes():
+def test_the_drag_plan_is_none_when_no_point_is_inside_the_axes(hooks):
     view, ax, _ = _view()
     drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
     ax.set_xlim(20, 30)
-    assert HOOKS["drag_plan"](drag) is None
+    assert hooks["drag_plan"](drag) is None
     with pytest.raises(ValueError, match="distance"):
-        HOOKS["drag_plan"](drag, distance=-1)
+        hooks["drag_plan"](drag, distance=-1)
     with pytest.raises(ValueError, match="index"):
         drag.screen_position(2)
 
@@ -146,7 +133,7 @@ def _draggable_factories():
 
 
 @pytest.mark.parametrize("name,factory", _draggable_factories(), ids=lambda v: v if isinstance(v, str) else "")
-def test_every_drag_plan_takes_its_point_to_the_mouse(name, factory):
+def test_every_drag_plan_takes_its_point_to_the_mouse(name, factory, hooks):
     """What the browser test does with a real mouse in every view with draggable points, here with
     matplotlib events on Agg: press on the planned point, move in four steps, and at the end the
     point is under the mouse (to its sliders' steps) and only it moved."""
@@ -155,7 +142,7 @@ def test_every_drag_plan_takes_its_point_to_the_mouse(name, factory):
     view = factory()
     drag = view.drag
     view.figure.canvas.draw()
-    plan = HOOKS["drag_plan"](drag)
+    plan = hooks["drag_plan"](drag)
     assert plan is not None, f"{name}: no point can be dragged 40 px"
     others = np.delete(np.asarray(drag.get_points(), float).reshape(-1, 2), plan["index"], axis=0)
     start, end = np.array(plan["start"]), np.array(plan["end"])
@@ -172,14 +159,14 @@ def test_every_drag_plan_takes_its_point_to_the_mouse(name, factory):
     plt.close(view.figure)
 
 
-def test_interactive_view_find_names_its_rules():
+def test_interactive_view_find_names_its_rules(hooks):
     view, _, _ = _view()
-    assert HOOKS["find_view"](view.uid) is view
+    assert hooks["find_view"](view.uid) is view
     assert f"goldman-view-{view.uid}" in view._dom_classes
     with pytest.raises(TypeError, match="uid"):
-        HOOKS["find_view"]("0")
+        hooks["find_view"]("0")
     with pytest.raises(ValueError, match="uid"):
-        HOOKS["find_view"](-1)
+        hooks["find_view"](-1)
 
 
 def test_the_point_ends_where_the_mouse_lets_go_even_if_motions_were_lost():
@@ -203,11 +190,11 @@ def test_the_point_ends_where_the_mouse_lets_go_even_if_motions_were_lost():
     assert calls == [] and view.values()["x1"] == 5.0
 
 
-def test_the_drag_plan_also_gives_data_coordinates_and_the_scale():
+def test_the_drag_plan_also_gives_data_coordinates_and_the_scale(hooks):
     view, ax, _ = _view()
     drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
     view.figure.canvas.draw()
-    plan = HOOKS["drag_plan"](drag, distance=40)
+    plan = hooks["drag_plan"](drag, distance=40)
     assert plan["start_data"] == drag.position(0) == [1.0, 1.0]
     scale = np.array(plan["pixels_per_unit"])
     assert np.allclose((np.array(plan["end_data"]) - plan["start_data"]) * scale,

@@ -11,19 +11,6 @@ from goldman_lib import affine, ifs
 from goldman_lib.views import ifs_editor as ed
 
 
-def _hooks():
-    """The browser tests' kernel hooks (tests/browser/kernel_hooks.py), loaded as the kernel loads them."""
-    import runpy
-    from pathlib import Path
-
-    here = Path(__file__).resolve()
-    path = next(p / "browser" / "kernel_hooks.py" for p in here.parents if (p / "browser" / "kernel_hooks.py").exists())
-    return runpy.run_path(str(path))
-
-
-HOOKS = _hooks()
-
-
 @pytest.fixture
 def view():
     v = ed.ifs_editor(points=5000)
@@ -129,14 +116,14 @@ def test_a_map_is_edited_by_dragging_the_images_of_three_points():
     assert editor.last_error is None and editor.values()["angle0"] != 0
 
 
-def test_the_frame_holds_still_while_a_grip_is_dragged_and_fits_on_release():
+def test_the_frame_holds_still_while_a_grip_is_dragged_and_fits_on_release(hooks):
     """The editor fits its frame to the attractor after every change, except while a grip is being
     dragged: a frame that rescaled under the mouse would carry the grip away from it (a real-mouse
     drag in the browser moved a grip 93 px for a 40 px drag).  On release the frame fits again."""
     editor = ed.ifs_editor("Barnsley fern", points=2000)
     editor.figure.canvas.draw()
     limits = editor.ax.get_xlim(), editor.ax.get_ylim()
-    plan = HOOKS["drag_plan"](editor.drag, distance=60)
+    plan = hooks["drag_plan"](editor.drag, distance=60)
     x, y = editor.ax.transData.inverted().transform(plan["start"])
     x1, y1 = editor.ax.transData.inverted().transform(plan["end"])
     editor.drag.press_at(x, y)

@@ -1,0 +1,13 @@
+"""Shared fixtures of the view tests."""
+
+import runpy
+from pathlib import Path
+
+import pytest
+
+
+@pytest.fixture(scope="session")
+def hooks():
+    """The browser tests' kernel hooks (tests/browser/kernel_hooks.py: ``find_view``, ``drag_plan``),
+    loaded as the browser tests load them in the notebook's kernel."""
+    return runpy.run_path(str(Path(__file__).resolve().parents[1] / "browser" / "kernel_hooks.py"))
