@@ -68,6 +68,14 @@ def _net(ctrl, name: str = "ctrl") -> np.ndarray:
     return as_points(ctrl, name, ndim=3)
 
 
+def _finite_points(out: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """``out`` (curve points at t) if finite, else :func:`finite_result`'s ValueError naming t or
+    ctrl; the culprit is looked for only then (two passes over t saved on every good call)."""
+    if np.isfinite(out).all():
+        return out
+    return finite_result(out, *overflow_culprit(t))
+
+
 # --------------------------------------------------------------------------------------------
 # §24.1 interpolation versus approximation: Neville's pyramid
 # --------------------------------------------------------------------------------------------
@@ -142,7 +150,7 @@ def de_casteljau(ctrl, t) -> np.ndarray:
     """
     P = _ctrl(ctrl)
     t = as_parameter(t, "t")
-    return finite_result(pyramids.curve_points(P, t), *overflow_culprit(t))
+    return _finite_points(pyramids.curve_points(P, t), t)
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input
@@ -243,7 +251,7 @@ def bernstein_evaluate(ctrl, t) -> np.ndarray:
             out *= s
             tpow *= tf
         out += np.multiply(P[n][:, None], tpow, out=buf)
-    return finite_result(out.T.reshape(t.shape + (d,)), *overflow_culprit(t))
+    return _finite_points(out.T.reshape(t.shape + (d,)), t)
 
 
 # --------------------------------------------------------------------------------------------
@@ -294,7 +302,7 @@ def derivative(ctrl, t, order=1) -> np.ndarray:
     if order > n:
         return np.zeros(t.shape + (P.shape[1],))
     D = np.diff(P, n=order, axis=0) * float(math.perm(n, order)) if order else P
-    return finite_result(pyramids.curve_points(D, t), *overflow_culprit(t))
+    return _finite_points(pyramids.curve_points(D, t), t)
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported as a ValueError naming the input

@@ -13,7 +13,7 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``casteljau_level``: one level ``s P_j + t P_{j+1}`` (§24.2), the one de Casteljau routine; it
         runs every pyramid below, on arrays, lists of arrays, or lists of numbers.
     ``casteljau_apex``, ``curve_points``, ``patch_points``: curve and patch points for many parameters
-        (§24.2, §24.6): ``bezier.de_casteljau``, ``derivative``, ``de_casteljau_with_derivative``,
+        (§24.2, §24.6; ``casteljau_level``'s arithmetic node by node in a per-thread scratch, ``workspace``): ``bezier.de_casteljau``, ``derivative``, ``de_casteljau_with_derivative``,
         ``curve_crossings``, ``patch_de_casteljau``, ``patch_derivatives``; ``bezier_intersection``'s
         Newton steps and residuals.
     ``casteljau_levels``: every level, one parameter per level: ``bezier.de_casteljau_steps`` (§24.2),

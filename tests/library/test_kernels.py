@@ -32,6 +32,83 @@ def test_curve_points_is_the_bernstein_sum(n):
     assert np.allclose(pyramids.curve_points(P, t), bezier_reference(P, t), atol=1e-12)
 
 
+def _pyramid_by_levels(P, t):
+    """The apex by casteljau_level on whole arrays, one level at a time: the reference arithmetic."""
+    cur = np.broadcast_to(P[:, :, None], P.shape + (t.size,))
+    while cur.shape[0] > 1:
+        cur = pyramids.casteljau_level(cur, t)
+    return cur[0].T
+
+
+@pytest.mark.parametrize("n", [0, 1, 2, 3, 7, 12])
+@pytest.mark.parametrize("count", [0, 1, 7, 10_000])
+def test_curve_points_is_casteljau_level_bit_for_bit(n, count):
+    """The scratch-space pyramid of casteljau_apex does s P_j + t P_{j+1}, node by node, in the same
+    order as casteljau_level: the same bits, at any degree and any number of parameters."""
+    P = RNG.normal(size=(n + 1, 2)) * 10.0 ** RNG.integers(-3, 4, size=(n + 1, 1))
+    t = RNG.uniform(-0.5, 1.5, count)
+    got = pyramids.curve_points(P, t)
+    assert got.shape == (count, 2) and got.flags.c_contiguous
+    assert np.array_equal(got, _pyramid_by_levels(P, t))
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 7, 20])
+def test_curve_points_ends_are_the_end_points_exactly(n):
+    """(1-t) a + t b is a at t = 0 and b at t = 1 exactly, so P(0) = P_0 and P(1) = P_n bit for bit
+    (a + t (b - a) would not be: the book's affine invariance needs the endpoints exact)."""
+    P = RNG.normal(size=(n + 1, 3)) * 1e3 + np.pi
+    got = pyramids.curve_points(P, np.array([0.0, 1.0, 0.0, 1.0] * 2500))
+    assert (got[0::2] == P[0]).all() and (got[1::2] == P[-1]).all()
+
+
+def test_curve_points_agrees_with_numpy_polynomial_bernstein_sums():
+    """Degree 7 at 10,000 parameters (the benchmark's case) against the power form by numpy.polynomial:
+    sum_k C(7,k) t^k (1-t)^(7-k) P_k expanded with Polynomial arithmetic."""
+    from numpy.polynomial import Polynomial as Poly
+    n = 7
+    P = RNG.uniform(-1, 1, (n + 1, 2))
+    t = np.linspace(0.0, 1.0, 10_000)
+    T, S = Poly([0.0, 1.0]), Poly([1.0, -1.0])
+    for c in range(2):
+        curve = sum((math.comb(n, k) * P[k, c]) * T ** k * S ** (n - k) for k in range(n + 1))
+        assert np.abs(pyramids.curve_points(P, t)[:, c] - curve(t)).max() < 1e-13
+
+
+def test_casteljau_apex_results_survive_the_next_call_and_other_threads():
+    """The levels live in a per-thread scratch reused by the next call; results never do."""
+    import threading
+    P = RNG.normal(size=(6, 2))
+    t = np.linspace(0.0, 1.0, 3000)
+    first = pyramids.curve_points(P, t)
+    keep = first.copy()
+    pyramids.curve_points(P[::-1].copy(), t[::-1].copy())          # same scratch, other data
+    assert np.array_equal(first, keep)
+    net = RNG.normal(size=(4, 5, 3))                                # two apexes in a row (v then u)
+    u, v = RNG.uniform(0, 1, (2, 200))
+    along_v = np.stack([_pyramid_by_levels(net[i], v) for i in range(4)])   # (4, 200, 3)
+    expect = np.stack([_pyramid_by_levels(along_v[:, m], u[m:m + 1])[0] for m in range(200)])
+    assert np.array_equal(pyramids.patch_points(net, u, v).T, expect)
+    results = {}
+
+    def work(seed):
+        Q = np.random.default_rng(seed).normal(size=(8, 2))
+        results[seed] = [np.array_equal(pyramids.curve_points(Q, t), _pyramid_by_levels(Q, t)) for _ in range(20)]
+    threads = [threading.Thread(target=work, args=(seed,)) for seed in range(4)]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    assert all(all(r) for r in results.values())
+
+
+def test_workspace_is_reused_aligned_and_bounded():
+    a = pyramids.workspace(1000)
+    b = pyramids.workspace(500)
+    assert np.shares_memory(a, b) and a.ctypes.data % 2 ** 21 == 0
+    big = pyramids.workspace(pyramids.WORKSPACE_MAX_BYTES // 8 + 1)   # over the bound: a temporary
+    assert not np.shares_memory(big, pyramids.workspace(10))
+
+
 def test_casteljau_level_is_the_same_on_arrays_lists_of_arrays_and_numbers():
     P = RNG.normal(size=(6, 2))
     t = 0.3
