@@ -359,8 +359,15 @@ def _fat_line_apart(p: _Piece, q: _Piece, pad: float) -> bool:
         elif d > hi:
             hi = d
     gap = pad * size
-    ds = [(x - x0) * nx + (y - y0) * ny for x, y in zip(q.xs, q.ys)]
-    return min(ds) > hi + gap or max(ds) < lo - gap
+    qx, qy = q.xs, q.ys
+    dlo = dhi = (qx[0] - x0) * nx + (qy[0] - y0) * ny
+    for k in range(1, len(qx)):
+        d = (qx[k] - x0) * nx + (qy[k] - y0) * ny
+        if d < dlo:
+            dlo = d
+        elif d > dhi:
+            dhi = d
+    return dlo > hi + gap or dhi < lo - gap
 
 
 def _graph(xs, ys, ux, uy):
@@ -432,7 +439,7 @@ def _step2(a, b, c, d, f0, f1):
     return -(m11 * g0 - m01 * g1) / mdet, -(m00 * g1 - m01 * g0) / mdet
 
 
-def _newton_small(A, B, s, t, scale, iterations=100, patience=0):
+def _newton_small(A, B, s, t, scale, iterations=100, patience=0, start=None):
     """:func:`_newton_pairs` for one start on plain floats: ``(s, t, residual, tangential)``, or None
     for a start dropped as hopeless; ``tangential`` says whether the curves' tangents at the end
     are parallel (sine below 1e-6).  With ``patience`` > 0 the start is also dropped after that
@@ -440,10 +447,16 @@ def _newton_small(A, B, s, t, scale, iterations=100, patience=0):
 
     After a step that cut the residual by less than 5 (a tangency: the residual only quarters per
     step), the doubled step is tried too and kept if it meets better -- Newton's method for a
-    double root -- so a tangential contact converges in a few steps instead of fifty."""
+    double root -- so a tangential contact converges in a few steps instead of fifty.
+
+    start: the :func:`~goldman_lib.kernels.pyramids.point_and_tangent` pair at (s, t) if the
+    caller has it (the ordering of the starts computes it), so it is not computed twice."""
     (ax, ay), (bx, by) = A, B
-    pa = _point_and_tangent(ax, ay, s)
-    pb = _point_and_tangent(bx, by, t)
+    if start is None:
+        pa = _point_and_tangent(ax, ay, s)
+        pb = _point_and_tangent(bx, by, t)
+    else:
+        pa, pb = start
     f0, f1 = pa[0] - pb[0], pa[1] - pb[1]
     res = (f0 * f0 + f1 * f1) ** 0.5
     stalled = 0
@@ -453,7 +466,15 @@ def _newton_small(A, B, s, t, scale, iterations=100, patience=0):
         if res <= 4e-16 * scale:
             break
         ds, dt = _step2(pa[2], -pb[2], pa[3], -pb[3], f0, f1)
-        ns, nt = min(max(s + ds, 0.0), 1.0), min(max(t + dt, 0.0), 1.0)
+        ns, nt = s + ds, t + dt        # min(max(., 0), 1) written out (the same value, NaN too)
+        if ns < 0.0:
+            ns = 0.0
+        elif ns > 1.0:
+            ns = 1.0
+        if nt < 0.0:
+            nt = 0.0
+        elif nt > 1.0:
+            nt = 1.0
         pa2 = _point_and_tangent(ax, ay, ns)
         pb2 = _point_and_tangent(bx, by, nt)
         g0, g1 = pa2[0] - pb2[0], pa2[1] - pb2[1]
@@ -557,10 +578,14 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
                                 reach.add((cs, ct))
             else:
                 # the four child pairs, those whose boxes miss dropped at once
+                d, e = q.halves()
+                dx1, dy1, ex1, ey1 = d.x1 + pad, d.y1 + pad, e.x1 + pad, e.y1 + pad
                 for c in p.halves():
-                    for d in q.halves():
-                        if c.x0 <= d.x1 + pad and d.x0 <= c.x1 + pad and c.y0 <= d.y1 + pad and d.y0 <= c.y1 + pad:
-                            append((c, d, may_try))
+                    cx0, cx1, cy0, cy1 = c.x0, c.x1 + pad, c.y0, c.y1 + pad
+                    if cx0 <= dx1 and d.x0 <= cx1 and cy0 <= dy1 and d.y0 <= cy1:
+                        append((c, d, may_try))
+                    if cx0 <= ex1 and e.x0 <= cx1 and cy0 <= ey1 and e.y0 <= cy1:
+                        append((c, e, may_try))
         if not pairs:
             break
     for c in reach:
@@ -571,9 +596,12 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
     # holds it (one Newton run instead of four), and a second crossing within the pair would be
     # so close that its midpoint with the contact meets within tol, merging the two anyway
     # (transversal solutions skip nothing: two close crossings can share a flat pair).
+    at = {}                            # start -> the curves' points and tangents there, for Newton
+
     def gap_at(st):
         pa = _point_and_tangent(ca[0], ca[1], st[0])
         pb = _point_and_tangent(cb[0], cb[1], st[1])
+        at[st] = pa, pb
         return (pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2
 
     starts = sorted(guesses, key=lambda st: (gap_at(st), st))
@@ -583,7 +611,7 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
         s0, s1, t0, t1 = guesses[(s, t)]
         if any(s0 - margin <= u <= s1 + margin and t0 - margin <= v <= t1 + margin for u, v in contacts):
             continue
-        r = _newton_small(ca, cb, s, t, scale)
+        r = _newton_small(ca, cb, s, t, scale, start=at.get((s, t)))
         if r is not None and r[2] <= tol_abs:
             found.append(r)
             if r[3]:
