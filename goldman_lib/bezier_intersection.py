@@ -505,7 +505,7 @@ def _small_floats(P):
     magnitude -- if ``P`` is a float64 (k, 2) array of 2 to :data:`_SMALL` finite points within
     :data:`goldman_lib.validation.MAX_SQUARABLE`, the checks of :func:`_curves_pair` passed without their numpy calls
     (microseconds each on a few points); None for anything else, which the general checks take."""
-    if type(P) is not np.ndarray or P.dtype != np.float64 or P.ndim != 2 or P.shape[1] != 2 \
+    if type(P) is not np.ndarray or P.dtype.char != "d" or P.ndim != 2 or P.shape[1] != 2 \
             or not 2 <= P.shape[0] <= _SMALL:
         return None
     xs, ys = P.T.tolist()
@@ -632,7 +632,7 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
         else:
             kept.append((s, t))
     kept.sort()
-    return np.array(kept, dtype=float).reshape(-1, 2)
+    return np.array(kept) if kept else np.empty((0, 2))
 
 
 def intersect_curves(a, b, tol=1e-10, max_depth=40) -> np.ndarray:
