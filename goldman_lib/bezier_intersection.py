@@ -604,9 +604,11 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
         at[st] = pa, pb
         return (pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2
 
-    starts = sorted(guesses, key=lambda st: (gap_at(st), st))
-    starts += sorted(st for st in extra if st not in guesses)
-    guesses.update((st, box) for st, box in extra.items() if st not in guesses)
+    starts = []
+    if guesses or extra:               # (none when a tangential contact settled every pair)
+        starts = sorted(guesses, key=lambda st: (gap_at(st), st))
+        starts += sorted(st for st in extra if st not in guesses)
+        guesses.update((st, box) for st, box in extra.items() if st not in guesses)
     for s, t in starts:
         s0, s1, t0, t1 = guesses[(s, t)]
         if any(s0 - margin <= u <= s1 + margin and t0 - margin <= v <= t1 + margin for u, v in contacts):
@@ -617,7 +619,8 @@ def _intersect_small(ca, cb, tol_abs: float, scale: float, max_depth: int, max_p
             if r[3]:
                 contacts.append(r[:2])
     # :func:`_merge_solutions` on floats: best residual first, one solution per cluster
-    found.sort(key=lambda r: r[2])
+    if len(found) > 1:
+        found.sort(key=lambda r: r[2])
     kept = []
     for s, t, _, _ in found:
         for u, v in kept:

@@ -256,3 +256,26 @@ def test_float_arrays_and_lists_give_the_same_answer():
         fast = bezier.intersect_curves(a, b)
         np.testing.assert_array_equal(fast, bezier.intersect_curves(a.tolist(), b.tolist()))
         np.testing.assert_array_equal(fast, bezier.intersect_curves(a, b, tol=np.float64(1e-10), max_depth=np.int64(40)))
+
+
+def test_a_cubic_pieces_box_and_flatness_written_out_are_the_loops_bit_for_bit():
+    """_Piece writes out a cubic's bounding box and even flatness (the scalar path's hot spots);
+    they must be min/max and the loop max_k |P_k - ((1 - k/n) P_0 + (k/n) P_n)| exactly (so every
+    pruning decision, and every answer, is what it was), and agree with polygons.flatness."""
+    from goldman_lib.kernels import polygons
+    rng = np.random.default_rng(7)
+    for _ in range(2000):
+        P = rng.normal(size=(4, 2)) * 10.0 ** rng.integers(-6, 6)
+        if rng.random() < 0.2:
+            P[rng.integers(0, 4)] = P[rng.integers(0, 4)]          # repeated points, ties in the box
+        xs, ys = tuple(P[:, 0].tolist()), tuple(P[:, 1].tolist())
+        piece = bi._Piece(xs, ys, 0.0, 1.0)
+        assert (piece.x0, piece.x1, piece.y0, piece.y1) == (min(xs), max(xs), min(ys), max(ys))
+        f = 0.0
+        for k in range(1, 3):
+            w = k / 3
+            dx = xs[k] - ((1.0 - w) * xs[0] + w * xs[3])
+            dy = ys[k] - ((1.0 - w) * ys[0] + w * ys[3])
+            f = max(f, dx * dx + dy * dy)
+        assert piece.flat() == f ** 0.5
+        assert abs(piece.flat() - float(polygons.flatness(P))) <= 1e-15 * max(1.0, np.abs(P).max())
