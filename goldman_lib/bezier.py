@@ -134,7 +134,8 @@ def de_casteljau(ctrl, t) -> np.ndarray:
 
     Each level of the algorithm replaces consecutive control points by the affine combinations
     ``(1-t) P_j + t P_{j+1}``; after ``n`` levels one point is left, the point on the curve.  All
-    parameters are processed at once (one array operation per level, no loop over ``t``).
+    parameters are processed at once (three array operations per node of the pyramid, in place in
+    a reused scratch array, no loop over ``t``: :func:`goldman_lib.kernels.pyramids.casteljau_apex`).
 
     ctrl: (n+1, d) control points, any degree n >= 0 and any dimension d >= 1.
     t: scalar or array of any shape; values outside [0, 1] extrapolate the polynomial curve.

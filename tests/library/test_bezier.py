@@ -578,3 +578,14 @@ def test_last_leg_of_the_pyramid_is_the_derivative(n, d):
     if n:
         last = gb.de_casteljau_steps(ctrl, 0.3)[-2]
         assert np.allclose(gb.de_casteljau_with_derivative(ctrl, 0.3)[1], n * (last[1] - last[0]))
+
+
+@pytest.mark.parametrize("n", [1, 3, 7, 15])
+def test_de_casteljau_ends_are_the_end_points_exactly(n):
+    """P(0) = P_0 and P(1) = P_n bit for bit, alone and among 10,000 parameters (the lerp
+    (1-t) a + t b is exact at both ends; a + t (b - a) is not at t = 1)."""
+    P = np.random.default_rng(n).normal(size=(n + 1, 2)) * 1e3 + 0.1
+    t = np.linspace(0.0, 1.0, 10_000)
+    out = gb.de_casteljau(P, t)
+    assert (out[0] == P[0]).all() and (out[-1] == P[-1]).all()
+    assert (gb.de_casteljau(P, 0.0) == P[0]).all() and (gb.de_casteljau(P, 1.0) == P[-1]).all()
