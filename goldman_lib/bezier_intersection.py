@@ -465,7 +465,12 @@ def _newton_small(A, B, s, t, scale, iterations=100, patience=0, start=None):
             return None
         if res <= 4e-16 * scale:
             break
-        ds, dt = _step2(pa[2], -pb[2], pa[3], -pb[3], f0, f1)
+        a, b, c, d = pa[2], -pb[2], pa[3], -pb[3]
+        det = a * d - b * c            # _step2's regular case written out (the same arithmetic)
+        if abs(det) > 1e-12 * (a * a + b * b + c * c + d * d):
+            ds, dt = -(d * f0 - b * f1) / det, -(a * f1 - c * f0) / det
+        else:
+            ds, dt = _step2(a, b, c, d, f0, f1)
         ns, nt = s + ds, t + dt        # min(max(., 0), 1) written out (the same value, NaN too)
         if ns < 0.0:
             ns = 0.0

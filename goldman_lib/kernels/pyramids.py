@@ -313,8 +313,6 @@ def point_and_tangent(xs, ys, t):
     (1.0, 1.0, 2.0, 0.0)
     """
     n = len(xs) - 1
-    if n == 0:
-        return xs[0], ys[0], 0.0, 0.0
     s = 1.0 - t
     if n == 3:                 # the usual cubic and quadratic written out (casteljau_level's arithmetic)
         x0, x1, x2, x3 = xs
@@ -330,6 +328,8 @@ def point_and_tangent(xs, ys, t):
         x0, x1 = s * x0 + t * x1, s * x1 + t * x2
         y0, y1 = s * y0 + t * y1, s * y1 + t * y2
         return s * x0 + t * x1, s * y0 + t * y1, 2 * (x1 - x0), 2 * (y1 - y0)
+    if n == 0:
+        return xs[0], ys[0], 0.0, 0.0
     x, y = list(xs), list(ys)
     while len(x) > 2:
         x = casteljau_level(x, t, s)
