@@ -26,7 +26,8 @@ import threading
 import numpy as np
 
 __all__ = ["casteljau_level", "casteljau_levels", "casteljau_apex", "workspace", "WORKSPACE_MAX_BYTES",
-           "curve_points", "patch_points", "casteljau_blossom", "split", "split_xy", "split_patches", "quarter", "point_and_tangent", "bernstein_rows",
+           "curve_points", "patch_points", "casteljau_blossom", "split", "split_xy", "split_patches", "quarter",
+           "point_and_tangent", "bernstein_rows",
            "POWER_FORM_MAX_DEGREE", "domain", "de_boor_pyramid", "de_boor_tables", "de_boor_points",
            "de_boor_blossom"]
 
