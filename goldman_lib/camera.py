@@ -26,10 +26,23 @@ import numpy as np
 
 from goldman_lib import transforms
 from goldman_lib.kernels.polygons import clip_half_space
-from goldman_lib.rasteriser import image_size
-from goldman_lib.validation import as_float, as_float_array, as_int, as_points, check_finite, finite_result
+from goldman_lib.validation import (as_float, as_float_array, as_int, as_points, check_finite, finite_result,
+                                    within_budget)
 
-__all__ = ["Camera"]
+__all__ = ["Camera", "image_size"]
+
+
+def image_size(width, height) -> tuple[int, int]:
+    """A checked image size (Goldman §17.1, raster graphics): ``(width, height)`` whole numbers >= 1, their
+    product within the work budget (:func:`goldman_lib.validation.within_budget`).
+
+    >>> image_size(160, 120)
+    (160, 120)
+    """
+    height = within_budget(height, "height", cost=lambda h: h, what="the image's height", unit="pixels",
+                           minimum=1)
+    width = within_budget(width, "width", cost=lambda w: w * height, what="the image", unit="pixels", minimum=1)
+    return width, height
 
 
 @dataclass(frozen=True)

@@ -21,23 +21,11 @@ from typing import NamedTuple
 
 import numpy as np
 
+from goldman_lib.camera import image_size
 from goldman_lib.kernels import meshes
-from goldman_lib.validation import MAX_ITEMS, as_float_array, as_points, check_finite, finite_result, within_budget
+from goldman_lib.validation import MAX_ITEMS, as_float_array, as_points, check_finite, finite_result
 
-__all__ = ["image_size", "triangle_mesh", "Fragments", "rasterise_triangles", "gouraud_triangle"]
-
-
-def image_size(width, height) -> tuple[int, int]:
-    """A checked image size (Goldman §1.2 raster graphics): ``(width, height)`` whole numbers >= 1, their
-    product within the work budget (:func:`goldman_lib.validation.within_budget`).
-
-    >>> image_size(160, 120)
-    (160, 120)
-    """
-    height = within_budget(height, "height", cost=lambda h: h, what="the image's height", unit="pixels",
-                           minimum=1)
-    width = within_budget(width, "width", cost=lambda w: w * height, what="the image", unit="pixels", minimum=1)
-    return width, height
+__all__ = ["triangle_mesh", "Fragments", "rasterise_triangles", "gouraud_triangle"]
 
 
 def triangle_mesh(positions, triangles, name: str = "positions") -> tuple[np.ndarray, np.ndarray]:

@@ -1,7 +1,7 @@
 """Real roots of polynomials (Goldman §19.2-19.7): what a ray meets a surface at.
 
 A ray ``P(t) = origin + t direction`` substituted into a surface's implicit equation gives a
-polynomial in t: a quadratic for the quadrics (§19.3-19.5), a quartic for the torus (§19.6), degree
+polynomial in t: a quadratic for the quadrics (§19.4-19.5), a quartic for the torus (§19.6), degree
 up to :data:`MAX_DEGREE` for a surface of revolution (§19.7).  :func:`quadratic_roots` solves
 quadratics without cancellation; :func:`real_roots` solves stacks of polynomials of any degree up
 to :data:`MAX_DEGREE` (closed forms for degrees 2 and 4, companion matrices otherwise).  These are the
@@ -27,7 +27,7 @@ MAX_DEGREE = 12
 
 
 def quadratic_roots(a, b, c) -> np.ndarray:
-    """The real roots of ``a t^2 + b t + c = 0`` per entry (Goldman §19.3), sorted, ``inf``-padded: ``(N, 2)``.
+    """The real roots of ``a t^2 + b t + c = 0`` per entry (Goldman §19.4), sorted, ``inf``-padded: ``(N, 2)``.
 
     Computed without cancellation (``q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2``, roots ``q/a`` and
     ``c/q``); where ``a = 0`` the single root ``-c/b``; no real root gives ``[inf, inf]``.

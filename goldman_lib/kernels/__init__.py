@@ -46,12 +46,12 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``signed_distances``, ``sign_changes`` (§24.4): ``bezier.variation_count``, ``curve_crossings``,
         ``bezier_subdivision.subdivision_variation_counts``.
     ``elevate`` (§24.5): ``bezier.elevate_degree``, ``bezier_subdivision.join_order``.
-    ``ear_clip`` (§19.2): the triangles that draw ``simple_surfaces.Polygon`` (``Polygon.mesh``).
+    ``ear_clip`` (§19.3): the triangles that draw ``simple_surfaces.Polygon`` (``Polygon.mesh``).
     ``clip_half_space`` (§22.1): Sutherland-Hodgman against one plane: ``camera.Camera.clip_polygon``
         (the near plane and the guard band of every hidden-surface algorithm).
 
 :mod:`~goldman_lib.kernels.roots` -- real roots of polynomials, many at once
-    ``quadratic_roots``, ``depressed_quartic_roots``, ``polynomial_roots`` (§19.3-19.7): the checked
+    ``quadratic_roots``, ``depressed_quartic_roots``, ``polynomial_roots`` (§19.4-19.7): the checked
         ``roots.quadratic_roots`` and ``roots.real_roots`` and, per ray, the surfaces of
         ``simple_surfaces`` (quadrics, torus, surface of revolution).
 

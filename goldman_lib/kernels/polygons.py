@@ -3,7 +3,7 @@
 :func:`flatness` and :func:`patch_flatness` (how far a polygon or net is from its chord or its
 bilinear corners, §25.3), :func:`signed_distances` and :func:`sign_changes` (the variation count
 of §24.4), :func:`elevate` (degree elevation, §24.5); :func:`ear_clip` triangulates a simple polygon
-(``simple_surfaces.Polygon.mesh``, §19.2) and :func:`clip_half_space` cuts a polygon at a plane
+(``simple_surfaces.Polygon.mesh``, §19.3) and :func:`clip_half_space` cuts a polygon at a plane
 (``camera.Camera.clip_polygon``, §22.1).  Nothing here checks its input.
 """
 
@@ -96,7 +96,7 @@ def elevate(P: np.ndarray, times: int) -> np.ndarray:
 
 def ear_clip(uv: np.ndarray) -> np.ndarray:
     """Triangles ``(k - 2, 3)`` of indices into a simple counterclockwise polygon uv ``(k, 2)`` by ear
-    clipping (our way of drawing the polygons of Goldman §19.2): cut off a convex corner with no other
+    clipping (our way of drawing the polygons of Goldman §19.3): cut off a convex corner with no other
     vertex inside, repeat; what is left (convex or degenerate) becomes a fan.
 
     >>> ear_clip(np.array([[0.0, 0], [2, 0], [2, 2], [1, 1], [0, 2]])).tolist()

@@ -16,7 +16,7 @@ __all__ = ["quadratic_roots", "polynomial_roots", "depressed_quartic_roots"]
 
 
 def quadratic_roots(a, b, c) -> np.ndarray:
-    """The real roots of ``a t^2 + b t + c = 0`` per entry of arrays of one shape (Goldman §19.3),
+    """The real roots of ``a t^2 + b t + c = 0`` per entry of arrays of one shape (Goldman §19.4),
     sorted, ``inf``-padded: ``shape + (2,)``.  Without cancellation: ``q = -(b + sign(b) sqrt(b^2 -
     4ac)) / 2``, roots ``q/a`` and ``c/q``; where ``a = 0`` the single root ``-c/b``.
 

@@ -15,7 +15,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from goldman_lib import ray_tracing, shading
-from goldman_lib.camera import Camera
+from goldman_lib.camera import Camera, image_size
 
 #: tan(fov/2) = 1/2: at distance 4 the half-width 1 is 1/4 unit on the plane one unit ahead, and the
 #: plane has 10 / (1/2) = 20 pixels per unit.
@@ -61,6 +61,14 @@ def test_camera_rays_through_pixel_centres():
 def test_bad_camera_input_names_the_parameter(bad, word):
     with pytest.raises(ValueError, match=word):
         bad()
+
+
+def test_image_size_is_whole_pixels_within_the_budget():
+    assert image_size(4, 3) == (4, 3) and image_size(4.0, 3.0) == (4, 3)
+    with pytest.raises(ValueError, match="width"):
+        image_size(10 ** 6, 10 ** 6)
+    with pytest.raises(ValueError, match="height"):
+        image_size(4, 0)
 
 
 def test_one_camera_one_keyword_spelling():
