@@ -47,13 +47,12 @@ from typing import NamedTuple
 import numpy as np
 
 from goldman_lib import lighting
-from goldman_lib.camera import Camera
+from goldman_lib.camera import Camera, image_size
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import MAX_COORDINATE, Plane, Sphere, rays
 from goldman_lib.kernels import frames, illumination
 from goldman_lib.kernels.frames import norm as _norm
-from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
-                                    within_budget)
+from goldman_lib.validation import MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite
 
 __all__ = ["Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
            "trace", "render", "ray_tree", "in_shadow", "light_fraction", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
@@ -317,22 +316,14 @@ class RaySegment(NamedTuple):
     light: float = 1.0
 
 
-def _image_size(width, height, depth):
-    width = within_budget(width, "width", cost=lambda v: v, what="an image row", unit="pixels", minimum=1)
-    height = within_budget(height, "height", cost=lambda v: v * width, what=f"an image {width} pixels wide",
-                           unit="pixels", minimum=1)
-    as_int(depth, "depth", minimum=0, maximum=MAX_DEPTH)
-    # the rays the image will trace are counted level by level as they are spawned (see _trace): a
-    # pixel's full binary tree of 2^(depth+1) - 1 rays is a bound few pixels come near
-    return width, height
-
-
 def _sized_camera(camera, width, height, depth) -> Camera:
     """``camera`` checked, at ``width`` x ``height`` where given (None: the camera's own size)."""
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be a goldman_lib.camera.Camera; got {type(camera).__name__}")
-    width, height = _image_size(camera.width if width is None else width,
-                                camera.height if height is None else height, depth)
+    width, height = image_size(camera.width if width is None else width, camera.height if height is None else height)
+    as_int(depth, "depth", minimum=0, maximum=MAX_DEPTH)
+    # the rays the image will trace are counted level by level as they are spawned (see _trace): a
+    # pixel's full binary tree of 2^(depth+1) - 1 rays is a bound few pixels come near
     if np.abs(camera.eye).max() > MAX_COORDINATE:
         raise ValueError(f"camera.eye must have coordinates at most {MAX_COORDINATE:g} in magnitude (the bound on "
                          f"ray origins: their squares must not overflow); got {np.abs(camera.eye).max():g}")

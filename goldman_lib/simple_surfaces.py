@@ -32,7 +32,7 @@ import numpy as np
 from goldman_lib.kernels import polygons, roots
 from goldman_lib.lighting import Material, unit_rows
 from goldman_lib.roots import MAX_DEGREE
-from goldman_lib.validation import as_float, as_float_array, as_int, as_points, check_finite, finite_result, within_budget
+from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result, within_budget
 
 __all__ = ["EPS", "MAX_COORDINATE", "MAX_RESOLUTION", "MAX_PROFILE_DEGREE", "Surface", "rays", "Plane",
            "Sphere", "Polygon", "Cylinder", "EllipticCylinder", "Cone", "EllipticCone", "Ellipsoid", "Quadric", "Torus",

@@ -601,7 +601,7 @@ def _part3_probes():
     """Issue 20, sections 2-3: many polygons, lights, patches and intervals, deep CSG trees,
     singular radiosity systems and geometry behind the eye (``param`` None: an answer, not a refusal,
     is expected)."""
-    from goldman_lib import hidden_surfaces as hs, lighting, radiosity as rd, ray_tracing as rt, shading
+    from goldman_lib import hidden_surfaces as hs, lighting, radiosity as rd, ray_tracing as rt
     from goldman_lib.camera import Camera
     from goldman_lib import simple_surfaces as ss, solid_modeling as sm
 
