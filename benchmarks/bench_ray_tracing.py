@@ -53,7 +53,9 @@ def main() -> dict[str, float]:
           f"{cpu * 1e3:.1f} ms CPU)")
 
     w, h = SMALL
-    o, d = camera.rays(w, h)
+    eye, d = rt.default_camera(width=w, height=h).rays()
+    d = d.reshape(-1, 3)
+    o = np.broadcast_to(eye, d.shape)
 
     def per_pixel():
         out = np.zeros((h * w, 3))

@@ -19,6 +19,7 @@ import numpy as np
 
 from benchmarks.timing import best_time, best_times, report
 from goldman_lib import lighting, shading
+from goldman_lib.camera import Camera
 
 SIZE = 256
 STACKS, SLICES = 26, 40          # 2 * 40 * 25 = 2,000 triangles
@@ -81,7 +82,7 @@ def _python_phong(V, T, N, cam, light, material):
 def main() -> dict[str, float]:
     V, T = shading.uv_sphere(STACKS, SLICES)
     assert len(T) == 2000
-    cam = shading.Camera(eye=(0, -6, 2), target=(0, 0, 0), fov=30, width=SIZE, height=SIZE)
+    cam = Camera(eye=(0, -6, 2), target=(0, 0, 0), fov=30, width=SIZE, height=SIZE)
     light = lighting.Light((4, -6, 6))
     times = {}
     for mode in shading.SHADING_MODES:
@@ -90,7 +91,7 @@ def main() -> dict[str, float]:
     ok = times["phong"] <= TARGET
     print(f"    target {TARGET * 1e3:g} ms for Phong: {'met' if ok else 'MISSED'} ({times['phong'] * 1e3:.1f} ms)")
 
-    small = shading.Camera(eye=(0, -6, 2), target=(0, 0, 0), fov=30, width=SMALL, height=SMALL)
+    small = Camera(eye=(0, -6, 2), target=(0, 0, 0), fov=30, width=SMALL, height=SMALL)
     N = shading.average_vertex_normals(V, T)
     material = lighting.Material()
     ours_img = shading.render(V, T, small, light, material, mode="phong")

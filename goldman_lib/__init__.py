@@ -26,11 +26,15 @@ Part II, mathematical methods for three-dimensional computer graphics
 Part III, three-dimensional computer graphics: realistic rendering
 
 - ``lighting``              chapter 16, the one lighting model (used by every renderer below)
+- ``camera``                chapters 17, 21-22, the pinhole ``Camera``: the one place a pixel becomes a
+                            ray (``rays``) and a point a pixel (``project``, the near-plane clip)
 - ``ray_tracing``           chapter 17, recursive ray tracing (``render`` with anti-aliasing and progress)
 - ``surfaces``              chapter 18, implicit, parametric, deformed and procedural surfaces
+- ``roots``                 chapter 19, real roots of polynomials (quadratics, quartics, companion matrices)
 - ``simple_surfaces``       chapter 19, the simple surfaces and the ray-surface contract
 - ``solid_modeling``        chapter 20, boundary representations, CSG and octrees
-- ``shading``               chapter 21, normals, the software rasteriser and five shading modes
+- ``rasteriser``            chapters 21-22, the one scan conversion with a depth buffer
+- ``shading``               chapter 21, normals, the sphere mesh and five shading modes (``render``)
 - ``hidden_surfaces``       chapter 22, six hidden-surface algorithms on one scene
 - ``radiosity``             chapter 23, form factors and the radiosity equations
 
@@ -46,7 +50,7 @@ Part IV, geometric modeling: freeform curves and surfaces
 - ``subdivision_surfaces``  chapter 30, subdivision surfaces
 
 Under them all: ``validation`` (argument checks and work budgets: the messages name the parameter
-and the rule), ``angles`` (degrees), ``kernels`` (the unchecked array kernels the checked functions share: de Casteljau and de Boor pyramids, polygons, frames, meshes, iteration, relaxation; one home each), and
+and the rule), ``angles`` (degrees), ``kernels`` (the unchecked array kernels the checked functions share: de Casteljau and de Boor pyramids, polygons, frames, meshes, iteration, relaxation, roots; one home each), and
 
 - ``goldman_lib.exercises``  the checkers of the notebooks' exercises, "show that" exercises and
   programming projects (``deal`` makes numeric exercises deal new instances)

@@ -1,13 +1,13 @@
 """Hidden surfaces (Goldman chapter 22): six ways to draw only what the eye sees, on one scene.
 
 A scene is a list of planar convex polygons (each ``(k, 3)`` vertices in order) seen by a
-:class:`goldman_lib.shading.Camera`.  Every algorithm returns a :class:`Rendering`: ``ids`` (h, w),
+:class:`goldman_lib.camera.Camera`.  Every algorithm returns a :class:`Rendering`: ``ids`` (h, w),
 the index of the polygon seen at each pixel (-1 for none), and ``order``, what it drew in the order
 it drew it, for the step-through of the views.
 
 * :func:`heedless_painter` (§22.2): paint polygons back to front, sorted by their farthest point,
   each over the last -- wrong where polygons interpenetrate or overlap cyclically;
-* :func:`z_buffer` (§22.3): the depth buffer of :func:`goldman_lib.shading.rasterise_triangles`, the
+* :func:`z_buffer` (§22.3): the depth buffer of :func:`goldman_lib.rasteriser.rasterise_triangles`, the
   one scan conversion of the course;
 * :func:`scan_line` (§22.4): an edge table and an active edge list per scan line; on each scan line
   the spans of the active polygons, the nearest polygon kept at each pixel;
@@ -22,7 +22,7 @@ it drew it, for the step-through of the views.
 All but the heedless painter produce the same ``ids`` up to pixels on the edges of polygons (and on
 the lines where polygons cross); the painters scan convert with the same rule.  Every algorithm draws
 the same part of each polygon: the part at or beyond the camera's near plane, clipped once for all
-(:meth:`goldman_lib.shading.Camera.clip_polygon`, with a guard band of :data:`GUARD` image sizes), so
+(:meth:`goldman_lib.camera.Camera.clip_polygon`, with a guard band of :data:`GUARD` image sizes), so
 a polygon reaching behind the eye, or one nearer than the near plane, is one picture in all six.
 The work is bounded before any pixel is drawn: the polygons' screen extents summed (their overdraw;
 polygons x pixels for ray casting) by :data:`MAX_PIXEL_TESTS`, the depth sort's pairs of polygons
@@ -43,7 +43,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from goldman_lib import lighting, shading
+from goldman_lib import lighting, rasteriser, shading
+from goldman_lib.camera import Camera
 from goldman_lib.kernels import meshes
 from goldman_lib.simple_surfaces import Polygon
 from goldman_lib.validation import (MAX_ITEMS, as_colour, as_float, as_float_array, as_points, check_finite,
@@ -58,7 +59,7 @@ MAX_POLYGONS = 2000
 #: The most pixel candidates one rendering may examine: the polygons' screen extents summed (their
 #: overdraw) for the scan-converting algorithms, polygons x pixels for ray casting.
 MAX_PIXEL_TESTS = MAX_ITEMS
-#: The guard band of the clip (:meth:`goldman_lib.shading.Camera.clip_polygon`): polygons are cut
+#: The guard band of the clip (:meth:`goldman_lib.camera.Camera.clip_polygon`): polygons are cut
 #: to the view frustum widened this many times, so screen coordinates stay within a few image sizes.
 GUARD = 4.0
 #: The most pairs of pieces the depth sort may compare (its tests 1-4 on one pair are one).
@@ -103,13 +104,13 @@ def default_scene():
     return polygons, colours
 
 
-def default_camera(width: int = 160, height: int = 120) -> shading.Camera:
+def default_camera(width: int = 160, height: int = 120) -> Camera:
     """The camera of the chapter's scene: on the -y side, looking at it along +y.
 
     >>> default_camera().eye
     (0.0, -7.0, 0.6)
     """
-    return shading.Camera(eye=(0.0, -7.0, 0.6), target=(0.0, 0.0, 0.1), up=(0.0, 0.0, 1.0), fov=36.0,
+    return Camera(eye=(0.0, -7.0, 0.6), target=(0.0, 0.0, 0.1), up=(0.0, 0.0, 1.0), fov=36.0,
                           width=width, height=height)
 
 
@@ -133,15 +134,15 @@ def _polygons(polygons) -> list[np.ndarray]:
     return out
 
 
-def _camera(camera) -> shading.Camera:
-    if not isinstance(camera, shading.Camera):
-        raise TypeError(f"camera must be a goldman_lib.shading.Camera; got {type(camera).__name__}")
+def _camera(camera) -> Camera:
+    if not isinstance(camera, Camera):
+        raise TypeError(f"camera must be a goldman_lib.camera.Camera; got {type(camera).__name__}")
     return camera
 
 
 def _visible(camera, polys) -> list:
     """``(index, part)`` of every polygon with a part at or beyond the camera's near plane and
-    within the guard band (:meth:`goldman_lib.shading.Camera.clip_polygon`, ``guard=GUARD``): the
+    within the guard band (:meth:`goldman_lib.camera.Camera.clip_polygon`, ``guard=GUARD``): the
     one clip all six algorithms share, so a polygon reaching behind the eye, or one nearer than the
     near plane, is the same picture (or none) in each, and no vertex projects far off the image."""
     out = []
@@ -318,14 +319,14 @@ def _zbuffer(camera, items, upto=None):
     if not V:
         return np.full((camera.height, camera.width), -1, dtype=np.intp)
     S = camera.project(np.vstack(V))[:, :3]
-    f = shading.rasterise_triangles(S, np.vstack(T), camera.width, camera.height)
+    f = rasteriser.rasterise_triangles(S, np.vstack(T), camera.width, camera.height)
     owner = np.concatenate(owner)
     return np.where(f.triangle >= 0, owner[np.maximum(f.triangle, 0)], -1)
 
 
 def z_buffer(polygons, camera) -> Rendering:
     """The z-buffer (Goldman §22.3): scan convert every polygon (as a fan of triangles) with a depth
-    per pixel and keep the nearest -- :func:`goldman_lib.shading.rasterise_triangles`, whose depth is
+    per pixel and keep the nearest -- :func:`goldman_lib.rasteriser.rasterise_triangles`, whose depth is
     ``1 - near / w``, linear in screen space.  The polygons may come in any order; ``order`` is the
     order given.
 

@@ -24,8 +24,11 @@ where ``d . N < 0`` (it goes from the outside medium, index 1, into the object's
 leaving where ``d . N > 0``.  A shadow ray is not refracted: by default (``Scene(...,
 shadow_transmission=True)``, Whitted's simple model of 1980) each transparent object it passes
 multiplies the light by its transmission coefficient ``k_t``, and an opaque object (``k_t = 0``) stops
-it; with ``shadow_transmission=False`` every object casts a full shadow.  Angles are in degrees.  The camera is a pinhole with a vertical field of view;
-pixel ``(px, py)`` counts columns from the left and rows from the top, as an image does.
+it; with ``shadow_transmission=False`` every object casts a full shadow.  Angles are in degrees.  The camera is
+:class:`goldman_lib.camera.Camera`, a pinhole with a vertical field of view, the one place where a
+pixel becomes a ray; pixel ``(px, py)`` counts columns from the left and rows from the top, as an
+image does.  The image size is the camera's (``width``/``height`` of :func:`render`, :func:`ray_cast`
+and :func:`ray_tree` override it; :func:`default_camera` is 160 x 120).
 
 >>> scene, camera = default_scene(), default_camera()
 >>> image = render(scene, camera, 32, 24, depth=2)
@@ -43,15 +46,15 @@ from typing import NamedTuple
 
 import numpy as np
 
-from goldman_lib import lighting, shading
+from goldman_lib import lighting
+from goldman_lib.camera import Camera, image_size
 from goldman_lib.lighting import Light, Material
-from goldman_lib.simple_surfaces import Plane, Sphere
+from goldman_lib.simple_surfaces import MAX_COORDINATE, Plane, Sphere, rays
 from goldman_lib.kernels import frames, illumination
 from goldman_lib.kernels.frames import norm as _norm
-from goldman_lib.validation import (MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite,
-                                    within_budget)
+from goldman_lib.validation import MAX_ITEMS, as_float, as_float_array, as_int, as_points, check_finite
 
-__all__ = ["Camera", "Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
+__all__ = ["Scene", "RaySegment", "refract", "refract_rays", "critical_angle", "ray_tree_size",
            "trace", "render", "ray_tree", "in_shadow", "light_fraction", "default_scene", "default_camera", "default_lights", "MAX_DEPTH",
            "OFFSET", "INDEX_RANGE", "MATERIALS", "MAX_SAMPLES", "BANDS", "ray_cast", "PRECISIONS", "INDEX_RATIOS"]
 
@@ -78,55 +81,6 @@ def _unit(v, name):
 
 def _dot(a, b):
     return frames.row_dots(a, b)
-
-
-# -- the camera (§17.2) ------------------------------------------------------------------------------
-
-class Camera:
-    """A pinhole camera (Goldman §17.2): the eye, the point it looks at, the up direction and the
-    vertical field of view ``fov`` in degrees.  A pixel's primary ray starts at the eye and passes
-    through the pixel's centre on a screen one unit in front of the eye.
-
-    >>> cam = Camera((0, -5, 0), (0, 0, 0), up=(0, 0, 1), fov=90)
-    >>> o, d = cam.rays(2, 2)
-    >>> d.round(4).tolist()[0]          # top-left pixel: left, forward, up (the screen's half-size is tan 45 = 1)
-    [-0.4082, 0.8165, 0.4082]
-    """
-
-    def __init__(self, eye, look_at, up=(0.0, 0.0, 1.0), fov: float = 45.0):
-        # the frame and the pixel-to-ray map live in shading.Camera (one home for both renderers)
-        try:
-            self._camera = shading.Camera(eye=eye, target=look_at, up=up, fov=fov, width=1, height=1)
-        except (TypeError, ValueError) as exc:
-            raise type(exc)(str(exc).replace("target", "look_at")) from None
-        from goldman_lib.simple_surfaces import MAX_COORDINATE
-        for name, value in (("eye", self._camera.eye), ("look_at", self._camera.target)):
-            if np.abs(value).max() > MAX_COORDINATE:
-                raise ValueError(f"{name} must have coordinates at most {MAX_COORDINATE:g} in magnitude (the bound on "
-                                 f"ray origins: their squares must not overflow); got {np.abs(value).max():g}")
-        self.eye = np.array(self._camera.eye)
-        self.look_at = np.array(self._camera.target)
-        self.up_hint = np.array(self._camera.up)
-        self.fov = self._camera.fov
-
-    def _screen(self, px, py, width, height):
-        return dataclasses.replace(self._camera, width=width, height=height).pixel_directions(px, py)
-
-    def rays(self, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
-        """The primary rays of a ``width`` x ``height`` image, row by row from the top:
-        origins ``(height*width, 3)`` (all the eye) and unit directions ``(height*width, 3)``."""
-        width, height = _image_size(width, height, 0)
-        py, px = np.mgrid[0:height, 0:width]
-        d = self._screen(px.ravel(), py.ravel(), width, height)
-        return np.broadcast_to(self.eye, d.shape).copy(), d
-
-    def ray(self, px: int, py: int, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
-        """The primary ray of pixel ``(px, py)`` (column from the left, row from the top): origin
-        (3,) and unit direction (3,)."""
-        width, height = _image_size(width, height, 0)
-        px = as_int(px, "px", minimum=0, maximum=width - 1)
-        py = as_int(py, "py", minimum=0, maximum=height - 1)
-        return self.eye.copy(), self._screen(px, py, width, height)
 
 
 # -- the scene ---------------------------------------------------------------------------------------
@@ -185,7 +139,6 @@ class Scene:
             raise TypeError("lights must be a sequence of goldman_lib.lighting.Light")
         for k, obj in enumerate(objects):
             _index(obj.material.index, f"objects[{k}].material.index")
-        from goldman_lib.simple_surfaces import MAX_COORDINATE
         for k, light in enumerate(lights):
             if np.abs(light.position).max() > MAX_COORDINATE:
                 raise ValueError(f"lights[{k}].position must have coordinates at most {MAX_COORDINATE:g} in magnitude "
@@ -363,14 +316,28 @@ class RaySegment(NamedTuple):
     light: float = 1.0
 
 
-def _image_size(width, height, depth):
-    width = within_budget(width, "width", cost=lambda v: v, what="an image row", unit="pixels", minimum=1)
-    height = within_budget(height, "height", cost=lambda v: v * width, what=f"an image {width} pixels wide",
-                           unit="pixels", minimum=1)
+def _sized_camera(camera, width, height, depth) -> Camera:
+    """``camera`` checked, at ``width`` x ``height`` where given (None: the camera's own size)."""
+    if not isinstance(camera, Camera):
+        raise TypeError(f"camera must be a goldman_lib.camera.Camera; got {type(camera).__name__}")
+    width, height = image_size(camera.width if width is None else width, camera.height if height is None else height)
     as_int(depth, "depth", minimum=0, maximum=MAX_DEPTH)
     # the rays the image will trace are counted level by level as they are spawned (see _trace): a
     # pixel's full binary tree of 2^(depth+1) - 1 rays is a bound few pixels come near
-    return width, height
+    if np.abs(camera.eye).max() > MAX_COORDINATE:
+        raise ValueError(f"camera.eye must have coordinates at most {MAX_COORDINATE:g} in magnitude (the bound on "
+                         f"ray origins: their squares must not overflow); got {np.abs(camera.eye).max():g}")
+    if (width, height) == (camera.width, camera.height):
+        return camera
+    return dataclasses.replace(camera, width=width, height=height)
+
+
+def _primary_rays(camera: Camera, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
+    """The rays of ``camera`` at ``width`` x ``height`` (a supersampled image: the same view, more
+    pixels), row by row from the top: origins and unit directions, each ``(height * width, 3)``."""
+    eye, D = dataclasses.replace(camera, width=width, height=height).rays()
+    d = D.reshape(-1, 3)
+    return np.broadcast_to(eye, d.shape).copy(), d
 
 
 def _bounding_sphere(obj):
@@ -561,8 +528,6 @@ def trace(scene: Scene, origins, directions, depth: int = 3, *, record: list | N
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
-    from goldman_lib.simple_surfaces import rays
-
     o, d = rays(origins, directions)
     depth = as_int(depth, "depth", minimum=0, maximum=MAX_DEPTH)
     max_rays = _as_budget(max_rays)
@@ -726,10 +691,10 @@ MAX_SAMPLES = 4
 BANDS = 24
 
 
-def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, depth: int = 3, *,
+def render(scene: Scene, camera: Camera, width: int | None = None, height: int | None = None, depth: int = 3, *,
            samples: int = 1, progress=None, counts: dict | None = None, max_rays: int = MAX_ITEMS) -> np.ndarray:
     """Ray trace ``scene`` seen by ``camera`` (Goldman §17.2): a ``(height, width, 3)`` image in
-    [0, 1] (row 0 at the top).  depth: the recursion depth (0: local light and shadows only), at
+    [0, 1] (row 0 at the top), of the camera's size unless ``width`` or ``height`` is given.  depth: the recursion depth (0: local light and shadows only), at
     most :data:`MAX_DEPTH`.  The work is the rays actually traced, counted level by level against
     ``max_rays`` (default :data:`goldman_lib.validation.MAX_ITEMS`; see :func:`trace`): a 640x480
     image of :func:`default_scene` at depth 5 traces under 0.9 million rays, shadow rays included, far
@@ -752,11 +717,10 @@ def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, de
     >>> done[-1], bool((img2 == img).all())
     ((6, 6), True)
     """
-    if not isinstance(camera, Camera):
-        raise TypeError(f"camera must be a goldman_lib.ray_tracing.Camera; got {type(camera).__name__}")
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
-    width, height = _image_size(width, height, depth)
+    camera = _sized_camera(camera, width, height, depth)
+    width, height = camera.width, camera.height
     samples = as_int(samples, "samples", minimum=1, maximum=MAX_SAMPLES)
     if progress is not None and not callable(progress):
         raise TypeError(f"progress must be a function progress(done, total) or None; got {type(progress).__name__}")
@@ -768,7 +732,7 @@ def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, de
         raise ValueError(f"samples={samples} makes {big_w * big_h:,} primary rays for a {width}x{height} image, "
                          f"over the budget max_rays={budget:,}; use fewer samples or a smaller image")
     _check_lights(scene, big_w * big_h, budget)   # before the primary rays are made
-    o, d = camera.rays(big_w, big_h)
+    o, d = _primary_rays(camera, big_w, big_h)
     if progress is None:
         colour = trace(scene, o, d, depth, counts=counts, max_rays=budget)
     else:
@@ -792,12 +756,13 @@ def render(scene: Scene, camera: Camera, width: int = 160, height: int = 120, de
     return image
 
 
-def ray_cast(scene: Scene, camera: Camera, width: int = 160, height: int = 120, *, samples: int = 1,
+def ray_cast(scene: Scene, camera: Camera, width: int | None = None, height: int | None = None, *, samples: int = 1,
              clamp: bool = True, progress=None) -> np.ndarray:
     """Ray cast ``scene`` seen by ``camera`` with local light only: the pictures of chapter 16
     (Goldman §16.6: each pixel's ray, its nearest hit and :func:`goldman_lib.lighting.intensity` there,
     no shadow rays and no recursion; :func:`render` adds those, §17.2).  A ``(height, width, 3)`` image
-    in [0, 1] (row 0 at the top); a ray that hits nothing sees ``scene.background``.
+    in [0, 1] (row 0 at the top), of the camera's size unless ``width`` or ``height`` is given; a ray
+    that hits nothing sees ``scene.background``.
 
     samples: ``samples x samples`` rays per pixel, averaged after clipping (anti-aliasing, as in
     :func:`render`), at most :data:`MAX_SAMPLES`.  clamp: passed to
@@ -808,15 +773,14 @@ def ray_cast(scene: Scene, camera: Camera, width: int = 160, height: int = 120, 
 
     >>> s = Scene([Sphere((0, 0, 0), 1, Material(colour=(1, 1, 1), ambient=1, diffuse=0, specular=0))],
     ...           [Light((0, 0, 5))], ambient_light=0.5, background=(0, 0, 1))
-    >>> img = ray_cast(s, Camera((0, -5, 0), (0, 0, 0), fov=30), 4, 3)
+    >>> img = ray_cast(s, Camera((0, -5, 0), (0, 0, 0), fov=30, width=4, height=3))
     >>> img[1, 1].tolist(), img[0, 0].tolist()          # the sphere in the middle, the background in a corner
     ([0.5, 0.5, 0.5], [0.0, 0.0, 1.0])
     """
-    if not isinstance(camera, Camera):
-        raise TypeError(f"camera must be a goldman_lib.ray_tracing.Camera; got {type(camera).__name__}")
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a goldman_lib.ray_tracing.Scene; got {type(scene).__name__}")
-    width, height = _image_size(width, height, 0)
+    camera = _sized_camera(camera, width, height, 0)
+    width, height = camera.width, camera.height
     samples = as_int(samples, "samples", minimum=1, maximum=MAX_SAMPLES)
     if not isinstance(clamp, (bool, np.bool_)):
         raise TypeError(f"clamp must be True or False; got {type(clamp).__name__}")
@@ -826,7 +790,7 @@ def ray_cast(scene: Scene, camera: Camera, width: int = 160, height: int = 120, 
     if big_w * big_h > MAX_ITEMS:
         raise ValueError(f"samples={samples} makes {big_w * big_h:,} rays for a {width}x{height} image, over the "
                          f"budget {MAX_ITEMS:,}; use fewer samples or a smaller image")
-    o, d = camera.rays(big_w, big_h)
+    o, d = _primary_rays(camera, big_w, big_h)
     bounds = [_bounding_sphere(obj) for obj in scene.objects]
     colour = np.empty((big_w * big_h, 3))
     rows = -(-height // min(BANDS, height))
@@ -843,7 +807,7 @@ def ray_cast(scene: Scene, camera: Camera, width: int = 160, height: int = 120, 
             P = o[a:b][sel] + t[sel, None] * d[a:b][sel]
             N = normals[sel]
             N_f = np.where((_dot(d[a:b][sel], N) < 0)[:, None], N, -N)
-            band[sel] = lighting.intensity(P, N_f, camera.eye, scene.lights, obj.material, scene.ambient_light,
+            band[sel] = lighting.intensity(P, N_f, np.array(camera.eye), scene.lights, obj.material, scene.ambient_light,
                                            clamp=bool(clamp))
         colour[a:b] = band
         if progress is not None:
@@ -854,9 +818,10 @@ def ray_cast(scene: Scene, camera: Camera, width: int = 160, height: int = 120, 
     return image
 
 
-def ray_tree(scene: Scene, camera: Camera, px: int, py: int, depth: int = 3, width: int = 160,
-             height: int = 120, miss_length: float = 3.0) -> list[RaySegment]:
-    """The ray tree of pixel ``(px, py)`` of a ``width`` x ``height`` image (Goldman §17.2): every
+def ray_tree(scene: Scene, camera: Camera, px: int, py: int, depth: int = 3, width: int | None = None,
+             height: int | None = None, miss_length: float = 3.0) -> list[RaySegment]:
+    """The ray tree of pixel ``(px, py)`` of the camera's image (or of a ``width`` x ``height`` one,
+    where given) (Goldman §17.2): every
     ray the recursive tracer follows for that pixel, as :class:`RaySegment` s (primary, reflected,
     refracted and shadow rays), level by level.
 
@@ -864,10 +829,7 @@ def ray_tree(scene: Scene, camera: Camera, px: int, py: int, depth: int = 3, wid
     >>> tree[0].kind, tree[0].level
     ('primary', 0)
     """
-    if not isinstance(camera, Camera):
-        raise TypeError(f"camera must be a goldman_lib.ray_tracing.Camera; got {type(camera).__name__}")
-    width, height = _image_size(width, height, depth)
-    o, d = camera.ray(px, py, width, height)
+    o, d = _sized_camera(camera, width, height, depth).ray(px, py)
     segments: list[RaySegment] = []
     trace(scene, o[None], d[None], depth, record=segments, miss_length=miss_length)
     return segments
@@ -919,10 +881,12 @@ def default_scene(index: float = 1.5, lights=None, ambient_light=0.3, shadow_tra
                  background=(0.62, 0.76, 0.92), shadow_transmission=shadow_transmission)
 
 
-def default_camera(fov: float = 45.0) -> Camera:
-    """The camera of :func:`default_scene`: the eye at (-7, 0, 2.2) looking at (0, 0, 0.8), z up.
+def default_camera(fov: float = 45.0, width: int = 160, height: int = 120) -> Camera:
+    """The camera of :func:`default_scene`: the eye at (-7, 0, 2.2) looking at (0, 0, 0.8), z up, a
+    vertical field of view of ``fov`` degrees, a ``width`` x ``height`` image.
 
-    >>> default_camera().eye.tolist()
-    [-7.0, 0.0, 2.2]
+    >>> cam = default_camera()
+    >>> cam.eye, (cam.width, cam.height)
+    ((-7.0, 0.0, 2.2), (160, 120))
     """
-    return Camera((-7.0, 0.0, 2.2), (0.0, 0.0, 0.8), up=(0.0, 0.0, 1.0), fov=fov)
+    return Camera((-7.0, 0.0, 2.2), (0.0, 0.0, 0.8), up=(0.0, 0.0, 1.0), fov=fov, width=width, height=height)

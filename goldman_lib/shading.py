@@ -1,15 +1,15 @@
-"""Shading polygonal models (Goldman chapter 21): normals, a software rasteriser and five shading modes.
+"""Shading polygonal models (Goldman chapter 21): normals and five shading modes.
 
 §21.1 polygonal models: a mesh is plain arrays, vertex ``positions`` (n, 3) and ``triangles`` (m, 3)
-of vertex indices (counterclockwise seen from outside).  The normal of a polygon by Newell's formula
-(:func:`unit_newell_normal`, :func:`newell_face_normals`) and vertex normals averaged from the faces
-around a vertex (:func:`average_vertex_normals`; :func:`vertex_normals` weights by area).
+of vertex indices (counterclockwise seen from outside); :func:`uv_sphere` makes the chapter's sphere.
+The normal of a polygon by Newell's formula (:func:`unit_newell_normal`, :func:`newell_face_normals`)
+and vertex normals averaged from the faces around a vertex (:func:`average_vertex_normals`;
+:func:`vertex_normals` weights by area).
 
-The rasteriser projects with a :class:`Camera` (the perspective matrix of
-:func:`goldman_lib.transforms.perspective`), scan-converts every triangle by barycentric coverage of
-the pixel centres in its bounding box, vectorised over batches of triangles, and keeps the nearest
-fragment per pixel in a depth buffer: :func:`rasterise_triangles`, the one scan conversion of the
-course (chapter 22's z-buffer calls it too).  :func:`render` shades what it covers:
+:func:`render` is the pipeline of the chapter: a :class:`goldman_lib.camera.Camera` projects the
+vertices (the perspective matrix of §13.6.2), the rasteriser scan-converts the triangles with a depth
+buffer (:mod:`goldman_lib.rasteriser`, the one scan conversion of the course: chapter 22's z-buffer
+runs it too), and one of the shading modes colours what it covers:
 
 * ``uniform`` (§21.2): one intensity per face, at its centroid with its Newell normal;
 * ``gouraud`` (§21.3): intensities at the vertices, interpolated across the face;
@@ -34,19 +34,20 @@ does (the tests check the two agree when the cosines are exact).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
 
-from goldman_lib import lighting, transforms
+from goldman_lib import lighting
+from goldman_lib.camera import Camera
 from goldman_lib.kernels import frames, meshes
+from goldman_lib.rasteriser import Fragments, triangle_mesh
 from goldman_lib.validation import (MAX_ITEMS, as_colour, as_float, as_float_array, as_int, as_points, check_finite,
                                     finite_result, within_budget)
 
 __all__ = ["unit_newell_normal", "face_normals", "vertex_normals", "newell_face_normals", "average_vertex_normals",
-           "uv_sphere", "Camera", "Fragments", "rasterise_triangles", "SHADING_MODES", "render",
-           "slerp_normals", "taylor_cosines", "forward_differences", "gouraud_triangle", "EdgeSlopes", "edge_slopes",
+           "uv_sphere", "SHADING_MODES", "render",
+           "slerp_normals", "taylor_cosines", "forward_differences", "EdgeSlopes", "edge_slopes",
            "scanline_profile"]
 
 
@@ -67,21 +68,6 @@ def unit_newell_normal(polygon) -> np.ndarray:
     return n / length if length > 0 else n
 
 
-def _mesh(positions, triangles, name: str = "positions") -> tuple[np.ndarray, np.ndarray]:
-    """Validated vertex positions (n, 3) and triangle indices (m, 3) below n."""
-    V = as_points(positions, name, dim=3)
-    T = as_float_array(triangles, "triangles")
-    if T.ndim != 2 or T.shape[1] != 3:
-        raise ValueError(f"triangles must have shape (m, 3); got shape {T.shape}")
-    check_finite(T, "triangles")
-    if np.any(T != np.round(T)) or (T.size and T.min() < 0):
-        raise ValueError("triangles must hold non-negative integer vertex indices")
-    if T.size and T.max() >= len(V):
-        raise ValueError(f"{name} must hold every vertex the triangles index: {len(V)} {name}, "
-                         f"but triangles index vertex {int(T.max())}")
-    return V, T.astype(np.intp)
-
-
 def face_normals(positions, triangles) -> np.ndarray:
     """Area-weighted normals ``(b - a) x (c - a)`` of triangles (not normalised): (m, 3) (Goldman §21.1;
     for a triangle this is Newell's vector).
@@ -89,7 +75,7 @@ def face_normals(positions, triangles) -> np.ndarray:
     >>> face_normals([[0, 0, 0], [2, 0, 0], [0, 1, 0]], [[0, 1, 2]]).tolist()
     [[0.0, 0.0, 2.0]]
     """
-    V, T = _mesh(positions, triangles)
+    V, T = triangle_mesh(positions, triangles)
     tris = V[T]
     with np.errstate(over="ignore", invalid="ignore"):
         out = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
@@ -103,7 +89,7 @@ def vertex_normals(positions, triangles) -> np.ndarray:
     >>> vertex_normals(np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0]]), np.array([[0, 1, 2]])).tolist()
     [[0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0]]
     """
-    V, T = _mesh(positions, triangles)
+    V, T = triangle_mesh(positions, triangles)
     return _vertex_sums(V, T, face_normals(V, T), 1e-300)
 
 
@@ -138,7 +124,7 @@ def average_vertex_normals(positions, triangles) -> np.ndarray:
     ...                        [[0, 2, 1], [0, 1, 3]]).round(4).tolist()[0]
     [0.0, -0.7071, -0.7071]
     """
-    V, T = _mesh(positions, triangles)
+    V, T = triangle_mesh(positions, triangles)
     return _vertex_sums(V, T, newell_face_normals(V, T), 1e-12)
 
 
@@ -174,267 +160,6 @@ def uv_sphere(stacks: int = 12, slices: int = 24, radius=1.0, center=(0.0, 0.0, 
     south = len(V) - 1
     tris.append(np.stack([np.full(slices, south), nxt[-1], idx[-1]], 1))
     return V, np.vstack(tris).astype(np.intp)
-
-
-def _image_size(width, height) -> tuple[int, int]:
-    """Image width and height, each >= 1, their product within the work budget."""
-    height = within_budget(height, "height", cost=lambda h: h, what="the image's height", unit="pixels",
-                           minimum=1)
-    width = within_budget(width, "width", cost=lambda w: w * height, what="the image", unit="pixels", minimum=1)
-    return width, height
-
-
-# -- the camera ------------------------------------------------------------------------------------
-
-@dataclass(frozen=True)
-class Camera:
-    """A pinhole camera: eye, target, up, vertical field of view ``fov`` (degrees), image size and
-    near distance.  Projection is the perspective matrix of Goldman §13.6.2
-    (:func:`goldman_lib.transforms.perspective`, from the eye onto the plane one unit in front of it);
-    the plane's point is mapped to pixels (x to the right, y down the rows, pixel (i, j) centred at
-    ``(j + 0.5, i + 0.5)``).  Each projected vertex gets a depth ``z = 1 - near / w`` with ``w`` its
-    distance along the view direction: z grows with distance and is *linear in screen space* across
-    a triangle (``1/w`` is), so the rasteriser may interpolate it with screen barycentrics.
-
-    >>> cam = Camera(eye=(0, -5, 0), target=(0, 0, 0), width=8, height=6)
-    >>> cam.project([[0, 0, 0]]).round(6).tolist()
-    [[4.0, 3.0, 0.98, 5.0]]
-    """
-
-    eye: tuple = (0.0, -6.0, 2.0)
-    target: tuple = (0.0, 0.0, 0.0)
-    up: tuple = (0.0, 0.0, 1.0)
-    fov: float = 30.0
-    width: int = 256
-    height: int = 256
-    near: float = 0.1
-
-    def __post_init__(self):
-        E = as_points(self.eye, "eye", ndim=1, dim=3)
-        T = as_points(self.target, "target", ndim=1, dim=3)
-        U = as_points(self.up, "up", ndim=1, dim=3)
-        fov = as_float(self.fov, "fov")
-        if not 0 < fov < 180:
-            raise ValueError(f"fov must be in (0, 180) degrees; got {fov}")
-        width, height = _image_size(self.width, self.height)
-        near = as_float(self.near, "near", positive=True)
-        with np.errstate(over="ignore", invalid="ignore"):
-            d = finite_result(T - E, "target", why="is too far from eye")
-            dist = finite_result(np.linalg.norm(d), "target", why="is too far from eye")
-        if dist <= 1e-12 * (1 + np.abs(E).max()):
-            raise ValueError("target must differ from eye: the camera needs a direction to look in")
-        n = d / dist
-        with np.errstate(over="ignore", invalid="ignore"):
-            right = np.cross(n, U / np.abs(U).max() if np.abs(U).max() > 1e150 else U)   # only up's direction counts
-            rl = np.linalg.norm(right)
-        if not np.isfinite(rl) or rl <= 1e-9 * max(np.linalg.norm(U), 1e-300):
-            raise ValueError("up must not be parallel to the view direction (target - eye)")
-        right = right / rl
-        for name, value in (("eye", E), ("target", T), ("up", U)):
-            object.__setattr__(self, name, tuple(float(v) for v in value))
-        object.__setattr__(self, "fov", fov)
-        object.__setattr__(self, "width", width)
-        object.__setattr__(self, "height", height)
-        object.__setattr__(self, "near", near)
-        object.__setattr__(self, "_frame", (E, n, right, np.cross(right, n)))
-
-    @property
-    def scale(self) -> float:
-        """Pixels per unit on the projection plane one unit in front of the eye."""
-        return 0.5 * self.height / np.tan(np.radians(self.fov) / 2)
-
-    def project(self, points) -> np.ndarray:
-        """Screen coordinates of points (Goldman §13.6.2): ``(n, 4)`` rows ``(x, y, z, w)``, x and y in
-        pixels, ``z = 1 - near / w`` the depth the rasteriser compares and ``w`` the distance along
-        the view direction (``z < 0`` in front of the near plane, which the rasteriser clips)."""
-        P = as_points(points, "points", dim=3)
-        E, n, right, up = self._frame
-        H = transforms.homogeneous(P, transforms.perspective(E, E + n, n))
-        w = H[:, 3]
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            Q = H[:, :3] / w[:, None] - (E + n)           # the projected point, from the plane's centre
-            x = 0.5 * self.width + self.scale * (Q @ right)
-            y = 0.5 * self.height - self.scale * (Q @ up)
-            z = 1.0 - self.near / w
-        bad = w <= 0
-        out = np.stack([x, y, z, w], axis=1)
-        out[bad, :3] = [0.0, 0.0, -1.0]                    # behind the eye: clipped by the rasteriser
-        return finite_result(out, "points", why="are too far from the camera")
-
-    def view_depth(self, points) -> np.ndarray:
-        """The distance ``w`` of points along the view direction (negative behind the eye): ``(n,)``.
-
-        >>> Camera(eye=(0, -5, 0), target=(0, 0, 0)).view_depth([[0, 0, 0], [3, -6, 1]]).tolist()
-        [5.0, -1.0]
-        """
-        P = as_points(points, "points", dim=3)
-        E, n, _, _ = self._frame
-        with np.errstate(over="ignore", invalid="ignore"):
-            return finite_result((P - E) @ n, "points", why="are too far from the camera")
-
-    def clip_polygon(self, polygon, guard=None):
-        """The part of a convex polygon at or beyond the near plane ``w = near`` (Sutherland and
-        Hodgman's clipping against one plane, Goldman §22.1's near plane): ``(k', 3)`` vertices in
-        the polygon's order, or None if nothing of it is that far.  A vertex nearer than ``near``
-        (or behind the eye) is replaced by the points where its edges cross the plane, so every
-        vertex of the result projects in front of the eye; the one home of the near plane of the
-        hidden-surface algorithms (chapter 22), so that all of them draw the same part.  guard: if
-        given (>= 1), the polygon is also clipped to the view frustum widened ``guard`` times
-        (guard-band clipping: what is cut away lies far outside the image, and the screen
-        coordinates of what is left stay within ``guard`` image sizes of it).
-
-        >>> cam = Camera(eye=(0, 0, 0), target=(0, 1, 0), near=1.0)
-        >>> cam.clip_polygon([[0, -1, 0], [1, 3, 0], [-1, 3, 0]]).tolist()
-        [[0.5, 1.0, 0.0], [1.0, 3.0, 0.0], [-1.0, 3.0, 0.0], [-0.5, 1.0, 0.0]]
-        >>> cam.clip_polygon([[0, -1, 0], [1, 0.5, 0], [-1, 0.5, 0]]) is None
-        True
-        """
-        P = as_points(polygon, "polygon", dim=3, min_count=3)
-        if len(P) < 3:
-            raise ValueError(f"polygon must have at least 3 vertices; got {len(P)}")
-        E, n, _, _ = self._frame
-        with np.errstate(over="ignore", invalid="ignore"):
-            finite_result((P - E) @ n, "polygon", why="is too far from the camera")
-        if guard is not None:
-            guard = as_float(guard, "guard")
-            if not 1 <= guard <= 1e6:
-                raise ValueError(f"guard must be in [1, 1e6] (image sizes kept around the image); got {guard}")
-        return self._clip(P, guard)
-
-    def _clip(self, P, guard=None):
-        """:meth:`clip_polygon` without the checks (P: a finite (k, 3) array)."""
-        E, n, right, up = self._frame
-        D = P - E
-        C = _clip_half_space(P, D @ n - self.near)
-        if C is None or guard is None:
-            return C
-        tx, ty = guard * 0.5 * self.width / self.scale, guard * 0.5 * self.height / self.scale
-        for normal in (tx * n - right, tx * n + right, ty * n - up, ty * n + up):
-            C = _clip_half_space(C, (C - E) @ normal)           # |x| <= tx w, |y| <= ty w
-            if C is None:
-                return None
-        return C
-
-    def pixel_directions(self, columns, rows) -> np.ndarray:
-        """Unit directions from the eye through the centres of pixels ``(rows, columns)`` (arrays of
-        one shape; column from the left, row from the top): shape ``columns.shape + (3,)``.  The
-        one place where a pixel becomes a ray (the ray tracer of chapter 17 and ray casting of
-        chapter 22 both ask here)."""
-        E, n, right, up = self._frame
-        columns = check_finite(as_float_array(columns, "columns"), "columns")
-        rows = check_finite(as_float_array(rows, "rows"), "rows")
-        if columns.shape != rows.shape:
-            raise ValueError(f"columns and rows must have one shape; got {columns.shape} and {rows.shape}")
-        for arr, name, size in ((columns, "columns", self.width), (rows, "rows", self.height)):
-            if arr.size and (arr.min() < -1 or arr.max() > size):
-                raise ValueError(f"{name} must lie within the image (0 to {size - 1}); got {arr.min():g} to {arr.max():g}")
-        j = (columns + 0.5 - 0.5 * self.width) / self.scale
-        i = (0.5 * self.height - rows - 0.5) / self.scale
-        D = n + j[..., None] * right + i[..., None] * up
-        return D / np.linalg.norm(D, axis=-1, keepdims=True)
-
-    def rays(self):
-        """The ray through the centre of every pixel (Goldman §22.5's ray casting; §17.1):
-        ``(origin (3,), directions (height, width, 3))`` with unit directions."""
-        rows, columns = np.mgrid[0:self.height, 0:self.width]
-        return np.array(self._frame[0]), self.pixel_directions(columns, rows)
-
-
-def _clip_half_space(P: np.ndarray, s: np.ndarray):
-    """Sutherland-Hodgman with one plane: the part of polygon P (k, 3) where the signed distance s
-    (k,) is >= 0, or None if it has no area.  A polygon wholly on the kept side is returned as is
-    (the same array), so a scene the plane does not cut is drawn bit for bit as before."""
-    if np.all(s >= 0):
-        return P
-    if not np.any(s > 0):
-        return None
-    out = []
-    k = len(P)
-    for i in range(k):
-        a, b, sa, sb = P[i], P[(i + 1) % k], s[i], s[(i + 1) % k]
-        if sa >= 0:
-            out.append(a)
-        if (sa > 0 and sb < 0) or (sa < 0 and sb > 0):
-            out.append(a + (sa / (sa - sb)) * (b - a))
-    if len(out) < 3:
-        return None
-    return np.array(out)
-
-
-# -- the scan conversion: one home for chapters 21 and 22 ------------------------------------------
-
-class Fragments(NamedTuple):
-    """What :func:`rasterise_triangles` leaves in each pixel: ``triangle`` (h, w) the index of the
-    nearest triangle covering the pixel centre (-1 for none), ``depth`` (h, w) its depth (1.0, the
-    far value, for none) and ``weights`` (h, w, 3) the pixel centre's screen-space barycentric
-    coordinates in that triangle (zeros for none)."""
-
-    triangle: np.ndarray
-    depth: np.ndarray
-    weights: np.ndarray
-
-
-#: Pixel candidates examined per batch of triangles (a memory bound, not a work budget).
-_BATCH = 1 << 20
-
-
-def _rasterise(S: np.ndarray, T: np.ndarray, width: int, height: int) -> Fragments:
-    """The unchecked kernel of :func:`rasterise_triangles` (S: (n, 3) screen points; T: (m, 3)):
-    :func:`goldman_lib.kernels.meshes.rasterise`."""
-    return Fragments(*meshes.rasterise(S, T, width, height))
-
-
-def rasterise_triangles(screen, triangles, width: int, height: int) -> Fragments:
-    """Scan-convert triangles with a depth buffer (Goldman §21.2-21.4, §22.3): the one scan
-    conversion of the course, used by :func:`render` and by chapter 22's z-buffer.
-
-    screen: (n, 3) vertices in screen coordinates ``(x, y, z)`` -- x, y in pixels (pixel (i, j) is
-    centred at ``(j + 0.5, i + 0.5)``), z the depth (smaller is nearer), as :meth:`Camera.project`
-    gives.  triangles: (m, 3) vertex indices.  A pixel belongs to a triangle when its centre lies
-    inside or on its boundary (barycentric coordinates >= 0, tested over the triangle's bounding box,
-    vectorised over batches of triangles); fragments with z outside [0, 1) are clipped (the near
-    and far planes) and zero-area (edge-on) triangles draw nothing.  Of the fragments in a pixel the
-    nearest is kept, and of equally near ones the first triangle's.  Returns :class:`Fragments`.
-
-    >>> f = rasterise_triangles([[0, 0, 0.5], [4, 0, 0.5], [0, 4, 0.5]], [[0, 1, 2]], 4, 4)
-    >>> (f.triangle + 1).tolist()
-    [[1, 1, 1, 1], [1, 1, 1, 0], [1, 1, 0, 0], [1, 0, 0, 0]]
-    """
-    width, height = _image_size(width, height)
-    S, T = _mesh(screen, triangles, "screen")
-    if len(T) > MAX_ITEMS:
-        raise ValueError(f"triangles must hold at most {MAX_ITEMS:,} triangles; got {len(T):,}")
-    if np.abs(S[:, :2]).max() > 1e9:
-        raise ValueError("screen must hold pixel coordinates within 1e9 of the image")
-    return _rasterise(S, T, width, height)
-
-
-def gouraud_triangle(screen, intensities, width: int, height: int) -> np.ndarray:
-    """Gouraud shading of one triangle in screen coordinates (Goldman §21.3): the intensities given at
-    its three vertices, interpolated linearly (by the screen barycentric coordinates of each pixel
-    centre) at every pixel the triangle covers, 0 elsewhere.  A pixel whose centre lies on an edge
-    is covered; a degenerate (zero-area) triangle covers nothing.  Scan conversion by
-    :func:`rasterise_triangles`.
-
-    screen: (3, 2) vertex pixel coordinates (x right, y down; pixel (i, j) centred at (j + 0.5, i + 0.5)).
-    intensities: (3,).  Returns (height, width).
-
-    >>> gouraud_triangle([[0, 0], [4, 0], [0, 4]], [0.0, 1.0, 0.5], 4, 2).round(3).tolist()
-    [[0.188, 0.438, 0.688, 0.938], [0.312, 0.562, 0.812, 0.0]]
-    """
-    P = as_points(screen, "screen", dim=2)
-    if P.shape != (3, 2):
-        raise ValueError(f"screen must hold the three vertices of one triangle, shape (3, 2); got {P.shape}")
-    c = check_finite(as_float_array(intensities, "intensities"), "intensities")
-    if c.shape != (3,):
-        raise ValueError(f"intensities must be three numbers, one per vertex; got shape {c.shape}")
-    width, height = _image_size(width, height)
-    if np.abs(P).max() > 1e9:
-        raise ValueError("screen must hold pixel coordinates within 1e9 of the image")
-    f = _rasterise(np.hstack([P, np.full((3, 1), 0.5)]), np.array([[0, 1, 2]]), width, height)
-    with np.errstate(over="ignore", invalid="ignore"):
-        out = np.where(f.triangle >= 0, f.weights @ c, 0.0)
-    return finite_result(out, "intensities")
 
 
 # -- §21.4.2-3 fast Phong: Taylor expansions evaluated by forward differences ----------------------
@@ -481,8 +206,8 @@ def edge_slopes(values, triangle_ids, width: int = 2) -> EdgeSlopes:
 
     values: (w,) intensities along a row of a rendered image, or (w, c) colours (their channels are
     averaged: a grey level).  triangle_ids: (w,) the triangle covering each pixel of that row (the
-    row of :attr:`Fragments.triangle`; -1 for none).  An edge is a change of triangle between two
-    covered neighbours; the slope on each side is the mean first difference over ``width`` pixel
+    row of :attr:`goldman_lib.rasteriser.Fragments.triangle`; -1 for none).  An edge is a change of
+    triangle between two covered neighbours; the slope on each side is the mean first difference over ``width`` pixel
     pairs lying wholly in that side's triangle (edges without that much room on both sides, and the
     outline, where a pixel is not covered, are skipped).  Returns :class:`EdgeSlopes`, slopes in
     intensity per pixel.
@@ -685,7 +410,7 @@ def _combine(diffuse_cos, specular_cos, lit, lights, material, ambient_light):
 def render(positions, triangles, camera: Camera, lights, material=None, mode: str = "phong",
            normals=None, ambient_light=0.2, background=(0.0, 0.0, 0.0), cull_backfaces: bool = False):
     """Render a triangle mesh with one of the shading modes of Goldman chapter 21 (§21.2-21.4):
-    project with ``camera``, scan-convert with :func:`rasterise_triangles`, light with
+    project with ``camera``, scan-convert with :func:`goldman_lib.rasteriser.rasterise_triangles`, light with
     :func:`goldman_lib.lighting.intensity`.  Returns an (height, width, 3) image in [0, 1].
 
     positions (n, 3), triangles (m, 3): the mesh.  lights: a Light or a sequence of them.
@@ -706,7 +431,7 @@ def render(positions, triangles, camera: Camera, lights, material=None, mode: st
     ((4, 4, 3), True)
     """
     if not isinstance(camera, Camera):
-        raise TypeError(f"camera must be a goldman_lib.shading.Camera; got {type(camera).__name__}")
+        raise TypeError(f"camera must be a goldman_lib.camera.Camera; got {type(camera).__name__}")
     if not isinstance(mode, str) or mode not in SHADING_MODES:
         raise ValueError(f"mode must be one of {sorted(SHADING_MODES)}; got {mode!r}")
     material = lighting.Material() if material is None else material
@@ -714,7 +439,7 @@ def render(positions, triangles, camera: Camera, lights, material=None, mode: st
         raise TypeError(f"material must be a goldman_lib.lighting.Material; got {type(material).__name__}")
     lights = lighting.as_lights(lights)
     bg = np.asarray(as_colour(background, "background"))
-    V, T = _mesh(positions, triangles)
+    V, T = triangle_mesh(positions, triangles)
     if normals is None:
         N = average_vertex_normals(V, T)
     else:
@@ -727,7 +452,7 @@ def render(positions, triangles, camera: Camera, lights, material=None, mode: st
     if cull_backfaces and len(T):
         fn = face_normals(V, T)
         T = T[np.einsum("ij,ij->i", fn, eye - V[T[:, 0]]) > 0]
-    frags = _rasterise(S[:, :3], T, camera.width, camera.height)
+    frags = Fragments(*meshes.rasterise(S[:, :3], T, camera.width, camera.height))
     image = np.broadcast_to(bg, (camera.height, camera.width, 3)).copy()
     covered = frags.triangle >= 0
     if not covered.any():

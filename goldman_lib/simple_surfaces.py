@@ -29,12 +29,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from goldman_lib.kernels import polygons, roots
 from goldman_lib.lighting import Material, unit_rows
-from goldman_lib.validation import as_float, as_float_array, as_int, as_points, check_finite, finite_result, within_budget
+from goldman_lib.roots import MAX_DEGREE
+from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result, within_budget
 
-__all__ = ["EPS", "MAX_COORDINATE", "MAX_RESOLUTION", "MAX_DEGREE", "MAX_PROFILE_DEGREE", "Surface", "rays", "Plane",
+__all__ = ["EPS", "MAX_COORDINATE", "MAX_RESOLUTION", "MAX_PROFILE_DEGREE", "Surface", "rays", "Plane",
            "Sphere", "Polygon", "Cylinder", "EllipticCylinder", "Cone", "EllipticCone", "Ellipsoid", "Quadric", "Torus",
-           "SurfaceOfRevolution", "quadratic_roots", "real_roots", "line_sphere_geometric"]
+           "SurfaceOfRevolution", "line_sphere_geometric"]
 
 #: Hits at parameters ``t <= EPS`` are not in front of the ray (a ray leaving a surface must not hit
 #: it again at t = 0 because of rounding).
@@ -70,40 +72,6 @@ def rays(origins, directions) -> tuple[np.ndarray, np.ndarray]:
     if np.any(~np.any(d != 0, axis=1)):
         raise ValueError("directions must be nonzero vectors (a ray needs a direction)")
     return o, d
-
-
-def quadratic_roots(a, b, c) -> np.ndarray:
-    """The real roots of ``a t^2 + b t + c = 0`` per entry, sorted, ``inf``-padded: ``(N, 2)``.
-
-    Computed without cancellation (``q = -(b + sign(b) sqrt(b^2 - 4ac)) / 2``, roots ``q/a`` and
-    ``c/q``); where ``a = 0`` the single root ``-c/b``; no real root gives ``[inf, inf]``.
-
-    >>> quadratic_roots([1.0, 1.0, 0.0], [-3.0, 0.0, 2.0], [2.0, 1.0, -4.0]).tolist()
-    [[1.0, 2.0], [inf, inf], [2.0, inf]]
-    """
-    a, b, c = (check_finite(as_float_array(x, name), name) for x, name in ((a, "a"), (b, "b"), (c, "c")))
-    try:
-        a, b, c = np.broadcast_arrays(a, b, c)
-    except ValueError:
-        raise ValueError(f"a, b and c must have the same shape; got {a.shape}, {b.shape} and {c.shape}") from None
-    return _quadratic_roots(a, b, c)
-
-
-def _quadratic_roots(a, b, c) -> np.ndarray:
-    """:func:`quadratic_roots` on checked arrays of one shape (the kernel every quadric calls)."""
-    with np.errstate(all="ignore"):
-        disc = b * b - 4 * a * c
-        root = np.sqrt(np.maximum(disc, 0.0))
-        q = -0.5 * (b + np.where(b >= 0, root, -root))
-        t1 = np.where(q != 0, q / a, 0.0)
-        t2 = np.where(q != 0, c / q, 0.0)
-        linear = a == 0
-        t_lin = np.where(b != 0, -c / b, np.inf)
-        out = np.stack([np.where(linear, t_lin, np.minimum(t1, t2)),
-                        np.where(linear, np.inf, np.maximum(t1, t2))], axis=-1)
-        out[(disc < 0) & ~linear] = np.inf
-        out[~np.isfinite(out)] = np.inf
-    return np.sort(out, axis=-1)
 
 
 class Surface:
@@ -235,7 +203,7 @@ class Sphere(Surface):
 
     def _hits(self, o, d):
         oc = o - self.center
-        return _quadratic_roots(np.einsum("ij,ij->i", d, d), 2 * np.einsum("ij,ij->i", d, oc),
+        return roots.quadratic_roots(np.einsum("ij,ij->i", d, d), 2 * np.einsum("ij,ij->i", d, oc),
                                 np.einsum("ij,ij->i", oc, oc) - self.radius ** 2)
 
     def _normal(self, P):
@@ -335,130 +303,6 @@ def _join(*parts) -> tuple[np.ndarray, np.ndarray]:
     return np.vstack(positions), np.vstack(triangles)
 
 
-#: The highest degree :func:`real_roots` solves (a profile of degree 6 gives degree 12 along a ray).
-MAX_DEGREE = 12
-
-
-def real_roots(coefficients) -> np.ndarray:
-    """The real roots of many polynomials at once (Goldman §19.6: the torus quartic, §19.7): quadratics
-    and quartics in closed form (the stable quadratic formula; Ferrari's method after removing the
-    cubic term), other degrees by the eigenvalues of each companion matrix (``numpy.linalg.eigvals``
-    on a stack); roots polished by Newton's method.  Sorted ascending, ``inf``-padded: ``(N, n)``.
-
-    coefficients: ``(N, n+1)`` (or ``(n+1,)`` for one), highest degree first as ``numpy.roots``
-    takes them, ``1 <= n <=`` :data:`MAX_DEGREE`.  Leading zeros lower a row's degree (a zero row has
-    no roots).  The closed forms decide real or not by the sign of their discriminants; from the
-    eigenvalues a root counts as real when its imaginary part is below ``1e-7`` of its size.  A ray
-    exactly tangent to a surface gives a double root; rounding may turn it into a near miss.
-
-    >>> real_roots([[1, 0, -5, 0, 4], [1, 0, 1, 0, 0]]).tolist()    # (t^2-1)(t^2-4); t^2 (t^2+1)
-    [[-2.0, -1.0, 1.0, 2.0], [0.0, 0.0, inf, inf]]
-    """
-    c = check_finite(as_float_array(coefficients, "coefficients"), "coefficients")
-    if c.ndim == 1:
-        c = c[None, :]
-    if c.ndim != 2 or not 2 <= c.shape[1] <= MAX_DEGREE + 1:
-        raise ValueError(f"coefficients must have shape (N, n+1) with 1 <= n <= {MAX_DEGREE}; got shape {c.shape}")
-    scale = np.abs(c).max(axis=1, keepdims=True)
-    with np.errstate(all="ignore"):
-        return _real_roots(np.divide(c, scale, out=np.zeros_like(c), where=scale > 0))
-
-
-def _real_roots(c: np.ndarray) -> np.ndarray:
-    """:func:`real_roots` on checked, row-scaled coefficients ``(N, n+1)``."""
-    N, n = c.shape[0], c.shape[1] - 1
-    out = np.full((N, n), np.inf)
-    if N == 0:
-        return out
-    big = np.abs(c).max(axis=1)
-    lead = np.argmax(np.abs(c) > 1e-13 * big[:, None], axis=1)      # index of the first non-negligible coefficient
-    lead[big == 0] = n
-    for first in np.unique(lead):
-        degree = n - first
-        rows = np.flatnonzero(lead == first)
-        if degree <= 0:
-            continue
-        p = c[rows, first:] / c[rows, first:first + 1]               # monic, degree `degree`
-        if degree == 2:                                              # closed forms: quadratic, and Ferrari
-            out[rows, :2] = _quadratic_roots(np.ones(len(rows)), p[:, 1], p[:, 2])
-            continue
-        if degree == 4:
-            shift = p[:, 1] / 4                                      # x = s - c3/4 removes the cubic term
-            a, b, cc, dd = p[:, 1], p[:, 2], p[:, 3], p[:, 4]
-            pd = b - 3 * a * a / 8
-            qd = cc - a * b / 2 + a ** 3 / 8
-            rd = dd - a * cc / 4 + a * a * b / 16 - 3 * a ** 4 / 256
-            x = _depressed_quartic_roots(pd, qd, rd) - shift[:, None]
-            for _ in range(2):                                       # Newton on the quartic as given
-                f = (((x + a[:, None]) * x + b[:, None]) * x + cc[:, None]) * x + dd[:, None]
-                df = ((4 * x + 3 * a[:, None]) * x + 2 * b[:, None]) * x + cc[:, None]
-                step = np.divide(f, df, out=np.zeros_like(f), where=np.isfinite(x) & (df != 0))
-                x = np.where(np.isfinite(step) & (np.abs(step) < 1e-3 * (1 + np.abs(x))), x - step, x)
-            out[rows, :4] = np.where(np.isfinite(x), x, np.inf)
-            continue
-        if degree == 1:
-            roots = -p[:, 1:2] + 0j
-        else:
-            comp = np.zeros((len(rows), degree, degree))
-            comp[:, 0, :] = -p[:, 1:]
-            comp[:, np.arange(1, degree), np.arange(degree - 1)] = 1.0
-            roots = np.linalg.eigvals(comp)
-        x = roots.real.copy()
-        for _ in range(3):                                           # Newton on the real parts
-            f = np.ones_like(x) * p[:, :1]
-            df = np.zeros_like(x)
-            for k in range(1, degree + 1):
-                df = df * x + f
-                f = f * x + p[:, k:k + 1]
-            step = np.divide(f, df, out=np.zeros_like(f), where=df != 0)
-            x = np.where(np.isfinite(step) & (np.abs(step) < 1e-3 * (1 + np.abs(x))), x - step, x)
-        real = np.abs(roots.imag) <= 1e-7 * (1 + np.abs(roots.real))
-        vals = np.sort(np.where(real & np.isfinite(x), x, np.inf), axis=1)
-        out[rows, :degree] = vals
-    return np.sort(out, axis=1) + 0.0                               # no -0.0
-
-
-def _depressed_quartic_roots(p, q, r) -> np.ndarray:
-    """Real roots of ``s^4 + p s^2 + q s + r = 0`` per entry by Ferrari's method, polished by Newton's
-    method on the quartic: ``(N, 4)`` sorted, ``inf``-padded.  The largest root ``m >= 0`` of the
-    resolvent cubic ``8 m^3 + 8 p m^2 + (2 p^2 - 8 r) m - q^2 = 0`` (closed form: Cardano or the
-    trigonometric form, then Newton) splits the quartic into the two quadratics
-    ``s^2 -+ sqrt(2m) s + p/2 + m +- q / (2 sqrt(2m)) = 0``; where ``m = 0`` (so ``q = 0``) it is the
-    quadratic ``u^2 + p u + r = 0`` in ``u = s^2``."""
-    a, b, c = p, p * p / 4 - r, -q * q / 8                       # the resolvent, monic
-    P, Q = b - a * a / 3, 2 * a ** 3 / 27 - a * b / 3 + c
-    disc = (Q / 2) ** 2 + (P / 3) ** 3
-    sq = np.sqrt(np.maximum(disc, 0.0))
-    one = np.cbrt(-Q / 2 + sq) + np.cbrt(-Q / 2 - sq)
-    Pn = np.minimum(P, -1e-300)
-    arg = np.clip(3 * Q / (2 * Pn) * np.sqrt(-3 / Pn), -1.0, 1.0)
-    three = 2 * np.sqrt(-Pn / 3) * np.cos(np.arccos(arg) / 3)
-    m = np.where(disc > 0, one, three) - a / 3
-    for _ in range(2):
-        f = ((m + a) * m + b) * m + c
-        df = (3 * m + 2 * a) * m + b
-        step = np.divide(f, df, out=np.zeros_like(f), where=df != 0)
-        m = np.where(np.isfinite(step), m - step, m)
-    m = np.maximum(m, 0.0)
-    k = np.sqrt(2 * m)
-    safe = k > 1e-7 * (1 + np.abs(p))
-    h = np.divide(q, 2 * k, out=np.zeros_like(q), where=safe)
-    one_ = np.ones_like(p)
-    r1 = _quadratic_roots(one_, -k, p / 2 + m + h)
-    r2 = _quadratic_roots(one_, k, p / 2 + m - h)
-    u = _quadratic_roots(one_, p, r)                             # the biquadratic case, u = s^2
-    su = np.sqrt(np.where(np.isfinite(u) & (u >= 0), u, np.nan))
-    bi = np.concatenate([-su, su], 1)
-    s = np.where(safe[:, None], np.concatenate([r1, r2], 1), np.where(np.isnan(bi), np.inf, bi))
-    x = np.where(np.isfinite(s), s, 0.0)
-    for _ in range(2):
-        f = ((x * x + p[:, None]) * x + q[:, None]) * x + r[:, None]
-        df = (4 * x * x + 2 * p[:, None]) * x + q[:, None]
-        step = np.divide(f, df, out=np.zeros_like(f), where=df != 0)
-        x = np.where(np.isfinite(step) & (np.abs(step) < 1e-2), x - step, x)
-    return np.sort(np.where(np.isfinite(s), x, np.inf), axis=1)
-
-
 def _interval_hull(lo1, hi1, lo2, hi2, s1, s2) -> np.ndarray:
     """Clip the union of two parameter intervals to the slab interval ``[s1, s2]`` and return the
     hull of what is left, ``(N, 2)`` (``[inf, inf]`` if nothing): the entry and exit of a ray through
@@ -484,7 +328,7 @@ def _slab(qz, ez, height):
 
 def _below(A, B, C):
     """Where ``A t^2 + B t + C <= 0`` along each ray: the union of two intervals ``lo1, hi1, lo2, hi2``."""
-    r = _quadratic_roots(A, B, C)
+    r = roots.quadratic_roots(A, B, C)
     t1, t2 = r[:, 0], r[:, 1]
     real = np.isfinite(t2)
     inf = np.full_like(A, np.inf)
@@ -622,37 +466,7 @@ class Polygon(Surface):
         return c, float(np.linalg.norm(self.vertices - c, axis=1).max())
 
     def _mesh(self, n, extent):
-        return self.vertices.copy(), _ear_clip(self._uv)
-
-
-def _ear_clip(uv: np.ndarray) -> np.ndarray:
-    """Triangles of a simple counterclockwise polygon by ear clipping (for drawing it)."""
-    idx = list(range(len(uv)))
-    tris = []
-    guard = 0
-    while len(idx) > 3 and guard < 10 * len(uv) ** 2:
-        guard += 1
-        for k in range(len(idx)):
-            i, j, m = idx[k - 1], idx[k], idx[(k + 1) % len(idx)]
-            a, b, c = uv[i], uv[j], uv[m]
-            if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) <= 0:
-                continue                                             # a reflex (or flat) corner is no ear
-            others = uv[[p for p in idx if p not in (i, j, m)]]
-            if len(others):
-                s1 = (b[0] - a[0]) * (others[:, 1] - a[1]) - (b[1] - a[1]) * (others[:, 0] - a[0])
-                s2 = (c[0] - b[0]) * (others[:, 1] - b[1]) - (c[1] - b[1]) * (others[:, 0] - b[0])
-                s3 = (a[0] - c[0]) * (others[:, 1] - c[1]) - (a[1] - c[1]) * (others[:, 0] - c[0])
-                if np.any((s1 >= 0) & (s2 >= 0) & (s3 >= 0)):
-                    continue                                         # another vertex inside: no ear
-            tris.append([i, j, m])
-            idx.pop(k)
-            break
-        else:
-            break
-    while len(idx) >= 3:                                             # what is left (convex or degenerate): a fan
-        tris.append([idx[0], idx[1], idx[2]])
-        idx.pop(1)
-    return np.array(tris, dtype=np.int64)
+        return self.vertices.copy(), polygons.ear_clip(self._uv)
 
 
 # -- §19.4 quadrics along an axis: elliptic cylinders and cones, and the circular ones -----------------
@@ -690,7 +504,7 @@ class _AxialQuadric(Surface):
         q, e = self._local(o), self._local_dir(d)
         A, B, C = self._lateral(q, e)
         if self.height is None or not self.capped:
-            t = _quadratic_roots(A, B, C)
+            t = roots.quadratic_roots(A, B, C)
             z = q[:, 2:3] + t * e[:, 2:3]
             keep = np.isfinite(t) & (z >= (0 if self._kind == "cone" else -np.inf))
             if self.height is not None:
@@ -916,7 +730,7 @@ class Ellipsoid(Surface):
     def _hits(self, o, d):
         q = ((o - self.center) @ self.axes.T) * self._inv
         e = (d @ self.axes.T) * self._inv
-        return _quadratic_roots(np.einsum("ij,ij->i", e, e), 2 * np.einsum("ij,ij->i", e, q),
+        return roots.quadratic_roots(np.einsum("ij,ij->i", e, e), 2 * np.einsum("ij,ij->i", e, q),
                                 np.einsum("ij,ij->i", q, q) - 1.0)
 
     def _normal(self, P):
@@ -999,7 +813,7 @@ class Quadric(Surface):
         a = np.einsum("ij,ij->i", dQ, d)
         b = 2 * (np.einsum("ij,ij->i", oQ, d) + d @ q)
         c = np.einsum("ij,ij->i", oQ, o) + 2 * (o @ q) + J
-        return _quadratic_roots(a, b, c)
+        return roots.quadratic_roots(a, b, c)
 
     def _normal(self, P):
         return P @ self._Q[:3, :3] + self._Q[:3, 3]
@@ -1070,7 +884,7 @@ class Torus(Surface):
     for every ray at once after moving each ray's origin to its point nearest the centre (so the cubic
     term vanishes) and scaling lengths by ``R + r``, so the quartic is well conditioned whatever the
     ray: Ferrari's closed form, vectorised, polished by Newton's method (``numpy.roots`` of the same
-    quartic agrees; :func:`real_roots`, the companion-matrix solver, does too and is about ten times
+    quartic agrees; :func:`goldman_lib.roots.real_roots`, the companion-matrix solver, does too and is about ten times
     slower).
 
     The bounding test of §19.6.1 (``bound=True``): a ray that misses the bounding sphere of radius
@@ -1145,7 +959,7 @@ class Torus(Surface):
         c = np.stack([np.ones(len(rows)), np.zeros(len(rows)), 2 * K - 4 * R * R * (e[:, 0] ** 2 + e[:, 1] ** 2),
                       -8 * R * R * (p[:, 0] * e[:, 0] + p[:, 1] * e[:, 1]),
                       K * K - 4 * R * R * (p[:, 0] ** 2 + p[:, 1] ** 2)], 1)
-        s = _depressed_quartic_roots(c[:, 2], c[:, 3], c[:, 4])
+        s = roots.depressed_quartic_roots(c[:, 2], c[:, 3], c[:, 4])
         out[rows] = (t0[rows, None] + s) * S / length[rows, None]
         out[~np.isfinite(out)] = np.inf
         return np.sort(out, axis=1)
@@ -1190,7 +1004,7 @@ class SurfaceOfRevolution(Surface):
     (``profile = [c0, ..., cm]``, ``m <=`` :data:`MAX_PROFILE_DEGREE`), positive on ``[0, height]``;
     a point is on the surface when ``x^2 + y^2 = r(z)^2``, so along a ray ``P(t)`` the intersection is
     the single polynomial equation ``x(t)^2 + y(t)^2 - r(z(t))^2 = 0`` of degree ``max(2, 2m)``,
-    solved for every ray at once (:func:`real_roots`), keeping roots with ``0 <= z <= height``.  (The
+    solved for every ray at once (:func:`goldman_lib.roots.real_roots`), keeping roots with ``0 <= z <= height``.  (The
     book reduces the problem to the plane of the profile; squaring ``ρ`` is the same reduction
     written as one polynomial in ``t``.)  capped: the end discs ``z = 0`` and ``z = height`` close
     the solid ``x^2 + y^2 <= r(z)^2``.  Normal on the wall: the gradient ``(x, y, -r(z) r'(z))``.
@@ -1281,7 +1095,7 @@ class SurfaceOfRevolution(Surface):
         g[:, 2] += e[:, 0] ** 2 + e[:, 1] ** 2
         scale = np.abs(g).max(axis=1, keepdims=True)
         gs = np.divide(g, scale, out=np.zeros_like(g), where=scale > 0)[:, ::-1]
-        s = _real_roots(np.where(np.isfinite(gs), gs, 0.0))
+        s = roots.polynomial_roots(np.where(np.isfinite(gs), gs, 0.0))
         z = p[:, 2:3] + s * e[:, 2:3]
         hs = self.height / S
         s = np.where(np.isfinite(s) & (z >= 0) & (z <= hs), s, np.inf)

@@ -8,7 +8,7 @@ instance 0 is the module constants below, which the stored notebook shows; ``dea
 wrong answers each checker recognises, for the stored instance.  ``None`` or ``...`` means "not
 answered yet".  Every exercise uses other polygons, normals, triangles and intensities than the
 chapter's worked examples.  The programming project, :func:`check_gouraud_project`, runs the
-learner's Gouraud shader for one triangle against :func:`goldman_lib.shading.gouraud_triangle` on
+learner's Gouraud shader for one triangle against :func:`goldman_lib.rasteriser.gouraud_triangle` on
 seeded triangles, slivers, edge-on and degenerate ones included.
 
 Screen coordinates: x to the right, y down the rows; pixel (row i, column j) is centred at
@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from goldman_lib import shading
+from goldman_lib import rasteriser, shading
 from goldman_lib import vector_geometry as vg
 from goldman_lib.exercises import guard_checkers
 from goldman_lib.exercises import Result, correct, fmt, off_by, read_number, wrong
@@ -266,7 +266,7 @@ def check_vertex_normal(answer, p) -> Result:
 # -- §21.2 scan conversion ---------------------------------------------------------------------------
 
 def _cover_count(p) -> int:
-    return int((shading.gouraud_triangle(_arr(p["tri"]), [1, 1, 1], 12, 12) > 0).sum())
+    return int((rasteriser.gouraud_triangle(_arr(p["tri"]), [1, 1, 1], 12, 12) > 0).sum())
 
 
 def _cover_area(x) -> float:
@@ -320,7 +320,7 @@ def _cover_statement(p) -> str:
 
 def _cover_steps(p) -> str:
     x = _arr(p["tri"])
-    image = shading.gouraud_triangle(x, [1, 1, 1], 12, 12) > 0
+    image = rasteriser.gouraud_triangle(x, [1, 1, 1], 12, 12) > 0
     rows = [f"   row {i} (y = {fmt(i + 0.5)}): columns {int(np.flatnonzero(r)[0])}-{int(np.flatnonzero(r)[-1])}, "
             f"{int(r.sum())} pixel{'s' if r.sum() != 1 else ''}" for i, r in enumerate(image) if r.any()]
     return ("1. In each row i take the scan line y = i + 0.5 and find where it crosses the triangle's left and right "
@@ -388,7 +388,7 @@ def _gouraud_answer(p) -> float:
     i, j = p["pixel"]
     P = _arr(p["tri"])
     W, H = max(8, int(np.ceil(P[:, 0].max()))), max(6, int(np.ceil(P[:, 1].max())))
-    return float(shading.gouraud_triangle(P, p["I"], W, H)[i, j])
+    return float(rasteriser.gouraud_triangle(P, p["I"], W, H)[i, j])
 
 
 def _gouraud_slips(p) -> dict:
@@ -809,7 +809,7 @@ def _compare_gouraud(got, expected, case) -> str | None:
             return (f"{where} is 0, and your image is empty: this triangle has the other orientation (negative "
                     f"signed area), so all three barycentric coordinates come out with the other sign unless you "
                     f"divide by the signed area")
-        corners = shading.gouraud_triangle(P + 0.5, c, W, H)    # sampling at (j, i) = the centres of the shifted image
+        corners = rasteriser.gouraud_triangle(P + 0.5, c, W, H)    # sampling at (j, i) = the centres of the shifted image
         if np.allclose(arr, corners, atol=1e-6) and not np.allclose(corners, expected, atol=1e-6):
             return (f"{where} is {fmt(arr[i, j])}: you sampled the pixel at its corner (j, i), not at its centre "
                     f"(j + 0.5, i + 0.5)")
@@ -830,7 +830,7 @@ def _compare_gouraud(got, expected, case) -> str | None:
 def check_gouraud_project(function) -> Result:
     """Check the learner's ``shade_triangle(screen, intensities, width, height)`` -- Gouraud shading of
     one triangle: (height, width) intensities interpolated at the covered pixel centres, 0 elsewhere --
-    against :func:`goldman_lib.shading.gouraud_triangle` on :func:`gouraud_project_cases`
+    against :func:`goldman_lib.rasteriser.gouraud_triangle` on :func:`gouraud_project_cases`
     (Goldman §21.3).
 
     >>> def flat(screen, intensities, width, height):
@@ -838,7 +838,7 @@ def check_gouraud_project(function) -> Result:
     >>> print(check_gouraud_project(flat).message)   # doctest: +ELLIPSIS
     case 1 of 14 (vertices ...): your function returned ...; pixel (row 0, column 0), ... lies outside the triangle (it should stay 0). Hint: ...
     """
-    return check_project(function, gouraud_project_cases(), reference=shading.gouraud_triangle,
+    return check_project(function, gouraud_project_cases(), reference=rasteriser.gouraud_triangle,
                          compare=_compare_gouraud, what="Gouraud shading of a triangle",
                          hint="for each pixel centre compute the barycentric coordinates (a, b, c) from the signed "
                               "areas; draw it when all three are >= 0, with intensity a I0 + b I1 + c I2")

@@ -46,6 +46,14 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``signed_distances``, ``sign_changes`` (§24.4): ``bezier.variation_count``, ``curve_crossings``,
         ``bezier_subdivision.subdivision_variation_counts``.
     ``elevate`` (§24.5): ``bezier.elevate_degree``, ``bezier_subdivision.join_order``.
+    ``ear_clip`` (§19.3): the triangles that draw ``simple_surfaces.Polygon`` (``Polygon.mesh``).
+    ``clip_half_space`` (§22.1): Sutherland-Hodgman against one plane: ``camera.Camera.clip_polygon``
+        (the near plane and the guard band of every hidden-surface algorithm).
+
+:mod:`~goldman_lib.kernels.roots` -- real roots of polynomials, many at once
+    ``quadratic_roots``, ``depressed_quartic_roots``, ``polynomial_roots`` (§19.4-19.7): the checked
+        ``roots.quadratic_roots`` and ``roots.real_roots`` and, per ray, the surfaces of
+        ``simple_surfaces`` (quadrics, torus, surface of revolution).
 
 :mod:`~goldman_lib.kernels.illumination` -- the shading model of chapter 16
     ``phong``, ``cosines``, ``reflect`` (§16.3-16.6): ``lighting.intensity``, ``diffuse``, ``specular``,
@@ -71,17 +79,17 @@ The map: each kernel, what it computes, the book section it serves, and who call
         ``fixed_point.gauss_seidel`` (§7.3.2), ``radiosity.jacobi``, ``radiosity.gauss_seidel`` (§23.5).
 
 :mod:`~goldman_lib.kernels.meshes` -- triangle meshes
-    ``rasterise`` (§21.2-21.3, §22.2): the one scan conversion: ``shading.rasterise_triangles`` (and
-        through it ``shading.render``, ``gouraud_triangle``), ``hidden_surfaces``' painter's coverage.
+    ``rasterise`` (§21.2-21.3, §22.2): the one scan conversion: ``rasteriser.rasterise_triangles`` and
+        ``rasteriser.gouraud_triangle`` (checked), ``shading.render``, ``hidden_surfaces``' painter's coverage.
 
 ``number`` (below): numbers in error messages, six significant digits: ``bspline``, ``knot_insertion``.
 """
 
 from __future__ import annotations
 
-from goldman_lib.kernels import frames, iteration, meshes, polygons, pyramids, relaxation
+from goldman_lib.kernels import frames, iteration, meshes, polygons, pyramids, relaxation, roots
 
-__all__ = ["frames", "iteration", "meshes", "polygons", "pyramids", "relaxation", "number"]
+__all__ = ["frames", "iteration", "meshes", "polygons", "pyramids", "relaxation", "roots", "number"]
 
 
 def number(x) -> str:

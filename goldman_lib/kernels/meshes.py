@@ -1,8 +1,8 @@
 """Meshes: scan conversion of triangle meshes (Goldman §21.2-21.3, §22.2), unchecked.
 
-:func:`rasterise` is the one scan conversion of chapters 21 and 22: ``shading.rasterise_triangles``
-(and through it Gouraud and Phong shading, ``shading.render``) and ``hidden_surfaces``' painter's
-coverage run it.  Nothing here checks its input.
+:func:`rasterise` is the one scan conversion of chapters 21 and 22: ``rasteriser.rasterise_triangles``
+and ``rasteriser.gouraud_triangle`` (checked), the shading modes of ``shading.render`` and
+``hidden_surfaces``' painter's coverage run it.  Nothing here checks its input.
 """
 
 from __future__ import annotations

@@ -2,14 +2,16 @@
 
 :func:`flatness` and :func:`patch_flatness` (how far a polygon or net is from its chord or its
 bilinear corners, §25.3), :func:`signed_distances` and :func:`sign_changes` (the variation count
-of §24.4), :func:`elevate` (degree elevation, §24.5).  Nothing here checks its input.
+of §24.4), :func:`elevate` (degree elevation, §24.5); :func:`ear_clip` triangulates a simple polygon
+(``simple_surfaces.Polygon.mesh``, §19.3) and :func:`clip_half_space` cuts a polygon at a plane
+(``camera.Camera.clip_polygon``, §22.1).  Nothing here checks its input.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["flatness", "patch_flatness", "signed_distances", "sign_changes", "elevate"]
+__all__ = ["flatness", "patch_flatness", "signed_distances", "sign_changes", "elevate", "ear_clip", "clip_half_space"]
 
 
 def flatness(P: np.ndarray, even: bool = True) -> np.ndarray:
@@ -90,3 +92,66 @@ def elevate(P: np.ndarray, times: int) -> np.ndarray:
         Q[1:-1] = a * P[:-1] + (1.0 - a) * P[1:]
         P = Q
     return P
+
+
+def ear_clip(uv: np.ndarray) -> np.ndarray:
+    """Triangles ``(k - 2, 3)`` of indices into a simple counterclockwise polygon uv ``(k, 2)`` by ear
+    clipping (our way of drawing the polygons of Goldman §19.3): cut off a convex corner with no other
+    vertex inside, repeat; what is left (convex or degenerate) becomes a fan.
+
+    >>> ear_clip(np.array([[0.0, 0], [2, 0], [2, 2], [1, 1], [0, 2]])).tolist()
+    [[1, 2, 3], [0, 1, 3], [0, 3, 4]]
+    """
+    idx = list(range(len(uv)))
+    tris = []
+    guard = 0
+    while len(idx) > 3 and guard < 10 * len(uv) ** 2:
+        guard += 1
+        for k in range(len(idx)):
+            i, j, m = idx[k - 1], idx[k], idx[(k + 1) % len(idx)]
+            a, b, c = uv[i], uv[j], uv[m]
+            if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) <= 0:
+                continue                                             # a reflex (or flat) corner is no ear
+            others = uv[[p for p in idx if p not in (i, j, m)]]
+            if len(others):
+                s1 = (b[0] - a[0]) * (others[:, 1] - a[1]) - (b[1] - a[1]) * (others[:, 0] - a[0])
+                s2 = (c[0] - b[0]) * (others[:, 1] - b[1]) - (c[1] - b[1]) * (others[:, 0] - b[0])
+                s3 = (a[0] - c[0]) * (others[:, 1] - c[1]) - (a[1] - c[1]) * (others[:, 0] - c[0])
+                if np.any((s1 >= 0) & (s2 >= 0) & (s3 >= 0)):
+                    continue                                         # another vertex inside: no ear
+            tris.append([i, j, m])
+            idx.pop(k)
+            break
+        else:
+            break
+    while len(idx) >= 3:                                             # what is left (convex or degenerate): a fan
+        tris.append([idx[0], idx[1], idx[2]])
+        idx.pop(1)
+    return np.array(tris, dtype=np.int64)
+
+
+def clip_half_space(P: np.ndarray, s: np.ndarray):
+    """Sutherland and Hodgman's clipping against one plane (Goldman §22.1's near plane): the
+    part of polygon P ``(k, 3)`` where the signed distance s ``(k,)`` is >= 0, or None if it has no
+    area.  A polygon wholly on the kept side is returned as is (the same array), so a scene the
+    plane does not cut is drawn bit for bit as before.  :meth:`goldman_lib.camera.Camera.clip_polygon`
+    runs it on checked polygons (the near plane and the guard band).
+
+    >>> clip_half_space(np.array([[0.0, -1, 0], [1, 3, 0], [-1, 3, 0]]), np.array([-2.0, 2.0, 2.0])).tolist()
+    [[0.5, 1.0, 0.0], [1.0, 3.0, 0.0], [-1.0, 3.0, 0.0], [-0.5, 1.0, 0.0]]
+    """
+    if np.all(s >= 0):
+        return P
+    if not np.any(s > 0):
+        return None
+    out = []
+    k = len(P)
+    for i in range(k):
+        a, b, sa, sb = P[i], P[(i + 1) % k], s[i], s[(i + 1) % k]
+        if sa >= 0:
+            out.append(a)
+        if (sa > 0 and sb < 0) or (sa < 0 and sb > 0):
+            out.append(a + (sa / (sa - sb)) * (b - a))
+    if len(out) < 3:
+        return None
+    return np.array(out)

@@ -24,6 +24,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from goldman_lib import lighting
+from goldman_lib.camera import Camera
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Sphere
 from goldman_lib.validation import within_budget
@@ -49,13 +50,24 @@ FULL_SIZE = (640, 480)
 FULL_SAMPLES = 2
 
 
-def camera():
-    """The views' camera as a :class:`goldman_lib.ray_tracing.Camera`: at :data:`EYE`, looking at the
-    sphere's centre, y up, its vertical field of view the window ``[-WINDOW, WINDOW]`` of the plane
-    z = 0 (what :func:`sphere_pixels` sees, rendered by :func:`goldman_lib.ray_tracing.ray_cast`)."""
-    from goldman_lib import ray_tracing as rt
+def camera(size: int | None = None) -> Camera:
+    """The views' camera (a :class:`goldman_lib.camera.Camera`): at :data:`EYE`, looking at the sphere's
+    centre, y up.  ``size=None``: its vertical field of view is the window ``[-WINDOW, WINDOW]`` of the
+    plane z = 0, edge to edge (what :func:`goldman_lib.ray_tracing.ray_cast` renders at full size).
+    ``size=n``: the ``n`` x ``n`` camera of the interactive pictures (:func:`sphere_pixels`), whose
+    outermost pixel *centres* lie on the window's edges -- the field of view widened by ``n / (n - 1)``,
+    the pictures' framing since chapter 16 was written (pixel k of n centred at ``-WINDOW + k * 2 WINDOW
+    / (n - 1)`` on the plane z = 0).
 
-    return rt.Camera(EYE, (0.0, 0.0, 0.0), up=(0.0, 1.0, 0.0), fov=float(np.degrees(2 * np.arctan2(WINDOW, EYE[2]))))
+    >>> camera().fov == camera(160).fov, camera(160).width
+    (False, 160)
+    """
+    if size is None:
+        return Camera(EYE, (0.0, 0.0, 0.0), up=(0.0, 1.0, 0.0), fov=float(np.degrees(2 * np.arctan2(WINDOW, EYE[2]))))
+    size = _size(size)
+    half = WINDOW * size / (size - 1)                   # the window's half-side at the pixels' outer edges
+    return Camera(EYE, (0.0, 0.0, 0.0), up=(0.0, 1.0, 0.0), fov=float(np.degrees(2 * np.arctan2(half, EYE[2]))),
+                  width=size, height=size)
 
 
 def _size(size, name="size") -> int:
@@ -68,16 +80,14 @@ def _size(size, name="size") -> int:
 
 @functools.lru_cache(maxsize=8)
 def sphere_pixels(size: int):
-    """The pixels of a ``size`` x ``size`` picture of :data:`SPHERE` seen from :data:`EYE` (perspective
-    rays through the window ``[-WINDOW, WINDOW]^2`` of the plane z = 0, top row first):
+    """The pixels of a ``size`` x ``size`` picture of :data:`SPHERE` seen from :data:`EYE` (the rays of
+    ``camera(size)``, through the window ``[-WINDOW, WINDOW]^2`` of the plane z = 0, top row first):
     ``(found (size, size) bool, points (m, 3), normals (m, 3))``, the hit point and the sphere's unit
     normal there for each pixel whose ray hits (:meth:`Sphere.hit`).  Cached per size."""
     size = _size(size)
-    xs = np.linspace(-WINDOW, WINDOW, size)
-    X, Y = np.meshgrid(xs, xs[::-1])
-    targets = np.stack([X, Y, np.zeros_like(X)], axis=-1).reshape(-1, 3)
-    directions = targets - EYE
-    t, normals = SPHERE.hit(EYE, directions)
+    eye, directions = camera(size).rays()               # the one place a pixel becomes a ray
+    directions = directions.reshape(-1, 3)
+    t, normals = SPHERE.hit(eye, directions)
     found = np.isfinite(t)
     points = EYE + t[found, None] * directions[found]
     for arr in (found, points, normals):

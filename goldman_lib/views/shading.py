@@ -17,7 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib import lighting, shading
+from goldman_lib import lighting, rasteriser, shading
+from goldman_lib.camera import Camera
 from goldman_lib.views import style
 from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
 from goldman_lib.views.light_control import LightControl
@@ -53,7 +54,7 @@ def shading_view(mode_a: str = "gouraud", mode_b: str = "phong", facets: int = 8
     controls = {"mode_a": dropdown("left", options, mode_a), "mode_b": dropdown("right", options, mode_b),
                 "facets": int_slider("facets", facets, 3, 24), "exponent": float_slider("n", exponent, 1.0, 120.0, 1.0)}
     controls.update(control.controls)
-    camera = shading.Camera(width=size, height=size, **SHADING_CAMERA)
+    camera = Camera(width=size, height=size, **SHADING_CAMERA)
 
     fig = style.new_figure(figsize=(8.4, 2.9))
     ax_scene = fig.add_subplot(1, 3, 1)
@@ -138,7 +139,7 @@ def mach_band_view(row: int = 86, facets: int = 6, show: str = "Gouraud and Phon
         raise ValueError(f"show must be one of {choices}; got {show!r}")
     controls = {"row": int_slider("row", int(row), 0, size - 1), "facets": int_slider("facets", facets, 3, 16),
                 "show": dropdown("show", choices, show)}
-    camera = shading.Camera(width=size, height=size, **SHADING_CAMERA)
+    camera = Camera(width=size, height=size, **SHADING_CAMERA)
     light = lighting.Light(MACH_LIGHT)
     material = lighting.Material(**MACH_MATERIAL)
     modes = ("gouraud", "phong")
@@ -183,7 +184,7 @@ def mach_band_view(row: int = 86, facets: int = 6, show: str = "Gouraud and Phon
         if n not in mesh_cache:
             mesh_cache.clear()
             V, T = shading.uv_sphere(n, 2 * n)
-            ids = shading.rasterise_triangles(camera.project(V)[:, :3], T, size, size).triangle
+            ids = rasteriser.rasterise_triangles(camera.project(V)[:, :3], T, size, size).triangle
             pictures = [shading.render(V, T, camera, light, material, mode=mode, ambient_light=0.3,
                                        background=(1.0, 1.0, 1.0)) for mode in modes]
             mesh_cache[n] = (ids, pictures)

@@ -21,6 +21,7 @@ import pickle
 import numpy as np
 
 from goldman_lib import lighting, simple_surfaces as S
+from goldman_lib.camera import Camera
 from goldman_lib.lighting import Material
 from goldman_lib.validation import as_float, within_budget
 from goldman_lib.views import style
@@ -158,7 +159,7 @@ def gallery_view(kind: str = "torus", radius: float = 0.8, height: float = 1.6, 
                               minimum=8)
     light = LightControl([(3.0, -3.5, 5.5)], box=(-6.0, 6.0), intensity_range=(0.0, 2.0))
     controls = {**_controls(kind, radius, height, half_angle, R, r), **light.controls}
-    camera = rt.Camera(_EYE, _TARGET, fov=40.0)
+    camera = Camera(_EYE, _TARGET, fov=40.0)
     floor = S.Plane([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], _FLOOR)
     fig = style.new_figure(figsize=(4.8, 3.6))
     ax = fig.add_axes([0.0, 0.0, 1.0, 0.92])
@@ -214,7 +215,7 @@ def gallery_render_control(view: InteractiveView, width: int = 640, height_px: i
 
     if not isinstance(view, InteractiveView) or not hasattr(view, "light_control"):
         raise TypeError("view must be the gallery's InteractiveView (from gallery_view())")
-    camera = rt.Camera(_EYE, _TARGET, fov=40.0)
+    camera = Camera(_EYE, _TARGET, fov=40.0)
     floor = S.Plane([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], _FLOOR)
 
     def render(progress, kind, radius, height, half_angle, R, r, **lights):
@@ -242,7 +243,7 @@ def gallery_figure(width: int = 112, height_px: int = 84, columns: int = 4):
     columns = within_budget(columns, "columns", cost=lambda v: v, what="the grid", unit="columns", limit=12, minimum=1)
     rows = -(-len(SURFACES) // columns)
     fig = style.new_figure(figsize=(2.4 * columns, 2.0 * rows))
-    camera = rt.Camera(_EYE, _TARGET, fov=40.0)
+    camera = Camera(_EYE, _TARGET, fov=40.0)
     floor = S.Plane([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], _FLOOR)
     light = LightControl([(3.0, -3.5, 5.5)])
     for k in range(rows * columns):

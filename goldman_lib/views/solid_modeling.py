@@ -16,6 +16,7 @@ import numpy as np
 from matplotlib import ticker
 
 from goldman_lib import lighting
+from goldman_lib.camera import Camera
 from goldman_lib import solid_modeling as sm
 from goldman_lib.lighting import Material
 from goldman_lib.simple_surfaces import Cylinder, Plane, Sphere, Torus
@@ -79,11 +80,9 @@ def csg_tree(first: str, op: str, second: str, op2: str = "none", third: str = "
 def _camera():
     """The pinhole camera at :data:`_EYE` looking along +y whose screen, carried to the plane y = 0,
     is exactly the window :data:`EXTENT` (so a point (x, 0, z) is drawn at (x, z) on the image)."""
-    from goldman_lib import ray_tracing
-
     half_height = EXTENT[3] / -_EYE[1]
-    return ray_tracing.Camera(_EYE, (0.0, 0.0, 0.0), up=(0.0, 0.0, 1.0),
-                              fov=2 * np.degrees(np.arctan(half_height)))
+    return Camera(_EYE, (0.0, 0.0, 0.0), up=(0.0, 0.0, 1.0),
+                  fov=2 * np.degrees(np.arctan(half_height)))
 
 
 def csg_view(first: str = "ball A (left)", op: str = "difference", second: str = "ball B (right)",

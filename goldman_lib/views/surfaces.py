@@ -22,6 +22,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from goldman_lib import surfaces as sf
+from goldman_lib.camera import Camera
 from goldman_lib.views.interactive import InteractiveView, dropdown, float_slider, int_slider  # noqa: F401
 from goldman_lib.views.three import SceneView
 
@@ -224,7 +225,7 @@ def normal_map_png(M=SHEAR, arrows: int = 16, size: tuple = (160, 120)) -> bytes
     ax.set_ylabel("z")
     ax.set_title("the section y = 0: normals by the\ninverse transpose (green) and the linear part (red)", fontsize=9)
     floor = Plane([0, 0, -0.05], [0, 0, 1], material=Material(colour=(0.9, 0.9, 0.9)))
-    camera = rt.Camera((0.8, -5.0, 2.6), (0.5, 0.0, 1.0), fov=40)
+    camera = Camera((0.8, -5.0, 2.6), (0.5, 0.0, 1.0), fov=40)
     for j, k in enumerate(kinds):
         scene = rt.Scene([shapes[k], floor], [Light((4, -5, 6))], ambient_light=0.25, background=(0.62, 0.76, 0.92))
         axk = fig.add_subplot(1, 3, j + 2)
@@ -250,8 +251,8 @@ def full_size_render(scene, camera, width: int = 640, height: int = 480, samples
     from goldman_lib import ray_tracing as rt
     from goldman_lib.views.render_control import RenderControl
 
-    if not isinstance(scene, rt.Scene) or not isinstance(camera, rt.Camera):
-        raise TypeError("scene and camera must be a goldman_lib.ray_tracing Scene and Camera")
+    if not isinstance(scene, rt.Scene) or not isinstance(camera, Camera):
+        raise TypeError("scene and camera must be a goldman_lib.ray_tracing.Scene and Camera (goldman_lib.camera)")
 
     def render(progress):
         return rt.render(scene, camera, width, height, depth=depth, samples=samples, progress=progress)

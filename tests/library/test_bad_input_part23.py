@@ -18,6 +18,7 @@ import pytest
 
 from goldman_lib import (bspline, lighting, mass_points, quaternions, ray_tracing, simple_surfaces, transforms,
                          vector_geometry, vectors)
+from goldman_lib.camera import Camera
 from goldman_lib.kernels.frames import norm
 
 SCALES = [1e-170, 2.0 ** -600, 1e160, 1e300]
@@ -98,7 +99,9 @@ def test_light_overflow_names_the_light_and_the_coefficient():
         assert "intensity" in str(info.value) and "diffuse" in str(info.value)
         assert "origins" not in str(info.value)
     _raises(lambda: ray_tracing.Scene([], [lighting.Light((0, 0, 1e160))]), r"^lights\[0\]\.position must have")
-    _raises(lambda: ray_tracing.Camera((0, -1e160, 0), (0, 0, 0)), r"\beye\b")
+    _raises(lambda: Camera((0, -1e160, 0), (0, 0, 0)), r"\beye\b")
+    _raises(lambda: ray_tracing.render(ray_tracing.default_scene(), Camera((0, -1e61, 0), (0, 0, 0)), 8, 6),
+            r"^camera\.eye must have coordinates at most")
 
 
 # -- results that depend only on a direction: the same at every magnitude -----------------------------------

@@ -17,8 +17,9 @@ import numpy as np
 import pytest
 
 from goldman_lib import hidden_surfaces as hs
-from goldman_lib import lighting, radiosity as rd, ray_tracing as rt, shading, simple_surfaces as ss
+from goldman_lib import lighting, radiosity as rd, ray_tracing as rt, simple_surfaces as ss
 from goldman_lib import solid_modeling as sm
+from goldman_lib.camera import Camera
 
 
 @contextmanager
@@ -47,8 +48,8 @@ def raises_fast(call, pattern, seconds=3.0, exc=ValueError):
 
 # -- issue 20 §2 hidden surfaces: the near plane --------------------------------------------------------
 
-CAMERA = shading.Camera(eye=(0.0, -7.0, 0.6), target=(0.0, 0.0, 0.1), up=(0.0, 0.0, 1.0), fov=36.0, width=64,
-                        height=48, near=0.5)
+CAMERA = Camera(eye=(0.0, -7.0, 0.6), target=(0.0, 0.0, 0.1), up=(0.0, 0.0, 1.0), fov=36.0, width=64,
+                height=48, near=0.5)
 
 
 def reference_ids(polygons, camera):
@@ -202,7 +203,7 @@ def test_the_guard_band_keeps_screen_coordinates_near_the_image_and_every_pixel_
 
 # -- issue 20 §2 hidden surfaces: the work budget ----------------------------------------------------------
 
-BIG = shading.Camera(eye=(0, -7, 0.6), target=(0, 0, 0.1), up=(0, 0, 1), fov=36, width=1000, height=1000)
+BIG = Camera(eye=(0, -7, 0.6), target=(0, 0, 0.1), up=(0, 0, 1), fov=36, width=1000, height=1000)
 SCREEN_FILLING = [[[-50, k * 0.01, -50], [50, k * 0.01, -50], [50, k * 0.01, 50], [-50, k * 0.01, 50]]
                   for k in range(200)]
 

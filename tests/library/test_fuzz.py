@@ -176,9 +176,9 @@ def _run_doctests(modules, functions, found) -> None:
 
 
 def _camera():
-    from goldman_lib import shading
+    from goldman_lib.camera import Camera
 
-    return shading.Camera((0.0, -5.0, 1.0), (0.0, 0.0, 0.0), width=16, height=12)
+    return Camera((0.0, -5.0, 1.0), (0.0, 0.0, 0.0), width=16, height=12)
 
 
 def _extra_examples() -> dict:
@@ -229,7 +229,6 @@ def _extra_examples() -> dict:
         "simple_surfaces.Sphere": (([0.0, 0.0, 1.0], 2.0), {}),
         "simple_surfaces.Surface.contains": ((simple_surfaces.Sphere([0, 0, 0], 1), [[0, 0, 0.5], [0, 2, 0]]), {}),
         # chapter 17
-        "ray_tracing.Camera": (((0.0, -5.0, 1.0), (0.0, 0.0, 0.5), (0.0, 0.0, 1.0), 40.0), {}),
         "ray_tracing.Scene": (([simple_surfaces.Sphere([0, 0, 1], 1.0)], [lighting.Light((0.0, 0.0, 5.0))], 0.3,
                                (0.1, 0.2, 0.3)), {}),
         # chapter 19
@@ -276,10 +275,10 @@ def _extra_examples() -> dict:
         "solid_modeling.Octree": ((_ball, (0.0, 0.0, 0.0), 2.0, 2), {}),
         "solid_modeling.Octree.boxes": ((solid_modeling.Octree.build(_ball, depth=2), ("full",)), {}),
         "solid_modeling.Octree.wireframe": ((solid_modeling.Octree.build(_ball, depth=2), ("partial",)), {}),
-        # chapter 21
-        "shading.Camera": (((0.0, -5.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 40.0, 16, 12, 0.1), {}),
-        "shading.Camera.project": ((_camera(), [[0.0, 0.0, 0.0], [1.0, 0.5, 0.2]]), {}),
-        "shading.Camera.rays": ((_camera(),), {}),
+        # chapters 17, 21, 22
+        "camera.Camera": (((0.0, -5.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 40.0, 16, 12, 0.1), {}),
+        "camera.Camera.project": ((_camera(), [[0.0, 0.0, 0.0], [1.0, 0.5, 0.2]]), {}),
+        "camera.Camera.rays": ((_camera(),), {}),
     }
 
 
@@ -602,10 +601,11 @@ def _part3_probes():
     """Issue 20, sections 2-3: many polygons, lights, patches and intervals, deep CSG trees,
     singular radiosity systems and geometry behind the eye (``param`` None: an answer, not a refusal,
     is expected)."""
-    from goldman_lib import hidden_surfaces as hs, lighting, radiosity as rd, ray_tracing as rt, shading
+    from goldman_lib import hidden_surfaces as hs, lighting, radiosity as rd, ray_tracing as rt
+    from goldman_lib.camera import Camera
     from goldman_lib import simple_surfaces as ss, solid_modeling as sm
 
-    big = shading.Camera((0, -7, 0.6), (0, 0, 0.1), (0, 0, 1), 36, 1000, 1000)
+    big = Camera((0, -7, 0.6), (0, 0, 0.1), (0, 0, 1), 36, 1000, 1000)
     filling = [[[-50, k * 0.01, -50], [50, k * 0.01, -50], [50, k * 0.01, 50], [-50, k * 0.01, 50]] for k in range(200)]
     square = [[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]]
     floor = [[-3, -20, -1], [3, -20, -1], [3, 5, -1], [-3, 5, -1]]

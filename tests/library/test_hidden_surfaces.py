@@ -6,6 +6,7 @@ import pytest
 
 from goldman_lib import hidden_surfaces as hs
 from goldman_lib import shading
+from goldman_lib.camera import Camera
 
 CORRECT = ["z-buffer", "scan line", "ray casting", "depth sort", "BSP tree"]
 
@@ -35,7 +36,7 @@ def test_two_squares_crossing_along_a_line_by_hand():
     # A in the plane y = 0 facing the eye; B in the plane y = x: nearer than A where x < 0
     A = np.array([[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]], dtype=float)
     B = np.array([[-1, -1, -0.5], [1, 1, -0.5], [1, 1, 0.5], [-1, -1, 0.5]], dtype=float)
-    camera = shading.Camera(eye=(0, -10, 0), target=(0, 0, 0), fov=20, width=40, height=40)
+    camera = Camera(eye=(0, -10, 0), target=(0, 0, 0), fov=20, width=40, height=40)
     for name in CORRECT:
         ids = hs.ALGORITHMS[name][0]([A, B], camera).ids
         row = ids[20]                                     # the middle row, inside B's height

@@ -1,11 +1,13 @@
 """Recursive ray tracing (Goldman ch. 17) against closed forms and values worked by hand."""
 
+import dataclasses
 import math
 
 import numpy as np
 import pytest
 
 from goldman_lib import ray_tracing as rt
+from goldman_lib.camera import Camera
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Plane, Sphere
 
@@ -76,18 +78,24 @@ def test_refract_refuses_bad_input_by_name():
 
 # -- the camera and the tracer ---------------------------------------------------------------------
 
-def test_camera_rays_through_pixel_centres():
-    cam = rt.Camera((0, -5, 0), (0, 0, 0), fov=90)
-    o, d = cam.rays(3, 3)
-    assert np.allclose(o, [0, -5, 0]) and np.allclose(np.linalg.norm(d, axis=1), 1)
-    assert d[4] == pytest.approx([0, 1, 0])                  # the centre pixel looks straight ahead
-    # the screen's half-height is tan 45 = 1; pixel centres at -2/3, 0, 2/3; row 0 is the top
-    assert d[1] == pytest.approx(np.array([0, 1, 2 / 3]) / math.sqrt(1 + 4 / 9))
-    assert d[3] == pytest.approx(np.array([-2 / 3, 1, 0]) / math.sqrt(1 + 4 / 9))
-    with pytest.raises(ValueError, match="up"):
-        rt.Camera((0, 0, 5), (0, 0, 0), up=(0, 0, 1))
-    with pytest.raises(ValueError, match="fov"):
-        rt.Camera((0, -5, 0), (0, 0, 0), fov=180)
+def _rays(camera, width, height):
+    """The primary rays of ``camera`` at ``width`` x ``height``, flat: origins and directions (h*w, 3)."""
+    eye, d = dataclasses.replace(camera, width=width, height=height).rays()
+    d = d.reshape(-1, 3)
+    return np.broadcast_to(eye, d.shape).copy(), d
+
+
+def test_render_sizes_the_camera_and_checks_its_eye():
+    # the image size is the camera's; width and height override it (the same view, more pixels)
+    scene, cam = _one_sphere(), Camera((0, -5, 0), (0, 0, 0), fov=30, width=6, height=4)
+    assert rt.render(scene, cam, depth=0).shape == (4, 6, 3)
+    assert np.array_equal(rt.render(scene, cam, 12, 8, depth=0),
+                          rt.render(scene, dataclasses.replace(cam, width=12, height=8), depth=0))
+    assert rt.default_camera().width == 160 and rt.render(scene, rt.default_camera(), depth=0).shape == (120, 160, 3)
+    with pytest.raises(ValueError, match=r"camera\.eye"):
+        rt.render(scene, Camera((0, -1e61, 0), (0, 0, 0)), 4, 3)
+    with pytest.raises(TypeError, match="goldman_lib.camera.Camera"):
+        rt.ray_cast(scene, object(), 4, 3)
 
 
 def _one_sphere(light=(0.0, -5.0, 5.0)):
@@ -97,7 +105,7 @@ def _one_sphere(light=(0.0, -5.0, 5.0)):
 
 def test_one_sphere_centre_pixel_by_hand():
     scene = _one_sphere()
-    cam = rt.Camera((0, -5, 0), (0, 0, 0), fov=30)
+    cam = Camera((0, -5, 0), (0, 0, 0), fov=30)
     img = rt.render(scene, cam, 5, 5, depth=2)
     # the centre ray hits (0, -1, 0) with N = (0, -1, 0); L = (0, -4, 5)/sqrt(41), so L.N = 4/sqrt(41);
     # R = 2 (L.N) N - L = (0, -4, -5)/sqrt(41), V = (0, -1, 0), so R.V = 4/sqrt(41).
@@ -118,7 +126,7 @@ def test_shadow_ray_leaves_ambient_only():
     assert colours[0] == pytest.approx(ambient, abs=1e-12)    # (0,0,0) is behind the sphere: ambient only
     # (3,0,0) sees the light: L = (-3, 0, 5)/sqrt(34), L.N = 5/sqrt(34)
     assert colours[1] == pytest.approx(ambient + 0.8 * 5 / math.sqrt(34) * np.array([0.5, 0.6, 0.7]), abs=1e-12)
-    tree = rt.ray_tree(scene, rt.Camera((0, -3, 3), (0, 0, 0)), 0, 0, depth=0, width=1, height=1)
+    tree = rt.ray_tree(scene, Camera((0, -3, 3), (0, 0, 0), fov=45), 0, 0, depth=0, width=1, height=1)
     shadow = [s for s in tree if s.kind == "shadow"]
     assert len(shadow) == 1 and shadow[0].hit                # blocked, and it ends on the occluder
     assert shadow[0].end == pytest.approx([0, 0, 0.5], abs=1e-6)
@@ -152,7 +160,7 @@ def test_shadow_rays_are_attenuated_by_transmission():
     assert rt.in_shadow(_shadow_scene(0.7, 0.5), P, N)[:, 0].tolist() == [True, False]
     assert rt.light_fraction(_shadow_scene(0.7, attenuate=False), P, N)[:, 0].tolist() == [0.0, 1.0]
     # the ray tree records it: the shadow ray ends on the first sphere and carries t1 t2 of the light
-    tree = rt.ray_tree(_shadow_scene(0.7, 0.5), rt.Camera((-2, 0, 2), (0, 0, 0)), 0, 0, depth=0, width=1, height=1)
+    tree = rt.ray_tree(_shadow_scene(0.7, 0.5), Camera((-2, 0, 2), (0, 0, 0), fov=45), 0, 0, depth=0, width=1, height=1)
     shadow = [s for s in tree if s.kind == "shadow"]
     assert len(shadow) == 1 and shadow[0].hit and shadow[0].light == pytest.approx(0.35, abs=1e-15)
     assert shadow[0].end == pytest.approx([0, 0, 1.1], abs=1e-6)
@@ -213,7 +221,7 @@ def _independent_pixel(scene, o, d):
 def test_glass_shadow_pixel_matches_an_independent_tracer():
     scene, camera = rt.default_scene(), rt.default_camera()
     # pixels of a 40 x 30 image whose floor point lies in the glass sphere's shadow
-    o, d = camera.rays(40, 30)
+    o, d = _rays(camera, 40, 30)
     colours = rt.trace(scene, o, d, depth=0)
     glass = scene.objects[1]
     found = 0
@@ -287,7 +295,7 @@ def test_a_glass_sphere_passes_a_ray_through_its_centre_straight():
 # -- whole images ----------------------------------------------------------------------------------
 
 def _primary_object(scene, camera, width, height):
-    o, d = camera.rays(width, height)
+    o, d = _rays(camera, width, height)
     ts = np.stack([obj.intersect(o, d) for obj in scene.objects])
     which = np.where(np.isfinite(ts).any(axis=0), ts.argmin(axis=0), -1)
     return which.reshape(height, width)
@@ -317,7 +325,7 @@ def test_depth_zero_and_one_differ_only_on_mirror_and_glass():
 def test_render_matches_trace_pixel_by_pixel():
     scene, cam = rt.default_scene(), rt.default_camera()
     img = rt.render(scene, cam, 16, 12, depth=2)
-    o, d = cam.ray(5, 7, 16, 12)
+    o, d = dataclasses.replace(cam, width=16, height=12).ray(5, 7)
     assert img[7, 5] == pytest.approx(np.clip(rt.trace(scene, o, d, depth=2)[0], 0, 1), abs=1e-12)
 
 
@@ -325,7 +333,7 @@ def test_ray_tree_structure():
     scene, cam = rt.default_scene(), rt.default_camera()
     glass = scene.objects[1]
     # a pixel on the glass sphere: aim at its centre
-    o, d = cam.eye, glass.center - cam.eye
+    o, d = np.array(cam.eye), glass.center - cam.eye
     segments = []
     rt.trace(scene, o, d, depth=3, record=segments)
     assert segments[0].kind == "primary" and np.allclose(segments[0].start, cam.eye) and segments[0].hit
@@ -374,7 +382,7 @@ def test_the_bounding_sphere_cull_changes_no_pixel(monkeypatch):
                ss.Polygon([[-1.5, 1.0, 0.01], [-0.5, 1.0, 0.01], [-1.0, 2.2, 1.0]], material=shiny),
                Sphere((0.8, 0.0, 0.5), 0.5, glass)]
     scene = rt.Scene(objects, [Light((-2.0, -2.0, 5.0)), Light((3.0, 2.0, 4.0), intensity=0.5)])
-    cam = rt.Camera((-6.0, -1.0, 2.5), (0.5, 0.2, 0.6))
+    cam = Camera((-6.0, -1.0, 2.5), (0.5, 0.2, 0.6), fov=45)
     culled = rt.render(scene, cam, 48, 36, depth=3)
     assert all(rt._bounding_sphere(obj) is not None for obj in objects[1:])
     monkeypatch.setattr(rt, "_bounding_sphere", lambda obj: None)
@@ -402,7 +410,7 @@ def _mirror_corridor():
     scene = rt.Scene([Plane((-1.0, 0.0, 0.0), (1.0, 0.0, 0.0), mirror),
                       Plane((1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), mirror)],
                      [Light((0.0, 0.0, 5.0))], background=(0.0, 0.0, 0.0))
-    camera = rt.Camera((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), up=(0.0, 0.0, 1.0), fov=40.0)
+    camera = Camera((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), up=(0.0, 0.0, 1.0), fov=40.0)
     return scene, camera
 
 
@@ -448,7 +456,7 @@ def test_shadow_acne_appears_in_single_precision_without_an_offset_and_an_offset
     assert changed.mean() > 0.03                             # speckles over the spheres
     assert np.all(acne[changed].sum(axis=1) < base[changed].sum(axis=1) + 1e-9) or \
         np.mean(acne[changed].sum(axis=1) < base[changed].sum(axis=1)) > 0.8    # self-shadowed: darker
-    o, d = camera.rays(80, 60)
+    o, d = _rays(camera, 80, 60)
     t_floor = scene.objects[0].intersect(o, d).reshape(60, 80)
     t_spheres = np.min([obj.intersect(o, d) for obj in scene.objects[1:]], axis=0).reshape(60, 80)
     on_spheres = np.isfinite(t_spheres) & (t_spheres < t_floor)
@@ -484,7 +492,7 @@ def test_safeguard_switches_are_validated():
 def test_ray_cast_is_local_light_at_the_nearest_hit():
     m = Material(colour=(1.0, 0.5, 0.25), ambient=0.2, diffuse=0.6, specular=0.3, exponent=10)
     scene = rt.Scene([Sphere((0, 0, 0), 1.0, m)], [Light((0, -5, 5))], ambient_light=0.5, background=(0, 0, 1))
-    camera = rt.Camera((0, -5, 0), (0, 0, 0), up=(0, 0, 1), fov=40)
+    camera = Camera((0, -5, 0), (0, 0, 0), up=(0, 0, 1), fov=40)
     img = rt.ray_cast(scene, camera, 9, 7)
     # the centre pixel's ray hits (0, -1, 0), N = (0, -1, 0): L = (0, -4, 5)/sqrt 41, L.N = 4/sqrt 41,
     # R = (0, -4, -5)/sqrt 41 ... R.V = 4/sqrt 41 with V = (0, -1, 0)
@@ -507,11 +515,11 @@ def test_ray_cast_is_local_light_at_the_nearest_hit():
 def test_ray_cast_unclamped_changes_only_what_the_light_is_behind():
     m = Material(colour=(0.8, 0.3, 0.35), ambient=0.15, diffuse=0.7, specular=0.5, exponent=5)
     scene = rt.Scene([Sphere((0, 0, 0), 1.0, m)], [Light((4, 1, -3))], ambient_light=1.0)
-    camera = rt.Camera((0, 0, 6), (0, 0, 0), up=(0, 1, 0), fov=24)
+    camera = Camera((0, 0, 6), (0, 0, 0), up=(0, 1, 0), fov=24)
     safe, unsafe = rt.ray_cast(scene, camera, 60, 60), rt.ray_cast(scene, camera, 60, 60, clamp=False)
     delta = unsafe.sum(axis=2) - safe.sum(axis=2)
     assert (delta < -1e-3).sum() > 1000 and (delta > 1e-3).sum() > 10     # a dark side and a leaked highlight
-    o, d = camera.rays(60, 60)
+    o, d = _rays(camera, 60, 60)
     t = scene.objects[0].intersect(o, d)
     P = o + np.where(np.isfinite(t), t, 0)[:, None] * d
     behind = (np.isfinite(t) & (np.einsum("ij,ij->i", np.array([4.0, 1.0, -3.0]) - P, P) <= 0)).reshape(60, 60)

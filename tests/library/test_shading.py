@@ -28,7 +28,8 @@ import math
 
 import pytest
 
-from goldman_lib import lighting
+from goldman_lib import lighting, rasteriser
+from goldman_lib.camera import Camera
 from goldman_lib.simple_surfaces import Sphere
 
 SQUARE = np.array([[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]], dtype=float)   # in the plane y = 0
@@ -39,8 +40,8 @@ HALF_FOV_TAN_HALF = 2 * math.degrees(math.atan(0.5))
 
 
 def _square_camera(**kw):
-    return shading.Camera(eye=(0, -4, 0), target=(0, 0, 0), up=(0, 0, 1), fov=HALF_FOV_TAN_HALF,
-                          width=20, height=20, **kw)
+    return Camera(eye=(0, -4, 0), target=(0, 0, 0), up=(0, 0, 1), fov=HALF_FOV_TAN_HALF,
+                  width=20, height=20, **kw)
 
 
 def test_newell_face_normals_and_book_vertex_normals_at_a_cube_corner():
@@ -67,49 +68,6 @@ def test_uv_sphere_is_closed_and_outward():
     assert len(V) - len(counts) + len(T) == 2         # Euler: V - E + F = 2
 
 
-def test_camera_projects_as_worked_by_hand():
-    cam = _square_camera()
-    x, y, z, w = cam.project([[1, 0, 1]])[0]
-    # (1, 0, 1) seen from (0, -4, 0): 1/4 right and 1/4 up on the plane, 20 px per unit
-    assert (x, y) == pytest.approx((15.0, 5.0)) and w == pytest.approx(4.0) and z == pytest.approx(1 - 0.1 / 4)
-    o, d = cam.rays()
-    assert np.allclose(o, [0, -4, 0]) and d.shape == (20, 20, 3)
-    assert np.allclose(d[0, 0], np.array([-9.5 / 20, 1, 9.5 / 20]) / np.linalg.norm([-9.5 / 20, 1, 9.5 / 20]))
-
-
-def test_a_flat_square_facing_the_camera_fills_the_pixels_it_covers():
-    cam = _square_camera()
-    S = cam.project(SQUARE)[:, :3]
-    f = shading.rasterise_triangles(S, SQUARE_T, 20, 20)
-    # the square spans pixels 5..14 in x and in y (centres 5.5 .. 14.5): 10 x 10 = 100 pixels
-    expected = np.zeros((20, 20), bool)
-    expected[5:15, 5:15] = True
-    assert np.array_equal(f.triangle >= 0, expected)
-    assert np.allclose(f.weights[expected].sum(1), 1) and np.all(f.weights[expected] >= 0)
-    assert np.allclose(f.depth[expected], 1 - 0.1 / 4) and np.all(f.depth[~expected] == 1.0)
-    # the diagonal from vertex 0 (bottom left) to 2 (top right) splits the square in two halves
-    assert (f.triangle == 0).sum() + (f.triangle == 1).sum() == 100 and (f.triangle == 0).sum() == 55
-
-
-def test_two_overlapping_triangles_the_nearer_wins_in_either_order():
-    near = [[0, 0, 0.3], [8, 0, 0.3], [0, 8, 0.3]]
-    far = [[0, 0, 0.6], [8, 0, 0.6], [8, 8, 0.6]]
-    S = np.array(near + far, dtype=float)
-    for T, near_id in (([[0, 1, 2], [3, 4, 5]], 0), ([[3, 4, 5], [0, 1, 2]], 1)):
-        f = shading.rasterise_triangles(S, T, 8, 8)
-        assert f.triangle[1, 1] == near_id and f.depth[1, 1] == pytest.approx(0.3)
-        assert f.triangle[6, 6] == 1 - near_id and f.depth[6, 6] == pytest.approx(0.6)
-
-
-def test_rasteriser_clips_near_and_far_and_skips_edge_on_triangles():
-    S = np.array([[0, 0, 0.5], [4, 0, 0.5], [0, 4, 0.5], [0, 0, 1.5], [4, 0, 1.5], [0, 4, 1.5],
-                  [0, 0, 0.5], [2, 2, 0.5], [4, 4, 0.5]])
-    f = shading.rasterise_triangles(S, [[3, 4, 5], [6, 7, 8]], 4, 4)
-    assert np.all(f.triangle == -1)
-    with pytest.raises(ValueError, match="width"):
-        shading.rasterise_triangles(S, [[0, 1, 2]], 10 ** 6, 10 ** 6)
-
-
 def test_gouraud_equals_uniform_on_a_flat_face():
     cam = _square_camera()
     far_light = lighting.Light((0, -1e6, 0))          # so L is the same at every point of the face
@@ -124,7 +82,7 @@ def test_gouraud_equals_uniform_on_a_flat_face():
 
 def _sphere_scene(stacks=26, slices=40, size=96):
     V, T = shading.uv_sphere(stacks, slices)
-    cam = shading.Camera(eye=(0, -6, 2), target=(0, 0, 0), fov=30, width=size, height=size)
+    cam = Camera(eye=(0, -6, 2), target=(0, 0, 0), fov=30, width=size, height=size)
     return V, T, cam, (lighting.Light((4, -6, 6)),)
 
 
@@ -161,7 +119,7 @@ def test_fast_phong_agrees_with_phong_within_the_taylor_error():
 
 
 def test_fast_phong_equals_phong_on_a_flat_face_with_far_light_and_eye():
-    cam = shading.Camera(eye=(0, -1000, 0), target=(0, 0, 0), fov=0.15, width=20, height=20)
+    cam = Camera(eye=(0, -1000, 0), target=(0, 0, 0), fov=0.15, width=20, height=20)
     light = lighting.Light((300, -1e4, 200))
     m = lighting.Material(specular=0.6, exponent=5)
     a = shading.render(SQUARE, SQUARE_T, cam, light, m, mode="fast_phong")
@@ -224,17 +182,6 @@ def test_render_rejects_bad_arguments():
         shading.render(SQUARE, SQUARE_T, cam, lighting.Light(), mode="flat")
     with pytest.raises(TypeError, match="camera"):
         shading.render(SQUARE, SQUARE_T, None, lighting.Light())
-    with pytest.raises(ValueError, match="up"):
-        shading.Camera(eye=(0, 0, 5), target=(0, 0, 0), up=(0, 0, 1))
-
-
-def test_gouraud_triangle_by_hand():
-    # vertices (0, 0), (4, 0), (0, 4): at the centre (x, y) the weights are (1 - x/4 - y/4, x/4, y/4)
-    out = shading.gouraud_triangle([[0, 0], [4, 0], [0, 4]], [0.2, 1.0, 0.6], 4, 4)
-    assert out[0, 0] == pytest.approx(0.75 * 0.2 + 0.125 * 1.0 + 0.125 * 0.6)
-    assert out[1, 2] == pytest.approx(0.0 * 0.2 + 2.5 / 4 * 1.0 + 1.5 / 4 * 0.6)   # centre (2.5, 1.5) on the edge
-    assert out[3, 3] == 0.0 and (out > 0).sum() == 10                      # 4 + 3 + 2 + 1 centres
-    assert np.all(shading.gouraud_triangle([[0, 0], [2, 2], [4, 4]], [1, 1, 1], 4, 4) == 0)   # edge-on
 
 
 # -- Mach bands: the slope of a scan line's profile at the mesh edges (issue 18 §3) ------------------
@@ -260,7 +207,7 @@ def test_edge_slopes_of_gouraud_on_two_triangles():
     # through its vertex values: A (0,0)->0, (16,0)->1, (16,16)->0.5 has slope 1/16 in x;
     # B (0,0)->0, (16,16)->0.5, (0,16)->0.8 has slope -0.3/16 in x
     S = np.array([[0, 0, 0.5], [16, 0, 0.5], [16, 16, 0.5], [0, 16, 0.5]], float)
-    f = shading.rasterise_triangles(S, [[0, 1, 2], [0, 2, 3]], 16, 16)
+    f = rasteriser.rasterise_triangles(S, [[0, 1, 2], [0, 2, 3]], 16, 16)
     i = 8
     x = np.arange(16) + 0.5
     ids = f.triangle[i]
@@ -307,10 +254,10 @@ def test_gouraud_kinks_at_the_edges_phong_does_not():
     # picture Gouraud's slope jumps (the piecewise linear intensity's kink: I'' dx per pixel), while
     # Phong's slope changes only by its curvature over the measuring window
     V, T = shading.uv_sphere(6, 12)
-    cam = shading.Camera(eye=(0, -6, 0), target=(0, 0, 0), up=(0, 0, 1), fov=28, width=160, height=160)
+    cam = Camera(eye=(0, -6, 0), target=(0, 0, 0), up=(0, 0, 1), fov=28, width=160, height=160)
     light = lighting.Light((-1.0, -5.0, 1.0))
     matte = lighting.Material(colour=(1, 1, 1), ambient=0.1, diffuse=0.9, specular=0.0)
-    ids = shading.rasterise_triangles(cam.project(V)[:, :3], T, 160, 160).triangle[86]
+    ids = rasteriser.rasterise_triangles(cam.project(V)[:, :3], T, 160, 160).triangle[86]
     jumps = {}
     for mode in ("gouraud", "phong"):
         image = shading.render(V, T, cam, light, matte, mode=mode, ambient_light=0.3, background=(1, 1, 1))

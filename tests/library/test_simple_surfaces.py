@@ -50,12 +50,6 @@ def test_plane_by_hand():
     assert p.contains([[0, 0, 3], [0, 0, 1]]).tolist() == [True, False]     # behind the normal
 
 
-def test_quadratic_roots_stable_for_tiny_roots():
-    # t^2 - 1e8 t + 1 = 0: roots 1e8 and 1e-8; the naive formula loses the small one
-    r = S.quadratic_roots([1.0], [-1e8], [1.0])[0]
-    assert r[0] == pytest.approx(1e-8, rel=1e-12) and r[1] == pytest.approx(1e8, rel=1e-12)
-
-
 @pytest.mark.parametrize("bad, word", [
     (lambda: S.Sphere([0, 0, 0], 0), "radius"),
     (lambda: S.Sphere([0, 0], 1), "center"),
@@ -297,31 +291,6 @@ def test_surface_of_revolution_by_hand():
     assert vase.contains([[0, 0, 0], [1.1, 0, 0], [1.1, 0, 0.9], [0, 0, 1.1]]).tolist() == [True, False, True, False]
     with pytest.raises(ValueError, match="positive"):
         S.SurfaceOfRevolution([0, 0, 0], [0, 0, 1], [1, -1], 2)
-
-
-def test_real_roots_against_numpy_roots():
-    rng = np.random.default_rng(4)
-    c = rng.normal(size=(200, 7))
-    got = S.real_roots(c)
-    for k in range(200):
-        r = np.roots(c[k])
-        if np.any((np.abs(r.imag) > 1e-9) & (np.abs(r.imag) < 1e-5)):
-            continue
-        real = np.sort(r.real[np.abs(r.imag) <= 1e-9])
-        assert np.allclose(got[k, :len(real)], real, rtol=1e-8, atol=1e-8)
-        assert np.all(np.isinf(got[k, len(real):]))
-    for degree in (2, 3, 4):
-        c = rng.normal(size=(300, degree + 1))
-        got = S.real_roots(c)
-        for k in range(300):
-            r = np.roots(c[k])
-            if np.any((np.abs(r.imag) > 1e-9) & (np.abs(r.imag) < 1e-5)):
-                continue
-            real = np.sort(r.real[np.abs(r.imag) <= 1e-9])
-            assert np.allclose(got[k, :len(real)], real, rtol=1e-7, atol=1e-7), (degree, k)
-            assert np.all(np.isinf(got[k, len(real):])), (degree, k)
-    # a lower degree by leading zeros
-    assert np.allclose(S.real_roots([[0, 0, 1, -3, 2]]), [[1, 2, np.inf, np.inf]])
 
 
 @pytest.mark.parametrize("bad, word", [

@@ -4,6 +4,8 @@ diffuse and specular terms beside their total under two lights, and red, green a
 on a wall.  Expected values are worked by hand (Lambert's cosine on the unit sphere, whose normal at
 P is P itself)."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -25,6 +27,23 @@ def test_sphere_pixels_are_points_of_the_unit_sphere_seen_from_the_eye():
     row = found[32]
     assert np.array_equal(row, 6 * np.abs(xs) / np.sqrt(36 + xs ** 2) <= 1.0)
     assert not found[0, 0] and found[32, 32]
+
+
+def test_the_pictures_rays_come_from_the_camera_through_the_window_grid():
+    # the rays of camera(n): pixel (i, j) meets the plane z = 0 at (-W + j 2W/(n-1), W - i 2W/(n-1)), the
+    # outermost pixel centres on the window's edges (the pictures' framing); camera() frames the
+    # window edge to edge, pixel centres half a pixel inside
+    n, W = 9, ci.WINDOW
+    eye, d = ci.camera(n).rays()
+    on_plane = eye + (-eye[2] / d[..., 2])[..., None] * d
+    grid = -W + np.arange(n) * 2 * W / (n - 1)
+    assert np.allclose(on_plane[..., 0], grid[None, :], atol=1e-12)
+    assert np.allclose(on_plane[..., 1], grid[::-1, None], atol=1e-12)
+    assert np.allclose(on_plane[..., 2], 0.0, atol=1e-12)
+    full = ci.camera()
+    eye, d = dataclasses.replace(full, width=4, height=4).rays()
+    corner = eye + (-eye[2] / d[0, 0, 2]) * d[0, 0]
+    assert corner[:2] == pytest.approx([-W + W / 4, W - W / 4])
 
 
 def test_the_sphere_is_lit_by_lamberts_cosine_worked_by_hand():

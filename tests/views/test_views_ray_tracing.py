@@ -153,7 +153,9 @@ def test_the_off_menu_takes_a_safeguard_away_and_puts_it_back():
     base = view.set_values(depth=3)
     assert view.controls["unsafe"].value == "none" and "Safeguard off" not in base["status"]
     scene = rt.default_scene()
-    o, d = rt.default_camera().rays(rv.WIDTH, rv.HEIGHT)
+    eye, d = rt.default_camera(width=rv.WIDTH, height=rv.HEIGHT).rays()
+    d = d.reshape(-1, 3)
+    o = np.broadcast_to(eye, d.shape)
     on_glass = np.isfinite(scene.objects[1].intersect(o, d)).reshape(rv.HEIGHT, rv.WIDTH)
     on_spheres = np.isfinite(np.min([obj.intersect(o, d) for obj in scene.objects[1:]], axis=0)).reshape(
         rv.HEIGHT, rv.WIDTH)

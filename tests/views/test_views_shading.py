@@ -5,7 +5,8 @@ a drag of its marker)."""
 import numpy as np
 import pytest
 
-from goldman_lib import lighting, shading
+from goldman_lib import lighting, rasteriser, shading
+from goldman_lib.camera import Camera
 from goldman_lib.views import shading as sv
 
 
@@ -13,7 +14,7 @@ def test_the_images_are_what_the_rasteriser_renders():
     view = sv.shading_view()
     r = view.set_values(mode_a="uniform", mode_b="phong", facets=6, exponent=20.0)
     V, T = shading.uv_sphere(6, 12)
-    cam = shading.Camera(width=128, height=128, **sv.SHADING_CAMERA)
+    cam = Camera(width=128, height=128, **sv.SHADING_CAMERA)
     light = lighting.Light((2.5, -4.0, 3.0))
     m = lighting.Material(colour=(0.85, 0.35, 0.25), ambient=0.25, diffuse=0.7, specular=0.5, exponent=20.0)
     expected = shading.render(V, T, cam, light, m, mode="uniform", ambient_light=0.3, background=(1, 1, 1),
@@ -55,9 +56,9 @@ def test_mach_band_view_draws_the_rendered_profiles_and_the_library_slopes():
     view = sv.mach_band_view()
     r = view.set_values(row=86, facets=6, show="Gouraud and Phong")
     V, T = shading.uv_sphere(6, 12)
-    cam = shading.Camera(width=160, height=160, **sv.SHADING_CAMERA)
+    cam = Camera(width=160, height=160, **sv.SHADING_CAMERA)
     m = lighting.Material(**sv.MACH_MATERIAL)
-    ids = shading.rasterise_triangles(cam.project(V)[:, :3], T, 160, 160).triangle[86]
+    ids = rasteriser.rasterise_triangles(cam.project(V)[:, :3], T, 160, 160).triangle[86]
     for k, mode in enumerate(("gouraud", "phong")):
         image = shading.render(V, T, cam, lighting.Light(sv.MACH_LIGHT), m, mode=mode, ambient_light=0.3,
                                background=(1, 1, 1))

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from goldman_lib import simple_surfaces as S
+from goldman_lib.camera import Camera
 from goldman_lib.views import simple_surfaces as V
 
 
@@ -101,7 +102,7 @@ def test_the_render_control_renders_what_the_gallery_shows_at_full_size(gallery)
     scene = rt.Scene([S.Plane([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], V._FLOOR), V.make_surface("sphere", radius=1.0)],
                      gallery.light_control.lights({k: x for k, x in v.items() if k.startswith("light")}),
                      ambient_light=0.25, background=(0.62, 0.76, 0.92))
-    direct = rt.render(scene, rt.Camera(V._EYE, V._TARGET, fov=40.0), 32, 24, depth=1, samples=2)
+    direct = rt.render(scene, Camera(V._EYE, V._TARGET, fov=40.0), 32, 24, depth=1, samples=2)
     assert np.array_equal(image, direct)
     gallery.set_values(kind="torus")
     assert not np.array_equal(rc.render(), image)                          # it follows the view
