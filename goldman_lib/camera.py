@@ -21,15 +21,26 @@ ray of a pixel projects back onto the pixel's centre.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
 from goldman_lib import transforms
-from goldman_lib.kernels.polygons import clip_half_space
+from goldman_lib.kernels.polygons import clip_to_view
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_points, check_finite, finite_result,
                                     within_budget)
 
-__all__ = ["Camera", "image_size"]
+__all__ = ["Camera", "ViewFrame", "image_size"]
+
+
+class ViewFrame(NamedTuple):
+    """A camera's frame (Goldman §17.2): the ``eye`` and three orthonormal directions, ``view`` (from
+    the eye towards the target), ``right`` and ``up`` (across the screen), each ``(3,)``."""
+
+    eye: np.ndarray
+    view: np.ndarray
+    right: np.ndarray
+    up: np.ndarray
 
 
 def image_size(width, height) -> tuple[int, int]:
@@ -104,7 +115,31 @@ class Camera:
         object.__setattr__(self, "width", width)
         object.__setattr__(self, "height", height)
         object.__setattr__(self, "near", near)
-        object.__setattr__(self, "_frame", (E, n, right, np.cross(right, n)))
+        object.__setattr__(self, "_frame", ViewFrame(E, n, right, np.cross(right, n)))
+
+    @property
+    def frame(self) -> ViewFrame:
+        """The eye and the unit ``view``, ``right`` and ``up`` directions (read-only arrays are not
+        enforced: treat them as constants).
+
+        >>> Camera(eye=(0, -5, 0), target=(0, 0, 0)).frame.view.tolist()
+        [0.0, 1.0, 0.0]
+        """
+        return self._frame
+
+    def frustum_slopes(self, guard=1.0) -> tuple[float, float]:
+        """``(tx, ty)``: a point at distance ``w`` along the view direction is inside the view frustum
+        widened ``guard`` times when ``|x| <= tx w`` and ``|y| <= ty w`` across the screen (Goldman
+        §22.1's guard band; ``guard = 1`` is the image's own frustum).
+
+        >>> [round(t, 12) for t in Camera(eye=(0, -5, 0), target=(0, 0, 0), fov=90, width=2, height=4).frustum_slopes(2)]
+        [1.0, 2.0]
+        """
+        guard = as_float(guard, "guard")
+        if not 1 <= guard <= 1e6:
+            raise ValueError(f"guard must be in [1, 1e6] (image sizes kept around the image); got {guard}")
+        tx, ty = guard * 0.5 * self.width / self.scale, guard * 0.5 * self.height / self.scale
+        return float(tx), float(ty)
 
     @property
     def scale(self) -> float:
@@ -163,25 +198,8 @@ class Camera:
         E, n, _, _ = self._frame
         with np.errstate(over="ignore", invalid="ignore"):
             finite_result((P - E) @ n, "polygon", why="is too far from the camera")
-        if guard is not None:
-            guard = as_float(guard, "guard")
-            if not 1 <= guard <= 1e6:
-                raise ValueError(f"guard must be in [1, 1e6] (image sizes kept around the image); got {guard}")
-        return self._clip(P, guard)
-
-    def _clip(self, P, guard=None):
-        """:meth:`clip_polygon` without the checks (P: a finite (k, 3) array)."""
-        E, n, right, up = self._frame
-        D = P - E
-        C = clip_half_space(P, D @ n - self.near)
-        if C is None or guard is None:
-            return C
-        tx, ty = guard * 0.5 * self.width / self.scale, guard * 0.5 * self.height / self.scale
-        for normal in (tx * n - right, tx * n + right, ty * n - up, ty * n + up):
-            C = clip_half_space(C, (C - E) @ normal)           # |x| <= tx w, |y| <= ty w
-            if C is None:
-                return None
-        return C
+        slopes = None if guard is None else self.frustum_slopes(guard)
+        return clip_to_view(P, *self._frame, self.near, slopes)
 
     def pixel_directions(self, columns, rows) -> np.ndarray:
         """Unit directions from the eye through the centres of pixels ``(rows, columns)`` (arrays of

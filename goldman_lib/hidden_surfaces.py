@@ -45,7 +45,7 @@ import numpy as np
 
 from goldman_lib import lighting, rasteriser, shading
 from goldman_lib.camera import Camera
-from goldman_lib.kernels import meshes
+from goldman_lib.kernels import meshes, polygons
 from goldman_lib.simple_surfaces import Polygon
 from goldman_lib.validation import (MAX_ITEMS, as_colour, as_float, as_float_array, as_points, check_finite,
                                     finite_result, within_budget)
@@ -146,8 +146,9 @@ def _visible(camera, polys) -> list:
     one clip all six algorithms share, so a polygon reaching behind the eye, or one nearer than the
     near plane, is the same picture (or none) in each, and no vertex projects far off the image."""
     out = []
+    frame, slopes = camera.frame, camera.frustum_slopes(GUARD)
     for k, P in enumerate(polys):
-        C = camera._clip(P, GUARD)
+        C = polygons.clip_to_view(P, *frame, camera.near, slopes)
         if C is not None:
             out.append((k, C))
     return out
@@ -191,7 +192,7 @@ def _fan(k: int) -> np.ndarray:
 
 
 def _view_depth(camera, P) -> np.ndarray:
-    E, n, _, _ = camera._frame
+    E, n, _, _ = camera.frame
     return (P - E) @ n
 
 

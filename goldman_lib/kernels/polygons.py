@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["flatness", "patch_flatness", "signed_distances", "sign_changes", "elevate", "ear_clip", "clip_half_space"]
+__all__ = ["flatness", "patch_flatness", "signed_distances", "sign_changes", "elevate", "ear_clip", "clip_half_space", "clip_to_view"]
 
 
 def flatness(P: np.ndarray, even: bool = True) -> np.ndarray:
@@ -155,3 +155,26 @@ def clip_half_space(P: np.ndarray, s: np.ndarray):
     if len(out) < 3:
         return None
     return np.array(out)
+
+
+def clip_to_view(P: np.ndarray, eye, view, right, up, near: float, slopes=None):
+    """The part of polygon P ``(k, 3)`` at or beyond the near plane of a camera (distance ``near``
+    along the unit ``view`` direction from ``eye``), and, if ``slopes = (tx, ty)`` is given, inside the
+    frustum ``|x| <= tx w``, ``|y| <= ty w`` (x, y along ``right``, ``up``; w along ``view``): repeated
+    :func:`clip_half_space` (Goldman §22.1).  None if nothing is left.
+    :meth:`goldman_lib.camera.Camera.clip_polygon` checks its input and calls this;
+    :mod:`goldman_lib.hidden_surfaces` calls it on polygons it has checked.
+
+    >>> E, n, r, u = np.zeros(3), np.array([0.0, 1, 0]), np.array([1.0, 0, 0]), np.array([0.0, 0, 1])
+    >>> clip_to_view(np.array([[0.0, -1, 0], [1, 3, 0], [-1, 3, 0]]), E, n, r, u, 1.0).tolist()
+    [[0.5, 1.0, 0.0], [1.0, 3.0, 0.0], [-1.0, 3.0, 0.0], [-0.5, 1.0, 0.0]]
+    """
+    C = clip_half_space(P, (P - eye) @ view - near)
+    if C is None or slopes is None:
+        return C
+    tx, ty = slopes
+    for normal in (tx * view - right, tx * view + right, ty * view - up, ty * view + up):
+        C = clip_half_space(C, (C - eye) @ normal)
+        if C is None:
+            return None
+    return C

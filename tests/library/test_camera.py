@@ -158,3 +158,41 @@ def test_the_ray_finder_finds_rays_built_from_a_pixel_grid():
 def test_no_view_builds_its_own_rays():
     offenders = [hit for path in sorted(VIEWS.rglob("*.py")) for hit in _builds_rays(path.read_text(), path.name)]
     assert not offenders, f"views that build rays from pixel grids instead of asking goldman_lib.camera: {offenders}"
+
+
+def test_the_guard_band_clip_keeps_every_vertex_within_guard_image_sizes():
+    """Camera.clip_polygon(guard=g) is kernels.polygons.clip_to_view on the camera's public frame
+    and frustum slopes, and what it keeps projects within g image sizes of the image's centre."""
+    from goldman_lib.kernels.polygons import clip_to_view
+
+    cam = Camera(eye=(0.0, -6.0, 1.0), target=(0.0, 0.0, 0.0), width=40, height=30, fov=50)
+    rng = np.random.default_rng(7)
+    kept = 0
+    for _ in range(50):
+        P = rng.normal(scale=30.0, size=(3, 3))
+        for g in (1.0, 3.0):
+            C = cam.clip_polygon(P, guard=g)
+            D = clip_to_view(P, *cam.frame, cam.near, cam.frustum_slopes(g))
+            assert (C is None) == (D is None)
+            if C is None:
+                continue
+            kept += 1
+            np.testing.assert_array_equal(C, D)
+            S = cam.project(C)
+            assert np.all(np.abs(S[:, 0] - 20.0) <= g * 20.0 * (1 + 1e-9))
+            assert np.all(np.abs(S[:, 1] - 15.0) <= g * 15.0 * (1 + 1e-9))
+    assert kept > 10
+
+
+def test_the_frame_is_orthonormal_and_looks_at_the_target():
+    cam = Camera(eye=(1.0, -4.0, 2.0), target=(0.0, 1.0, 0.5), up=(0.0, 0.0, 1.0))
+    E, view, right, up = cam.frame
+    M = np.array([view, right, up])
+    np.testing.assert_allclose(M @ M.T, np.eye(3), atol=1e-15)
+    np.testing.assert_allclose(view, (np.array([-1.0, 5.0, -1.5]) / np.linalg.norm([-1.0, 5.0, -1.5])), atol=1e-15)
+    assert up[2] > 0
+
+
+def test_frustum_slopes_refuses_a_guard_below_one():
+    with pytest.raises(ValueError, match="guard must be in"):
+        Camera(eye=(0, -5, 0), target=(0, 0, 0)).frustum_slopes(0.5)
