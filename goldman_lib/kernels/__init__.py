@@ -68,7 +68,12 @@ The map: each kernel, what it computes, the book section it serves, and who call
 
 :mod:`~goldman_lib.kernels.relaxation` -- Jacobi and Gauss-Seidel sweeps for ``x = (c + w G x) / d``
     ``gather``, ``jacobi_update``, ``gauss_seidel_sweep``: ``fixed_point.jacobi``,
-        ``fixed_point.gauss_seidel`` (§7.3.2), ``radiosity.jacobi``, ``radiosity.gauss_seidel`` (§23.5).
+        ``fixed_point.gauss_seidel`` (§7.3.2, ``A x = b``), ``radiosity.jacobi``, ``radiosity.gauss_seidel``
+        (§23.5, ``B = E + rho F B``); one keyword spelling for all of them (``tol``, ``max_iter``,
+        ``full_output``).
+    ``Convergence``: the one record of an iteration (``full_output=True``), returned by every solver of
+        ``fixed_point`` (also Newton and fixed-point iteration; it is ``fixed_point.Convergence``) and of
+        ``radiosity`` (also ``progressive_refinement``, with its ``shooters``).
 
 :mod:`~goldman_lib.kernels.meshes` -- triangle meshes
     ``rasterise`` (§21.2-21.3, §22.2): the one scan conversion: ``shading.rasterise_triangles`` (and
