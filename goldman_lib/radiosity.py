@@ -52,7 +52,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from goldman_lib.kernels import relaxation
+from goldman_lib.kernels import frames, relaxation
 from goldman_lib.kernels.relaxation import Convergence
 from goldman_lib.validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points,
                                     as_tolerance, check_finite, within_budget)
@@ -342,15 +342,6 @@ def hemicube_delta_form_factors(resolution=16) -> np.ndarray:
     return dA * d[:, 2] / (np.pi * d2 * d2)
 
 
-def _frames(normals):
-    """Two unit tangents completing each normal to a right-handed frame."""
-    helper = np.where(np.abs(normals[:, :1]) < 0.9, np.array([[1.0, 0, 0]]), np.array([[0.0, 1, 0]]))
-    t1 = np.cross(normals, helper)
-    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
-    t2 = np.cross(normals, t1)
-    return t1, t2
-
-
 def _surfaces(patches: Patches):
     """The rectangles the patches tile: (origin, edge_u, edge_v, nu, nv, start) arrays, one row per
     grid of :attr:`Patches.grids` (a lone patch is a 1 x 1 grid)."""
@@ -427,7 +418,7 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1, progr
     dual_u = np.cross(sv_, cross) / c2[:, None]             # (p - o) . dual_u = s in [0, 1]
     dual_v = np.cross(cross, su_) / c2[:, None]             # (p - o) . dual_v = t in [0, 1]
     normals = patches.normals
-    t1, t2 = _frames(normals)
+    t1, t2 = frames.frame(normals)[:, :2].transpose(1, 0, 2)     # unit tangents, (t1, t2, normal) right-handed
     grid = (np.arange(subdivisions) + 0.5) / subdivisions
     ga, gb = [g.ravel() for g in np.meshgrid(grid, grid, indexing="ij")]
     # the eyes: s^2 points on every patch, each with its patch's frame
@@ -439,7 +430,7 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1, progr
     # send whole rows of cell rays onto patch boundaries (aliasing)
     turn = np.radians(137.50776405 * np.arange(n))[:, None]
     t1, t2 = np.cos(turn) * t1 + np.sin(turn) * t2, -np.sin(turn) * t1 + np.cos(turn) * t2
-    frames = np.stack([t1, t2, normals], axis=1)            # (n, 3, 3) rows: local x, y, z
+    axes = np.stack([t1, t2, normals], axis=1)            # (n, 3, 3) rows: local x, y, z
     scale = float(np.abs(patches.origin).max() + np.linalg.norm(patches.edge_u, axis=1).max()
                   + np.linalg.norm(patches.edge_v, axis=1).max())
     eps = 1e-9 * max(scale, 1e-300)
@@ -450,7 +441,7 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1, progr
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for lo in range(0, len(eyes), chunk):
             x, who = eyes[lo:lo + chunk], owner[lo:lo + chunk]
-            D = np.einsum("cj,ejk->eck", directions, frames[who])        # (e, R, 3) world directions
+            D = np.einsum("cj,ejk->eck", directions, axes[who])        # (e, R, 3) world directions
             Dn, Du, Dv = D @ cross.T, D @ dual_u.T, D @ dual_v.T          # (e, R, m)
             wn = (wn0[None, :] - x @ cross.T)[:, None, :]                 # (e, 1, m): (o - x) . cross
             t = wn / Dn

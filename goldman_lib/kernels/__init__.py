@@ -60,6 +60,10 @@ The map: each kernel, what it computes, the book section it serves, and who call
         (unnormalised), ``solid_modeling``'s face normals (unit), ``shading.unit_newell_normal`` (unit).
     ``slerp`` (§11.6, §21.4.4): ``vector_geometry.slerp`` (checked) and, per pixel, Phong shading with
         slerp (``shading._slerp_pair``).
+    ``frame`` (§19, §23.3): orthonormal frames ``u, v, w`` completing unit vectors, ``u`` along an optional
+        ``major`` (else the coordinate axis of least ``|w_i|``) projected off ``w``, vectorised over rows:
+        ``simple_surfaces``' planes, polygons, cylinders, cones and quadrics (their local axes) and
+        ``radiosity.hemicube_form_factors`` (each patch's hemi-cube axes).
 
 :mod:`~goldman_lib.kernels.iteration` -- iterated function systems
     ``apply_affine_maps`` (§6.1): ``ifs.deterministic``, ``ifs.map_images``.

@@ -212,6 +212,28 @@ def test_newell_is_the_sum_of_cross_products_and_twice_the_area():
 
 # -- iteration --------------------------------------------------------------------------------------
 
+def test_frame_is_orthonormal_right_handed_and_follows_major():
+    rng = np.random.default_rng(3)
+    w = rng.normal(size=(200, 3))
+    w /= np.linalg.norm(w, axis=1, keepdims=True)
+    major = rng.normal(size=(200, 3))
+    for M in (frames.frame(w), frames.frame(w, major)):
+        assert M.shape == (200, 3, 3)
+        np.testing.assert_allclose(M @ M.transpose(0, 2, 1), np.broadcast_to(np.eye(3), M.shape), atol=1e-14)
+        np.testing.assert_allclose(np.linalg.det(M), 1.0, atol=1e-14)            # right-handed: u x v = w
+        assert np.array_equal(M[:, 2], w)
+    # u lies in the plane of major and w, on major's side: u . major = |major - (major . w) w| > 0
+    M = frames.frame(w, major)
+    proj = major - np.sum(major * w, axis=1, keepdims=True) * w
+    np.testing.assert_allclose(np.sum(M[:, 0] * major, axis=1), np.linalg.norm(proj, axis=1), rtol=1e-12)
+    # without major (or with one along w): the axis of least |w_i| projected off w
+    assert frames.frame(np.array([0.0, 0.6, 0.8])).round(12).tolist() == [[1, 0, 0], [0, 0.8, -0.6], [0, 0.6, 0.8]]
+    assert frames.frame(np.array([0.0, 0.0, 1.0]), np.array([0.0, 0.0, 3.0])).tolist() == \
+        [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    # a stack and its rows one by one agree to the last bit
+    assert all(np.array_equal(frames.frame(w[k], major[k]), frames.frame(w, major)[k]) for k in range(0, 200, 17))
+
+
 def test_apply_affine_maps_is_x_l_plus_t():
     pts = RNG.normal(size=(50, 2))
     L, t = RNG.normal(size=(3, 2, 2)), RNG.normal(size=(3, 2))
