@@ -79,7 +79,13 @@ The map: each kernel, what it computes, the book section it serves, and who call
         ``fixed_point`` (also Newton and fixed-point iteration; it is ``fixed_point.Convergence``) and of
         ``radiosity`` (also ``progressive_refinement``, with its ``shooters``).
 
-:mod:`~goldman_lib.kernels.meshes` -- triangle meshes
+:mod:`~goldman_lib.kernels.meshes` -- polygon meshes and triangle meshes
+    ``CUBE_VERTICES``, ``CUBE_FACES``, ``TETRAHEDRON_VERTICES``, ``TETRAHEDRON_FACES`` (§20.3, §30.4): the
+        one cube and tetrahedron: ``subdivision_surfaces.cube``, ``tetrahedron`` and ``solid_modeling.cube``,
+        ``tetrahedron`` (scaled).
+    ``flatten``, ``edge_table``, ``fan_triangles`` (§20.3, §30.4): faces as flat corners, their distinct
+        edges, their fans: ``subdivision_surfaces.Mesh`` (``edges``, ``edge_faces``, ``triangulate``) and
+        ``solid_modeling.BRep`` (``edges``, ``triangles``); ``BRep.from_mesh`` and ``Mesh.from_brep`` convert.
     ``rasterise`` (§21.2-21.3, §22.2): the one scan conversion: ``shading.rasterise_triangles`` (and
         through it ``shading.render``, ``gouraud_triangle``), ``hidden_surfaces``' painter's coverage.
 
