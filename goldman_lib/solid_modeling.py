@@ -252,12 +252,13 @@ class BRep:
         orientation), dangling vertices, non-planar faces (beyond ``tol``), and counts that break the
         Euler-Poincare formula (an odd ``V - E + F - (L - F)`` or a negative genus)."""
         out = []
+        twice = {(min(a, b), max(a, b)) for a, b in meshes.same_direction_edges(*self._flat_loops(), self.V).tolist()}
         for (i, j), uses in sorted(self._edges.items()):
             faces = ", ".join(f"face {f}" for f, _, _ in uses)
             if len(uses) != 2:
                 out.append(f"edge ({i}, {j}) lies in {len(uses)} face{'s' if len(uses) != 1 else ''} ({faces}), "
                            f"not 2: the boundary has {'a gap' if len(uses) < 2 else 'a fin (a non-manifold edge)'} there")
-            elif uses[0][1:] == uses[1][1:]:
+            elif (i, j) in twice:
                 out.append(f"edge ({i}, {j}) runs from {uses[0][1]} to {uses[0][2]} in both {faces}: the faces must "
                            "traverse a shared edge in opposite directions (one of them is oriented inside out)")
         used = set(v for f in range(self.F) for loop in self.loops(f) for v in loop)

@@ -131,12 +131,10 @@ class Mesh:
             raise ValueError(f"faces must form a manifold mesh: every edge belongs to at most two faces; edge "
                              f"{tuple(self.edges[e].tolist())} belongs to {int(counts[e])}")
         if check_orientation:
-            directed = corners.astype(np.int64) * nv + corners[nxt]
-            uniq, first, cnt = np.unique(directed, return_index=True, return_counts=True)
-            if (cnt > 1).any():
-                k = int(np.flatnonzero(cnt > 1)[0])
-                a, b = divmod(int(uniq[k]), nv)
-                faces_with = np.unique(self._face_of_corner[directed == uniq[k]]).tolist()
+            twice = meshes.same_direction_edges(corners, sizes, nv, nxt)
+            if len(twice):
+                a, b = (int(v) for v in twice[0])
+                faces_with = np.unique(self._face_of_corner[(corners == a) & (corners[nxt] == b)]).tolist()
                 raise ValueError(f"faces must be consistently oriented; faces {faces_with[0]} and {faces_with[1]} "
                                  f"both run along edge {a}->{b} in the same direction")
 

@@ -15,8 +15,9 @@ convert.  What they share lives here, once:
   seen from outside (read-only): ``subdivision_surfaces.cube``, ``tetrahedron`` and
   ``solid_modeling.cube``, ``tetrahedron``, scaled;
 - :func:`flatten`: loops to ``(corners, sizes)``; :func:`edge_table`: the distinct edges and the
-  edge of each corner; :func:`fan_triangles`: every face fanned from its first vertex:
-  ``Mesh.edges``/``triangulate`` and ``BRep.edges``/``triangles``.
+  edge of each corner; :func:`same_direction_edges`: the orientation test (edges two loops run the
+  same way); :func:`fan_triangles`: every face fanned from its first vertex:
+  ``Mesh.edges``/``triangulate``/its orientation check and ``BRep.edges``/``triangles``/``problems``.
 
 :func:`rasterise` is the one scan conversion of chapters 21 and 22: ``shading.rasterise_triangles``
 (and through it Gouraud and Phong shading, ``shading.render``) and ``hidden_surfaces``' painter's
@@ -28,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["rasterise", "BATCH", "CUBE_VERTICES", "CUBE_FACES", "TETRAHEDRON_VERTICES", "TETRAHEDRON_FACES",
-           "flatten", "edge_table", "fan_triangles"]
+           "flatten", "edge_table", "same_direction_edges", "fan_triangles"]
 
 
 def _frozen(a: np.ndarray) -> np.ndarray:
@@ -84,6 +85,19 @@ def edge_table(corners: np.ndarray, sizes: np.ndarray, n_vertices: int, nxt=None
     keys = lo.astype(np.int64) * n_vertices + hi
     uniq, inverse = np.unique(keys, return_inverse=True)
     return np.stack(np.divmod(uniq, n_vertices), axis=1), inverse.reshape(-1)
+
+
+def same_direction_edges(corners: np.ndarray, sizes: np.ndarray, n_vertices: int, nxt=None) -> np.ndarray:
+    """The directed edges ``a -> b`` that more than one loop corner runs along ``(R, 2)``, sorted: where
+    loops of a consistently oriented surface meet, they run a shared edge in opposite directions,
+    so each row is a place where the orientation breaks (Goldman §20.3).  nxt as for :func:`edge_table`.
+
+    >>> same_direction_edges(*flatten([[0, 1, 2], [0, 1, 3], [1, 0, 4]]), 5).tolist()   # the first two run 0 -> 1
+    [[0, 1]]
+    """
+    directed = corners.astype(np.int64) * n_vertices + corners[_next_corner(sizes) if nxt is None else nxt]
+    uniq, count = np.unique(directed, return_counts=True)
+    return np.stack(np.divmod(uniq[count > 1], n_vertices), axis=1)
 
 
 def fan_triangles(corners: np.ndarray, sizes: np.ndarray) -> np.ndarray:
