@@ -52,6 +52,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from goldman_lib.fixed_point import ConvergenceError
 from goldman_lib.kernels import frames, relaxation
 from goldman_lib.kernels.relaxation import Convergence
 from goldman_lib.validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points,
@@ -662,14 +663,20 @@ def residual(F, rho, E, B) -> float:
 
 
 def _finish(iterates, residuals, tol, full_output, method, shooters=None):
-    """B, or ``(B, Convergence)`` with ``full_output`` (its history every iterate, B^(0) = E first)."""
+    """B, or ``(B, Convergence)`` with ``full_output`` (its history every iterate, B^(0) = E first);
+    as ``fixed_point``'s solvers, a ConvergenceError carrying the report when B is not converged and
+    the report was not asked for."""
     B = iterates[-1]
-    if not full_output:
-        return B
     converged = bool(residuals[-1] <= tol)
     reason = "converged" if converged else "max iterations"
     message = "" if converged else (f"the residual {residuals[-1]:.3g} is above tol = {tol:g} after "
-                                    f"{len(residuals) - 1} iterations")
+                                    f"{len(residuals) - 1} iterations (max_iter)")
+    if not full_output:
+        if not converged:
+            rep = Convergence(B, False, reason, len(residuals) - 1, np.array(iterates), np.array(residuals), method,
+                              message, ["history holds the last iterate only (full_output=True keeps every one)"])
+            raise ConvergenceError(f"{method} did not converge: {message}", rep)
+        return B
     return B, Convergence(B, converged, reason, len(residuals) - 1, np.array(iterates), np.array(residuals), method,
                           message, shooters=None if shooters is None else np.array(shooters, dtype=int))
 
@@ -683,8 +690,9 @@ def jacobi(F, rho, E, *, tol=1e-6, max_iter=None, full_output=False):
 
     so ``B^(k)`` holds the light after ``k`` bounces.  Stops when the residual ``max |E + rho F B - B|``
     is ``<= tol`` or after ``max_iter`` iterations, 0 or more (default and bound: the work budget,
-    ``100 MAX_ITEMS`` multiply-adds by default, and with ``full_output`` the memory its iterates take);
-    reaching ``max_iter`` first is not an error: B is returned as it is (the report says so).
+    ``100 MAX_ITEMS`` multiply-adds by default, and with ``full_output`` the memory its iterates take).
+    As ``fixed_point.jacobi``: reaching ``max_iter`` first raises ``fixed_point.ConvergenceError`` (a
+    ValueError carrying the report), unless ``full_output`` asks for the report, which then says so.
 
     Before iterating, a system without a solution the iteration reaches (spectral radius of
     ``rho F`` >= 1: ``rho = 1`` on a closed box) is refused; while iterating, divergence, a stall
@@ -900,9 +908,7 @@ def progressive_refinement(F, rho, E, area, *, tol=1e-6, max_iter=None, full_out
         if full_output:
             iterates.append(B.copy())
         watch(len(residuals) - 1, value, residuals)
-    if not full_output:
-        return B
-    iterates[-1] = B
+    iterates[-1 if full_output else 0:] = [B]
     return _finish(iterates, residuals, tol, full_output, "progressive refinement", shooters)
 
 

@@ -177,7 +177,10 @@ def test_edge_cases_and_budgets():
     assert one.tolist() == [2.0]
     B, h = rd.jacobi(F, rho, E, tol=1e-14, max_iter=2, full_output=True)
     assert h.iterations == 2 and not h.converged and h.reason == "max iterations" and "above tol" in h.message
-    assert np.array_equal(rd.jacobi(F, rho, E, tol=1e-14, max_iter=2), B)    # no error without the report
+    for solver, args in ((rd.jacobi, ()), (rd.gauss_seidel, ()), (rd.progressive_refinement, (area,))):
+        with pytest.raises(fp.ConvergenceError, match="did not converge.*max_iter") as info:   # as fixed_point's
+            solver(F, rho, E, *args, tol=1e-14, max_iter=2)
+        assert info.value.report.iterations == 2 and not info.value.report.converged
     with pytest.raises(ValueError, match="max_iter"):
         rd.jacobi(F, rho, E, max_iter=10**9)
     for solver in (rd.jacobi, rd.gauss_seidel):               # one spelling: the old keywords are gone
