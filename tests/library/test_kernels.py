@@ -301,6 +301,35 @@ def test_rasterise_covers_the_pixel_centres_inside_and_keeps_the_nearest():
     assert np.all(tri[~(in_first | in_second)] == -1) and np.all(depth[tri < 0] == 1.0)
 
 
+def test_mesh_tables_edges_fans_and_orientation_against_plain_python():
+    rng = np.random.default_rng(5)
+    for _ in range(30):
+        n = int(rng.integers(5, 12))
+        loops = [rng.choice(n, size=int(rng.integers(3, 6)), replace=False).tolist() for _ in range(int(rng.integers(1, 8)))]
+        corners, sizes = meshes.flatten(loops)
+        assert corners.tolist() == [v for f in loops for v in f] and sizes.tolist() == [len(f) for f in loops]
+        directed = [(f[k], f[(k + 1) % len(f)]) for f in loops for k in range(len(f))]
+        edges, of_corner = meshes.edge_table(corners, sizes, n)
+        assert [tuple(e) for e in edges.tolist()] == sorted({(min(a, b), max(a, b)) for a, b in directed})
+        assert [tuple(edges[e]) for e in of_corner] == [(min(a, b), max(a, b)) for a, b in directed]
+        twice = sorted({d for d in directed if directed.count(d) > 1})
+        assert [tuple(r) for r in meshes.same_direction_edges(corners, sizes, n).tolist()] == twice
+        assert meshes.fan_triangles(corners, sizes).tolist() == [[f[0], f[k], f[k + 1]] for f in loops
+                                                                 for k in range(1, len(f) - 1)]
+    # the polyhedra: unit-free corners of [-1, 1]^3, every edge of the cube of length 2 and run once each
+    # way, the tetrahedron's of length 2 sqrt 2; outward: the divergence theorem's volume is positive
+    for V, F, volume, length in ((meshes.CUBE_VERTICES, meshes.CUBE_FACES, 8.0, 2.0),
+                                 (meshes.TETRAHEDRON_VERTICES, meshes.TETRAHEDRON_FACES, 8 / 3, 2 * math.sqrt(2))):
+        assert not V.flags.writeable and not F.flags.writeable and np.all(np.abs(V) == 1)
+        corners, sizes = meshes.flatten(F)
+        edges, _ = meshes.edge_table(corners, sizes, len(V))
+        assert np.allclose(np.linalg.norm(V[edges[:, 0]] - V[edges[:, 1]], axis=1), length)
+        assert len(meshes.same_direction_edges(corners, sizes, len(V))) == 0
+        T = V[meshes.fan_triangles(corners, sizes)]
+        assert np.einsum("ij,ij->i", T[:, 0], np.cross(T[:, 1], T[:, 2])).sum() / 6 == pytest.approx(volume)
+    assert meshes.CUBE_VERTICES[5].tolist() == [1, -1, 1]            # vertex k: the bits of k, x first
+
+
 def test_split_xy_is_split_of_each_coordinate():
     for k in (2, 3, 4, 6):
         P = RNG.normal(size=(k, 2))
