@@ -15,6 +15,12 @@ One idea runs through the chapter: to solve ``x = F(x)``, iterate ``x_{n+1} = F(
 
 Every iteration returns a :class:`Convergence` report (iterates, residuals, why it stopped) when
 asked with ``full_output=True``; a failure raises :class:`ConvergenceError` carrying the report.
+The record is the library's one iteration record (its home is :mod:`goldman_lib.kernels.relaxation`):
+``radiosity.jacobi``, ``radiosity.gauss_seidel`` and ``radiosity.progressive_refinement`` return it
+too, with the same keywords ``tol``, ``max_iter`` and ``full_output``.  Same method, another system:
+this module's :func:`jacobi` and :func:`gauss_seidel` solve ``A x = b`` (§7.3.2), radiosity's
+solve the radiosity equation ``B = E + rho F B`` (§23.5); both run the sweeps of
+:mod:`goldman_lib.kernels.relaxation`.
 
 >>> round(newton(lambda x: x * x - 2, lambda x: 2 * x, 1.0), 15)
 1.414213562373095
@@ -26,43 +32,19 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from . import affine
 from .kernels import relaxation
+from .kernels.relaxation import Convergence
 from .validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points, as_tolerance,
                          check_finite, finite_result, within_budget)
 
 __all__ = ["MAX_PAIRS", "Convergence", "ConvergenceError", "fixed_point_iteration", "newton", "newton_steps", "jacobi",
            "gauss_seidel", "is_diagonally_dominant", "jacobi_factor", "contraction_factor", "hausdorff_distance",
            "directed_hausdorff", "fractal_theorem", "FractalTheorem"]
-
-
-@dataclass
-class Convergence:
-    """What an iteration did (Goldman §7.2-7.3): ``x`` the last iterate, ``converged``,
-    ``reason`` (``"converged"``, ``"zero derivative"``, ``"cycle"``, ``"diverged"``,
-    ``"max iterations"``), ``iterations`` (steps taken), ``history`` (every iterate, the start
-    first) and ``residuals`` (``|f(x_n)|`` for root finding, ``||b - A x_n||_inf`` for a linear
-    system, ``|F(x_n) - x_n|`` for a fixed point), ``method`` and ``message``.
-    """
-
-    x: object
-    converged: bool
-    reason: str
-    iterations: int
-    history: np.ndarray
-    residuals: np.ndarray
-    method: str = ""
-    message: str = ""
-    notes: list = field(default_factory=list)
-
-    def __str__(self) -> str:
-        last = self.residuals[-1] if len(self.residuals) else float("nan")
-        return (f"{self.method}: {self.reason} after {self.iterations} iterations "
-                f"(last residual {last:.3g}){'; ' + self.message if self.message else ''}")
 
 
 class ConvergenceError(ArithmeticError, ValueError):
@@ -362,7 +344,8 @@ def _relax(A, b, x0, tol, max_iter, full_output, method):
 
 
 def jacobi(A, b, x0=None, *, tol: float = 1e-15, max_iter: int = 10_000, full_output: bool = False):
-    """Solve ``A x = b`` by Jacobi relaxation (Goldman §7.3.2).
+    """Solve the linear system ``A x = b`` by Jacobi relaxation (Goldman §7.3.2); for the radiosity
+    equation ``B = E + rho F B`` see ``radiosity.jacobi`` (same keywords, same record).
 
     Write ``A = D + R`` (diagonal and the rest); ``x`` solves the system iff it is a fixed point
     of ``x -> D^-1 (b - R x)``, which Jacobi iterates, updating all components at once.  It
@@ -384,7 +367,8 @@ def jacobi(A, b, x0=None, *, tol: float = 1e-15, max_iter: int = 10_000, full_ou
 
 
 def gauss_seidel(A, b, x0=None, *, tol: float = 1e-15, max_iter: int = 10_000, full_output: bool = False):
-    """Solve ``A x = b`` by Gauss-Seidel relaxation (Goldman §7.3.2).
+    """Solve the linear system ``A x = b`` by Gauss-Seidel relaxation (Goldman §7.3.2); for the
+    radiosity equation see ``radiosity.gauss_seidel`` (same keywords, same record).
 
     Like :func:`jacobi`, but each new component ``x_i = (b_i - sum_{j != i} A_ij x_j) / A_ii`` is
     used at once for the components after it, which usually halves the iterations.  Same

@@ -23,8 +23,11 @@ This module gives:
   and the nearest one kept in each cell (an item buffer, vectorised over cells and patches);
 * the solvers of §23.5: gathering by :func:`jacobi` and :func:`gauss_seidel`, shooting by
   :func:`progressive_refinement`, each stopping when the residual ``max |E + rho F B - B|`` is at most
-  ``tol`` and, on request (``return_history=True``), returning a :class:`SolverHistory` with the
-  residual and the radiosities after every iteration;
+  ``tol`` (or after ``max_iter`` iterations) and, on request (``full_output=True``), returning
+  ``(B, report)``: the library's one iteration record, :class:`~goldman_lib.fixed_point.Convergence`
+  (defined in :mod:`goldman_lib.kernels.relaxation`), with the residual and the radiosities after
+  every iteration.  ``fixed_point.jacobi`` and ``fixed_point.gauss_seidel`` are the same methods for
+  ``A x = b`` (§7.3.2), with the same keywords and record; both run the sweeps of the kernels;
 * a Cornell box (:func:`cornell_box`) with several hundred patches and a square light on its
   ceiling, and the display step of §23.4: radiosities averaged at the vertices for smooth (Gouraud)
   display (:func:`vertex_radiosities`) and mapped to colours (:func:`to_colours`).
@@ -49,11 +52,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from goldman_lib.kernels import relaxation
+from goldman_lib.fixed_point import ConvergenceError
+from goldman_lib.kernels import frames, relaxation
+from goldman_lib.kernels.relaxation import Convergence
 from goldman_lib.validation import (MAX_ITEMS, MAX_ITERATIONS, as_float, as_float_array, as_int, as_points,
                                     as_tolerance, check_finite, within_budget)
 
-__all__ = ["Patches", "SolverHistory", "form_factor_parallel_rectangles", "form_factor_perpendicular_rectangles",
+__all__ = ["Patches", "form_factor_parallel_rectangles", "form_factor_perpendicular_rectangles",
            "form_factor_point_polygon", "hemicube_cells", "hemicube_delta_form_factors", "hemicube_form_factors",
            "reciprocity_error", "enforce_reciprocity", "radiosity_matrix", "residual", "jacobi", "gauss_seidel", "progressive_refinement",
            "ShootingOperators", "shooting_operators",
@@ -173,25 +178,6 @@ class Patches:
     def with_emission(self, emission) -> "Patches":
         """The same patches with another emission ``(n, 3)``."""
         return Patches(self.origin, self.edge_u, self.edge_v, self.reflectance, emission, self.labels, self.grids)
-
-
-@dataclass(frozen=True, eq=False)
-class SolverHistory:
-    """What a solver did (Goldman §23.5): ``radiosities`` the final ``B``; ``residuals[k]`` the
-    residual ``max |E + rho F B_k - B_k|`` after ``k`` iterations (``k = 0`` is the start ``B = E``);
-    ``iterates[k]`` ``B_k``; ``converged`` whether the last residual is ``<= tol``; ``shooters``
-    (progressive refinement) the patch shot at each step."""
-
-    radiosities: np.ndarray
-    residuals: np.ndarray
-    iterates: np.ndarray
-    converged: bool
-    shooters: np.ndarray | None = None
-
-    @property
-    def iterations(self) -> int:
-        """How many iterations (sweeps or shots) were made."""
-        return len(self.residuals) - 1
 
 
 # -- analytic form factors ---------------------------------------------------------------------------
@@ -357,15 +343,6 @@ def hemicube_delta_form_factors(resolution=16) -> np.ndarray:
     return dA * d[:, 2] / (np.pi * d2 * d2)
 
 
-def _frames(normals):
-    """Two unit tangents completing each normal to a right-handed frame."""
-    helper = np.where(np.abs(normals[:, :1]) < 0.9, np.array([[1.0, 0, 0]]), np.array([[0.0, 1, 0]]))
-    t1 = np.cross(normals, helper)
-    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
-    t2 = np.cross(normals, t1)
-    return t1, t2
-
-
 def _surfaces(patches: Patches):
     """The rectangles the patches tile: (origin, edge_u, edge_v, nu, nv, start) arrays, one row per
     grid of :attr:`Patches.grids` (a lone patch is a 1 x 1 grid)."""
@@ -442,7 +419,7 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1, progr
     dual_u = np.cross(sv_, cross) / c2[:, None]             # (p - o) . dual_u = s in [0, 1]
     dual_v = np.cross(cross, su_) / c2[:, None]             # (p - o) . dual_v = t in [0, 1]
     normals = patches.normals
-    t1, t2 = _frames(normals)
+    t1, t2 = frames.frame(normals)[:, :2].transpose(1, 0, 2)     # unit tangents, (t1, t2, normal) right-handed
     grid = (np.arange(subdivisions) + 0.5) / subdivisions
     ga, gb = [g.ravel() for g in np.meshgrid(grid, grid, indexing="ij")]
     # the eyes: s^2 points on every patch, each with its patch's frame
@@ -454,7 +431,7 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1, progr
     # send whole rows of cell rays onto patch boundaries (aliasing)
     turn = np.radians(137.50776405 * np.arange(n))[:, None]
     t1, t2 = np.cos(turn) * t1 + np.sin(turn) * t2, -np.sin(turn) * t1 + np.cos(turn) * t2
-    frames = np.stack([t1, t2, normals], axis=1)            # (n, 3, 3) rows: local x, y, z
+    axes = np.stack([t1, t2, normals], axis=1)            # (n, 3, 3) rows: local x, y, z
     scale = float(np.abs(patches.origin).max() + np.linalg.norm(patches.edge_u, axis=1).max()
                   + np.linalg.norm(patches.edge_v, axis=1).max())
     eps = 1e-9 * max(scale, 1e-300)
@@ -465,7 +442,7 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1, progr
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for lo in range(0, len(eyes), chunk):
             x, who = eyes[lo:lo + chunk], owner[lo:lo + chunk]
-            D = np.einsum("cj,ejk->eck", directions, frames[who])        # (e, R, 3) world directions
+            D = np.einsum("cj,ejk->eck", directions, axes[who])        # (e, R, 3) world directions
             Dn, Du, Dv = D @ cross.T, D @ dual_u.T, D @ dual_v.T          # (e, R, m)
             wn = (wn0[None, :] - x @ cross.T)[:, None, :]                 # (e, 1, m): (o - x) . cross
             t = wn / Dn
@@ -570,7 +547,7 @@ def _check_system(F, rho, E):
     return F, np.broadcast_to(rho, shape).astype(float), np.broadcast_to(E, shape).astype(float)
 
 
-def _check_iterations(value, name, n, channels, keep):
+def _check_iterations(value, n, channels, keep, name="max_iter"):
     if value is None:                       # as many as the budget allows
         return MAX_ITERATIONS if not keep else min(MAX_ITERATIONS, MAX_ITEMS // (n * channels) - 1)
     k = as_int(value, name, minimum=0)
@@ -685,23 +662,37 @@ def residual(F, rho, E, B) -> float:
     return float(np.abs(E + rho * (F @ B) - B).max())
 
 
-def _history(iterates, residuals, tol, keep, shooters=None):
+def _finish(iterates, residuals, tol, full_output, method, shooters=None):
+    """B, or ``(B, Convergence)`` with ``full_output`` (its history every iterate, B^(0) = E first);
+    as ``fixed_point``'s solvers, a ConvergenceError carrying the report when B is not converged and
+    the report was not asked for."""
     B = iterates[-1]
-    if not keep:
+    converged = bool(residuals[-1] <= tol)
+    reason = "converged" if converged else "max iterations"
+    message = "" if converged else (f"the residual {residuals[-1]:.3g} is above tol = {tol:g} after "
+                                    f"{len(residuals) - 1} iterations (max_iter)")
+    if not full_output:
+        if not converged:
+            rep = Convergence(B, False, reason, len(residuals) - 1, np.array(iterates), np.array(residuals), method,
+                              message, ["history holds the last iterate only (full_output=True keeps every one)"])
+            raise ConvergenceError(f"{method} did not converge: {message}", rep)
         return B
-    return SolverHistory(B, np.array(residuals), np.array(iterates), bool(residuals[-1] <= tol),
-                         None if shooters is None else np.array(shooters, dtype=int))
+    return B, Convergence(B, converged, reason, len(residuals) - 1, np.array(iterates), np.array(residuals), method,
+                          message, shooters=None if shooters is None else np.array(shooters, dtype=int))
 
 
-def jacobi(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
+def jacobi(F, rho, E, *, tol=1e-6, max_iter=None, full_output=False):
     """Solve the radiosity equation ``B = E + rho F B`` by Jacobi iteration, a gathering method
-    (Goldman §23.5): every patch gathers light from the radiosities of the previous iteration,
+    (Goldman §23.5); for a linear system ``A x = b`` see ``fixed_point.jacobi`` (same keywords, same
+    record).  Every patch gathers light from the radiosities of the previous iteration,
 
         B_i^(k+1) = E_i + rho_i sum_j F_ij B_j^(k),      B^(0) = E,
 
     so ``B^(k)`` holds the light after ``k`` bounces.  Stops when the residual ``max |E + rho F B - B|``
-    is ``<= tol`` or after ``max_iterations`` (default and bound: the work budget, ``100 MAX_ITEMS``
-    multiply-adds by default, and with a history the memory its iterates take).
+    is ``<= tol`` or after ``max_iter`` iterations, 0 or more (default and bound: the work budget,
+    ``100 MAX_ITEMS`` multiply-adds by default, and with ``full_output`` the memory its iterates take).
+    As ``fixed_point.jacobi``: reaching ``max_iter`` first raises ``fixed_point.ConvergenceError`` (a
+    ValueError carrying the report), unless ``full_output`` asks for the report, which then says so.
 
     Before iterating, a system without a solution the iteration reaches (spectral radius of
     ``rho F`` >= 1: ``rho = 1`` on a closed box) is refused; while iterating, divergence, a stall
@@ -711,64 +702,66 @@ def jacobi(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
 
     F: ``(n, n)`` form factors (rows summing to at most 1).  rho: ``(n,)`` or ``(n, c)`` reflectances in
     [0, 1].  E: ``(n,)`` or ``(n, c)`` emission (c colour channels).  Returns the radiosities (the shape
-    of E), or with ``return_history=True`` a :class:`SolverHistory` with the residual and ``B`` after
-    every iteration.
+    of E), or with ``full_output=True`` ``(B, report)``, the report a
+    :class:`~goldman_lib.fixed_point.Convergence` whose ``history`` holds ``B`` after every iteration
+    (``history[0] = E``) and ``residuals`` the residual of each.
 
-    >>> h = jacobi([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 0], tol=1e-10, return_history=True)
-    >>> h.iterates[1].tolist(), h.converged
-    ([1.0, 0.25], True)
+    >>> B, rep = jacobi([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 0], tol=1e-10, full_output=True)
+    >>> rep.history[1].tolist(), rep.converged, rep.method
+    ([1.0, 0.25], True, 'Jacobi')
     """
     F, rho, E = _check_system(F, rho, E)
     tol = as_tolerance(tol)
     channels = 1 if E.ndim == 1 else E.shape[1]
-    kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
-    if max_iterations is None:                 # an iteration is n^2 c work: the default cap counts it
+    kmax = _check_iterations(max_iter, len(F), channels, full_output)
+    if max_iter is None:                       # an iteration is n^2 c work: the default cap counts it
         kmax = min(kmax, max(1, 100 * MAX_ITEMS // (len(F) ** 2 * channels)))
     _check_solvable(F, rho)
     B = E.copy()
     gathered = relaxation.gather(F, B, rho)
     residuals = [float(np.abs(E + gathered - B).max())]
-    watch = _Watch("Jacobi", residuals[0], tol, kmax, max_iterations is None)
+    watch = _Watch("Jacobi", residuals[0], tol, kmax, max_iter is None)
     iterates = [B]
     while residuals[-1] > tol and len(residuals) <= kmax:
         B = relaxation.jacobi_update(E, gathered)
         gathered = relaxation.gather(F, B, rho)
         residuals.append(float(np.abs(E + gathered - B).max()))
-        iterates.append(B) if return_history else iterates.__setitem__(0, B)
+        iterates.append(B) if full_output else iterates.__setitem__(0, B)
         watch(len(residuals) - 1, residuals[-1], residuals)
-    return _history(iterates, residuals, tol, return_history)
+    return _finish(iterates, residuals, tol, full_output, "Jacobi")
 
 
-def gauss_seidel(F, rho, E, tol=1e-6, max_iterations=None, return_history=False):
-    """Solve the radiosity equation by Gauss-Seidel iteration, a gathering method (Goldman §23.5):
-    like :func:`jacobi`, but each patch gathers with the radiosities already updated in this sweep,
+def gauss_seidel(F, rho, E, *, tol=1e-6, max_iter=None, full_output=False):
+    """Solve the radiosity equation ``B = E + rho F B`` by Gauss-Seidel iteration, a gathering method
+    (Goldman §23.5); for a linear system ``A x = b`` see ``fixed_point.gauss_seidel``.  Like
+    :func:`jacobi`, but each patch gathers with the radiosities already updated in this sweep,
 
         B_i^(k+1) = E_i + rho_i (sum_{j<i} F_ij B_j^(k+1) + sum_{j>=i} F_ij B_j^(k)),
 
     so one sweep carries light further and the iteration converges in fewer sweeps.  One iteration is
     one sweep over all patches.  Arguments and result as for :func:`jacobi`.
 
-    >>> h = gauss_seidel([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 1], tol=1e-10, return_history=True)
-    >>> h.iterates[1].tolist()          # Jacobi's first iterate is [1.25, 1.25]
+    >>> B, rep = gauss_seidel([[0, 0.5], [0.5, 0]], [0.5, 0.5], [1, 1], tol=1e-10, full_output=True)
+    >>> rep.history[1].tolist()          # Jacobi's first iterate is [1.25, 1.25]
     [1.25, 1.3125]
     """
     F, rho, E = _check_system(F, rho, E)
     tol = as_tolerance(tol)
     channels = 1 if E.ndim == 1 else E.shape[1]
-    kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
-    if max_iterations is None:                 # a sweep is n steps of Python: the default cap counts steps
+    kmax = _check_iterations(max_iter, len(F), channels, full_output)
+    if max_iter is None:                       # a sweep is n steps of Python: the default cap counts steps
         kmax = min(kmax, max(1, MAX_ITERATIONS // len(F)))
     _check_solvable(F, rho)
     B = E.copy()
     residuals = [float(np.abs(E + rho * (F @ B) - B).max())]
-    watch = _Watch("Gauss-Seidel", residuals[0], tol, kmax, max_iterations is None)
+    watch = _Watch("Gauss-Seidel", residuals[0], tol, kmax, max_iter is None)
     iterates = [B.copy()]
     while residuals[-1] > tol and len(residuals) <= kmax:
         relaxation.gauss_seidel_sweep(F, E, B, rho)
         residuals.append(float(np.abs(E + rho * (F @ B) - B).max()))
-        iterates.append(B.copy()) if return_history else iterates.__setitem__(0, B.copy())
+        iterates.append(B.copy()) if full_output else iterates.__setitem__(0, B.copy())
         watch(len(residuals) - 1, residuals[-1], residuals)
-    return _history(iterates, residuals, tol, return_history)
+    return _finish(iterates, residuals, tol, full_output, "Gauss-Seidel")
 
 
 @dataclass(frozen=True, eq=False)
@@ -844,7 +837,7 @@ def _same(a, b) -> bool:
     return a is b or (a.shape == b.shape and np.array_equal(a, b))
 
 
-def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, return_history=False, operators=None):
+def progressive_refinement(F, rho, E, area, *, tol=1e-6, max_iter=None, full_output=False, operators=None):
     """Solve the radiosity equation by progressive refinement, a shooting method (Goldman §23.5).
 
     Every patch keeps its radiosity ``B`` and its unshot radiosity ``dB`` (both start at ``E``).  Each
@@ -854,10 +847,10 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
     ``dB_j``; then ``dB_i = 0``.  Shooting uses row ``i`` only, so it solves the equation whose form
     factors are ``F_ji = A_i F_ij / A_j``: the same as the gathering methods' when ``F`` is reciprocal
     (:func:`enforce_reciprocity`).  The residual ``max |E + rho F B - B|`` of that equation equals
-    ``max |rho F dB|``.  Stops when it is ``<= tol`` or after ``max_iterations`` shots.
+    ``max |rho F dB|``.  Stops when it is ``<= tol`` or after ``max_iter`` shots.
 
-    area: ``(n,)`` patch areas; the rest as for :func:`jacobi`.  The history's ``shooters`` lists the
-    patch shot at each step.  operators: the :func:`shooting_operators` of these ``F``, ``rho`` (of
+    area: ``(n,)`` patch areas; the rest as for :func:`jacobi` (one iteration is one shot).  With
+    ``full_output`` the report's ``shooters`` lists the patch shot at each step.  operators: the :func:`shooting_operators` of these ``F``, ``rho`` (of
     the shape of ``E``) and ``area``, to reuse when the same scene is solved for several emissions
     (a moving light); made here when not given.
 
@@ -868,7 +861,7 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
     A = _check_area(area, len(F))
     tol = as_tolerance(tol)
     channels = 1 if E.ndim == 1 else E.shape[1]
-    kmax = _check_iterations(max_iterations, "max_iterations", len(F), channels, return_history)
+    kmax = _check_iterations(max_iter, len(F), channels, full_output)
     _check_solvable(F, rho)
     if operators is None and len(F) <= 600 and kmax > 2 * len(F):
         # The residual after a shot follows from the one before in O(n) (ShootingOperators.change),
@@ -891,7 +884,7 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
     power_weight = A if E.ndim == 1 else A[:, None]
     r = rho * (received_by @ dB)                          # the residual vector rho F dB
     residuals = [float(np.abs(r).max())]
-    watch = _Watch("progressive refinement", residuals[0], tol, kmax, max_iterations is None)
+    watch = _Watch("progressive refinement", residuals[0], tol, kmax, max_iter is None)
     iterates = [B.copy()]
     shooters = []
     while residuals[-1] > tol and len(residuals) <= kmax:
@@ -912,13 +905,11 @@ def progressive_refinement(F, rho, E, area, tol=1e-6, max_iterations=None, retur
         else:
             value = float(np.abs(rho * (received_by @ dB)).max())
         residuals.append(value)
-        if return_history:
+        if full_output:
             iterates.append(B.copy())
         watch(len(residuals) - 1, value, residuals)
-    if not return_history:
-        return B
-    return SolverHistory(B, np.array(residuals), np.array(iterates), bool(residuals[-1] <= tol),
-                         np.array(shooters, dtype=int))
+    iterates[-1 if full_output else 0:] = [B]
+    return _finish(iterates, residuals, tol, full_output, "progressive refinement", shooters)
 
 
 # -- the Cornell box ---------------------------------------------------------------------------------

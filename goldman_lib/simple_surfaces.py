@@ -264,12 +264,11 @@ def _unit_vector(v, name: str) -> np.ndarray:
 
 def _frame(w, major=None) -> np.ndarray:
     """Rows ``u, v, w``: a right-handed orthonormal frame whose last axis is the unit vector ``w``;
-    ``u`` along ``major`` projected off ``w`` (or a coordinate axis far from ``w``)."""
-    if major is None or abs(float(np.dot(major, w))) > 1 - 1e-9:
-        major = np.eye(3)[int(np.argmin(np.abs(w)))]
-    u = major - np.dot(major, w) * w
-    u = u / np.linalg.norm(u)
-    return np.array([u, np.cross(w, u), w])
+    ``u`` along ``major`` projected off ``w`` (or a coordinate axis far from ``w``): the one frame
+    kernel, :func:`goldman_lib.kernels.frames.frame` (bit for bit the frame this function built)."""
+    from goldman_lib.kernels import frames     # (imported here: this body is the only hunk of this change)
+
+    return frames.frame(w, major)
 
 
 def _grid(rows: int, cols: int, wrap: bool = False) -> np.ndarray:

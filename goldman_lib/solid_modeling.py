@@ -35,7 +35,7 @@ from typing import Callable
 
 import numpy as np
 
-from goldman_lib.kernels import frames
+from goldman_lib.kernels import frames, meshes
 from goldman_lib.lighting import Material
 from goldman_lib.simple_surfaces import EPS, MAX_COORDINATE, Sphere, Surface, rays
 from goldman_lib.validation import (MAX_ITEMS, as_float, as_int, as_points, as_tolerance, as_float_array,
@@ -126,6 +126,12 @@ class BRep:
     through shared edges), and ``genus`` by the Euler-Poincare formula.  :meth:`problems` lists what
     keeps the boundary from being a valid solid, in words; :meth:`is_valid` is ``not problems()``.
 
+    Beside ``subdivision_surfaces.Mesh`` (chapter 30's polygon mesh: any dimension, refused unless
+    it is a manifold, adjacency cached for subdivision), a BRep holds what a Mesh cannot: faces with
+    holes (rings), several shells, and a boundary with faults, described rather than refused, so a
+    learner can see why it bounds no solid.  :meth:`from_mesh` and ``Mesh.from_brep`` convert; both
+    take their edges, fans and polyhedra from :mod:`goldman_lib.kernels.meshes`.
+
     >>> box = cube()
     >>> (box.V, box.E, box.F, box.L, box.S, box.genus), box.is_valid()
     ((8, 12, 6, 6, 1, 0), True)
@@ -154,6 +160,25 @@ class BRep:
             self.rings[int(key)] = [_loop(r, f"rings[{key}][{j}]", n) for j, r in enumerate(loops)]
         self.tol = as_tolerance(tol, "tol")
         self._edges = self._edge_uses()
+
+    @classmethod
+    def from_mesh(cls, mesh, tol: float = 1e-9) -> "BRep":
+        """The B-rep of a polygon mesh in space (Goldman §30 to §20.3): its vertices ``(V, 3)`` and faces
+        as outer loops, in order, no rings; its counts, validity and volume then follow.
+
+        >>> from goldman_lib import subdivision_surfaces as ss
+        >>> b = BRep.from_mesh(ss.cube()); (b.V, b.E, b.F, b.genus, round(b.volume(), 12))
+        (8, 12, 6, 0, 8.0)
+        """
+        if not hasattr(mesh, "faces") or not hasattr(mesh, "face_sizes") or not hasattr(mesh, "vertices"):
+            raise TypeError(f"mesh must be a subdivision_surfaces.Mesh; got {type(mesh).__name__}")
+        faces = mesh.faces
+        return cls(mesh.vertices, [[int(v) for v in f] for f in faces], tol=tol)
+
+    def _flat_loops(self, with_rings: bool = True):
+        """``(corners, sizes)`` of the outer loops (and every ring) for the kernels of meshes."""
+        loops = [loop for f in range(self.F) for loop in (self.loops(f) if with_rings else [self.faces[f]])]
+        return meshes.flatten(loops)
 
     # -- counts -----------------------------------------------------------------------------------
     def loops(self, face: int) -> list[tuple[int, ...]]:
@@ -227,12 +252,13 @@ class BRep:
         orientation), dangling vertices, non-planar faces (beyond ``tol``), and counts that break the
         Euler-Poincare formula (an odd ``V - E + F - (L - F)`` or a negative genus)."""
         out = []
+        twice = {(min(a, b), max(a, b)) for a, b in meshes.same_direction_edges(*self._flat_loops(), self.V).tolist()}
         for (i, j), uses in sorted(self._edges.items()):
             faces = ", ".join(f"face {f}" for f, _, _ in uses)
             if len(uses) != 2:
                 out.append(f"edge ({i}, {j}) lies in {len(uses)} face{'s' if len(uses) != 1 else ''} ({faces}), "
                            f"not 2: the boundary has {'a gap' if len(uses) < 2 else 'a fin (a non-manifold edge)'} there")
-            elif uses[0][1:] == uses[1][1:]:
+            elif (i, j) in twice:
                 out.append(f"edge ({i}, {j}) runs from {uses[0][1]} to {uses[0][2]} in both {faces}: the faces must "
                            "traverse a shared edge in opposite directions (one of them is oriented inside out)")
         used = set(v for f in range(self.F) for loop in self.loops(f) for v in loop)
@@ -288,15 +314,14 @@ class BRep:
         return self.S == 1 and self.L == self.F and self.euler_characteristic == 2
 
     def edges(self) -> np.ndarray:
-        """The distinct edges as vertex index pairs ``(E, 2)``, sorted."""
-        return np.array(sorted(self._edges), dtype=int).reshape(-1, 2)
+        """The distinct edges as vertex index pairs ``(E, 2)``, sorted (every loop's, rings included)."""
+        return meshes.edge_table(*self._flat_loops(), self.V)[0]
 
     def triangles(self) -> np.ndarray:
         """Fan triangles ``(T, 3)`` of the faces without rings (convex faces triangulate correctly),
         for drawing."""
-        tris = [(f[0], f[k], f[k + 1]) for i, f in enumerate(self.faces) if i not in self.rings
-                for k in range(1, len(f) - 1)]
-        return np.array(tris, dtype=int).reshape(-1, 3)
+        corners, sizes = meshes.flatten([f for i, f in enumerate(self.faces) if i not in self.rings])
+        return meshes.fan_triangles(corners, sizes).reshape(-1, 3)
 
 
 def _newell(pts: np.ndarray) -> np.ndarray:
@@ -306,27 +331,26 @@ def _newell(pts: np.ndarray) -> np.ndarray:
 
 
 def cube(size: float = 1.0, center=(0.0, 0.0, 0.0)) -> BRep:
-    """The cube of edge ``size`` about ``center`` as a B-rep (Goldman §20.3): V=8, E=12, F=6.
+    """The cube of edge ``size`` about ``center`` as a B-rep (Goldman §20.3): V=8, E=12, F=6; the tables
+    :data:`goldman_lib.kernels.meshes.CUBE_VERTICES` and ``CUBE_FACES`` (``subdivision_surfaces.cube``'s), scaled.
 
     >>> cube(2).vertices.max(axis=0).tolist()
     [1.0, 1.0, 1.0]
     """
     size = as_float(size, "size", positive=True)
     c = as_points(center, "center", ndim=1, dim=3)
-    v = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], dtype=float) * size / 2 + c
-    faces = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
-    return BRep(v, faces)
+    return BRep(meshes.CUBE_VERTICES * size / 2 + c, meshes.CUBE_FACES)
 
 
 def tetrahedron(size: float = 1.0) -> BRep:
-    """A regular tetrahedron (alternate corners of a cube of edge ``size``) as a B-rep: V=4, E=6, F=4.
+    """A regular tetrahedron (alternate corners of a cube of edge ``size``) as a B-rep: V=4, E=6, F=4; the
+    tables :data:`goldman_lib.kernels.meshes.TETRAHEDRON_VERTICES` and ``TETRAHEDRON_FACES``, scaled.
 
     >>> t = tetrahedron(); (t.V, t.E, t.F, t.is_valid())
     (4, 6, 4, True)
     """
     size = as_float(size, "size", positive=True)
-    v = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=float) * size / 2
-    return BRep(v, [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]])
+    return BRep(meshes.TETRAHEDRON_VERTICES * size / 2, meshes.TETRAHEDRON_FACES)
 
 
 def torus_mesh(R: float = 1.0, r: float = 0.4, n: int = 8, m: int = 6) -> BRep:

@@ -39,6 +39,7 @@ from functools import cached_property
 
 import numpy as np
 
+from goldman_lib.kernels import meshes
 from goldman_lib.validation import MAX_ITEMS, as_float, as_int, as_points, within_budget
 
 __all__ = [
@@ -86,6 +87,13 @@ class Mesh:
     oriented (no two faces traverse an edge in the same direction).  Raises ValueError naming
     the face, vertex or edge that breaks a rule; TypeError for non-integer faces.
 
+    Beside :class:`goldman_lib.solid_modeling.BRep` (chapter 20's boundary representation: faces
+    with holes, faults described in words, volume and the Euler-Poincare formula), a Mesh is what
+    subdivision needs: any dimension, refused unless it is a manifold, with its adjacency (edges,
+    the faces of each edge, valences) cached as index arrays.  :meth:`from_brep` and
+    ``BRep.from_mesh`` convert; both take their edges, fans and polyhedra from
+    :mod:`goldman_lib.kernels.meshes`.
+
     >>> m = Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])
     >>> m.n_edges, m.euler_characteristic(), m.is_closed
     (4, 1, False)
@@ -123,12 +131,10 @@ class Mesh:
             raise ValueError(f"faces must form a manifold mesh: every edge belongs to at most two faces; edge "
                              f"{tuple(self.edges[e].tolist())} belongs to {int(counts[e])}")
         if check_orientation:
-            directed = corners.astype(np.int64) * nv + corners[nxt]
-            uniq, first, cnt = np.unique(directed, return_index=True, return_counts=True)
-            if (cnt > 1).any():
-                k = int(np.flatnonzero(cnt > 1)[0])
-                a, b = divmod(int(uniq[k]), nv)
-                faces_with = np.unique(self._face_of_corner[directed == uniq[k]]).tolist()
+            twice = meshes.same_direction_edges(corners, sizes, nv, nxt)
+            if len(twice):
+                a, b = (int(v) for v in twice[0])
+                faces_with = np.unique(self._face_of_corner[(corners == a) & (corners[nxt] == b)]).tolist()
                 raise ValueError(f"faces must be consistently oriented; faces {faces_with[0]} and {faces_with[1]} "
                                  f"both run along edge {a}->{b} in the same direction")
 
@@ -212,12 +218,7 @@ class Mesh:
 
     @cached_property
     def _edge_data(self):
-        a, b = self._corners, self._corners[self._next]
-        lo, hi = np.minimum(a, b), np.maximum(a, b)
-        keys = lo.astype(np.int64) * len(self._vertices) + hi
-        uniq, inverse = np.unique(keys, return_inverse=True)
-        edges = np.stack(np.divmod(uniq, len(self._vertices)), axis=1)
-        return edges, inverse.reshape(-1)
+        return meshes.edge_table(self._corners, self._sizes, len(self._vertices), self._next)
 
     @property
     def edges(self) -> np.ndarray:
@@ -304,6 +305,23 @@ class Mesh:
             raise ValueError(f"vertices must hold {self.n_vertices} points, one per vertex; got {len(V)}")
         return Mesh._trusted(V, self._corners, self._sizes)
 
+    @classmethod
+    def from_brep(cls, brep) -> "Mesh":
+        """The polygon mesh of a B-rep's faces (Goldman §20.3 to §30): its vertices and outer loops, in
+        order (validated as any Mesh).  Raises ValueError for a B-rep whose faces have rings (holes),
+        which a Mesh cannot hold.
+
+        >>> from goldman_lib import solid_modeling
+        >>> Mesh.from_brep(solid_modeling.cube(2)).faces.tolist() == cube().faces.tolist()
+        True
+        """
+        rings = getattr(brep, "rings", None)
+        if not hasattr(brep, "faces") or not hasattr(brep, "vertices") or rings is None:
+            raise TypeError(f"brep must be a solid_modeling.BRep; got {type(brep).__name__}")
+        if rings:
+            raise ValueError(f"brep must have no rings (a Mesh face has no holes); faces {sorted(rings)} have rings")
+        return cls(brep.vertices, [list(f) for f in brep.faces])
+
     def __repr__(self) -> str:
         kind = {3: "triangles", 4: "quadrilaterals"}.get(self.face_size, "polygons")
         return f"Mesh({self.n_vertices} vertices, {self.n_edges} edges, {self.n_faces} faces: {kind})"
@@ -351,24 +369,24 @@ def _read_faces(faces):
 # --------------------------------------------------------------------------------------------
 
 def cube() -> Mesh:
-    """The cube [-1, 1]^3: 8 vertices of valence 3, 6 quadrilaterals, outward orientation.
+    """The cube [-1, 1]^3: 8 vertices of valence 3, 6 quadrilaterals, outward orientation (the tables
+    :data:`goldman_lib.kernels.meshes.CUBE_VERTICES` and ``CUBE_FACES``, shared with
+    ``solid_modeling.cube``).
 
     >>> cube()
     Mesh(8 vertices, 12 edges, 6 faces: quadrilaterals)
     """
-    bits = np.array([[(k >> 0) & 1, (k >> 1) & 1, (k >> 2) & 1] for k in range(8)], dtype=float)
-    faces = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
-    return Mesh(2 * bits - 1, faces)
+    return Mesh(meshes.CUBE_VERTICES.copy(), meshes.CUBE_FACES.copy())
 
 
 def tetrahedron() -> Mesh:
-    """The regular tetrahedron with vertices at alternate corners of the cube [-1, 1]^3.
+    """The regular tetrahedron with vertices at alternate corners of the cube [-1, 1]^3 (the tables
+    :data:`goldman_lib.kernels.meshes.TETRAHEDRON_VERTICES` and ``TETRAHEDRON_FACES``).
 
     >>> tetrahedron().valences.tolist()
     [3, 3, 3, 3]
     """
-    v = [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]]
-    return Mesh(v, [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]])
+    return Mesh(meshes.TETRAHEDRON_VERTICES.copy(), meshes.TETRAHEDRON_FACES.copy())
 
 
 def octahedron() -> Mesh:
@@ -505,12 +523,7 @@ def triangulate(mesh: Mesh) -> Mesh:
         raise TypeError(f"mesh must be a Mesh; got {type(mesh).__name__}")
     if mesh.face_size == 3:
         return mesh
-    sizes, off, C = mesh._sizes, mesh._offsets, mesh._corners
-    count = sizes - 2
-    face = np.repeat(np.arange(len(sizes)), count)
-    local = np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count) + 1
-    first = off[face]
-    tris = np.stack([C[first], C[first + local], C[first + local + 1]], axis=1)
+    tris = meshes.fan_triangles(mesh._corners, mesh._sizes)
     return Mesh._trusted(mesh._vertices, tris.ravel(), np.full(len(tris), 3, dtype=np.int64))
 
 

@@ -91,7 +91,7 @@ def _first_sweep(solver, p):
     """The first iterate of the library's ``solver`` (:func:`radiosity.jacobi` or
     :func:`radiosity.gauss_seidel`) from B^(0) = E."""
     F, rho, E = _system(p)
-    return solver(F, rho, E, tol=1e-300, max_iterations=1, return_history=True).iterates[1]
+    return solver(F, rho, E, tol=1e-300, max_iter=1, full_output=True)[1].history[1]
 
 
 def _two_patch_generate(rng) -> dict:
@@ -375,8 +375,8 @@ def _shot_answer(p):
     F = np.zeros((3, 3))
     F[0] = p["F"]
     dB = np.array(p["dB"], float)
-    h = rd.progressive_refinement(F, p["rho"], dB, p["area"], tol=1e-300, max_iterations=1, return_history=True)
-    out = h.iterates[1].copy()          # B after the shot = dB + what arrived; the shooter's dB is cleared
+    _, h = rd.progressive_refinement(F, p["rho"], dB, p["area"], tol=1e-300, max_iter=1, full_output=True)
+    out = h.history[1].copy()          # B after the shot = dB + what arrived; the shooter's dB is cleared
     out[h.shooters[0]] = 0.0
     return out
 

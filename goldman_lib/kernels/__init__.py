@@ -47,8 +47,9 @@ The map: each kernel, what it computes, the book section it serves, and who call
         ``bezier_subdivision.subdivision_variation_counts``.
     ``elevate`` (§24.5): ``bezier.elevate_degree``, ``bezier_subdivision.join_order``.
     ``ear_clip`` (§19.3): the triangles that draw ``simple_surfaces.Polygon`` (``Polygon.mesh``).
-    ``clip_half_space`` (§22.1): Sutherland-Hodgman against one plane: ``camera.Camera.clip_polygon``
-        (the near plane and the guard band of every hidden-surface algorithm).
+    ``clip_half_space``, ``clip_to_view`` (§22.1): Sutherland-Hodgman against one plane, and against a
+        camera's near plane and widened frustum: ``camera.Camera.clip_polygon`` (checked) and
+        ``hidden_surfaces`` (the near plane and the guard band of every hidden-surface algorithm).
 
 :mod:`~goldman_lib.kernels.roots` -- real roots of polynomials, many at once
     ``quadratic_roots``, ``depressed_quartic_roots``, ``polynomial_roots`` (§19.4-19.7): the checked
@@ -68,6 +69,10 @@ The map: each kernel, what it computes, the book section it serves, and who call
         (unnormalised), ``solid_modeling``'s face normals (unit), ``shading.unit_newell_normal`` (unit).
     ``slerp`` (§11.6, §21.4.4): ``vector_geometry.slerp`` (checked) and, per pixel, Phong shading with
         slerp (``shading._slerp_pair``).
+    ``frame`` (§19, §23.3): orthonormal frames ``u, v, w`` completing unit vectors, ``u`` along an optional
+        ``major`` (else the coordinate axis of least ``|w_i|``) projected off ``w``, vectorised over rows:
+        ``simple_surfaces``' planes, polygons, cylinders, cones and quadrics (their local axes) and
+        ``radiosity.hemicube_form_factors`` (each patch's hemi-cube axes).
 
 :mod:`~goldman_lib.kernels.iteration` -- iterated function systems
     ``apply_affine_maps`` (§6.1): ``ifs.deterministic``, ``ifs.map_images``.
@@ -76,9 +81,20 @@ The map: each kernel, what it computes, the book section it serves, and who call
 
 :mod:`~goldman_lib.kernels.relaxation` -- Jacobi and Gauss-Seidel sweeps for ``x = (c + w G x) / d``
     ``gather``, ``jacobi_update``, ``gauss_seidel_sweep``: ``fixed_point.jacobi``,
-        ``fixed_point.gauss_seidel`` (§7.3.2), ``radiosity.jacobi``, ``radiosity.gauss_seidel`` (§23.5).
+        ``fixed_point.gauss_seidel`` (§7.3.2, ``A x = b``), ``radiosity.jacobi``, ``radiosity.gauss_seidel``
+        (§23.5, ``B = E + rho F B``); one keyword spelling for all of them (``tol``, ``max_iter``,
+        ``full_output``).
+    ``Convergence``: the one record of an iteration (``full_output=True``), returned by every solver of
+        ``fixed_point`` (also Newton and fixed-point iteration; it is ``fixed_point.Convergence``) and of
+        ``radiosity`` (also ``progressive_refinement``, with its ``shooters``).
 
-:mod:`~goldman_lib.kernels.meshes` -- triangle meshes
+:mod:`~goldman_lib.kernels.meshes` -- polygon meshes and triangle meshes
+    ``CUBE_VERTICES``, ``CUBE_FACES``, ``TETRAHEDRON_VERTICES``, ``TETRAHEDRON_FACES`` (§20.3, §30.4): the
+        one cube and tetrahedron: ``subdivision_surfaces.cube``, ``tetrahedron`` and ``solid_modeling.cube``,
+        ``tetrahedron`` (scaled).
+    ``flatten``, ``edge_table``, ``fan_triangles`` (§20.3, §30.4): faces as flat corners, their distinct
+        edges, their fans: ``subdivision_surfaces.Mesh`` (``edges``, ``edge_faces``, ``triangulate``) and
+        ``solid_modeling.BRep`` (``edges``, ``triangles``); ``BRep.from_mesh`` and ``Mesh.from_brep`` convert.
     ``rasterise`` (§21.2-21.3, §22.2): the one scan conversion: ``rasteriser.rasterise_triangles`` and
         ``rasteriser.gouraud_triangle`` (checked), ``shading.render``, ``hidden_surfaces``' painter's coverage.
 

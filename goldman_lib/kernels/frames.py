@@ -2,16 +2,17 @@
 
 :func:`norm` (lengths, right at every finite magnitude), :func:`unit_rows` (rows scaled to length
 1, zero rows kept), :func:`row_dots` (row-by-row dot products) and :func:`newell` (Newell's normal
-of a stack of polygons, unnormalised; :func:`unit_rows` of it is the unit normal) and :func:`slerp` (spherical linear interpolation, §11.6,
-per pixel in Phong shading, §21.4.4).  Nothing here
-checks its input: callers pass finite float arrays.
+of a stack of polygons, unnormalised; :func:`unit_rows` of it is the unit normal), :func:`slerp` (spherical linear interpolation, §11.6,
+per pixel in Phong shading, §21.4.4) and :func:`frame` (orthonormal frames completing unit vectors:
+the local axes of ``simple_surfaces``' planes, discs, cylinders and cones, §19, and of ``radiosity``'s
+hemi-cubes, §23.3).  Nothing here checks its input: callers pass finite float arrays.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["norm", "unit_rows", "row_dots", "newell", "slerp"]
+__all__ = ["norm", "unit_rows", "row_dots", "newell", "slerp", "frame"]
 
 
 def norm(v: np.ndarray, axis: int = -1, keepdims: bool = False) -> np.ndarray:
@@ -101,3 +102,33 @@ def slerp(a: np.ndarray, b: np.ndarray, t: np.ndarray, la=None, lb=None, cos=Non
     wa = np.where(small, 1 - tt, np.sin((1 - tt) * theta) / safe)
     wb = np.where(small, tt, np.sin(tt * theta) / safe)
     return wa * a + wb * b
+
+
+def frame(w: np.ndarray, major=None) -> np.ndarray:
+    """Right-handed orthonormal frames completing unit vectors w ``(..., 3)``: ``(..., 3, 3)``, rows
+    ``u, v, w`` with ``u x v = w`` (Goldman §19, §23.3).  ``u`` is ``major`` ``(3,)`` or ``(..., 3)``
+    projected off w and normalised, ``u = (m - (m . w) w) / |...|``, where ``major`` is given and not
+    along w (``|major . w| < (1 - 1e-9) |major|``; any length); elsewhere ``m`` is the coordinate axis
+    of least ``|w_i|`` (the first of equals), which is never within 54.7 degrees of w.  ``v = w x u``.
+
+    >>> frame(np.array([0.0, 0.0, 1.0])).tolist()
+    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    >>> frame(np.array([[0.0, 0.0, 1.0]]), np.array([0.0, 2.0, 0.0]))[0].tolist()
+    [[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    """
+    w = np.asarray(w, dtype=float)
+    axis = np.eye(3)[np.argmin(np.abs(w), axis=-1)]
+    if major is None:
+        m = axis
+    else:
+        m = np.broadcast_to(np.asarray(major, dtype=float), w.shape)
+        m = np.where(np.abs(_dots(m, w)) >= (1 - 1e-9) * np.sqrt(_dots(m, m)), axis, m)   # zero, or along w
+    u = m - _dots(m, w) * w
+    u = u / np.sqrt(_dots(u, u))
+    return np.stack([u, np.cross(w, u), w], axis=-2)
+
+
+def _dots(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row dot products ``(..., 1)`` summed as :func:`numpy.dot` sums them (``matmul``), so a single
+    frame is the same to the last bit as one written with ``np.dot``."""
+    return (a[..., None, :] @ b[..., :, None])[..., 0]

@@ -1,4 +1,23 @@
-"""Meshes: scan conversion of triangle meshes (Goldman §21.2-21.3, §22.2), unchecked.
+"""Meshes: polyhedra as vertex and face tables, their edges and fans, and scan conversion of
+triangle meshes (Goldman §20.3, §21.2-21.3, §22.2, §30.4), unchecked.
+
+The polygon meshes of the library are vertex tables ``(V, d)`` and faces as vertex loops, stored
+flat as ``corners`` (every face's vertex indices, face after face) and ``sizes`` (vertices per
+face).  Two classes hold them, each for what the other cannot do:
+``subdivision_surfaces.Mesh`` (a validated manifold mesh in any dimension with cached adjacency,
+what subdivision rewrites, §30) and ``solid_modeling.BRep`` (a boundary representation whose
+faces may have holes, rings, and whose faults are described rather than refused, with counts,
+shells, volume and the Euler-Poincare formula, §20.3); ``BRep.from_mesh`` and ``Mesh.from_brep``
+convert.  What they share lives here, once:
+
+- :data:`CUBE_VERTICES`, :data:`CUBE_FACES`, :data:`TETRAHEDRON_VERTICES`, :data:`TETRAHEDRON_FACES`:
+  the cube ``[-1, 1]^3`` and the regular tetrahedron at alternate corners of it, faces counterclockwise
+  seen from outside (read-only): ``subdivision_surfaces.cube``, ``tetrahedron`` and
+  ``solid_modeling.cube``, ``tetrahedron``, scaled;
+- :func:`flatten`: loops to ``(corners, sizes)``; :func:`edge_table`: the distinct edges and the
+  edge of each corner; :func:`same_direction_edges`: the orientation test (edges two loops run the
+  same way); :func:`fan_triangles`: every face fanned from its first vertex:
+  ``Mesh.edges``/``triangulate``/its orientation check and ``BRep.edges``/``triangles``/``problems``.
 
 :func:`rasterise` is the one scan conversion of chapters 21 and 22: ``rasteriser.rasterise_triangles``
 and ``rasteriser.gouraud_triangle`` (checked), the shading modes of ``shading.render`` and
@@ -9,7 +28,91 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["rasterise", "BATCH"]
+__all__ = ["rasterise", "BATCH", "CUBE_VERTICES", "CUBE_FACES", "TETRAHEDRON_VERTICES", "TETRAHEDRON_FACES",
+           "flatten", "edge_table", "same_direction_edges", "fan_triangles"]
+
+
+def _frozen(a: np.ndarray) -> np.ndarray:
+    a.setflags(write=False)
+    return a
+
+
+#: The cube ``[-1, 1]^3`` (Goldman §20.3, §30.4): vertex ``k`` has coordinates ``2 b - 1`` for the bits
+#: ``b = (k & 1, k >> 1 & 1, k >> 2 & 1)`` (x changes fastest); valence 3 everywhere.
+CUBE_VERTICES = _frozen(np.array([[(k >> 0) & 1, (k >> 1) & 1, (k >> 2) & 1] for k in range(8)], dtype=float) * 2 - 1)
+#: The cube's six quadrilaterals, counterclockwise seen from outside: z = -1, z = 1, y = -1, y = 1, x = -1, x = 1.
+CUBE_FACES = _frozen(np.array([[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]],
+                              dtype=np.int64))
+#: The regular tetrahedron with vertices at alternate corners of the cube ``[-1, 1]^3``.
+TETRAHEDRON_VERTICES = _frozen(np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=float))
+#: Its four triangles, counterclockwise seen from outside.
+TETRAHEDRON_FACES = _frozen(np.array([[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]], dtype=np.int64))
+
+
+def flatten(loops) -> tuple[np.ndarray, np.ndarray]:
+    """Vertex loops (a list of index sequences, or an ``(F, k)`` array) as ``(corners, sizes)``: every
+    loop's indices one after another ``(sum k,)`` and the length of each ``(F,)``, both int64.
+
+    >>> [a.tolist() for a in flatten([[0, 1, 2], [0, 2, 3, 4]])]
+    [[0, 1, 2, 0, 2, 3, 4], [3, 4]]
+    """
+    if isinstance(loops, np.ndarray) and loops.ndim == 2:
+        return loops.astype(np.int64).ravel(), np.full(len(loops), loops.shape[1], dtype=np.int64)
+    sizes = np.array([len(f) for f in loops], dtype=np.int64)
+    corners = np.fromiter((v for f in loops for v in f), dtype=np.int64, count=int(sizes.sum()))
+    return corners, sizes
+
+
+def _next_corner(sizes: np.ndarray) -> np.ndarray:
+    offsets = np.cumsum(sizes) - sizes
+    nxt = np.arange(int(sizes.sum())) + 1
+    nxt[offsets + sizes - 1] = offsets
+    return nxt
+
+
+def edge_table(corners: np.ndarray, sizes: np.ndarray, n_vertices: int, nxt=None) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct edges of faces given as ``(corners, sizes)`` (Goldman §20.3): ``(E, 2)`` vertex
+    pairs ``(i < j)`` sorted, and for each corner the index of the edge from it to the next corner of
+    its face ``(sum k,)``.  nxt: that next corner of each corner, if the caller has it.
+
+    >>> e, of = edge_table(*flatten([[0, 1, 2], [0, 2, 3]]), 4)
+    >>> e.tolist(), of.tolist()
+    ([[0, 1], [0, 2], [0, 3], [1, 2], [2, 3]], [0, 3, 1, 1, 4, 2])
+    """
+    a = corners
+    b = corners[_next_corner(sizes) if nxt is None else nxt]
+    lo, hi = np.minimum(a, b), np.maximum(a, b)
+    keys = lo.astype(np.int64) * n_vertices + hi
+    uniq, inverse = np.unique(keys, return_inverse=True)
+    return np.stack(np.divmod(uniq, n_vertices), axis=1), inverse.reshape(-1)
+
+
+def same_direction_edges(corners: np.ndarray, sizes: np.ndarray, n_vertices: int, nxt=None) -> np.ndarray:
+    """The directed edges ``a -> b`` that more than one loop corner runs along ``(R, 2)``, sorted: where
+    loops of a consistently oriented surface meet, they run a shared edge in opposite directions,
+    so each row is a place where the orientation breaks (Goldman §20.3).  nxt as for :func:`edge_table`.
+
+    >>> same_direction_edges(*flatten([[0, 1, 2], [0, 1, 3], [1, 0, 4]]), 5).tolist()   # the first two run 0 -> 1
+    [[0, 1]]
+    """
+    directed = corners.astype(np.int64) * n_vertices + corners[_next_corner(sizes) if nxt is None else nxt]
+    uniq, count = np.unique(directed, return_counts=True)
+    return np.stack(np.divmod(uniq[count > 1], n_vertices), axis=1)
+
+
+def fan_triangles(corners: np.ndarray, sizes: np.ndarray) -> np.ndarray:
+    """Every face of ``(corners, sizes)`` cut into triangles fanned from its first vertex, face by face,
+    same orientation: ``(sum (k - 2), 3)`` (right for convex faces; Goldman §21.1, §30.4).
+
+    >>> fan_triangles(*flatten([[0, 1, 2, 3], [4, 5, 6]])).tolist()
+    [[0, 1, 2], [0, 2, 3], [4, 5, 6]]
+    """
+    offsets = np.cumsum(sizes) - sizes
+    count = sizes - 2
+    face = np.repeat(np.arange(len(sizes)), count)
+    local = np.arange(int(count.sum())) - np.repeat(np.cumsum(count) - count, count) + 1
+    first = offsets[face]
+    return np.stack([corners[first], corners[first + local], corners[first + local + 1]], axis=1)
 
 #: Pixel candidates examined per batch of triangles (a memory bound, not a work budget).
 BATCH = 1 << 20

@@ -10,13 +10,53 @@ A Jacobi step is :func:`gather` then :func:`jacobi_update` (so a caller that nee
 for its residual computes it once); :func:`gauss_seidel_sweep` updates in place, each new
 component used at once.  ``w`` and ``d`` broadcast against the rows of x (an ``(n, c)`` x with
 ``w`` of shape ``(n,)`` or ``(n, c)`` solves c channels at once).  Nothing here checks its input.
+
+:class:`Convergence` is the one record every iteration of the library returns on request
+(``full_output=True``): ``fixed_point``'s fixed-point iteration, Newton's method, Jacobi and
+Gauss-Seidel for ``A x = b``, and ``radiosity``'s Jacobi, Gauss-Seidel and progressive refinement
+for ``B = E + rho F B``.  Its home is here, beside the sweeps, because both chapters return it.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
+
 import numpy as np
 
-__all__ = ["gather", "jacobi_update", "gauss_seidel_sweep"]
+__all__ = ["Convergence", "gather", "jacobi_update", "gauss_seidel_sweep"]
+
+
+@dataclass
+class Convergence:
+    """What an iteration did (Goldman §7.2-7.3, §23.5): ``x`` the last iterate (the solution when
+    ``converged``), ``converged``, ``reason`` (``"converged"``, ``"zero derivative"``, ``"cycle"``,
+    ``"diverged"``, ``"max iterations"``), ``iterations`` (steps taken: sweeps, or shots),
+    ``history`` (every iterate, the start first: ``iterations + 1`` of them), ``residuals`` (one per
+    iterate: ``|f(x_n)|`` for root finding, ``||b - A x_n||_inf`` for a linear system, ``|F(x_n) -
+    x_n|`` for a fixed point, ``max |E + rho F B_n - B_n|`` for the radiosity equation), ``method``
+    and ``message``; ``notes`` (remarks such as "A is not diagonally dominant") and ``shooters``
+    (progressive refinement: the patch shot at each step; None for the other methods).
+
+    >>> rep = Convergence(0.5, True, "converged", 1, np.array([1.0, 0.5]), np.array([0.5, 0.0]), "Jacobi")
+    >>> str(rep)
+    'Jacobi: converged after 1 iterations (last residual 0)'
+    """
+
+    x: object
+    converged: bool
+    reason: str
+    iterations: int
+    history: np.ndarray
+    residuals: np.ndarray
+    method: str = ""
+    message: str = ""
+    notes: list = field(default_factory=list)
+    shooters: np.ndarray | None = None
+
+    def __str__(self) -> str:
+        last = self.residuals[-1] if len(self.residuals) else float("nan")
+        return (f"{self.method}: {self.reason} after {self.iterations} iterations "
+                f"(last residual {last:.3g}){'; ' + self.message if self.message else ''}")
 
 
 def gather(G: np.ndarray, x: np.ndarray, w=None) -> np.ndarray:

@@ -94,13 +94,14 @@ def _shooting(n: int = 8, resolution: int = 16):
 
 
 def _solve(name, F, rho, E, area, operators=None):
+    """The report (:class:`goldman_lib.fixed_point.Convergence`) of solver ``name``, its history kept."""
     steps = MAX_STEPS[name]
     if name == "jacobi":
-        return rd.jacobi(F, rho, E, tol=1e-9, max_iterations=steps, return_history=True)
+        return rd.jacobi(F, rho, E, tol=1e-9, max_iter=steps, full_output=True)[1]
     if name == "gauss_seidel":
-        return rd.gauss_seidel(F, rho, E, tol=1e-9, max_iterations=steps, return_history=True)
-    return rd.progressive_refinement(F, rho, E, area, tol=1e-9, max_iterations=steps, return_history=True,
-                                     operators=operators)
+        return rd.gauss_seidel(F, rho, E, tol=1e-9, max_iter=steps, full_output=True)[1]
+    return rd.progressive_refinement(F, rho, E, area, tol=1e-9, max_iter=steps, full_output=True,
+                                     operators=operators)[1]
 
 
 def radiosity_view(solver: str = "progressive", smooth: bool = True) -> InteractiveView:
@@ -194,7 +195,7 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
             solved[solver] = _solve(solver, F, rho, E, area, shooting)
         history = solved[solver]
         k = min(int({"jacobi": jacobi_k, "gauss_seidel": gs_k, "progressive": shots}[solver]), history.iterations)
-        B = history.iterates[k]
+        B = history.history[k]
         corner = rd.corner_radiosities(box, B, smooth=(shading == "smooth"))
         shown = rd.to_colours(corner, white=WHITE)
         scene.set_colors("box", shown)

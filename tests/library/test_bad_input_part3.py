@@ -294,7 +294,7 @@ def test_a_tolerance_below_round_off_is_a_stall_not_a_million_iterations(solver)
     start = time.process_time()
     with time_limit(5.0):
         try:
-            history = getattr(rd, solver)(*args, tol=1e-300, return_history=True)
+            _, history = getattr(rd, solver)(*args, tol=1e-300, full_output=True)
         except ValueError as exc:
             assert re.search(r"tol must be reachable: .* stalled at residual", str(exc)), str(exc)
         else:

@@ -92,6 +92,25 @@ def test_gauss_seidel_needs_fewer_iterations_than_jacobi():
     assert rg.iterations < rj.iterations
 
 
+def test_one_interface_for_both_systems():
+    """A x = b (§7.3.2) and B = E + rho F B (§23.5) by the same methods: the same keywords and record.
+    B = E + rho F B is (I - rho F) B = E, so fixed_point solves it as A x = b; both see the same
+    first iterate (Jacobi: E, then E + rho F E), and the same record type."""
+    from goldman_lib import radiosity as rd
+    from goldman_lib.kernels import relaxation
+
+    F, rho, E = np.array([[0.0, 0.5], [0.5, 0.0]]), np.array([0.5, 0.5]), np.array([1.0, 1.0])
+    A = np.eye(2) - rho[:, None] * F
+    for name in ("jacobi", "gauss_seidel"):
+        x, rx = getattr(fp, name)(A, E, E, tol=1e-15, max_iter=200, full_output=True)
+        B, rb = getattr(rd, name)(F, rho, E, tol=1e-15, max_iter=200, full_output=True)
+        assert type(rx) is type(rb) is fp.Convergence is relaxation.Convergence
+        assert rx.method == rb.method and rx.converged and rb.converged
+        np.testing.assert_allclose(rx.history[1], rb.history[1], rtol=0, atol=1e-15)   # [1.25, 1.25] / [1.25, 1.3125]
+        np.testing.assert_allclose(x, [4 / 3, 4 / 3], rtol=1e-14)
+        np.testing.assert_allclose(B, [4 / 3, 4 / 3], rtol=1e-12)
+
+
 def test_jacobi_first_step_is_b_over_the_diagonal():
     A = np.array([[4.0, 1.0], [2.0, 5.0]])
     _, rep = fp.jacobi(A, [1.0, 2.0], full_output=True)

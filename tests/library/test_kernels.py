@@ -289,6 +289,28 @@ def test_newell_is_the_sum_of_cross_products_and_twice_the_area():
 
 # -- iteration --------------------------------------------------------------------------------------
 
+def test_frame_is_orthonormal_right_handed_and_follows_major():
+    rng = np.random.default_rng(3)
+    w = rng.normal(size=(200, 3))
+    w /= np.linalg.norm(w, axis=1, keepdims=True)
+    major = rng.normal(size=(200, 3))
+    for M in (frames.frame(w), frames.frame(w, major)):
+        assert M.shape == (200, 3, 3)
+        np.testing.assert_allclose(M @ M.transpose(0, 2, 1), np.broadcast_to(np.eye(3), M.shape), atol=1e-14)
+        np.testing.assert_allclose(np.linalg.det(M), 1.0, atol=1e-14)            # right-handed: u x v = w
+        assert np.array_equal(M[:, 2], w)
+    # u lies in the plane of major and w, on major's side: u . major = |major - (major . w) w| > 0
+    M = frames.frame(w, major)
+    proj = major - np.sum(major * w, axis=1, keepdims=True) * w
+    np.testing.assert_allclose(np.sum(M[:, 0] * major, axis=1), np.linalg.norm(proj, axis=1), rtol=1e-12)
+    # without major (or with one along w): the axis of least |w_i| projected off w
+    assert frames.frame(np.array([0.0, 0.6, 0.8])).round(12).tolist() == [[1, 0, 0], [0, 0.8, -0.6], [0, 0.6, 0.8]]
+    assert frames.frame(np.array([0.0, 0.0, 1.0]), np.array([0.0, 0.0, 3.0])).tolist() == \
+        [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    # a stack and its rows one by one agree to the last bit
+    assert all(np.array_equal(frames.frame(w[k], major[k]), frames.frame(w, major)[k]) for k in range(0, 200, 17))
+
+
 def test_apply_affine_maps_is_x_l_plus_t():
     pts = RNG.normal(size=(50, 2))
     L, t = RNG.normal(size=(3, 2, 2)), RNG.normal(size=(3, 2))
@@ -354,6 +376,35 @@ def test_rasterise_covers_the_pixel_centres_inside_and_keeps_the_nearest():
     assert np.all(tri[in_first & ~in_second] == 0)
     assert np.allclose(weights[tri >= 0].sum(axis=1), 1.0)
     assert np.all(tri[~(in_first | in_second)] == -1) and np.all(depth[tri < 0] == 1.0)
+
+
+def test_mesh_tables_edges_fans_and_orientation_against_plain_python():
+    rng = np.random.default_rng(5)
+    for _ in range(30):
+        n = int(rng.integers(5, 12))
+        loops = [rng.choice(n, size=int(rng.integers(3, 6)), replace=False).tolist() for _ in range(int(rng.integers(1, 8)))]
+        corners, sizes = meshes.flatten(loops)
+        assert corners.tolist() == [v for f in loops for v in f] and sizes.tolist() == [len(f) for f in loops]
+        directed = [(f[k], f[(k + 1) % len(f)]) for f in loops for k in range(len(f))]
+        edges, of_corner = meshes.edge_table(corners, sizes, n)
+        assert [tuple(e) for e in edges.tolist()] == sorted({(min(a, b), max(a, b)) for a, b in directed})
+        assert [tuple(edges[e]) for e in of_corner] == [(min(a, b), max(a, b)) for a, b in directed]
+        twice = sorted({d for d in directed if directed.count(d) > 1})
+        assert [tuple(r) for r in meshes.same_direction_edges(corners, sizes, n).tolist()] == twice
+        assert meshes.fan_triangles(corners, sizes).tolist() == [[f[0], f[k], f[k + 1]] for f in loops
+                                                                 for k in range(1, len(f) - 1)]
+    # the polyhedra: unit-free corners of [-1, 1]^3, every edge of the cube of length 2 and run once each
+    # way, the tetrahedron's of length 2 sqrt 2; outward: the divergence theorem's volume is positive
+    for V, F, volume, length in ((meshes.CUBE_VERTICES, meshes.CUBE_FACES, 8.0, 2.0),
+                                 (meshes.TETRAHEDRON_VERTICES, meshes.TETRAHEDRON_FACES, 8 / 3, 2 * math.sqrt(2))):
+        assert not V.flags.writeable and not F.flags.writeable and np.all(np.abs(V) == 1)
+        corners, sizes = meshes.flatten(F)
+        edges, _ = meshes.edge_table(corners, sizes, len(V))
+        assert np.allclose(np.linalg.norm(V[edges[:, 0]] - V[edges[:, 1]], axis=1), length)
+        assert len(meshes.same_direction_edges(corners, sizes, len(V))) == 0
+        T = V[meshes.fan_triangles(corners, sizes)]
+        assert np.einsum("ij,ij->i", T[:, 0], np.cross(T[:, 1], T[:, 2])).sum() / 6 == pytest.approx(volume)
+    assert meshes.CUBE_VERTICES[5].tolist() == [1, -1, 1]            # vertex k: the bits of k, x first
 
 
 def test_split_xy_is_split_of_each_coordinate():

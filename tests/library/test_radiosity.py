@@ -8,6 +8,7 @@ import math
 import numpy as np
 import pytest
 
+from goldman_lib import fixed_point as fp
 from goldman_lib import radiosity as rd
 
 
@@ -140,24 +141,29 @@ def test_solvers_agree_with_numpy_linalg_solve(name):
     B = getattr(rd, name)(*args, tol=1e-11)
     assert isinstance(B, np.ndarray) and B.shape == E.shape
     assert np.abs(B - exact).max() < 1e-9
-    h = getattr(rd, name)(*args, tol=1e-11, return_history=True)
-    assert h.converged and h.residuals[-1] <= 1e-11 and np.allclose(h.radiosities, B)
-    assert len(h.iterates) == len(h.residuals) == h.iterations + 1 and np.allclose(h.iterates[0], E)
+    B2, h = getattr(rd, name)(*args, tol=1e-11, full_output=True)
+    assert isinstance(h, fp.Convergence) and h.reason == "converged" and h.message == ""
+    assert np.array_equal(B2, B) and h.x is B2
+    assert h.converged and h.residuals[-1] <= 1e-11 and np.allclose(h.x, B)
+    assert len(h.history) == len(h.residuals) == h.iterations + 1 and np.allclose(h.history[0], E)
     for k in (0, 1, h.iterations):
-        assert h.residuals[k] == pytest.approx(rd.residual(F, rho, E, h.iterates[k]), rel=1e-9, abs=1e-14)
+        assert h.residuals[k] == pytest.approx(rd.residual(F, rho, E, h.history[k]), rel=1e-9, abs=1e-14)
 
 
 def test_one_channel_and_two_patches_by_hand():
     F, rho, E = [[0, 0.5], [0.5, 0]], [0.5, 0.5], [1.0, 1.0]
     # exact: B0 = 1 + 0.25 B1, B1 = 1 + 0.25 B0 -> B = 4/3
     assert np.allclose(rd.jacobi(F, rho, E, tol=1e-13), [4 / 3, 4 / 3])
-    hj = rd.jacobi(F, rho, E, tol=1e-13, return_history=True)
-    assert hj.iterates[1].tolist() == [1.25, 1.25] and hj.residuals[0] == 0.25
-    hg = rd.gauss_seidel(F, rho, E, tol=1e-13, return_history=True)
-    assert hg.iterates[1].tolist() == [1.25, 1.3125] and hg.iterations < hj.iterations
-    hp = rd.progressive_refinement(F, rho, [2.0, 1.0], [1.0, 1.0], tol=1e-13, return_history=True)
+    _, hj = rd.jacobi(F, rho, E, tol=1e-13, full_output=True)
+    assert hj.history[1].tolist() == [1.25, 1.25] and hj.residuals[0] == 0.25
+    assert hj.method == "Jacobi" and hj.shooters is None
+    _, hg = rd.gauss_seidel(F, rho, E, tol=1e-13, full_output=True)
+    assert hg.history[1].tolist() == [1.25, 1.3125] and hg.iterations < hj.iterations
+    assert hg.method == "Gauss-Seidel"
+    _, hp = rd.progressive_refinement(F, rho, [2.0, 1.0], [1.0, 1.0], tol=1e-13, full_output=True)
     # first shot from patch 0 (power 2): patch 1 gets 0.5 * 0.5 * 2 = 0.5
-    assert hp.shooters[0] == 0 and hp.iterates[1].tolist() == [2.0, 1.5]
+    assert hp.shooters[0] == 0 and hp.history[1].tolist() == [2.0, 1.5]
+    assert hp.method == "progressive refinement" and len(hp.shooters) == hp.iterations
 
 
 def test_edge_cases_and_budgets():
@@ -169,10 +175,19 @@ def test_edge_cases_and_budgets():
     assert np.allclose(rd.jacobi(F, black, E), E)                 # black patches reflect nothing
     one = rd.progressive_refinement([[0.0]], [0.5], [2.0], [1.0])
     assert one.tolist() == [2.0]
-    h = rd.jacobi(F, rho, E, tol=1e-14, max_iterations=2, return_history=True)
-    assert h.iterations == 2 and not h.converged
-    with pytest.raises(ValueError, match="max_iterations"):
-        rd.jacobi(F, rho, E, max_iterations=10**9)
+    B, h = rd.jacobi(F, rho, E, tol=1e-14, max_iter=2, full_output=True)
+    assert h.iterations == 2 and not h.converged and h.reason == "max iterations" and "above tol" in h.message
+    for solver, args in ((rd.jacobi, ()), (rd.gauss_seidel, ()), (rd.progressive_refinement, (area,))):
+        with pytest.raises(fp.ConvergenceError, match="did not converge.*max_iter") as info:   # as fixed_point's
+            solver(F, rho, E, *args, tol=1e-14, max_iter=2)
+        assert info.value.report.iterations == 2 and not info.value.report.converged
+    with pytest.raises(ValueError, match="max_iter"):
+        rd.jacobi(F, rho, E, max_iter=10**9)
+    for solver in (rd.jacobi, rd.gauss_seidel):               # one spelling: the old keywords are gone
+        with pytest.raises(TypeError):
+            solver(F, rho, E, max_iterations=2)
+        with pytest.raises(TypeError):
+            solver(F, rho, E, return_history=True)
     with pytest.raises(ValueError, match="rows must sum"):
         rd.jacobi([[0.6, 0.6], [0.5, 0]], [0.5, 0.5], [1, 0])
     with pytest.raises(ValueError, match="rho"):
@@ -212,16 +227,16 @@ def test_a_patch_that_sees_itself():
 def test_shooting_operators_are_reused_and_checked():
     F, rho, E, area = _system()
     ops = rd.shooting_operators(F, rho, area)
-    plain = rd.progressive_refinement(F, rho, E, area, tol=1e-11, return_history=True)
-    reused = rd.progressive_refinement(F, rho, E, area, tol=1e-11, return_history=True, operators=ops)
+    _, plain = rd.progressive_refinement(F, rho, E, area, tol=1e-11, full_output=True)
+    _, reused = rd.progressive_refinement(F, rho, E, area, tol=1e-11, full_output=True, operators=ops)
     assert np.array_equal(plain.shooters, reused.shooters)
-    assert np.abs(plain.iterates - reused.iterates).max() < 1e-12
+    assert np.abs(plain.history - reused.history).max() < 1e-12
     moved = E[::-1].copy()                                   # another emission, the same operators
     assert np.abs(rd.progressive_refinement(F, rho, moved, area, tol=1e-11, operators=ops)
                   - _solve(F, rho, moved)).max() < 1e-9
     short = rd.shooting_operators(F, rho, area, update_residual=False)
     assert short.change is None
-    assert np.abs(rd.progressive_refinement(F, rho, E, area, tol=1e-11, operators=short) - plain.radiosities).max() < 1e-12
+    assert np.abs(rd.progressive_refinement(F, rho, E, area, tol=1e-11, operators=short) - plain.x).max() < 1e-12
     with pytest.raises(ValueError, match="operators"):
         rd.progressive_refinement(F, rho * 0.5, E, area, operators=ops)
     with pytest.raises(TypeError, match="operators"):

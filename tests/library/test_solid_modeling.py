@@ -50,6 +50,34 @@ def test_counts_functions():
         sm.genus(8, 12, 6, L=5)
 
 
+def test_one_cube_and_tetrahedron_for_both_mesh_classes():
+    from goldman_lib import subdivision_surfaces as ss
+
+    for brep, mesh, V, E, F in ((sm.cube(2), ss.cube(), 8, 12, 6), (sm.tetrahedron(2), ss.tetrahedron(), 4, 6, 4)):
+        # the same tables: at size 2 the B-rep's vertices are the Mesh's, its loops the Mesh's faces
+        assert np.array_equal(brep.vertices, mesh.vertices)
+        assert [list(f) for f in brep.faces] == mesh.faces.tolist()
+        assert np.array_equal(brep.edges(), mesh.edges) and np.array_equal(brep.triangles(), mesh.triangles())
+        assert (brep.V, brep.E, brep.F) == (V, E, F) == (mesh.n_vertices, mesh.n_edges, mesh.n_faces)
+        back = sm.BRep.from_mesh(mesh)
+        assert back.is_valid() and back.faces == brep.faces and np.array_equal(back.vertices, brep.vertices)
+        assert np.array_equal(ss.Mesh.from_brep(brep).faces, mesh.faces)
+    # volumes by hand: the cube [-1, 1]^3 is 8; the tetrahedron at its alternate corners a third of it
+    assert sm.BRep.from_mesh(ss.cube()).volume() == pytest.approx(8.0)
+    assert sm.BRep.from_mesh(ss.tetrahedron()).volume() == pytest.approx(8 / 3)
+    # a subdivided mesh is a polyhedron too: V - E + F = 2
+    smooth = sm.BRep.from_mesh(ss.triangulate(ss.cube()))
+    assert smooth.euler_characteristic == 2 and smooth.F == 12
+    with pytest.raises(ValueError, match="rings"):
+        ss.Mesh.from_brep(sm.frame())
+    with pytest.raises(TypeError, match="BRep"):
+        ss.Mesh.from_brep([[0, 1, 2]])
+    with pytest.raises(TypeError, match="Mesh"):
+        sm.BRep.from_mesh("cube")
+    with pytest.raises(ValueError, match="vertices"):
+        sm.BRep.from_mesh(ss.Mesh([[0, 0], [1, 0], [0, 1]], [[0, 1, 2]]))   # a planar mesh has no B-rep in space
+
+
 def test_two_shells_counted():
     a, b = sm.cube(), sm.cube(center=(3, 0, 0))
     both = sm.BRep(np.concatenate([a.vertices, b.vertices]), a.faces + [[v + 8 for v in f] for f in b.faces])

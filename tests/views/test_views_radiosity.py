@@ -12,13 +12,13 @@ def test_iteration_sliders_index_the_solvers_iterates():
     view = rv.radiosity_view()
     box, F = rv.cornell_scene()
     E = view.last_result["emission"]
-    h = rd.jacobi(F, box.reflectance, E, tol=1e-9, max_iterations=rv.MAX_STEPS["jacobi"], return_history=True)
+    _, h = rd.jacobi(F, box.reflectance, E, tol=1e-9, max_iter=rv.MAX_STEPS["jacobi"], full_output=True)
     r0 = view.set_values(solver="jacobi", jacobi_k=0)
     assert np.allclose(r0["radiosities"], E) and r0["iteration"] == 0       # the light alone
     r5 = view.set_values(jacobi_k=5)
-    assert np.allclose(r5["radiosities"], h.iterates[5]) and r5["residual"] < r0["residual"]
+    assert np.allclose(r5["radiosities"], h.history[5]) and r5["residual"] < r0["residual"]
     colours = view.scene.data("box")["colors"]
-    assert np.allclose(colours, rd.to_colours(rd.corner_radiosities(box, h.iterates[5]), white=rv.WHITE), atol=1e-6)
+    assert np.allclose(colours, rd.to_colours(rd.corner_radiosities(box, h.history[5]), white=rv.WHITE), atol=1e-6)
     r_gs = view.set_values(solver="gauss_seidel", gs_k=5)
     assert r_gs["residual"] < r5["residual"]                                # Gauss-Seidel converges faster
     r_pr = view.set_values(solver="progressive", shots=200)
