@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from goldman_lib.kernels import polygons, roots
+from goldman_lib.kernels import frames, polygons, roots
 from goldman_lib.lighting import Material, unit_rows
 from goldman_lib.roots import MAX_DEGREE
 from goldman_lib.validation import as_float, as_float_array, as_points, check_finite, finite_result, within_budget
@@ -181,7 +181,7 @@ class Plane(Surface):
         return (P - self.point) @ self.unit_normal <= 0
 
     def _mesh(self, n, extent):
-        u, v, _ = _frame(self.unit_normal)
+        u, v, _ = frames.frame(self.unit_normal)
         s = np.linspace(-extent, extent, n)
         S, T = np.meshgrid(s, s, indexing="ij")
         return self.point + S[..., None] * u + T[..., None] * v, _grid(n, n)
@@ -260,15 +260,6 @@ def _unit_vector(v, name: str) -> np.ndarray:
         raise ValueError(f"{name} must be a nonzero vector")
     v = v / scale
     return v / np.linalg.norm(v)
-
-
-def _frame(w, major=None) -> np.ndarray:
-    """Rows ``u, v, w``: a right-handed orthonormal frame whose last axis is the unit vector ``w``;
-    ``u`` along ``major`` projected off ``w`` (or a coordinate axis far from ``w``): the one frame
-    kernel, :func:`goldman_lib.kernels.frames.frame` (bit for bit the frame this function built)."""
-    from goldman_lib.kernels import frames     # (imported here: this body is the only hunk of this change)
-
-    return frames.frame(w, major)
 
 
 def _grid(rows: int, cols: int, wrap: bool = False) -> np.ndarray:
@@ -413,7 +404,7 @@ class Polygon(Surface):
         off = np.abs((V - V[0]) @ self.unit_normal).max()
         if off > 1e-9 * size:
             raise ValueError(f"vertices must be coplanar; a vertex lies {off:.3g} off the plane of the polygon")
-        self._frame = _frame(self.unit_normal, V[1] - V[0])
+        self._frame = frames.frame(self.unit_normal, V[1] - V[0])
         self._uv = (V - V[0]) @ self._frame[:2].T
         e = np.roll(self._uv, -1, axis=0) - self._uv
         turn = e[:, 0] * np.roll(e, -1, axis=0)[:, 1] - e[:, 1] * np.roll(e, -1, axis=0)[:, 0]
@@ -486,7 +477,7 @@ class _AxialQuadric(Surface):
         if not isinstance(capped, (bool, np.bool_)):
             raise TypeError(f"capped must be True or False; got {capped!r}")
         self.capped = bool(capped) and self.height is not None
-        self._F = _frame(self.axis, m)
+        self._F = frames.frame(self.axis, m)
         self._scale = np.array([1.0 / scales[0], 1.0 / scales[1], 1.0])
         self._set_material(material)
 
@@ -906,7 +897,7 @@ class Torus(Surface):
         if not isinstance(bound, (bool, np.bool_)):
             raise TypeError(f"bound must be True or False; got {bound!r}")
         self.bound = bool(bound)
-        self._F = _frame(self.axis)
+        self._F = frames.frame(self.axis)
         self.quartics_solved = 0
         self._set_material(material)
 
@@ -1037,7 +1028,7 @@ class SurfaceOfRevolution(Surface):
             raise TypeError(f"capped must be True or False; got {capped!r}")
         self.profile = c
         self.capped = bool(capped)
-        self._F = _frame(self.axis)
+        self._F = frames.frame(self.axis)
         self._S = max(self.height, float(rz.max()))
         crit = np.roots(np.polynomial.polynomial.polyder(c)[::-1]) if len(c) > 2 else np.array([])
         crit = crit.real[(np.abs(crit.imag) < 1e-9) & (crit.real >= 0) & (crit.real <= self.height)]
