@@ -425,7 +425,7 @@ def contraction_factor(M) -> float | np.ndarray:
 #: the size at which each allocation would map fresh pages); grid-neighbour bounds (``_WINDOW``
 #: neighbours, :class:`_Grid`) are computed when the scan still ahead is expected to exceed
 #: ``_SCAN_LIMIT`` distances.
-_PROBE, _WORK, _WINDOW, _SCAN_LIMIT = 16, 8192, 16, 1 << 16
+_PROBE, _WORK, _WINDOW, _SCAN_LIMIT = 16, 8192, 16, 1 << 13
 
 
 class _Grid:
@@ -506,8 +506,11 @@ def _directed_sq(A: np.ndarray, B: np.ndarray, cmax: float = 0.0, grid: _Grid | 
     """``max(cmax, max_a min_b |a - b|^2)`` by a branch-and-bound form of Taha and Hanbury's
     early-exit scan (as scipy's ``directed_hausdorff``), vectorised; returns it and the grid if built.
 
-    Each point of A gets an upper bound ``ub(a) >= min_b |a - b|^2``, a distance to some point of B:
-    first to ``_PROBE`` points of B in a fixed pseudo-random order and to B's extreme points; then,
+    A lower bound comes first: ``min_b |a - b|^2`` is at least a's squared distance to B's bounding
+    box, so the answer is at least the largest of these, and ``cmax`` starts one step below it (when
+    the sets are apart it is close to the answer).  Each point of A gets an upper bound
+    ``ub(a) >= min_b |a - b|^2``, a distance to some point of B: first to ``_PROBE`` points of B in a
+    fixed pseudo-random order and to B's extreme points (in two rounds); then,
     if a scan would still be long (the probe says how likely a random point of B is to come within
     ``sqrt(cmax)``), to its ``_WINDOW`` neighbours in a grid order of both sets (:class:`_Grid`).  A
     point with ``ub(a) <= cmax`` cannot raise the maximum and is dropped.  The rest are taken largest
@@ -523,24 +526,38 @@ def _directed_sq(A: np.ndarray, B: np.ndarray, cmax: float = 0.0, grid: _Grid | 
     perm = np.random.default_rng(0).permutation(m)
     Bc = [B[:, k][perm] for k in range(d)]
     Ac = [np.ascontiguousarray(A[:, k]) for k in range(d)]
+    # a lower bound on the answer: a point's distance to B's bounding box is at most its distance to
+    # B (term by term, rounding is monotone); one step below the largest, only points beyond it count
+    gap = None
+    for ak, bk in zip(Ac, Bc):
+        g = ak - np.clip(ak, bk.min(), bk.max())
+        g *= g
+        gap = g if gap is None else gap.__iadd__(g)
+    cmax = max(cmax, float(np.nextafter(gap.max(), 0.0)))
+    # the probe, in two rounds (points bounded below cmax by the first leave before the second)
     R = min(_PROBE, m)
-    probe = set(range(R))
+    second = set(range(R // 2, R))
     if m > R:        # B's extreme points in the coordinate and diagonal directions
         for v in Bc + ([Bc[0] + Bc[1], Bc[0] - Bc[1]] if d >= 2 else []):
-            probe.update((int(v.argmin()), int(v.argmax())))
-    ub = np.full(n, np.inf)
-    d2, tmp = np.empty(n), np.empty(n)
-    for j in sorted(probe):
-        np.subtract(Ac[0], Bc[0][j], out=d2)
-        d2 *= d2
-        for k in range(1, d):
-            np.subtract(Ac[k], Bc[k][j], out=tmp)
-            tmp *= tmp
-            d2 += tmp
-        np.minimum(ub, d2, out=ub)
-    cand = np.flatnonzero(ub > cmax)
-    cand = cand[np.argsort(-ub[cand])]
-    ubs = ub[cand]
+            second.update((int(v.argmin()), int(v.argmax())))
+    cand, ub, cols = np.arange(n), np.full(n, np.inf), Ac
+    for part in (range(R // 2), sorted(second)):
+        if cand.size < n:
+            cols = [ak[cand] for ak in Ac]
+        d2, tmp = np.empty(cand.size), np.empty(cand.size)
+        for j in part:
+            np.subtract(cols[0], Bc[0][j], out=d2)
+            d2 *= d2
+            for k in range(1, d):
+                np.subtract(cols[k], Bc[k][j], out=tmp)
+                tmp *= tmp
+                d2 += tmp
+            np.minimum(ub, d2, out=ub)
+        if cmax > 0:
+            keep = ub > cmax
+            cand, ub = cand[keep], ub[keep]
+    o = np.argsort(-ub)
+    cand, ubs = cand[o], ub[o]
     i, size, bounded = 0, 8, False
     while i < cand.size and ubs[i] > cmax:
         if not bounded and (i > 0 or cmax > 0):
