@@ -1,9 +1,10 @@
 """goldman_lib.bspline against scipy and geomdl, timed in the same run.
 
 - ``de_boor`` on a cubic 3D curve with 50 control points at 10,000 parameters against
-  ``scipy.interpolate.BSpline`` (compiled; target: within 3x) and ``geomdl.BSpline.Curve``
-  (pure Python; target: at least 50x faster).  ``global_de_boor`` (basis matrix times control
-  points) is printed beside it.
+  ``scipy.interpolate.BSpline`` (compiled; target: within 1.2x, issue 19 §5) and
+  ``geomdl.BSpline.Curve`` (pure Python; target: at least 50x faster).  ``global_de_boor`` (the
+  global pyramid of §27.3: the full basis matrix times the control points) is printed beside it
+  with its ratio, without a target.
 - a bicubic B-spline surface with 10 x 10 control points on a 100 x 100 grid: ``surface_grid``
   (basis matrices ``N(u) P N(v)^T`` per coordinate) against ``scipy.interpolate.bisplev`` for the
   three coordinates; target: at least as fast.
@@ -85,7 +86,7 @@ def bench_surface(rng) -> dict[str, float]:
 def main() -> dict[str, float]:
     rng = np.random.default_rng(27)
     ratios = {**bench_curve(rng), **bench_surface(rng)}
-    for name, limit, better in (("de_boor/scipy", 3.0, "<="), ("geomdl/de_boor", 50.0, ">="),
+    for name, limit, better in (("de_boor/scipy", 1.2, "<="), ("geomdl/de_boor", 50.0, ">="),
                                 ("surface_grid/bisplev", 1.0, "<=")):
         ok = ratios[name] <= limit if better == "<=" else ratios[name] >= limit
         print(f"target {name} {better} {limit:g}x: {'met' if ok else 'MISSED'} ({ratios[name]:.2f}x)")

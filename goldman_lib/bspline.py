@@ -200,8 +200,8 @@ def multiplicity(knots, value, tol: float = 0.0) -> int:
 def _check_u(u, t: np.ndarray, p: int, name: str = "u") -> np.ndarray:
     arr = as_parameter(u, name)
     lo, hi = pyramids.domain(t, p)
-    bad = (arr < lo) | (arr > hi)
-    if bad.any():
+    if arr.size and (arr.min() < lo or arr.max() > hi):
+        bad = (arr < lo) | (arr > hi)
         flat = int(np.flatnonzero(bad)[0])
         where = name if arr.ndim == 0 else f"{name}[{', '.join(str(int(i)) for i in np.unravel_index(flat, arr.shape))}]"
         raise ValueError(f"{name} must lie in the domain [knots[{p}], knots[{t.size - p - 1}]] = "
@@ -211,15 +211,21 @@ def _check_u(u, t: np.ndarray, p: int, name: str = "u") -> np.ndarray:
 
 def _spans(t: np.ndarray, p: int, u: np.ndarray, side: str = "right") -> np.ndarray:
     """Span index k with t[k] <= u < t[k+1] (side 'right') or t[k] < u <= t[k+1] (side 'left'),
-    restricted to the non-empty spans of the domain; u already validated."""
+    restricted to the non-empty spans of the domain; u already validated.  Counted among the knots
+    strictly inside the first and last non-empty spans, so no clipping is needed."""
     n = t.size - p - 2
     lo_k = int(np.searchsorted(t, t[p], side="right")) - 1        # first non-empty span
     hi_k = int(np.searchsorted(t, t[n + 1], side="left")) - 1     # last non-empty span
-    if side == "right":
-        k = np.searchsorted(t, u, side="right") - 1
-    else:
-        k = np.searchsorted(t, u, side="left") - 1
-    return np.clip(k, lo_k, hi_k)
+    inner = t[lo_k + 1:hi_k + 1]
+    side = "right" if side == "right" else "left"
+    if u.ndim == 1 and u.size > 4 * inner.size + 16 and not (u[1:] < u[:-1]).any():
+        # sorted u (a sampled curve): place the few knots among the parameters instead, and repeat
+        # each span index over its run of parameters (the same counts, no binary search per u)
+        starts = np.searchsorted(u, inner, side="left" if side == "right" else "right")
+        return np.repeat(np.arange(lo_k, hi_k + 1), np.diff(starts, prepend=0, append=u.size))
+    k = np.searchsorted(inner, u, side=side)
+    k += lo_k
+    return k
 
 
 def find_span(knots, degree, u, side: str = "right"):

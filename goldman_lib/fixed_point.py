@@ -610,10 +610,12 @@ def _point_sets(A, B) -> tuple[np.ndarray, np.ndarray]:
 def directed_hausdorff(A, B) -> float:
     """The directed Hausdorff distance ``max over a in A of min over b in B of |a - b|`` (Goldman §7.3.3).
 
-    Computed by an early-exit scan (Taha and Hanbury 2015, as scipy's ``directed_hausdorff``):
-    points in a fixed shuffled order, and a point of A stops scanning B as soon as some b is
-    closer than the largest minimum found so far, since it cannot raise the maximum.  O(n m) at
-    worst, near O(n + m) for most sets; the value is exact whatever the order.
+    Computed by an early-exit scan (Taha and Hanbury 2015, as scipy's ``directed_hausdorff``) with
+    bounds: a point of A stops scanning B as soon as some b is closer than the largest minimum found
+    so far, since it cannot raise the maximum, and most points stop before scanning, bounded by
+    their distance to a few points of B or to their grid neighbours in B (see ``_directed_sq``).
+    O(n m) at worst, near O(n + m) for most sets; the value is exact (the brute-force maximum of
+    the minima, to the last bit) whatever the order.
 
     A: (n, d) points.  B: (m, d) points, same d, with ``n m`` at most :data:`MAX_PAIRS`.  Raises
     ValueError for empty sets, mismatched dimensions or too many pairs.
@@ -636,7 +638,8 @@ def hausdorff_distance(A, B) -> float:
     attractor from any start.
 
     A: (n, d) points.  B: (m, d) points, same d.  Cost O(n m) time at worst, usually far less (an
-    early-exit scan, see :func:`directed_hausdorff`), memory O(1) beyond the inputs;
+    early-exit scan with bounds, see :func:`directed_hausdorff`; the second direction searches only
+    for points beyond the first direction's value), memory O(n + m) beyond the inputs;
     ``n m`` at most :data:`MAX_PAIRS`.  Raises ValueError for empty sets, mismatched dimensions
     or too many pairs.
 
