@@ -87,17 +87,17 @@ def check_knots(knots, degree, n_ctrl=None, name: str = "knots", *, degree_name:
     if t.ndim != 1:
         raise ValueError(f"{name} must be a 1-D array of knots; got shape {t.shape}")
     check_finite(t, name)
-    with np.errstate(over="ignore"):
-        spread = t[-1] - t[0] if t.size else 0.0
-    if not np.isfinite(spread) and np.all(t[1:] >= t[:-1]):
+    spread = float(t[-1]) - float(t[0]) if t.size else 0.0      # Python floats overflow to inf quietly
+    if not math.isfinite(spread) and np.all(t[1:] >= t[:-1]):
         # de Boor's weights (u - t_i) / (t_j - t_i) would be inf / inf: the curve is not computable
         raise ValueError(f"{name} is too large in magnitude: {name}[-1] - {name}[0] = {_fmt(t[-1])} - {_fmt(t[0])} "
                          f"overflows float64 (knots must span less than about 1.8e308)")
-    dec = np.flatnonzero(t[1:] < t[:-1])
-    if dec.size:
-        i = int(dec[0]) + 1
+    down = t[1:] < t[:-1]
+    if down.any():
+        i = int(np.flatnonzero(down)[0]) + 1
         raise ValueError(f"{name} must be non-decreasing; {name}[{i}]={_fmt(t[i])} < {name}[{i - 1}]={_fmt(t[i - 1])}")
-    if t.size:
+    # non-decreasing, so a knot repeats more than degree+1 times exactly where t[i] == t[i+degree+1]
+    if t.size > degree + 1 and (t[degree + 1:] == t[:t.size - degree - 1]).any():
         starts = np.flatnonzero(np.r_[True, t[1:] != t[:-1]])
         counts = np.diff(np.r_[starts, t.size])
         big = np.flatnonzero(counts > degree + 1)
