@@ -556,9 +556,11 @@ def _directed_sq(A: np.ndarray, B: np.ndarray, cmax: float = 0.0, grid: _Grid | 
         if cmax > 0:
             keep = ub > cmax
             cand, ub = cand[keep], ub[keep]
+    if R == m:                   # the probe measured every point of B: the bounds are the minima
+        return (max(cmax, float(ub.max())) if ub.size else cmax), grid
     o = np.argsort(-ub)
     cand, ubs = cand[o], ub[o]
-    i, size, bounded = 0, 8, False
+    i, size, bounded = 0, max(1, min(8, (1 << 16) // m)), False     # the first block scans all of B
     while i < cand.size and ubs[i] > cmax:
         if not bounded and (i > 0 or cmax > 0):
             bounded = True           # cmax is known: is a scan of the rest short enough?
