@@ -190,8 +190,8 @@ def test_de_boor_shapes_and_large_input():
 
 @pytest.mark.parametrize("p", [0, 1, 3, 5])
 def test_de_boor_gives_the_same_bits_for_sorted_shuffled_and_single_parameters(p):
-    """Sorted parameters take the span runs (knots placed among them, columns repeated), shuffled ones
-    the binary search and the column gather, single ones neither: every path runs the same pyramid."""
+    """Sorted parameters find their spans by placing the knots among them, shuffled ones by a binary
+    search per parameter, single ones alone: every path runs the same pyramid to the same bits."""
     rng = np.random.default_rng(p)
     inner = [0.1, 0.3, 0.3, 0.5, 0.7, 0.7, 0.9] if p >= 2 else [0.1, 0.3, 0.5, 0.7, 0.9]   # doubled knots from p = 2
     knots = np.r_[np.zeros(p + 1), inner, np.ones(p + 1)]
