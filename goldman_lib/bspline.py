@@ -222,7 +222,7 @@ def _spans(t: np.ndarray, p: int, u: np.ndarray, side: str = "right") -> np.ndar
         # sorted u (a sampled curve): place the few knots among the parameters instead, and repeat
         # each span index over its run of parameters (the same counts, no binary search per u)
         starts = np.searchsorted(u, inner, side="left" if side == "right" else "right")
-        return np.repeat(np.arange(lo_k, hi_k + 1), np.diff(starts, prepend=0, append=u.size))
+        return np.repeat(np.arange(lo_k, hi_k + 1), np.diff(np.concatenate(([0], starts, [u.size]))))
     k = np.searchsorted(inner, u, side=side)
     k += lo_k
     return k
