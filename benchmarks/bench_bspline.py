@@ -1,9 +1,10 @@
 """goldman_lib.bspline against scipy and geomdl, timed in the same run.
 
 - ``de_boor`` on a cubic 3D curve with 50 control points at 10,000 parameters against
-  ``scipy.interpolate.BSpline`` (compiled; target: within 3x) and ``geomdl.BSpline.Curve``
-  (pure Python; target: at least 50x faster).  ``global_de_boor`` (basis matrix times control
-  points) is printed beside it.
+  ``scipy.interpolate.BSpline`` (compiled; target: within 1.2x, issue 19 §5) and
+  ``geomdl.BSpline.Curve`` (pure Python; target: at least 50x faster).  ``global_de_boor`` (the
+  global pyramid of §27.3: the full basis matrix times the control points) is printed beside it
+  with its ratio, without a target.
 - a bicubic B-spline surface with 10 x 10 control points on a 100 x 100 grid: ``surface_grid``
   (basis matrices ``N(u) P N(v)^T`` per coordinate) against ``scipy.interpolate.bisplev`` for the
   three coordinates; target: at least as fast.
@@ -48,18 +49,19 @@ def bench_curve(rng) -> dict[str, float]:
     err = float(np.abs(np.array(crv.evaluate_list(few)) - ref(np.array(few))).max())
     if err > 1e-12:
         raise AssertionError(f"geomdl disagrees with scipy BSpline by {err:.3g}")
-    # scipy's construction is included: BSpline(t, c, k)(u) is what a caller with arrays does
-    t_scipy, t_ours, t_global = best_times(lambda: BSpline(knots, ctrl, 3)(u),
-                                           lambda: gb.de_boor(ctrl, knots, 3, u),
-                                           lambda: gb.global_de_boor(ctrl, knots, 3, u))
+    # scipy's construction is included: BSpline(t, c, k)(u) is what a caller with arrays does.  Each
+    # of ours is timed in its own interleaved pair with scipy: global_de_boor's 4 MB basis matrix,
+    # timed in the same rounds, would evict de_boor's working set and slow it by 20-40%
+    t_scipy, t_ours = best_times(lambda: BSpline(knots, ctrl, 3)(u), lambda: gb.de_boor(ctrl, knots, 3, u))
+    t_scipy_g, t_global = best_times(lambda: BSpline(knots, ctrl, 3)(u), lambda: gb.global_de_boor(ctrl, knots, 3, u))
     t_geomdl = best_time(lambda: crv.evaluate_list(few), repeat=3) * (CURVE_SAMPLES / len(few))
     label = f"cubic 3D curve, {N_CTRL} ctrl, {CURVE_SAMPLES} params"
     report(f"de_boor        {label}", t_ours, t_scipy, "scipy")
-    report(f"global_de_boor {label}", t_global, t_scipy, "scipy")
+    report(f"global_de_boor {label}", t_global, t_scipy_g, "scipy")
     report(f"geomdl.BSpline.Curve {label}", t_geomdl)
     print(f"{'':<44} de_boor is {t_geomdl / t_ours:.0f}x faster than geomdl", flush=True)
     return {"de_boor/scipy": t_ours / t_scipy, "geomdl/de_boor": t_geomdl / t_ours,
-            "global_de_boor/scipy": t_global / t_scipy}
+            "global_de_boor/scipy": t_global / t_scipy_g}
 
 
 def bench_surface(rng) -> dict[str, float]:
@@ -85,7 +87,7 @@ def bench_surface(rng) -> dict[str, float]:
 def main() -> dict[str, float]:
     rng = np.random.default_rng(27)
     ratios = {**bench_curve(rng), **bench_surface(rng)}
-    for name, limit, better in (("de_boor/scipy", 3.0, "<="), ("geomdl/de_boor", 50.0, ">="),
+    for name, limit, better in (("de_boor/scipy", 1.2, "<="), ("geomdl/de_boor", 50.0, ">="),
                                 ("surface_grid/bisplev", 1.0, "<=")):
         ok = ratios[name] <= limit if better == "<=" else ratios[name] >= limit
         print(f"target {name} {better} {limit:g}x: {'met' if ok else 'MISSED'} ({ratios[name]:.2f}x)")

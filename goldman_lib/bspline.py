@@ -87,17 +87,17 @@ def check_knots(knots, degree, n_ctrl=None, name: str = "knots", *, degree_name:
     if t.ndim != 1:
         raise ValueError(f"{name} must be a 1-D array of knots; got shape {t.shape}")
     check_finite(t, name)
-    with np.errstate(over="ignore"):
-        spread = t[-1] - t[0] if t.size else 0.0
-    if not np.isfinite(spread) and np.all(t[1:] >= t[:-1]):
+    spread = float(t[-1]) - float(t[0]) if t.size else 0.0      # Python floats overflow to inf quietly
+    if not math.isfinite(spread) and np.all(t[1:] >= t[:-1]):
         # de Boor's weights (u - t_i) / (t_j - t_i) would be inf / inf: the curve is not computable
         raise ValueError(f"{name} is too large in magnitude: {name}[-1] - {name}[0] = {_fmt(t[-1])} - {_fmt(t[0])} "
                          f"overflows float64 (knots must span less than about 1.8e308)")
-    dec = np.flatnonzero(t[1:] < t[:-1])
-    if dec.size:
-        i = int(dec[0]) + 1
+    down = t[1:] < t[:-1]
+    if down.any():
+        i = int(np.flatnonzero(down)[0]) + 1
         raise ValueError(f"{name} must be non-decreasing; {name}[{i}]={_fmt(t[i])} < {name}[{i - 1}]={_fmt(t[i - 1])}")
-    if t.size:
+    # non-decreasing, so a knot repeats more than degree+1 times exactly where t[i] == t[i+degree+1]
+    if t.size > degree + 1 and (t[degree + 1:] == t[:t.size - degree - 1]).any():
         starts = np.flatnonzero(np.r_[True, t[1:] != t[:-1]])
         counts = np.diff(np.r_[starts, t.size])
         big = np.flatnonzero(counts > degree + 1)
@@ -200,8 +200,8 @@ def multiplicity(knots, value, tol: float = 0.0) -> int:
 def _check_u(u, t: np.ndarray, p: int, name: str = "u") -> np.ndarray:
     arr = as_parameter(u, name)
     lo, hi = pyramids.domain(t, p)
-    bad = (arr < lo) | (arr > hi)
-    if bad.any():
+    if arr.size and (arr.min() < lo or arr.max() > hi):
+        bad = (arr < lo) | (arr > hi)
         flat = int(np.flatnonzero(bad)[0])
         where = name if arr.ndim == 0 else f"{name}[{', '.join(str(int(i)) for i in np.unravel_index(flat, arr.shape))}]"
         raise ValueError(f"{name} must lie in the domain [knots[{p}], knots[{t.size - p - 1}]] = "
@@ -211,15 +211,21 @@ def _check_u(u, t: np.ndarray, p: int, name: str = "u") -> np.ndarray:
 
 def _spans(t: np.ndarray, p: int, u: np.ndarray, side: str = "right") -> np.ndarray:
     """Span index k with t[k] <= u < t[k+1] (side 'right') or t[k] < u <= t[k+1] (side 'left'),
-    restricted to the non-empty spans of the domain; u already validated."""
+    restricted to the non-empty spans of the domain; u already validated.  Counted among the knots
+    strictly inside the first and last non-empty spans, so no clipping is needed."""
     n = t.size - p - 2
     lo_k = int(np.searchsorted(t, t[p], side="right")) - 1        # first non-empty span
     hi_k = int(np.searchsorted(t, t[n + 1], side="left")) - 1     # last non-empty span
-    if side == "right":
-        k = np.searchsorted(t, u, side="right") - 1
-    else:
-        k = np.searchsorted(t, u, side="left") - 1
-    return np.clip(k, lo_k, hi_k)
+    inner = t[lo_k + 1:hi_k + 1]
+    side = "right" if side == "right" else "left"
+    if u.ndim == 1 and u.size > 4 * inner.size + 16 and not (u[1:] < u[:-1]).any():
+        # sorted u (a sampled curve): place the few knots among the parameters instead, and repeat
+        # each span index over its run of parameters (the same counts, no binary search per u)
+        starts = np.searchsorted(u, inner, side="left" if side == "right" else "right")
+        return np.repeat(np.arange(lo_k, hi_k + 1), np.diff(np.concatenate(([0], starts, [u.size]))))
+    k = np.searchsorted(inner, u, side=side)
+    k += lo_k
+    return k
 
 
 def find_span(knots, degree, u, side: str = "right"):

@@ -404,99 +404,179 @@ def contraction_factor(M) -> float | np.ndarray:
     return float(s) if s.ndim == 0 else s
 
 
-#: The early-exit scan of :func:`_directed_sq`: the first block of A (doubling up to the cap), and
-#: the distances one step computes (at least ``_STEP_MIN`` points of B per step).
-_FIRST_BLOCK, _BLOCK_CAP, _STEP_WORK, _STEP_MIN = 16, 1024, 2 ** 14, 16
-#: Grid neighbours of each point of A that bound its distance to B (:func:`_window_bounds`), and how
-#: long a random scan must expect to be (points of B) before they are worth computing.
-_WINDOW, _WINDOW_WHEN = 16, 32
+#: The Hausdorff distance's search (:func:`_directed_sq`): every point of A is first measured against
+#: ``_PROBE`` points of B; scans compute about ``_WORK`` distances a step (64 KB temporaries, below
+#: the size at which each allocation would map fresh pages); grid-neighbour bounds (``_WINDOW``
+#: neighbours, :class:`_Grid`) are computed when the scan still ahead is expected to exceed
+#: ``_SCAN_LIMIT`` distances.
+_PROBE, _WORK, _WINDOW, _SCAN_LIMIT = 16, 8192, 16, 1 << 13
 
 
-def _window_bounds(A: np.ndarray, B: np.ndarray) -> np.ndarray:
-    """For each point of A, the squared distance to the nearest of ``_WINDOW`` points of B that lie
-    near it in a snake order of a coarse grid (over the first two coordinates): a distance to a
-    point of B, so an upper bound on its distance to B, and usually a close one."""
-    m, d = B.shape
-    W = _WINDOW
-    lo = np.minimum(A[:, :2].min(axis=0), B[:, :2].min(axis=0))
-    hi = np.maximum(A[:, :2].max(axis=0), B[:, :2].max(axis=0))
-    g = max(1, int(np.sqrt(m / W)))
-    inv = np.where(hi > lo, g / np.where(hi > lo, hi - lo, 1.0), 0.0)
+class _Grid:
+    """Two point sets in one order in which neighbours are near in the plane: strips of equal width
+    over the union's bounding box (first two coordinates), points in each strip by y, every other
+    strip reversed (a snake).  ``side(0)`` gives each point of A's place among the sorted points of B,
+    B and that order; ``side(1)`` the same for B among A.  Built once for both directions."""
 
-    def key(P):
-        c = ((P[:, :2] - lo) * inv).astype(np.int64)
-        np.minimum(c, g - 1, out=c)
-        cx, cy = c[:, 0], c[:, 1]
-        return cy * g + cx + (cy & 1) * (g - 1 - 2 * cx)     # rows of cells, every other one reversed
+    def __init__(self, A: np.ndarray, B: np.ndarray, w: int):
+        n, m = len(A), len(B)
+        P = np.concatenate([A, B])
+        x = P[:, 0]
+        if P.shape[1] >= 2:
+            y = P[:, 1]
+            xlo, ylo = x.min(), y.min()
+            X, H = float(x.max() - xlo), float(y.max() - ylo)
+            most = max((n + m) // (2 * w), 1)
+            with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+                S = np.sqrt((n + m) / 2 * X / (H * w)) if H > 0 else most
+                strips = int(min(S, most)) if np.isfinite(S) else 1
+                strips = max(strips, 1)
+                s = ((x - xlo) * (strips / X)).astype(np.int64) if 0 < X < np.inf else np.zeros(n + m, np.int64)
+                np.clip(s, 0, strips - 1, out=s)
+                v = (y - ylo) / H if 0 < H < np.inf else np.zeros(n + m)
+            key = np.where(s & 1, 1.0 - v, v)
+            key += 2.0 * s
+        else:
+            key = x
+        o = np.argsort(key)
+        in_b = o >= n
+        b_before = np.cumsum(in_b)
+        a_before = np.arange(1, n + m + 1) - b_before
+        self.order_a, self.order_b = o[~in_b], o[in_b] - n
+        self.pos_a = np.empty(n, np.intp)
+        self.pos_a[self.order_a] = b_before[~in_b]
+        self.pos_b = np.empty(m, np.intp)
+        self.pos_b[self.order_b] = a_before[in_b]
+        self.A, self.B = A, B
 
-    kb = key(B)
-    order = np.argsort(kb, kind="stable")
-    start = np.clip(np.searchsorted(kb[order], key(A)) - W // 2, 0, m - W)
+    def side(self, which: int):
+        return (self.pos_a, self.B, self.order_b) if which == 0 else (self.pos_b, self.A, self.order_a)
+
+
+def _sq_dist(Ac, rows, Bc, lo: int, hi: int) -> np.ndarray:
+    """``|a - b|^2`` for a in A[rows], b in B[lo:hi], ``(len(rows), hi - lo)``, summed over the
+    coordinates in order from the differences (the arithmetic of scipy's directed_hausdorff)."""
     d2 = None
-    for k in range(d):
-        near = np.lib.stride_tricks.sliding_window_view(B[order, k], W)[start]
-        diff = A[:, k][:, None] - near
+    for ak, bk in zip(Ac, Bc):
+        diff = ak[rows][:, None] - bk[None, lo:hi]
         diff *= diff
         d2 = diff if d2 is None else d2.__iadd__(diff)
-    return d2.min(axis=1)
+    return d2
 
 
-def _directed_sq(A: np.ndarray, B: np.ndarray) -> float:
-    """``max_a min_b |a - b|^2`` by the early-exit scan of Taha and Hanbury (as scipy's
-    ``directed_hausdorff``), vectorised in blocks.
+def _window_bounds(Ac, rows: np.ndarray, pos: np.ndarray, T: np.ndarray, order: np.ndarray, w: int) -> np.ndarray:
+    """For each point A[rows], the squared distance to the nearest of the w points of T about its
+    place ``pos`` in the grid order: a distance to a point of T, so an upper bound on its distance to
+    T, and usually a close one."""
+    m = len(T)
+    start = np.clip(pos[rows] - w // 2, 0, m - w)
+    out = np.empty(rows.size)
+    chunk = max(1, _WORK // w)
+    near = [np.lib.stride_tricks.sliding_window_view(T[order, k], w) for k in range(T.shape[1])]
+    for s in range(0, rows.size, chunk):
+        st, r = start[s:s + chunk], rows[s:s + chunk]
+        d2 = None
+        for ak, nk in zip(Ac, near):
+            diff = nk[st]
+            diff -= ak[r, None]
+            diff *= diff
+            d2 = diff if d2 is None else d2.__iadd__(diff)
+        d2.min(axis=1, out=out[s:s + chunk])
+    return out
 
-    The points are visited in a fixed pseudo-random order.  A block of points of A scans B in
-    steps, keeping each point's running minimum; a point whose running minimum falls below the
-    largest minimum found so far (``cmax``) cannot raise the maximum and leaves the scan.  The
-    points that reach the end of B have their exact minimum, and ``cmax`` becomes the largest of
-    them.  Blocks start small (so ``cmax`` is soon large) and double.  When the sets overlap,
-    ``cmax`` is small and a random scan long, so after the first block every other point of A starts
-    with the distance to its grid neighbours in B (:func:`_window_bounds`, ours) as its running
-    minimum, and the points are taken largest bound first: most leave before scanning anything.
-    Distances are computed from the differences ``a - b`` (no ``|a|^2 - 2 a.b + |b|^2``
-    cancellation), so the result is exact in floating point whatever the order.  Memory: about
-    ``_STEP_WORK`` floats (``_WINDOW`` per point of A for the bounds).
+
+def _directed_sq(A: np.ndarray, B: np.ndarray, cmax: float = 0.0, grid: _Grid | None = None,
+                 which: int = 0) -> tuple[float, _Grid | None]:
+    """``max(cmax, max_a min_b |a - b|^2)`` by a branch-and-bound form of Taha and Hanbury's
+    early-exit scan (as scipy's ``directed_hausdorff``), vectorised; returns it and the grid if built.
+
+    A lower bound comes first: ``min_b |a - b|^2`` is at least a's squared distance to B's bounding
+    box, so the answer is at least the largest of these, and ``cmax`` starts one step below it (when
+    the sets are apart it is close to the answer).  Each point of A gets an upper bound
+    ``ub(a) >= min_b |a - b|^2``, a distance to some point of B: first to ``_PROBE`` points of B in a
+    fixed pseudo-random order and to B's extreme points (in two rounds); then,
+    if a scan would still be long (the probe says how likely a random point of B is to come within
+    ``sqrt(cmax)``), to its ``_WINDOW`` neighbours in a grid order of both sets (:class:`_Grid`).  A
+    point with ``ub(a) <= cmax`` cannot raise the maximum and is dropped.  The rest are taken largest
+    bound first, in blocks (8, doubling): each scans B in the pseudo-random order and leaves as soon as
+    its running minimum falls to ``cmax``; those reaching the end have their exact minimum and raise
+    ``cmax``.  The search stops when the largest remaining bound is at most ``cmax``.  Every value
+    compared is a computed distance ``sum_k (a_k - b_k)^2`` and min and max are exact, so the result
+    is the brute-force maximum to the last bit, whatever the order.  ``cmax`` carries the other
+    direction's value into :func:`hausdorff_distance`, where only points above it matter.
     """
-    rng = np.random.default_rng(0)
-    A = A[rng.permutation(len(A))]
-    B = B[rng.permutation(len(B))]
-    d, m = A.shape[1], len(B)
+    n, d = A.shape
+    m = len(B)
+    perm = np.random.default_rng(0).permutation(m)
+    Bc = [B[:, k][perm] for k in range(d)]
     Ac = [np.ascontiguousarray(A[:, k]) for k in range(d)]
-    Bc = [np.ascontiguousarray(B[:, k]) for k in range(d)]
-    ub = np.full(len(A), np.inf)
-    cmax = 0.0
-    start, size = 0, _FIRST_BLOCK
-    while start < len(A):
-        stop = min(start + size, len(A))
-        best = ub[start:stop].copy()
-        alive = np.flatnonzero(best >= cmax)
-        bs = 0
-        while bs < m and alive.size:
-            step = min(max(_STEP_WORK // alive.size, _STEP_MIN), m - bs)
-            rows = start + alive
-            d2 = None
-            for k in range(d):
-                diff = Ac[k][rows][:, None] - Bc[k][None, bs:bs + step]
-                diff *= diff
-                d2 = diff if d2 is None else d2.__iadd__(diff)
-            best[alive] = np.minimum(best[alive], d2.min(axis=1))
-            alive = alive[best[alive] >= cmax]
-            bs += step
+    # a lower bound on the answer: a point's distance to B's bounding box is at most its distance to
+    # B (term by term, rounding is monotone); one step below the largest, only points beyond it count
+    gap = None
+    for ak, bk in zip(Ac, Bc):
+        g = ak - np.clip(ak, bk.min(), bk.max())
+        g *= g
+        gap = g if gap is None else gap.__iadd__(g)
+    cmax = max(cmax, float(np.nextafter(gap.max(), 0.0)))
+    # the probe, in two rounds (points bounded below cmax by the first leave before the second)
+    R = min(_PROBE, m)
+    second = set(range(R // 2, R))
+    if m > R:        # B's extreme points in the coordinate and diagonal directions
+        for v in Bc + ([Bc[0] + Bc[1], Bc[0] - Bc[1]] if d >= 2 else []):
+            second.update((int(v.argmin()), int(v.argmax())))
+    cand, ub, cols = np.arange(n), np.full(n, np.inf), Ac
+    for part in (range(R // 2), sorted(second)):
+        if cand.size < n:
+            cols = [ak[cand] for ak in Ac]
+        d2, tmp = np.empty(cand.size), np.empty(cand.size)
+        for j in part:
+            np.subtract(cols[0], Bc[0][j], out=d2)
+            d2 *= d2
+            for k in range(1, d):
+                np.subtract(cols[k], Bc[k][j], out=tmp)
+                tmp *= tmp
+                d2 += tmp
+            np.minimum(ub, d2, out=ub)
+        if cmax > 0:
+            keep = ub > cmax
+            cand, ub = cand[keep], ub[keep]
+    if R == m:                   # the probe measured every point of B: the bounds are the minima
+        return (max(cmax, float(ub.max())) if ub.size else cmax), grid
+    o = np.argsort(-ub)
+    cand, ubs = cand[o], ub[o]
+    i, size, bounded = 0, max(1, min(8, (1 << 16) // m)), False     # the first block scans all of B
+    while i < cand.size and ubs[i] > cmax:
+        if not bounded and (i > 0 or cmax > 0):
+            bounded = True           # cmax is known: is a scan of the rest short enough?
+            keep = ubs[i:] > cmax
+            cand, ubs, i = cand[i:][keep], ubs[i:][keep], 0
+            f = cand.size / n        # the fraction of A that none of R random points of B came near
+            q = 1.0 - f ** (1.0 / R) if f < 1 else 0.0
+            if cand.size > 64 and (q <= 0 or cand.size / q > _SCAN_LIMIT):
+                if grid is None:
+                    grid, which = _Grid(A, B, min(_WINDOW, m)), 0
+                pos, T, order = grid.side(which)
+                np.minimum(ubs, _window_bounds(Ac, cand, pos, T, order, min(_WINDOW, m)), out=ubs)
+                keep = ubs > cmax
+                cand, ubs = cand[keep], ubs[keep]
+                o = np.argsort(-ubs)
+                cand, ubs = cand[o], ubs[o]
+            if not cand.size:
+                break
+        stop = min(i + size, cand.size)
+        rows = cand[i:stop]
+        best = ubs[i:stop].copy()
+        alive = np.flatnonzero(best > cmax)
+        j = R
+        while j < m and alive.size:
+            step = min(max(_WORK // alive.size, 16), m - j)
+            best[alive] = np.minimum(best[alive], _sq_dist(Ac, rows[alive], Bc, j, j + step).min(axis=1))
+            alive = alive[best[alive] > cmax]
+            j += step
         if alive.size:
             cmax = max(cmax, float(best[alive].max()))
-        if start == 0 and stop < len(A) and d >= 2 and m > _WINDOW:
-            # cmax is now the largest distance of a few random points; a random scan meets a point
-            # of B within sqrt(cmax) after about area / (pi cmax) points of B
-            ext = np.ptp(B[:, :2], axis=0)
-            area = float(ext[0] * ext[1])
-            if area > 0 and (cmax == 0 or area / (np.pi * cmax) > _WINDOW_WHEN):
-                bound = _window_bounds(A[stop:], B)
-                order = stop + np.argsort(-bound, kind="stable")
-                A = np.concatenate([A[:stop], A[order]])
-                ub[stop:] = bound[order - stop]
-                Ac = [np.ascontiguousarray(A[:, k]) for k in range(d)]
-        start, size = stop, min(2 * size, _BLOCK_CAP)
-    return cmax
+        i, size = stop, min(2 * size, 512)
+    return cmax, grid
 
 
 def _point_sets(A, B) -> tuple[np.ndarray, np.ndarray]:
@@ -516,10 +596,12 @@ def _point_sets(A, B) -> tuple[np.ndarray, np.ndarray]:
 def directed_hausdorff(A, B) -> float:
     """The directed Hausdorff distance ``max over a in A of min over b in B of |a - b|`` (Goldman §7.3.3).
 
-    Computed by an early-exit scan (Taha and Hanbury 2015, as scipy's ``directed_hausdorff``):
-    points in a fixed shuffled order, and a point of A stops scanning B as soon as some b is
-    closer than the largest minimum found so far, since it cannot raise the maximum.  O(n m) at
-    worst, near O(n + m) for most sets; the value is exact whatever the order.
+    Computed by an early-exit scan (Taha and Hanbury 2015, as scipy's ``directed_hausdorff``) with
+    bounds: a point of A stops scanning B as soon as some b is closer than the largest minimum found
+    so far, since it cannot raise the maximum, and most points stop before scanning, bounded by
+    their distance to a few points of B or to their grid neighbours in B (see ``_directed_sq``).
+    O(n m) at worst, near O(n + m) for most sets; the value is exact (the brute-force maximum of
+    the minima, to the last bit) whatever the order.
 
     A: (n, d) points.  B: (m, d) points, same d, with ``n m`` at most :data:`MAX_PAIRS`.  Raises
     ValueError for empty sets, mismatched dimensions or too many pairs.
@@ -529,7 +611,7 @@ def directed_hausdorff(A, B) -> float:
     """
     A, B = _point_sets(A, B)
     with np.errstate(over="ignore", invalid="ignore"):
-        out = np.sqrt(_directed_sq(A, B))
+        out = np.sqrt(_directed_sq(A, B)[0])
     return float(finite_result(out, "A and B", why="are too large in magnitude"))
 
 
@@ -542,7 +624,8 @@ def hausdorff_distance(A, B) -> float:
     attractor from any start.
 
     A: (n, d) points.  B: (m, d) points, same d.  Cost O(n m) time at worst, usually far less (an
-    early-exit scan, see :func:`directed_hausdorff`), memory O(1) beyond the inputs;
+    early-exit scan with bounds, see :func:`directed_hausdorff`; the second direction searches only
+    for points beyond the first direction's value), memory O(n + m) beyond the inputs;
     ``n m`` at most :data:`MAX_PAIRS`.  Raises ValueError for empty sets, mismatched dimensions
     or too many pairs.
 
@@ -551,7 +634,8 @@ def hausdorff_distance(A, B) -> float:
     """
     A, B = _point_sets(A, B)
     with np.errstate(over="ignore", invalid="ignore"):
-        out = np.sqrt(max(_directed_sq(A, B), _directed_sq(B, A)))
+        h, grid = _directed_sq(A, B)
+        out = np.sqrt(_directed_sq(B, A, h, grid, 1)[0])     # only points of B beyond h matter
     return float(finite_result(out, "A and B", why="are too large in magnitude"))
 
 

@@ -309,36 +309,26 @@ def chaos_game_with_maps(system, n, rng=None, *, burn_in: int = 20, chains: int 
     except ValueError:
         start = np.zeros(2)
     L, t = s.linear_parts, s.translations
-    a, b, c, d = L[:, 0, 0], L[:, 0, 1], L[:, 1, 0], L[:, 1, 1]
-    e, f = t[:, 0], t[:, 1]
+    coef = np.stack([L[:, 0, 0], L[:, 1, 0], t[:, 0], L[:, 0, 1], L[:, 1, 1], t[:, 1]])   # a, c, e, b, d, f
     C = s.condensation if with_condensation else None
+    jump_to = None
     if C is None:
-        idx = gen.choice(k, size=(burn_in + steps, chains), p=s.probabilities)
+        idx = iteration.choose(gen, s.probabilities, (burn_in + steps, chains))
     else:
         p = np.append(s.probabilities * k / (k + 1), 1.0 / (k + 1))
-        idx = gen.choice(k + 1, size=(burn_in + steps, chains), p=p)
-        # the "condensation map" sends a point to a uniformly random point of the polyline C
-        cpts = _sample_polyline(C, (burn_in + steps, chains), gen)
-        a, b, c, d, e, f = (np.append(v, 0.0) for v in (a, b, c, d, e, f))
-    x = np.full(chains, start[0])
-    y = np.full(chains, start[1])
-    out = np.empty((steps, 2, chains))
-    with np.errstate(over="ignore", invalid="ignore"):
-        for step in range(burn_in + steps):
-            i = idx[step]
-            x, y = x * a[i] + y * c[i] + e[i], x * b[i] + y * d[i] + f[i]
-            if C is not None:
-                jump = i == k
-                x[jump] = cpts[step, jump, 0]
-                y[jump] = cpts[step, jump, 1]
-            if step >= burn_in:
-                out[step - burn_in, 0] = x
-                out[step - burn_in, 1] = y
-    pts = out.transpose(0, 2, 1).reshape(-1, 2)[:n]
-    if not np.all(np.isfinite(pts)):
+        idx = iteration.choose(gen, p, (burn_in + steps, chains))
+        # the "condensation map" k sends a point to a uniformly random point of the polyline C
+        jump_to = _sample_polyline(C, (burn_in + steps, chains), gen)
+        coef = np.concatenate([coef, np.zeros((6, 1))], axis=1)
+    out = np.empty((steps, chains, 2))
+    iteration.chaos_steps(coef, idx, start, burn_in, out, jump_to)
+    pts = out.reshape(-1, 2)[:n]
+    # without jumps a chain that leaves the finite numbers never comes back (inf * 0 and inf - inf are
+    # NaN), so the last `chains` points, one per chain, are finite exactly when all are
+    if not np.all(np.isfinite(pts if C is not None else pts[-chains:])):
         raise ValueError("the chaos game's points escaped to infinity: the maps must be contractions "
                          "(every map shrinks distances)")
-    return pts, idx[burn_in:].reshape(-1)[:n].astype(np.intp)
+    return pts, idx[burn_in:].reshape(-1)[:n]
 
 
 def _sample_polyline(C: np.ndarray, shape, gen: np.random.Generator) -> np.ndarray:

@@ -78,6 +78,8 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``apply_affine_maps`` (§6.1): ``ifs.deterministic``, ``ifs.map_images``.
     ``apply_maps``, ``iterate_maps`` (§29.3-29.4): ``subdivision_matrices.attractor``,
         ``barycentric_attractor``.
+    ``choose``, ``chaos_steps`` (§6.3-6.4): the chaos game's map choices (``Generator.choice``'s
+        numbers, faster) and its chains: ``ifs.chaos_game``, ``ifs.chaos_game_with_maps``.
 
 :mod:`~goldman_lib.kernels.relaxation` -- Jacobi and Gauss-Seidel sweeps for ``x = (c + w G x) / d``
     ``gather``, ``jacobi_update``, ``gauss_seidel_sweep``: ``fixed_point.jacobi``,

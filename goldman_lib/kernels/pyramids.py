@@ -432,57 +432,63 @@ def de_boor_pyramid(rows, weight, levels: int, top: int | None = None, record: l
 
 # The per-span data of de Boor's pyramid for many parameters (the p+1 control points of each span,
 # and the weights a = (u - t_i)/(t_{i+p+1-r} - t_i) = A u + B of every pyramid node) are tabulated
-# once, then gathered for each parameter with one row-gather per table.  Parameters are processed
-# in blocks of about 1000: every temporary then stays below glibc's 128 KB mmap threshold, so no
-# call pays page faults on freshly mapped memory (that, not the arithmetic, would dominate).
-_BLOCK_BYTES = 96 * 1024
+# once, then gathered for each parameter with one column-gather.  Parameters are processed in
+# blocks (2048 for a cubic in 3D, whose table has 24 rows; CPU time for 10,000 parameters measured
+# best among blocks of 256 to 4096: 798, 551, 484, 440, 432, 416, 573 us): few calls, and the
+# gathered rows, on which the pyramid runs in place, stay in the 2 MB L2 cache.
+_BLOCK_BYTES = 384 * 1024
 
 
 def de_boor_tables(P: np.ndarray, t: np.ndarray, p: int):
-    """The tables of :func:`de_boor_points`: control points per span ``(n+1-p, (p+1) d)``, weights
-    ``[A | B]`` per span ``(n+1-p, 2 m)`` with ``a = A u + B`` for the m nodes ``(r, j)``, and the nodes."""
+    """The table of :func:`de_boor_points`, one column per span ``k = p .. n``, ``((p+1) d + 2 m, n+1-p)``:
+    first the control points ``P_{k-p} .. P_k`` (row ``j d + c`` is coordinate c of ``P_{k-p+j}``),
+    then the weights ``A`` and then ``B``, ``a = A u + B``, of the m pyramid nodes ``(r, j)`` in the
+    order :func:`de_boor_pyramid` visits them (level by level, ``j = p .. r`` downwards within a
+    level); and the nodes in that order."""
     n, d = P.shape[0] - 1, P.shape[1]
-    ks = np.arange(p, n + 1)
-    win = np.lib.stride_tricks.sliding_window_view(P, (p + 1, d))[:, 0]      # (n+1-p, p+1, d)
-    ctab = np.ascontiguousarray(win.reshape(n + 1 - p, (p + 1) * d))
-    nodes = [(r, j) for r in range(1, p + 1) for j in range(p, r - 1, -1)]
-    if not nodes:
-        return ctab, np.zeros((n + 1 - p, 0)), nodes
-    lo = np.stack([t[ks - p + j] for r, j in nodes], 1)
-    hi = np.stack([t[ks + j + 1 - r] for r, j in nodes], 1)
-    den = hi - lo
-    A = np.divide(1.0, den, out=np.zeros_like(den), where=den > 0)  # den = 0 only on empty spans
-    return ctab, np.ascontiguousarray(np.concatenate([A, -lo * A], 1)), nodes
+    ks = np.arange(n + 1 - p)                                          # k - p for the spans k = p .. n
+    nodes = [(r, j) for r in range(1, p + 1) for j in range(p, r - 1, -1)]    # de_boor_pyramid's order
+    m, c = len(nodes), (p + 1) * d
+    tab = np.zeros((c + 2 * m, n + 1 - p))
+    tab[:c] = P[ks + np.arange(p + 1)[:, None]].transpose(0, 2, 1).reshape(c, n + 1 - p)
+    if m:
+        r, j = np.array(nodes).T[:, :, None]
+        lo = t[ks + j]                                                 # t_i, i = k - p + j: (m, n+1-p)
+        den = t[ks + (p + 1) + j - r] - lo                             # t_{i+p+1-r} - t_i
+        A = tab[c:c + m]
+        np.divide(1.0, den, out=A, where=den > 0)                      # den = 0 only on empty spans
+        np.multiply(-lo, A, out=tab[c + m:])
+    return tab, nodes
 
 
 def de_boor_points(P: np.ndarray, t: np.ndarray, p: int, u: np.ndarray, k: np.ndarray) -> np.ndarray:
     """The B-spline curve (ctrl P ``(n+1, d)``, knots t, degree p) at flat u ``(N,)`` in the non-empty
     spans k ``(N,)`` by de Boor's pyramid (§27.3), weights tabulated per span.  Returns ``(d, N)``.
 
+    For a block of parameters the p+1 control points and the weights of every node are gathered
+    with one column-gather of :func:`de_boor_tables`, the alphas ``a = A u + B`` of all nodes are
+    made in one pass, and :func:`de_boor_pyramid` runs node by node in place on the gathered rows
+    ``(d, N)`` (no allocation inside the pyramid: 25% faster than whole levels at a time).
+
     >>> de_boor_points(np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]]), np.array([0.0, 0, 0, 1, 1, 1]), 2,
     ...                np.array([0.5]), np.array([2])).ravel().tolist()
     [1.0, 1.0]
     """
     d = P.shape[1]
-    ctab, wtab, nodes = de_boor_tables(P, t, p)
+    tab, nodes = de_boor_tables(P, t, p)
+    m, c = len(nodes), (p + 1) * d
     idx = k - p
     out = np.empty((d, u.size))
-    block = max(64, _BLOCK_BYTES // (8 * max(ctab.shape[1], wtab.shape[1], 1)))
-    m = len(nodes)
+    block = max(64, _BLOCK_BYTES // (8 * tab.shape[0]))
     for s in range(0, u.size, block):
         ub, ib = u[s:s + block], idx[s:s + block]
-        C = np.take(ctab, ib, axis=0).T.reshape(p + 1, d, ub.size)
-        rows = [np.ascontiguousarray(C[j]) for j in range(p + 1)]
+        G = np.take(tab, ib, axis=1)
+        Q = G[:c].reshape(p + 1, d, ub.size)                            # P_{k-p+j}, j = 0 .. p
         if m:
-            G = np.take(wtab, ib, axis=0).T
-            alpha = np.empty(ub.size)
-
-            def weight(r, j, q, G=G, ub=ub, alpha=alpha):
-                np.multiply(G[q], ub, out=alpha)
-                alpha += G[m + q]
-                return alpha
-            de_boor_pyramid(rows, weight, p)
-        out[:, s:s + block] = rows[p]
+            a = G[c:c + m] * ub
+            a += G[c + m:]                                                  # every node's alpha
+            de_boor_pyramid(Q, lambda r, j, q, a=a: a[q], p)                # in place, node by node
+        out[:, s:s + block] = Q[p]
     return out
 
 

@@ -188,6 +188,26 @@ def test_de_boor_shapes_and_large_input():
     assert bs.de_boor(ctrl, knots, 3, 0.5).shape == (3,)
 
 
+@pytest.mark.parametrize("p", [0, 1, 3, 5])
+def test_de_boor_gives_the_same_bits_for_sorted_shuffled_and_single_parameters(p):
+    """Sorted parameters find their spans by placing the knots among them, shuffled ones by a binary
+    search per parameter, single ones alone: every path runs the same pyramid to the same bits."""
+    rng = np.random.default_rng(p)
+    inner = [0.1, 0.3, 0.3, 0.5, 0.7, 0.7, 0.9] if p >= 2 else [0.1, 0.3, 0.5, 0.7, 0.9]   # doubled knots from p = 2
+    knots = np.r_[np.zeros(p + 1), inner, np.ones(p + 1)]
+    ctrl = rng.normal(size=(len(knots) - p - 1, 2))
+    u = np.sort(np.r_[np.linspace(0, 1, 6001), knots])                  # every knot, and long runs
+    out = bs.de_boor(ctrl, knots, p, u)
+    np.testing.assert_allclose(out, BSpline(knots, ctrl, p)(u), atol=1e-12)
+    perm = rng.permutation(u.size)
+    assert np.array_equal(bs.de_boor(ctrl, knots, p, u[perm]), out[perm])
+    assert np.array_equal(bs.de_boor(ctrl, knots, p, u[::-1]), out[::-1])
+    assert all(np.array_equal(bs.de_boor(ctrl, knots, p, x), out[i]) for i, x in list(enumerate(u))[::251])
+    if p:
+        left = bs.derivative(ctrl, knots, p, u, side="left")
+        assert np.array_equal(bs.derivative(ctrl, knots, p, u[perm], side="left"), left[perm])
+
+
 @FAST
 @given(splines(dims=(1,)))
 def test_basis_matches_scipy_design_matrix(spl):

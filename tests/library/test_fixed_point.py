@@ -23,8 +23,8 @@ points = st.integers(1, 40).flatmap(lambda n: arrays(float, (n, 2), elements=st.
 @given(A=points, B=points)
 def test_hausdorff_matches_scipy(A, B):
     expected = max(scipy_directed(A, B)[0], scipy_directed(B, A)[0])
-    assert fp.hausdorff_distance(A, B) == pytest.approx(expected, rel=1e-9, abs=1e-9)
-    assert fp.directed_hausdorff(A, B) == pytest.approx(scipy_directed(A, B)[0], rel=1e-9, abs=1e-9)
+    assert fp.hausdorff_distance(A, B) == expected            # exact: the same distances, max and min
+    assert fp.directed_hausdorff(A, B) == scipy_directed(A, B)[0]
 
 
 def test_newton_finds_known_roots():
@@ -175,42 +175,83 @@ def test_fractal_theorem_rejects_expanding_maps():
         fp.fractal_theorem(ifs.IFS([affine.scaling(1.5)]), [[0, 0]], 2)
 
 
-@pytest.mark.parametrize("case", ["overlapping", "apart", "clustered", "duplicates", "collinear", "3d", "inside"])
-def test_hausdorff_distance_is_scipys_exactly_on_every_path(case):
-    """The early-exit scan, with and without the grid-neighbour bounds (overlapping sets take them,
-    sets apart do not), gives scipy's directed_hausdorff to the last bit."""
-    from scipy.spatial.distance import directed_hausdorff
+def _kind(case, rng):
+    """Two point sets of one kind: overlapping, apart, one inside the other's hull, fractals, ..."""
+    from goldman_lib import ifs
 
-    from goldman_lib import fixed_point as fp
-
-    rng = np.random.default_rng(7)
     A, B = rng.uniform(0, 1, (3000, 2)), rng.uniform(0, 1, (2500, 2))
     if case == "apart":
         B = B + [0.3, 0.1]
+    elif case == "far apart":
+        B = B + [30.0, -20.0]
     elif case == "clustered":
         A = rng.normal(0, 0.01, (3000, 2)) + rng.integers(0, 5, (3000, 1)) * 0.2
         B = rng.normal(0, 0.01, (2500, 2)) + rng.integers(0, 5, (2500, 1)) * 0.2
     elif case == "duplicates":
         B = np.concatenate([A[:1000], A[:1000]])
+    elif case == "identical":
+        B = A[::-1].copy()
     elif case == "collinear":
         A = np.stack([rng.uniform(0, 1, 3000), np.zeros(3000)], axis=1)
         B = np.stack([rng.uniform(0, 1, 2500), np.zeros(2500)], axis=1)
+    elif case == "1d":
+        A, B = A[:, :1], B[:, :1] * 2
     elif case == "3d":
         A, B = rng.uniform(0, 1, (3000, 3)), rng.uniform(0, 1, (2500, 3))
     elif case == "inside":
         A = rng.uniform(0.4, 0.6, (3000, 2))
+    elif case == "ring inside":
+        t = rng.uniform(0, 2 * np.pi, 2500)
+        B = 0.5 + 0.3 * np.stack([np.cos(t), np.sin(t)], axis=1)
+    elif case == "nested fractals":                 # the fern and a sparser sample of itself
+        A = ifs.chaos_game(ifs.barnsley_fern(), 3000, rng=1)
+        B = ifs.deterministic(ifs.barnsley_fern(), 5)
+    elif case == "single point":
+        B = np.array([[0.5, 0.25]])
+    elif case == "far and huge":
+        A, B = A * 1e150, B * 1e150 + 3e150
+    return A, B
+
+
+HAUSDORFF_KINDS = ["overlapping", "apart", "far apart", "clustered", "duplicates", "identical", "collinear", "1d",
+                   "3d", "inside", "ring inside", "nested fractals", "single point", "far and huge"]
+
+
+@pytest.mark.parametrize("case", HAUSDORFF_KINDS)
+def test_hausdorff_distance_is_the_brute_force_value_on_every_kind_of_set(case):
+    """The pruned search gives the brute-force max-min to the last bit (every value it compares is a
+    computed distance), and scipy's directed_hausdorff (the reference), both directions."""
+    from scipy.spatial.distance import directed_hausdorff
+
+    A, B = _kind(case, np.random.default_rng(7))
+
+    def brute(X, Y):       # sum_k (x_k - y_k)^2 in coordinate order, the min over Y, the max over X
+        d2 = sum((X[:, None, k] - Y[None, :, k]) ** 2 for k in range(X.shape[1]))
+        return float(np.sqrt(d2.min(axis=1).max()))
+    ab, ba = brute(A, B), brute(B, A)
+    assert fp.directed_hausdorff(A, B) == ab and fp.directed_hausdorff(B, A) == ba
+    assert fp.hausdorff_distance(A, B) == max(ab, ba) == fp.hausdorff_distance(B, A)
+    assert fp.hausdorff_distance(A, B) == max(directed_hausdorff(A, B)[0], directed_hausdorff(B, A)[0])
+    for X, Y in ((A, A), (A[:1], B), (A, B[:1])):
+        assert fp.hausdorff_distance(X, Y) == max(brute(X, Y), brute(Y, X))
+
+
+@pytest.mark.parametrize("case", ["overlapping", "apart", "far apart", "duplicates", "identical", "3d", "inside"])
+def test_hausdorff_distance_bounds_by_grid_neighbours_only_where_a_scan_would_be_long(case):
+    """Overlapping sets take the grid-neighbour bounds (a random scan would be long); sets apart
+    do not (the probe of B's random and extreme points already bounds almost every point)."""
+    A, B = _kind(case, np.random.default_rng(7))
     used = []
     real = fp._window_bounds
     try:
-        fp._window_bounds = lambda a, b: (used.append(1), real(a, b))[1]
-        ours = fp.hausdorff_distance(A, B)
+        fp._window_bounds = lambda *args: (used.append(1), real(*args))[1]
+        fp.hausdorff_distance(A, B)
     finally:
         fp._window_bounds = real
-    assert ours == max(directed_hausdorff(A, B)[0], directed_hausdorff(B, A)[0])
-    if case in ("overlapping", "clustered", "duplicates", "3d"):
+    if case in ("overlapping", "duplicates", "identical", "3d", "inside"):    # inside: the small set's side
         assert used, f"{case}: the grid-neighbour bounds were not used"
-    if case == "apart":
-        assert len(used) <= 1, "sets apart should mostly scan at random"
+    if case in ("apart", "far apart"):
+        assert not used, f"{case}: a short scan should do"
 
 
 def test_jacobi_factor_is_the_max_norm_contraction_of_jacobis_map():

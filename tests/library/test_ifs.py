@@ -133,6 +133,28 @@ def test_chaos_game_is_reproducible_and_takes_generators():
     assert maps.shape == (1000,) and set(np.unique(maps)) <= {0, 1, 2, 3}
 
 
+def test_chaos_game_is_the_textbook_numpy_loop_point_for_point():
+    """The chains, start, burn-in and draws as documented, against the loop a numpy user writes
+    (Generator.choice, then x' = x a + y c + e, y' = x b + y d + f for every chain at once); and the
+    first points of a small game written out (the sequence a given seed draws must not change)."""
+    s = ifs.barnsley_fern()
+    pts, maps = ifs.chaos_game_with_maps(s, 3, rng=0, chains=2, burn_in=1)
+    assert pts.tolist() == [[0.064, 2.96], [0.064, 2.96], [0.1728, 4.113440000000001]] and maps.tolist() == [1, 1, 1]
+    n, chains, burn_in = 10_000, 300, 7
+    M = s.maps
+    idx = np.random.default_rng(11).choice(4, size=(burn_in + 34, chains), p=s.probabilities)
+    x = np.full(chains, affine.fixed_point(M[0])[0])
+    y = np.full(chains, affine.fixed_point(M[0])[1])
+    ref = []
+    for step, i in enumerate(idx):
+        x, y = x * M[i, 0, 0] + y * M[i, 1, 0] + M[i, 2, 0], x * M[i, 0, 1] + y * M[i, 1, 1] + M[i, 2, 1]
+        if step >= burn_in:
+            ref.append(np.stack([x, y], axis=1))
+    pts, maps = ifs.chaos_game_with_maps(s, n, rng=11, chains=chains, burn_in=burn_in)
+    assert np.array_equal(pts, np.concatenate(ref)[:n])
+    assert np.array_equal(maps, idx[burn_in:].reshape(-1)[:n])
+
+
 def test_chaos_game_labels_say_which_copy_a_point_lies_in():
     s = ifs.sierpinski()
     pts, maps = ifs.chaos_game_with_maps(s, 3000, rng=2)

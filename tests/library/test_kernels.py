@@ -334,6 +334,31 @@ def test_iterate_maps_orders_blocks_in_base_k():
             assert np.allclose(block, X @ M[i1] @ M[i2], atol=1e-12)
 
 
+def test_choose_draws_what_generator_choice_draws():
+    # numpy's Generator.choice, the reference, for probabilities with zeros at either end
+    for p in ([0.01, 0.85, 0.07, 0.07], [0.0, 0.5, 0.5], [0.5, 0.5, 0.0], [1.0], [0.2, 0.0, 0.3, 0.0, 0.5]):
+        for shape in ((1,), (7, 33), (2, 4096)):
+            ref = np.random.default_rng(4).choice(len(p), size=shape, p=p)
+            got = iteration.choose(np.random.default_rng(4), np.array(p), shape)
+            assert got.dtype == np.intp and np.array_equal(got, ref), (p, shape)
+
+
+def test_chaos_steps_is_the_plain_loop_bit_for_bit():
+    coef = RNG.normal(size=(6, 3)) * 0.5
+    idx = RNG.integers(0, 3, (9, 5))
+    out = iteration.chaos_steps(coef, idx, [0.25, -1.0], 4, np.empty((5, 5, 2)))
+    for j in range(5):                                # each chain written out point by point
+        x, y = 0.25, -1.0
+        for s in range(9):
+            a, c, e, b, d, f = coef[:, idx[s, j]]
+            x, y = x * a + y * c + e, x * b + y * d + f
+            if s >= 4:
+                assert out[s - 4, j].tolist() == [x, y]
+    jump_to = RNG.normal(size=(9, 5, 2))              # map 2 is the condensation "map": jump
+    out = iteration.chaos_steps(coef, idx, [0.25, -1.0], 0, np.empty((9, 5, 2)), jump_to)
+    assert np.array_equal(out[idx == 2], jump_to[idx == 2])
+
+
 # -- relaxation -------------------------------------------------------------------------------------
 
 def test_jacobi_and_gauss_seidel_sweeps_converge_to_the_solution():
