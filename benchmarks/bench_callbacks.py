@@ -19,7 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 
 from benchmarks.timing import best_time, best_times, fmt_time  # noqa: E402
-from goldman_lib.views.interactive import discover_factories  # noqa: E402
+from goldman_lib.views import factories  # noqa: E402
 
 TARGET = 0.050  # seconds
 #: Each callback (update + redraw) at most this multiple of an empty 560x420 Agg redraw, same run.
@@ -36,8 +36,8 @@ def empty_figure():
 
 
 def _factories():
-    """Every widget factory of goldman_lib.views (found by its ``-> InteractiveView`` annotation)."""
-    return discover_factories()
+    """Every widget factory a chapter displays (:func:`goldman_lib.views.factories`)."""
+    return factories()
 
 
 def time_callback(view, empty=None) -> tuple[float, float | None, float | None]:

@@ -2,14 +2,14 @@
 not in the library).  The tests run this file in the kernel with ``runpy.run_path`` and call its
 functions on the live views; the unit tests load it the same way.
 
-* :func:`find_view` -- the live :class:`~goldman_lib.views.interactive.InteractiveView` whose box
+* :func:`find_view` -- the live :class:`~goldman_lib.widgets.interactive.InteractiveView` whose box
   carries the CSS class ``goldman-view-<uid>`` (the framework keeps every live view by its number).
-* :func:`drag_plan` -- a drag a real mouse can make on a view's :class:`~goldman_lib.views.drag.PointDrag`.
+* :func:`drag_plan` -- a drag a real mouse can make on a view's :class:`~goldman_lib.widgets.drag.PointDrag`.
 """
 
 import numpy as np
 
-from goldman_lib.views.interactive import InteractiveView
+from goldman_lib.widgets.interactive import InteractiveView
 
 
 def find_view(uid) -> InteractiveView:

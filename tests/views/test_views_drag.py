@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from goldman_lib.views.drag import PointDrag, drag_sliders
-from goldman_lib.views.interactive import InteractiveView, float_slider
+from goldman_lib.widgets.drag import PointDrag, drag_sliders
+from goldman_lib.widgets.interactive import InteractiveView, float_slider
 
 
 def _view():
@@ -116,7 +116,7 @@ def test_the_drag_plan_is_none_when_no_point_is_inside_the_axes(hooks):
 
 
 def _draggable_factories():
-    from goldman_lib.views.interactive import discover_factories
+    from goldman_lib.views import factories
 
     import inspect
 
@@ -129,7 +129,7 @@ def _draggable_factories():
         return depth > 0 and any(inspect.isfunction(h) and h.__module__ == f.__module__ and drags(h, depth - 1)
                                  for h in helpers)
 
-    return [(name, f) for name, f in discover_factories() if drags(f)]
+    return [(name, f) for name, f in factories() if drags(f)]
 
 
 @pytest.mark.parametrize("name,factory", _draggable_factories(), ids=lambda v: v if isinstance(v, str) else "")

@@ -15,7 +15,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
-from goldman_lib.views.interactive import discover_factories, figure_png
+from goldman_lib.views import factories
+from goldman_lib.widgets.interactive import figure_png
 
 #: Views whose x/y slider pairs are not points the learner places in the 2D drawing.
 NOT_PLACED_POINTS = {
@@ -94,7 +95,7 @@ def _two_d_factories():
     has point pairs among its update's parameters (every parameter is a control: InteractiveView
     passes them by name)."""
     out = []
-    for name, factory in discover_factories():
+    for name, factory in factories():
         if "figure_widget(" not in inspect.getsource(factory):
             continue                      # a three.js view: the mouse orbits the camera
         if _drags(factory):
@@ -109,7 +110,7 @@ def _two_d_factories():
 def test_the_static_reading_matches_a_built_view():
     """The parameters read from the code are the controls of the built view (for one view with
     a dropdown and point sliders, and one whose light sliders come from the light control)."""
-    table = dict(discover_factories())
+    table = dict(factories())
     for name in ("affine.three_point_explorer", "color_intensity.shaded_sphere_view"):
         view = table[name]()
         controls = set(view.controls) - {k for k in view.controls if k.endswith("_colour")}
@@ -128,7 +129,7 @@ def test_every_2d_view_that_places_points_drags_them():
 
 
 def _factories(*names):
-    table = dict(discover_factories())
+    table = dict(factories())
     return [(n, table[n]) for n in names]
 
 

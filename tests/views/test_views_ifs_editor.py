@@ -8,7 +8,7 @@ import pytest
 from scipy.spatial.distance import directed_hausdorff
 
 from goldman_lib import affine, ifs
-from goldman_lib.views import ifs_editor as ed
+from goldman_lib.widgets import ifs_editor as ed
 
 
 @pytest.fixture
@@ -102,7 +102,7 @@ def test_a_map_is_edited_by_dragging_the_images_of_three_points():
     import numpy as np
 
     from goldman_lib import affine
-    from goldman_lib.views.ifs_editor import REFERENCE_TRIANGLE, ifs_editor, system_from_values
+    from goldman_lib.widgets.ifs_editor import REFERENCE_TRIANGLE, ifs_editor, system_from_values
 
     editor = ifs_editor("Sierpinski gasket", points=2000)
     before = affine.apply(REFERENCE_TRIANGLE, system_from_values(editor.values()).maps[0])

@@ -5,8 +5,8 @@ import ipywidgets as widgets
 import numpy as np
 import pytest
 
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, control_grid, figure_png
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, control_grid, figure_png
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
@@ -87,7 +87,7 @@ def test_covering_corners_meet_every_three_controls_in_every_combination():
 
     import numpy as np
 
-    from goldman_lib.views.interactive import covering_corners
+    from goldman_lib.widgets.interactive import covering_corners
 
     for k in (3, 5, 9, 17):
         for strength in (2, 3):
@@ -103,7 +103,7 @@ def test_covering_corners_meet_every_three_controls_in_every_combination():
 def test_covering_corners_refuse_bad_sizes():
     import pytest
 
-    from goldman_lib.views.interactive import covering_corners
+    from goldman_lib.widgets.interactive import covering_corners
 
     for bad in (-1, 2.5, True):
         with pytest.raises(ValueError, match="k must be"):

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from scipy.interpolate import BSpline, bisplev
 
 from goldman_lib import bspline
-from goldman_lib.views import knot_editor as ke
+from goldman_lib.widgets import knot_editor as ke
 
 matplotlib.use("Agg")
 

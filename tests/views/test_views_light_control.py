@@ -5,9 +5,9 @@ import pytest
 from matplotlib.figure import Figure
 
 from goldman_lib.lighting import Light
-from goldman_lib.views.interactive import InteractiveView
-from goldman_lib.views.light_control import LightControl
-from goldman_lib.views.three import SceneView
+from goldman_lib.widgets.interactive import InteractiveView
+from goldman_lib.widgets.light_control import LightControl
+from goldman_lib.widgets.three import SceneView
 
 
 def test_two_lights_round_trip_through_the_sliders():
@@ -104,7 +104,7 @@ def test_vertex_colours_live_and_static():
 
 def test_axes_keeps_the_other_coordinates_where_the_light_starts():
     from goldman_lib.lighting import Light
-    from goldman_lib.views.light_control import LightControl
+    from goldman_lib.widgets.light_control import LightControl
 
     control = LightControl([Light((0.5, 0.5, 0.99), intensity=1.0)], box=(0.0, 1.0), axes="xy")
     assert sorted(control.controls) == ["light0_I", "light0_colour", "light0_x", "light0_y"]

@@ -58,7 +58,7 @@ def test_the_light_is_dragged_on_the_ceiling_map():
 
 
 def test_the_scene_reports_its_hemicubes_to_a_progress_bar():
-    from goldman_lib.views.render_control import ProgressBar
+    from goldman_lib.widgets.render_control import ProgressBar
 
     bar = ProgressBar("hemi-cubes")
     box, F = rv.cornell_scene(2, 8, progress=bar)             # a size of its own: computed here

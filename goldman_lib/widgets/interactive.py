@@ -34,8 +34,7 @@ import ipywidgets as widgets
 import numpy as np
 
 __all__ = ["InteractiveView", "figure_widget", "figure_png", "control_grid", "float_slider", "int_slider",
-           "check_control_values",
-           "discover_factories"]
+           "check_control_values"]
 
 
 def float_slider(description: str, value: float, low: float, high: float, step: float = 0.05, *,
@@ -201,11 +200,11 @@ class InteractiveView(widgets.VBox):
     #: The matplotlib axes of a 2D view (a single ``Axes``) and of a view with several panels.
     ax = None
     axes = None
-    #: The three.js scene of a 3D view (:class:`goldman_lib.views.three.SceneView`).
+    #: The three.js scene of a 3D view (:class:`goldman_lib.widgets.three.SceneView`).
     scene = None
-    #: The mouse drag of a view whose points are dragged (:class:`goldman_lib.views.drag.PointDrag`).
+    #: The mouse drag of a view whose points are dragged (:class:`goldman_lib.widgets.drag.PointDrag`).
     drag = None
-    #: The light-position control of a lit view (:class:`goldman_lib.views.light_control.LightControl`)
+    #: The light-position control of a lit view (:class:`goldman_lib.widgets.light_control.LightControl`)
     #: and a view's own light object, if it shows one.
     light_control = None
     light = None
@@ -224,7 +223,7 @@ class InteractiveView(widgets.VBox):
     #: The Play widget of an animated view (it drives a frame slider).
     play = None
     #: The full-size picture of the view's current state, ``render_full(progress, **values)``, for a
-    #: :class:`goldman_lib.views.render_control.RenderControl` under the view.
+    #: :class:`goldman_lib.widgets.render_control.RenderControl` under the view.
     render_full = None
     #: Everything above, by name: the sweep tests fail a factory that sets any other attribute.
     CARRIES = frozenset({"ax", "axes", "scene", "drag", "light_control", "light", "editor", "editors", "examples",
@@ -410,26 +409,26 @@ def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping
     ...
     ValueError: t must lie in [0, 1]; got 2
     """
-    from goldman_lib.views import _checks
+    from goldman_lib.widgets import checks
 
     for name, value in values.items():
         w = controls.get(name)
         if w is None:
             continue
         if isinstance(w, (widgets.IntSlider, widgets.BoundedIntText)):
-            _checks.integer(value, name, w.min, w.max)
+            checks.integer(value, name, w.min, w.max)
         elif isinstance(w, (widgets.FloatSlider, widgets.BoundedFloatText)):
-            _checks.number(value, name, w.min, w.max)
+            checks.number(value, name, w.min, w.max)
         elif isinstance(w, (widgets.Dropdown, widgets.ToggleButtons, widgets.RadioButtons, widgets.SelectionSlider)):
-            _checks.option([v for _, v in _options(w)], value, name)
+            checks.option([v for _, v in _options(w)], value, name)
         elif isinstance(w, (widgets.Checkbox, widgets.ToggleButton)):
-            _checks.boolean(value, name)
+            checks.boolean(value, name)
         elif isinstance(w, widgets.ColorPicker):
-            _checks.colour(value, name)
+            checks.colour(value, name)
         elif isinstance(w, (widgets.Text, widgets.Textarea)):
-            _checks.text(value, name)
+            checks.text(value, name)
         else:
-            _checks.same_kind(value, getattr(w, "value", None), name)
+            checks.same_kind(value, getattr(w, "value", None), name)
 
 
 def _checked(update: Callable[..., dict], controls: Mapping[str, widgets.Widget]) -> Callable[..., dict]:
@@ -443,30 +442,3 @@ def _checked(update: Callable[..., dict], controls: Mapping[str, widgets.Widget]
 
     checked.unchecked = update
     return checked
-
-
-def discover_factories() -> list[tuple[str, Callable[[], "InteractiveView"]]]:
-    """Every public widget factory of ``goldman_lib.views``, found by its return annotation
-    (``-> InteractiveView``), as ``("module.name", factory)`` pairs sorted by name.  Private
-    modules (``_program_editor``) hold shared builders, not chapters' widgets, and are skipped.
-
-    The widget sweeps (tests) and the callback benchmark both use this list, so a new chapter's
-    widgets are swept and timed as soon as their factories exist.
-    """
-    import importlib
-    import inspect
-    import pkgutil
-
-    import goldman_lib.views as views_pkg
-
-    found = []
-    for info in pkgutil.iter_modules(views_pkg.__path__):
-        if info.name.startswith("_"):
-            continue  # private modules (_checks, _program_editor) are helpers the chapters' views share
-        module = importlib.import_module(f"goldman_lib.views.{info.name}")
-        for name, fn in inspect.getmembers(module, inspect.isfunction):
-            if fn.__module__ != module.__name__ or name.startswith("_"):
-                continue
-            if inspect.signature(fn).return_annotation in (InteractiveView, "InteractiveView"):
-                found.append((f"{info.name}.{name}", fn))
-    return sorted(found)

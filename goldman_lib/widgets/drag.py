@@ -189,7 +189,7 @@ def point_sliders(points, box, step: float = 0.1, prefix: str = "", width: str =
     >>> sorted(point_sliders([[0, 0], [1, 2]], (-1, 2, -1, 3)))
     ['x0', 'x1', 'y0', 'y1']
     """
-    from goldman_lib.views.interactive import float_slider
+    from goldman_lib.widgets.interactive import float_slider
 
     pts = np.asarray(points, dtype=float).reshape(-1, 2)
     xmin, xmax, ymin, ymax = (float(v) for v in box)
