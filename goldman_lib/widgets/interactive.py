@@ -27,7 +27,6 @@ import html
 import io
 import itertools
 import math
-import weakref
 from typing import Callable, Mapping
 
 import ipywidgets as widgets
@@ -229,10 +228,8 @@ class InteractiveView(widgets.VBox):
     CARRIES = frozenset({"ax", "axes", "scene", "drag", "light_control", "light", "editor", "editors", "examples",
                          "preset", "load", "readout", "click_cid", "play", "render_full"})
 
-    #: Every live view by its number (``uid``), which its box also carries as the CSS class
-    #: ``goldman-view-<uid>``: how a browser test asks the kernel about the view it sees
-    #: (``tests/browser/kernel_hooks.py``).
-    _live: "weakref.WeakValueDictionary[int, InteractiveView]" = weakref.WeakValueDictionary()
+    #: Each view's number (``uid``), which its box carries as the CSS class ``goldman-view-<uid>``
+    #: (how a browser test names the view it sees to the kernel: ``tests/browser/kernel_hooks.py``).
     _count = itertools.count()
 
     def __init__(self, *, controls: Mapping[str, widgets.Widget], views: list, update: Callable[..., dict],
@@ -275,7 +272,6 @@ class InteractiveView(widgets.VBox):
         super().__init__(body)
         self.add_class("goldman-interactive")
         self.add_class(f"goldman-view-{self.uid}")
-        InteractiveView._live[self.uid] = self
         for w in self.controls.values():
             w.observe(self._on_change, names="value")
         self.refresh()

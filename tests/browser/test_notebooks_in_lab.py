@@ -47,7 +47,7 @@ print(_json.dumps(_goldman_plan(_goldman["find_view"](UID))))
 del _goldman_plan
 """.replace("HOOKS", repr(_HOOKS))
 # Where point K of view UID is now (data coordinates).
-_WHERE = "import json as _json; print(_json.dumps(_goldman['find_view'](UID).drag.position(K)))"
+_WHERE = "import json as _json; print(_json.dumps(_goldman['position'](_goldman['find_view'](UID).drag, K)))"
 # The label and the readout (as the slider formats it) of the sliders that point K of view UID
 # moves, or null if its drag moves no slider.
 _SLIDERS = """

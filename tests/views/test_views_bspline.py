@@ -27,14 +27,14 @@ def test_de_boor_explorer_draws_the_scipy_curve_and_point():
         np.testing.assert_allclose(r["levels"][0], ctrl[k - p:k + 1])
 
 
-def test_de_boor_explorer_control_points_are_dragged():
+def test_de_boor_explorer_control_points_are_dragged(hooks):
     view = views.de_boor_explorer()
     ctrl = views.DEFAULT_POLYGON.copy()
     k = 3
-    view.drag.press_at(*ctrl[k])
+    hooks["press_at"](view.drag, *ctrl[k])
     target = np.round(ctrl[k] + [0.3, -0.6], 1)
-    view.drag.move_to(*target)
-    view.drag.release()
+    hooks["move_to"](view.drag, *target)
+    hooks["release"](view.drag)
     assert (view.values()[f"x{k}"], view.values()[f"y{k}"]) == tuple(target)
     ctrl[k] = target
     r = view.last_result

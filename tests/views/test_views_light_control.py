@@ -44,14 +44,14 @@ def _view(control, seen):
     return view, ax
 
 
-def test_dragging_the_marker_moves_the_light_and_its_sliders():
+def test_dragging_the_marker_moves_the_light_and_its_sliders(hooks):
     c = LightControl([(1.0, 0.0, 2.0)], colour=False)
     seen = []
     view, ax = _view(c, seen)
     drag = c.drag_in(view, ax, plane="xz")
-    drag.press_at(1.0, 2.0)
-    drag.move_to(-3.0, 4.0)
-    drag.release()
+    hooks["press_at"](drag, 1.0, 2.0)
+    hooks["move_to"](drag, -3.0, 4.0)
+    hooks["release"](drag)
     assert view.controls["light0_x"].value == pytest.approx(-3.0)
     assert view.controls["light0_z"].value == pytest.approx(4.0)
     assert seen[-1][0].position == pytest.approx((-3.0, 0.0, 4.0))
