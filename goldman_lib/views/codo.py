@@ -16,7 +16,6 @@ import numpy as np
 
 from goldman_lib import affine, codo, turtle
 from goldman_lib.widgets import style
-from goldman_lib.widgets import checks
 from goldman_lib.widgets.program_editor import program_editor
 from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, InteractiveView
 from goldman_lib.views.turtle import stroke_data
@@ -167,10 +166,7 @@ def turtle_shortcoming_view(program: str = "square", sx: float = 2.0, sy: float 
     ax.set_adjustable("box")
 
     def update(program, sx, sy, shear):
-        text = TURTLE_PROGRAMS[checks.option(TURTLE_PROGRAMS, program, "program")]
-        sx = checks.number(sx, "sx", -1000.0, 1000.0)     # a drawing a million times too big: no picture
-        sy = checks.number(sy, "sy", -1000.0, 1000.0)
-        shear = checks.number(shear, "shear", -1000.0, 1000.0)
+        text = TURTLE_PROGRAMS[program]
         M = affine.scaling([sx, sy]) @ affine.shear(shear)
         image = [affine.apply(p, M) for p in turtle.run(text)]
         fit = codo.closest_turtle_state(text, image)

@@ -34,7 +34,6 @@ from goldman_lib import affine, fixed_point, fractals, turtle
 from goldman_lib import conformal_ifs as cf
 from goldman_lib.validation import as_float, as_int
 from goldman_lib.widgets import style
-from goldman_lib.widgets import checks
 from goldman_lib.widgets.drag import drag_sliders
 from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 from goldman_lib.views.turtle import stroke_data
@@ -196,10 +195,7 @@ def initial_state_view(fractal: str = "Koch curve", level: int = 2, x: float = 0
     frame: dict = {}
 
     def update(fractal, level, x, y, angle, scale):
-        program = fractals.PROGRAMS[checks.option(fractals.PROGRAMS, fractal, "fractal")]()
-        level = checks.integer(level, "level", 0, 5)
-        x, y = checks.number(x, "x", -1000.0, 1000.0), checks.number(y, "y", -1000.0, 1000.0)
-        angle, scale = checks.number(angle, "angle"), checks.number(scale, "scale", 0.001, 1000.0)
+        program = fractals.PROGRAMS[fractal]()
         lev = _fitting_level(program, int(level), 8000)
         w = _heading(angle, scale)
         standard = program.polylines(lev)
@@ -302,10 +298,7 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
     frame: dict = {}
 
     def update(fractal, level, x, y, angle, scale):
-        program = fractals.PROGRAMS[checks.option(fractals.PROGRAMS, fractal, "fractal")]()
-        level = checks.integer(level, "level", 0, 8)
-        x, y = checks.number(x, "x", -1000.0, 1000.0), checks.number(y, "y", -1000.0, 1000.0)
-        angle, scale = checks.number(angle, "angle"), checks.number(scale, "scale", 0.001, 1000.0)
+        program = fractals.PROGRAMS[fractal]()
         w = _heading(angle, scale)
         key = (fractal, float(x), float(y), float(angle), float(scale))
         conv = cache.get(key)
@@ -412,7 +405,7 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
             program = cf.tao_algorithm(s, unit)
         except ValueError as exc:
             return clear(f"Tao's algorithm refuses this IFS: {exc}")
-        levels = checks.integer(values.get("levels", 0), "levels", 0, 12)
+        levels = values.get("levels", 0)
         level = min(levels, program.max_level(MAX_COMMANDS))
         cond = [s.condensation] if s.condensation is not None else []
         # keep the IFS drawing as small as the turtle's
@@ -482,9 +475,7 @@ def bump_view(bump: str = "Koch curve", level: int = 4, height: float = 1.0) -> 
     right_title = right.set_title("", fontsize=10, y=1.0)
 
     def update(bump, level, height):
-        poly, rev = cf.BUMPS[checks.option(cf.BUMPS, bump, "bump")]
-        level = checks.integer(level, "level", 0, 8)
-        height = checks.number(height, "height", -1000.0, 1000.0)
+        poly, rev = cf.BUMPS[bump]
         poly = poly * np.array([1.0, height])
         if np.any(np.hypot(*np.diff(poly, axis=0).T) < 1e-9):
             # a height of 0 folds a vertical segment to nothing: nudge it

@@ -26,7 +26,6 @@ import numpy as np
 from goldman_lib import turtle
 from goldman_lib.validation import as_float, as_int, as_points
 from goldman_lib.widgets import style
-from goldman_lib.widgets import checks
 from goldman_lib.widgets.program_editor import program_editor
 from goldman_lib.widgets.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
@@ -217,10 +216,6 @@ def polygon_explorer(angle: float = 72.0, step: float = 1.0, repetitions: int = 
     artists = PathArtists(ax)
 
     def update(angle, step, repetitions, factor):
-        angle = checks.number(angle, "angle", 0.0, 360.0)
-        step = checks.number(step, "step", 0.1, 3.0)
-        repetitions = checks.integer(repetitions, "repetitions", 1, 120)
-        factor = checks.number(factor, "factor", 0.8, 1.2)
         body = f"FORWARD {turtle.format_number(round(step, 6))} TURN {turtle.format_number(round(angle, 6))}"
         if factor != 1:
             body += f" RESIZE {turtle.format_number(round(factor, 6))}"

@@ -391,15 +391,21 @@ def _equal(a, b) -> bool:
         return False
 
 
-def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping) -> None:
-    """Raise ValueError/TypeError naming the control if a value is one its widget cannot hold: a
-    number outside a slider's range (or not a finite real number), an option a picker does not
-    offer, anything but True or False for a checkbox or toggle, a string that is no colour for a
-    colour picker, anything but a string for a text field (and, for a control of any other kind,
-    a value of another type than its current one).  Values set through the widgets always pass;
-    values passed to ``update`` by code (a notebook, a test, a saved state) are checked here
-    before any work starts (issues 10 and 20).  The message is short whatever the value.
+def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping) -> dict:
+    """The values, checked: raise ValueError/TypeError naming the control if a value is one its
+    widget cannot hold: a number outside a slider's range (or not a finite real number), an option
+    a picker does not offer, anything but True or False for a checkbox or toggle, a string that is
+    no colour for a colour picker, anything but a string for a text field (and, for a control of
+    any other kind, a value of another type than its current one).  Values set through the widgets
+    always pass; values passed to ``update`` by code (a notebook, a test, a saved state) are checked
+    here before any work starts (issues 10 and 20).  The message is short whatever the value.
 
+    Returns ``values`` with each control's value as its widget would hold it (an integer slider's
+    ``3.0`` as ``3``, a float slider's ``1`` as ``1.0``; a name that is no control passes as it
+    is), which is what ``update`` receives: a view's ``update`` need not check its values again.
+
+    >>> check_control_values({"n": int_slider("n", 1, 0, 5), "t": float_slider("t", 0.5, 0.0, 1.0)}, {"n": 3.0, "t": 1})
+    {'n': 3, 't': 1.0}
     >>> check_control_values({"t": float_slider("t", 0.5, 0.0, 1.0)}, {"t": 2.0})
     Traceback (most recent call last):
     ...
@@ -407,34 +413,36 @@ def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping
     """
     from goldman_lib.widgets import checks
 
+    out = dict(values)
     for name, value in values.items():
         w = controls.get(name)
         if w is None:
             continue
         if isinstance(w, (widgets.IntSlider, widgets.BoundedIntText)):
-            checks.integer(value, name, w.min, w.max)
+            out[name] = checks.integer(value, name, w.min, w.max)
         elif isinstance(w, (widgets.FloatSlider, widgets.BoundedFloatText)):
-            checks.number(value, name, w.min, w.max)
+            out[name] = checks.number(value, name, w.min, w.max)
         elif isinstance(w, (widgets.Dropdown, widgets.ToggleButtons, widgets.RadioButtons, widgets.SelectionSlider)):
-            checks.option([v for _, v in _options(w)], value, name)
+            out[name] = checks.option([v for _, v in _options(w)], value, name)
         elif isinstance(w, (widgets.Checkbox, widgets.ToggleButton)):
-            checks.boolean(value, name)
+            out[name] = checks.boolean(value, name)
         elif isinstance(w, widgets.ColorPicker):
-            checks.colour(value, name)
+            out[name] = checks.colour(value, name)
         elif isinstance(w, (widgets.Text, widgets.Textarea)):
-            checks.text(value, name)
+            out[name] = checks.text(value, name)
         else:
-            checks.same_kind(value, getattr(w, "value", None), name)
+            out[name] = checks.same_kind(value, getattr(w, "value", None), name)
+    return out
 
 
 def _checked(update: Callable[..., dict], controls: Mapping[str, widgets.Widget]) -> Callable[..., dict]:
-    """``update`` with its keyword values checked by :func:`check_control_values` first."""
+    """``update`` with its keyword values checked (and given as their widgets hold them) by
+    :func:`check_control_values` first."""
     import functools
 
     @functools.wraps(update)
     def checked(*args, **values):
-        check_control_values(controls, values)
-        return update(*args, **values)
+        return update(*args, **check_control_values(controls, values))
 
     checked.unchecked = update
     return checked
