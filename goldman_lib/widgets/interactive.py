@@ -15,7 +15,7 @@ Two promises every view keeps:
   default values) in the same output, as ipympl does for its canvas: JupyterLab with a kernel shows
   the live widget, while GitHub, nbconvert and the offline deck show the picture.
 
-Tests sweep every control over its range with :meth:`InteractiveView.sweep_values`.
+Tests sweep every control over its range (``tests/views/sweeps.py``).
 """
 
 from __future__ import annotations
@@ -26,13 +26,11 @@ import functools
 import html
 import io
 import itertools
-import math
 from typing import Callable, Mapping
 
 import ipywidgets as widgets
-import numpy as np
 
-__all__ = ["InteractiveView", "figure_widget", "figure_png", "control_grid", "float_slider", "int_slider",
+__all__ = ["InteractiveView", "figure_widget", "figure_png", "float_slider", "int_slider", "dropdown",
            "check_control_values"]
 
 
@@ -81,95 +79,11 @@ def figure_widget(fig) -> widgets.DOMWidget:
     return widgets.Image(value=figure_png(fig), format="png")
 
 
-def _control_values(w: widgets.Widget, n: int) -> list:
-    """``n`` values spread over a control's range, ends included (all options of a picker)."""
-    if isinstance(w, (widgets.IntSlider, widgets.BoundedIntText)):
-        vals = np.linspace(w.min, w.max, min(n, w.max - w.min + 1))
-        return sorted({int(round(v)) for v in vals})
-    if isinstance(w, (widgets.FloatSlider, widgets.BoundedFloatText, widgets.FloatLogSlider)):
-        return [float(v) for v in np.linspace(w.min, w.max, n)]
-    if isinstance(w, (widgets.Dropdown, widgets.ToggleButtons, widgets.RadioButtons, widgets.SelectionSlider)):
-        return [value for _, value in _options(w)]
-    if isinstance(w, widgets.Checkbox):
-        return [False, True]
-    return [w.value]
-
-
 def _options(w):
     opts = w.options
     if isinstance(opts, Mapping):
         return list(opts.items())
     return [(o, o) if not isinstance(o, tuple) else o for o in opts]
-
-
-@functools.lru_cache(maxsize=64)
-def covering_corners(k: int, strength: int = 3, seed: int = 0) -> np.ndarray:
-    """Rows of 0s and 1s (a control at its minimum or its maximum) over ``k`` controls in which every
-    ``strength`` controls meet in each of their ``2**strength`` combinations: a covering array of
-    that strength, built greedily (each row the best of 64 seeded random candidates, one of them
-    made to cover a combination still missing), so it is the same on every run.
-
-    A fault that needs three controls at their extremes at once shows in some row, and the rows are
-    few: about 20-40 for 10-30 controls, where all the corners would be 2**k.
-
-    >>> rows = covering_corners(6)
-    >>> import itertools
-    >>> all(len({tuple(r[list(c)]) for r in rows}) == 8 for c in itertools.combinations(range(6), 3))
-    True
-    >>> len(rows) < 2 ** 6
-    True
-    """
-    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 0:
-        raise ValueError(f"k must be a whole number of controls >= 0; got {k!r}")
-    if isinstance(strength, bool) or not isinstance(strength, (int, np.integer)) or not 1 <= strength <= 4:
-        raise ValueError(f"strength must be 1, 2, 3 or 4; got {strength!r}")
-    if k <= strength:
-        out = np.array(list(itertools.product((0, 1), repeat=k)), dtype=np.int8).reshape(-1, k)
-        out.flags.writeable = False     # cached: shared by every caller
-        return out
-    groups = np.array(list(itertools.combinations(range(k), strength)))
-    weights = 1 << np.arange(strength)[::-1]
-    missing = np.ones((len(groups), 2 ** strength), dtype=bool)
-    everyone = np.arange(len(groups))
-    rng = np.random.default_rng(seed)
-    rows = []
-    while missing.any():
-        candidates = rng.integers(0, 2, size=(64, k))
-        g, combo = np.argwhere(missing)[0]
-        candidates[0, groups[g]] = (combo >> np.arange(strength)[::-1]) & 1
-        codes = (candidates[:, groups] * weights).sum(axis=-1)
-        best = candidates[int(np.argmax(missing[everyone, codes].sum(axis=1)))]
-        missing[everyone, (best[groups] * weights).sum(axis=-1)] = False
-        rows.append(best)
-    out = np.array(rows, dtype=np.int8)
-    out.flags.writeable = False     # cached: shared by every caller
-    return out
-
-
-def control_grid(controls: Mapping[str, widgets.Widget], n: int = 3, max_full: int = 400, seed: int = 0) -> list[dict]:
-    """Value combinations covering each control's range, corners included.
-
-    If the full grid has at most ``max_full`` points it is returned whole.  Otherwise: every
-    control swept over its ``n`` values with the others at their defaults, at their minima and at
-    their maxima; the two all-min / all-max corners; and the corners of :func:`covering_corners`,
-    in which every three controls meet at each of their eight min/max combinations.
-    """
-    names = list(controls)
-    axes = [_control_values(controls[k], n) for k in names]
-    total = math.prod(len(a) for a in axes)  # exact: np.prod would wrap round in int64 for ~40+ controls
-    if total <= max_full:
-        return [dict(zip(names, combo)) for combo in itertools.product(*axes)]
-    default = {k: controls[k].value for k in names}
-    lows = {k: a[0] for k, a in zip(names, axes)}
-    highs = {k: a[-1] for k, a in zip(names, axes)}
-    combos = [lows, highs]
-    for base in (default, lows, highs):
-        for k, a in zip(names, axes):
-            for v in a:
-                combos.append({**base, k: v})
-    for row in covering_corners(len(names), 3, seed):
-        combos.append({k: (a[-1] if bit else a[0]) for k, a, bit in zip(names, axes, row)})
-    return combos
 
 
 class InteractiveView(widgets.VBox):
@@ -303,10 +217,6 @@ class InteractiveView(widgets.VBox):
         finally:
             self._muted = old
 
-    def sweep_values(self, n: int = 3, max_full: int = 400) -> list[dict]:
-        """Value combinations over every control's range, corners included (for tests)."""
-        return control_grid(self.controls, n=n, max_full=max_full)
-
     # -- the widget side -----------------------------------------------------------------------
     def acting(self, values: Mapping | None = None) -> dict:
         """``{control: True/False}``: whether each control acts in the mode ``values`` (default the
@@ -438,8 +348,6 @@ def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping
 def _checked(update: Callable[..., dict], controls: Mapping[str, widgets.Widget]) -> Callable[..., dict]:
     """``update`` with its keyword values checked (and given as their widgets hold them) by
     :func:`check_control_values` first."""
-    import functools
-
     @functools.wraps(update)
     def checked(*args, **values):
         return update(*args, **check_control_values(controls, values))

@@ -9,6 +9,7 @@ from scipy.spatial.distance import directed_hausdorff
 
 from goldman_lib import affine, ifs
 from goldman_lib.widgets import ifs_editor as ed
+from sweeps import sweep_values
 
 
 @pytest.fixture
@@ -87,7 +88,7 @@ def test_condensation_trunk_in_both_algorithms(view):
 
 
 def test_sweep_grid_is_safe_for_many_controls(view):
-    combos = view.sweep_values()
+    combos = sweep_values(view)
     assert 400 < len(combos) < 2000 and all(set(c) == set(view.controls) for c in combos[:5])
 
 

@@ -11,6 +11,7 @@ from scipy.interpolate import BSpline, bisplev
 
 from goldman_lib import bspline
 from goldman_lib.widgets import knot_editor as ke
+from sweeps import sweep_values
 
 matplotlib.use("Agg")
 
@@ -107,7 +108,7 @@ def test_presets_set_and_lock_the_sliders():
 
 def test_curve_editor_draws_scipy_curve_and_basis():
     view = ke.bspline_curve_editor()
-    for vals in view.sweep_values()[:40]:
+    for vals in sweep_values(view)[:40]:
         r = view.update(**vals)
         knots, p = r["knots"], len(r["knots"]) - 8
         u = np.linspace(0, 1, len(r["curve"]))
@@ -172,7 +173,7 @@ def test_curve_editors_control_points_are_dragged(hooks):
 
 def test_surface_editor_draws_bisplev_surface():
     view = ke.bspline_surface_editor()
-    for vals in view.sweep_values()[:12]:
+    for vals in sweep_values(view)[:12]:
         r = view.update(**vals)
         tu, tv = r["knots_u"], r["knots_v"]
         pu, pv = len(tu) - 7, len(tv) - 7

@@ -11,6 +11,7 @@ import pytest
 from goldman_lib.views import factories
 from goldman_lib.widgets import interactive
 from goldman_lib.widgets.interactive import InteractiveView
+from sweeps import sweep_values
 
 FACTORIES = [pytest.param(fn, id=name) for name, fn in factories()]
 
@@ -105,7 +106,7 @@ def test_sweep_over_every_control_range(factory):
     # what a view carries is declared on InteractiveView (issue 19 §3), not set ad hoc
     undeclared = sorted(k for k in set(vars(view)) - _BARE - InteractiveView.CARRIES if not k.startswith("_trait"))
     assert not undeclared, f"{factory.__name__} sets attributes InteractiveView does not declare: {undeclared}"
-    combos = distinct(view.sweep_values(n=3))
+    combos = distinct(sweep_values(view, n=3))
     if any(hasattr(w, "min") and hasattr(w, "max") for w in view.controls.values()):
         assert len(combos) >= 3, "a view with sliders is swept over at least its ends and middle"
     for values in combos:
