@@ -26,7 +26,7 @@ The pattern, every view:
 
 Components shared by several chapters (each used by the views of more than one):
 
-- ``widgets.light_control``   the one light-position control of Part III (chapters 16, 17, 21, 23)
+- ``widgets.light_control``   the one light-position control of Part III (chapters 16, 17, 19, 21, 23)
 - ``widgets.vectors3d``       the three.js view of Part II (chapters 9-15): points, arrows, planes,
                               polygons; and chapter 9's vector-products widget built on it
 - ``widgets.program_editor``  the program editor of the turtle (chapter 1) and CODO (chapter 5)

@@ -1,5 +1,5 @@
-"""The light-position control: the one widget that places lights, shared by chapters 16, 17, 21
-and 23 (and any view lit by :mod:`goldman_lib.lighting`).
+"""The light-position control: the one widget that places lights, shared by chapters 16, 17, 19,
+21 and 23 (and any view lit by :mod:`goldman_lib.lighting`).
 
 For each light it makes an x, a y and a z slider, an intensity slider and (optionally) a colour
 picker, named ``light0_x``, ``light0_y``, ``light0_z``, ``light0_I``, ``light0_colour``,
