@@ -1,10 +1,13 @@
 """The widget framework of the course: what every chapter's views are built from.
 
-The rule that puts a module here rather than in :mod:`goldman_lib.views`: **a module belongs to
-the framework if it knows no chapter, or if the views of more than one chapter use it**; a module
-that serves one chapter is that chapter's module in :mod:`goldman_lib.views`.  The framework never
-imports :mod:`goldman_lib.views` (``tests/library/test_imports_widgets.py`` reads the imports), so
-a chapter's views can change without touching it; the library proper (every other module of
+The rule that puts a module here rather than in :mod:`goldman_lib.views`: **a module that is not
+one chapter's views belongs to the framework if it knows no chapter, or if the views of more than
+one chapter are built on it** (a shared editor, a shared scene); a chapter's own module (its plots
+and factories, named as the library module it shows) stays in :mod:`goldman_lib.views`, even where
+a later chapter's views reuse one of its drawings (``views.turtle``'s strokes in chapters 2-5 and
+8, ``views.bezier``'s curve plots in chapters 25-26: Parts depend backwards).  The framework never
+imports :mod:`goldman_lib.views` (``tests/library/test_import_layers.py`` reads the imports), so a
+chapter's views can change without touching it; the library proper (every other module of
 :mod:`goldman_lib`) imports neither package.
 
 The pattern, every view:
