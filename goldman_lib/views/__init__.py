@@ -3,9 +3,11 @@ module it shows, each holding the chapter's plot functions and widget factories.
 
 A view is built from the widget framework, :mod:`goldman_lib.widgets` (the widget pattern
 ``InteractiveView``, sliders, drags, three.js scenes, the light control, the shared editors): a
-module used by the views of more than one chapter lives there, and this package holds only what
-one chapter shows.  A chapter's module may use an earlier chapter's (Parts depend only backwards:
-``affine``, ``codo``, ``fractals`` and ``conformal_ifs`` draw turtle strokes with ``turtle``'s).
+module that knows no chapter, or that the views of several chapters are built on, lives there (the
+rule is in its docstring), and this package holds only the chapters' own modules.  A chapter's
+module may use an earlier chapter's drawings (Parts depend only backwards: ``affine``, ``codo``,
+``fractals`` and ``conformal_ifs`` draw turtle strokes with ``turtle``'s; ``bezier_subdivision``
+and ``blossom`` plot curves with ``bezier``'s).
 
 Part I, two-dimensional computer graphics:
 ``turtle`` (1), ``fractals`` (2-3), ``affine`` (4), ``codo`` (5), ``ifs`` (6), ``fixed_point`` (7),
