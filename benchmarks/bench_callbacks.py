@@ -13,13 +13,19 @@ an empty 560x420 Agg figure redraw timed in the same run (target: at most 4x).
 from __future__ import annotations
 
 import itertools
+import pathlib
+import runpy
 
 import matplotlib
 
 matplotlib.use("Agg")
 
 from benchmarks.timing import best_time, best_times, fmt_time  # noqa: E402
-from goldman_lib.views.interactive import discover_factories  # noqa: E402
+from goldman_lib.views import factories  # noqa: E402
+
+#: The sweep of a view's controls the view tests use (test machinery, kept with the tests).
+_SWEEPS = runpy.run_path(str(pathlib.Path(__file__).resolve().parents[1] / "tests" / "views" / "sweeps.py"))
+sweep_values = _SWEEPS["sweep_values"]
 
 TARGET = 0.050  # seconds
 #: Each callback (update + redraw) at most this multiple of an empty 560x420 Agg redraw, same run.
@@ -36,14 +42,14 @@ def empty_figure():
 
 
 def _factories():
-    """Every widget factory of goldman_lib.views (found by its ``-> InteractiveView`` annotation)."""
-    return discover_factories()
+    """Every widget factory a chapter displays (:func:`goldman_lib.views.factories`)."""
+    return factories()
 
 
 def time_callback(view, empty=None) -> tuple[float, float | None, float | None]:
     """(seconds per update, seconds per update + full redraw or None for three.js views, seconds
     per redraw of the ``empty`` figure timed in interleaved rounds with the callback, or None)."""
-    values = itertools.cycle(view.sweep_values(n=5)[:50] or [view.values()])
+    values = itertools.cycle(sweep_values(view, n=5)[:50] or [view.values()])
     update = lambda: view.update(**next(values))  # noqa: E731
     alone = best_time(update, repeat=5)
     if view.figure is None:

@@ -3,7 +3,8 @@ Computer Graphics and Geometric Modeling*.
 
 One module per topic, named with the book's vocabulary, in the order of the book (the chapter's
 notebook is ``course/NN_*.ipynb``; its views are the module of the same name in
-:mod:`goldman_lib.views`, its exercise checkers ``goldman_lib.exercises.chNN``):
+:mod:`goldman_lib.views`, built from the widget framework :mod:`goldman_lib.widgets`; its exercise
+checkers are ``goldman_lib.exercises.chNN``):
 
 Part I, two-dimensional computer graphics: from common curves to intricate fractals
 
@@ -54,7 +55,11 @@ and the rule), ``angles`` (degrees), ``kernels`` (the unchecked array kernels th
 
 - ``goldman_lib.exercises``  the checkers of the notebooks' exercises, "show that" exercises and
   programming projects (``deal`` makes numeric exercises deal new instances)
-- ``goldman_lib.views``      matplotlib and three.js views, the widget framework and the factories
+- ``goldman_lib.widgets``    the widget framework: ``InteractiveView`` (controls + a plain ``update``),
+  sliders, mouse drags, three.js scenes, the light control, the render button, the editors several
+  chapters share (IFS maps, knot vectors, programs); it knows no chapter
+- ``goldman_lib.views``      the chapters' views: one module per chapter, its plots and widget
+  factories, built from ``goldman_lib.widgets`` (``views.factories()`` lists every factory)
 
 Conventions shared by every module: points are numpy arrays with coordinates in the last axis;
 angles are in degrees; transformation matrices act on row vectors from the right (``Q = P @ M``);
@@ -62,7 +67,9 @@ bad input raises ``ValueError``/``TypeError`` naming the parameter and the rule;
 in through an ``rng`` argument.
 
 Importing ``goldman_lib`` (or any of the modules above) does not import matplotlib, ipywidgets or
-pythreejs; only ``goldman_lib.views`` does.
+pythreejs; only the modules of ``goldman_lib.widgets`` and ``goldman_lib.views`` do.  The layers
+import only downwards: the library imports neither package, the framework never imports the views
+(``tests/library/test_import_layers.py``).
 """
 
 __version__ = "0.1.0"

@@ -3,7 +3,7 @@
 Where light meets a surface, in one place.  Every renderer of Part III (the ray tracer of
 chapter 17, the rasteriser of chapter 21, the hidden-surface algorithms of chapter 22, the
 radiosity display of chapter 23), the static pictures of every three.js view and the lights of
-:class:`goldman_lib.views.three.SceneView` take their lights from here.
+:class:`goldman_lib.widgets.three.SceneView` take their lights from here.
 
 Goldman §16.3-16.6 builds the intensity of light leaving a point ``P`` with unit normal ``N`` seen
 from an eye at ``E`` as the sum of three terms, one colour channel at a time:

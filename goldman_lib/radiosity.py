@@ -378,7 +378,7 @@ def hemicube_form_factors(patches: Patches, resolution=16, subdivisions=1, progr
 
     progress: ``progress(done, total)`` is called with the hemi-cubes finished so far (of ``n s^2``)
     after each batch of them (about 400,000 cell-rectangle tests a batch), for a progress bar
-    (:class:`goldman_lib.views.render_control.ProgressBar`); the result does not depend on it.  An
+    (:class:`goldman_lib.widgets.render_control.ProgressBar`); the result does not depend on it.  An
     interrupt between batches leaves nothing half-written (``F`` is returned only at the end).
 
     >>> two = Patches([[0, 0, 0], [0, 1, 1]], [[1, 0, 0], [1, 0, 0]], [[0, 1, 0], [0, -1, 0]],

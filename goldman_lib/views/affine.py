@@ -2,7 +2,7 @@
 
 :func:`plot_map` draws a figure (the letter F or a house, so that orientation shows) and its image
 under a map.  Three widget factories return an
-:class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a plain function
+:class:`~goldman_lib.widgets.interactive.InteractiveView` whose ``update`` is a plain function
 returning what it drew:
 
 * :func:`transform_explorer`: pick translation, rotation, uniform scaling, nonuniform scaling,
@@ -13,7 +13,7 @@ returning what it drew:
 * :func:`rotation_about_point_view`: rotation about ``Q`` as ``T(-Q) R T(Q)``, step by step (§4.4); the mouse drags Q.
 
 Each point a learner places can be dragged (``view.drag``, the shared
-:class:`~goldman_lib.views.drag.PointDrag`); a drag sets the point's sliders.
+:class:`~goldman_lib.widgets.drag.PointDrag`); a drag sets the point's sliders.
 
 >>> view = transform_explorer()
 >>> sorted(view.update(**view.values()))
@@ -27,9 +27,9 @@ import numpy as np
 from goldman_lib import affine
 from goldman_lib.angles import cos_sin_degrees
 from goldman_lib.validation import as_points
-from goldman_lib.views import style
-from goldman_lib.views.drag import PointDrag, drag_sliders, snap_to_slider
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, InteractiveView
+from goldman_lib.widgets import style
+from goldman_lib.widgets.drag import PointDrag, drag_sliders, snap_to_slider
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, InteractiveView
 from goldman_lib.views.turtle import stroke_data
 
 __all__ = ["FIGURES", "KINDS", "plot_map", "format_matrix", "transform_explorer", "three_point_explorer",

@@ -2,7 +2,7 @@
 Bernstein basis, and a three.js tensor-product patch (Goldman §24.2-24.6).
 
 Plot functions take ``ax=None`` and return their artists; widget factories return an
-:class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a plain function.
+:class:`~goldman_lib.widgets.interactive.InteractiveView` whose ``update`` is a plain function.
 
 >>> view = de_casteljau_explorer()
 >>> sorted(view.update(**view.values()))
@@ -15,10 +15,10 @@ import numpy as np
 
 from goldman_lib import bezier
 from goldman_lib.validation import as_int, as_points, within_budget
-from goldman_lib.views import style
-from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
-from goldman_lib.views.three import SceneView, grid_triangles
+from goldman_lib.widgets import style
+from goldman_lib.widgets.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
+from goldman_lib.widgets.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.widgets.three import SceneView, grid_triangles
 
 __all__ = ["plot_control_polygon", "plot_curve", "plot_construction", "plot_bernstein",
            "de_casteljau_explorer", "degree_elevation_view", "bernstein_view", "patch_editor",
@@ -101,7 +101,7 @@ def de_casteljau_explorer(ctrl=DEFAULT_CUBIC, t: float = 0.4, box=(-1.0, 5.0, -1
     construction and the point ``C(t)``; it returns them as arrays.  ``box`` = (xmin, xmax, ymin,
     ymax) is both the sliders' range and the fixed view, so the picture does not jump.
     The control points can also be dragged with the mouse (``view.drag``, a
-    :class:`~goldman_lib.views.drag.PointDrag`): a drag sets the point's two sliders.
+    :class:`~goldman_lib.widgets.drag.PointDrag`): a drag sets the point's two sliders.
     """
     import ipywidgets as widgets
 

@@ -3,7 +3,7 @@ the adaptive subdivision of a patch (Goldman §25.2-25.3).
 
 The curves and control polygons are drawn with the chapter-24 plot functions
 (:func:`goldman_lib.views.bezier.plot_curve`, :func:`~goldman_lib.views.bezier.plot_control_polygon`);
-the factories return an :class:`~goldman_lib.views.interactive.InteractiveView` whose ``update``
+the factories return an :class:`~goldman_lib.widgets.interactive.InteractiveView` whose ``update``
 is a plain function returning what it drew.
 
 >>> view = bezier_subdivision_view()
@@ -11,7 +11,7 @@ is a plain function returning what it drew.
 ['curve', 'gap', 'polygon', 'polygons', 'status']
 
 :func:`patch_subdivision_3d_view` is the chapter's three.js view (through
-:class:`goldman_lib.views.three.SceneView`): the sub-nets of a subdivided bicubic patch and the
+:class:`goldman_lib.widgets.three.SceneView`): the sub-nets of a subdivided bicubic patch and the
 intersection of two patches by subdivision.
 """
 
@@ -21,10 +21,10 @@ import numpy as np
 
 from goldman_lib import bezier
 from goldman_lib.validation import as_float, as_int, as_points
-from goldman_lib.views import style
+from goldman_lib.widgets import style
 from goldman_lib.views.bezier import DEFAULT_CUBIC, plot_control_polygon, plot_curve
-from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
+from goldman_lib.widgets.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 
 __all__ = ["plot_pieces", "plot_boxes", "plot_patch_domains", "bezier_subdivision_view", "adaptive_rendering_view",
            "intersection_view", "patch_rendering_view", "patch_subdivision_3d_view", "INTERSECTION_EXAMPLES", "WAVY", "DEFAULT_PATCH_25"]
@@ -373,7 +373,7 @@ def patch_subdivision_3d_view(ctrl=DEFAULT_PATCH_25, mode: str = "sub-nets", lev
     parameters (k, 4) and drawn segments (j, 2, 3).
     """
 
-    from goldman_lib.views.three import SceneView, grid_triangles
+    from goldman_lib.widgets.three import SceneView, grid_triangles
 
     modes = ("sub-nets", "intersection")
     if mode not in modes:

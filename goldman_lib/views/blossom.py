@@ -2,7 +2,7 @@
 any interval, read off the blossom (Goldman §26.2-26.3).
 
 Curves and control polygons are drawn with the chapter-24 plot functions; the factories return
-an :class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a plain function.
+an :class:`~goldman_lib.widgets.interactive.InteractiveView` whose ``update`` is a plain function.
 
 >>> view = blossom_view()
 >>> sorted(view.update(**view.values()))
@@ -18,10 +18,10 @@ import numpy as np
 from goldman_lib import bezier
 from goldman_lib import blossom as bl
 from goldman_lib.validation import as_int, as_points
-from goldman_lib.views import style
+from goldman_lib.widgets import style
 from goldman_lib.views.bezier import DEFAULT_CUBIC, plot_control_polygon, plot_curve
-from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
+from goldman_lib.widgets.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
+from goldman_lib.widgets.interactive import InteractiveView, figure_widget, float_slider
 
 __all__ = ["blossom_label", "plot_blossom_diagram", "blossom_view", "interval_view"]
 

@@ -1,9 +1,9 @@
 """Chapter 27 views: the de Boor pyramid, local control, and static plots of B-spline curves
 (Goldman §27.2-27.7).  The knot-vector editor and the NURBS and surface editors are the shared
-component :mod:`goldman_lib.views.knot_editor`.
+component :mod:`goldman_lib.widgets.knot_editor`.
 
 Plot functions take ``ax=None`` and return their artists; widget factories return an
-:class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a plain function.
+:class:`~goldman_lib.widgets.interactive.InteractiveView` whose ``update`` is a plain function.
 
 >>> view = de_boor_explorer()
 >>> sorted(view.update(**view.values()))
@@ -16,10 +16,10 @@ import numpy as np
 
 from goldman_lib import bspline
 from goldman_lib.validation import as_int, as_points
-from goldman_lib.views import style
-from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
-from goldman_lib.views.knot_editor import DEFAULT_POLYGON, plot_knot_marks
+from goldman_lib.widgets import style
+from goldman_lib.widgets.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
+from goldman_lib.widgets.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.widgets.knot_editor import DEFAULT_POLYGON, plot_knot_marks
 
 __all__ = ["plot_bspline_curve", "plot_de_boor", "de_boor_explorer", "local_control_view", "LONG_POLYGON"]
 

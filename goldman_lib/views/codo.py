@@ -1,7 +1,7 @@
 """Chapter 5 views: a CODO program editor with live drawing, and the turtle's second shortcoming
 made visible (Goldman §5.1-5.2).
 
-Both factories return an :class:`~goldman_lib.views.interactive.InteractiveView` whose
+Both factories return an :class:`~goldman_lib.widgets.interactive.InteractiveView` whose
 ``update`` is a plain function returning what it drew.
 
 >>> view = codo_program_editor()
@@ -15,10 +15,9 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import affine, codo, turtle
-from goldman_lib.views import style
-from goldman_lib.views import _checks
-from goldman_lib.views._program_editor import program_editor
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, InteractiveView
+from goldman_lib.widgets import style
+from goldman_lib.widgets.program_editor import program_editor
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, InteractiveView
 from goldman_lib.views.turtle import stroke_data
 
 __all__ = ["DEFAULT_PROGRAM", "TRY_PROGRAM", "plot_drawing", "plot_program", "codo_program_editor", "TURTLE_PROGRAMS",
@@ -94,7 +93,7 @@ _HELP = ("<small><code>P = point(x, y)</code>, <code>v = vector(x, y)</code>, <c
 
 def codo_program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> InteractiveView:
     """A text box for a CODO program with live drawing (Goldman §5.2); the course's one program
-    editor (:mod:`goldman_lib.views._program_editor`, shared with the turtle) running CODO.
+    editor (:mod:`goldman_lib.widgets.program_editor`, shared with the turtle) running CODO.
 
     program: the initial text.  A program that does not parse or run leaves the last good
     drawing and shows the message ("line 3, column 7, at '+': ...") in the status line.  An
@@ -167,10 +166,7 @@ def turtle_shortcoming_view(program: str = "square", sx: float = 2.0, sy: float 
     ax.set_adjustable("box")
 
     def update(program, sx, sy, shear):
-        text = TURTLE_PROGRAMS[_checks.option(TURTLE_PROGRAMS, program, "program")]
-        sx = _checks.number(sx, "sx", -1000.0, 1000.0)     # a drawing a million times too big: no picture
-        sy = _checks.number(sy, "sy", -1000.0, 1000.0)
-        shear = _checks.number(shear, "shear", -1000.0, 1000.0)
+        text = TURTLE_PROGRAMS[program]
         M = affine.scaling([sx, sy]) @ affine.shear(shear)
         image = [affine.apply(p, M) for p in turtle.run(text)]
         fit = codo.closest_turtle_state(text, image)

@@ -28,9 +28,9 @@ from goldman_lib.camera import Camera
 from goldman_lib.lighting import Light, Material
 from goldman_lib.simple_surfaces import Sphere
 from goldman_lib.validation import within_budget
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
-from goldman_lib.views.light_control import LightControl
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, figure_widget, float_slider
+from goldman_lib.widgets.light_control import LightControl
 
 __all__ = ["shaded_sphere_view", "terms_view", "rgb_mixing_view", "EYE", "WINDOW", "SPHERE", "BACKGROUND",
            "sphere_pixels", "wall_pixels", "camera", "FULL_SIZE", "FULL_SAMPLES"]
@@ -161,7 +161,7 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
 
     ``view.render_full(progress, size=FULL_SIZE, samples=FULL_SAMPLES, clamp=True, **values)`` is the
     full-size picture of the view's state (the function a
-    :class:`goldman_lib.views.render_control.RenderControl` calls): the same sphere, material and
+    :class:`goldman_lib.widgets.render_control.RenderControl` calls): the same sphere, material and
     light ray cast by :func:`goldman_lib.ray_tracing.ray_cast` at 640 x 480, 2 x 2 anti-aliased.
     """
     size = _size(size)

@@ -8,7 +8,7 @@
   left the recursive turtle program's drawing, right the deterministic algorithm of the IFS that
   Ron's algorithm produced, each top-level copy in its map's colour; the Hausdorff distance
   between the two drawings in the status line.
-* :func:`tao_view` (§8.4): the shared IFS map editor (:mod:`goldman_lib.views.ifs_editor`)
+* :func:`tao_view` (§8.4): the shared IFS map editor (:mod:`goldman_lib.widgets.ifs_editor`)
   above, and below the turtle program that Tao's algorithm writes for the edited IFS, drawn by
   the turtle.  A map the turtle cannot follow (a shear, unequal scales, a reflection) is named
   in the status line.
@@ -33,10 +33,9 @@ import numpy as np
 from goldman_lib import affine, fixed_point, fractals, turtle
 from goldman_lib import conformal_ifs as cf
 from goldman_lib.validation import as_float, as_int
-from goldman_lib.views import style
-from goldman_lib.views import _checks
-from goldman_lib.views.drag import drag_sliders
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
+from goldman_lib.widgets import style
+from goldman_lib.widgets.drag import drag_sliders
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 from goldman_lib.views.turtle import stroke_data
 
 __all__ = ["plot_turtle_and_ifs", "initial_state_view", "turtle_ifs_view", "tao_view", "bump_view",
@@ -196,10 +195,7 @@ def initial_state_view(fractal: str = "Koch curve", level: int = 2, x: float = 0
     frame: dict = {}
 
     def update(fractal, level, x, y, angle, scale):
-        program = fractals.PROGRAMS[_checks.option(fractals.PROGRAMS, fractal, "fractal")]()
-        level = _checks.integer(level, "level", 0, 5)
-        x, y = _checks.number(x, "x", -1000.0, 1000.0), _checks.number(y, "y", -1000.0, 1000.0)
-        angle, scale = _checks.number(angle, "angle"), _checks.number(scale, "scale", 0.001, 1000.0)
+        program = fractals.PROGRAMS[fractal]()
         lev = _fitting_level(program, int(level), 8000)
         w = _heading(angle, scale)
         standard = program.polylines(lev)
@@ -302,10 +298,7 @@ def turtle_ifs_view(fractal: str = "Koch curve", level: int = 4, x: float = 0.0,
     frame: dict = {}
 
     def update(fractal, level, x, y, angle, scale):
-        program = fractals.PROGRAMS[_checks.option(fractals.PROGRAMS, fractal, "fractal")]()
-        level = _checks.integer(level, "level", 0, 8)
-        x, y = _checks.number(x, "x", -1000.0, 1000.0), _checks.number(y, "y", -1000.0, 1000.0)
-        angle, scale = _checks.number(angle, "angle"), _checks.number(scale, "scale", 0.001, 1000.0)
+        program = fractals.PROGRAMS[fractal]()
         w = _heading(angle, scale)
         key = (fractal, float(x), float(y), float(angle), float(scale))
         conv = cache.get(key)
@@ -378,7 +371,7 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
     ``update(**editor values)`` returns ``{"turtle" (strokes), "ifs" (strokes of the
     deterministic algorithm from the same base), "program" (text), "distance", "level", "status"}``; a
     map that is not an orientation-preserving similarity is named in the status and nothing is
-    drawn.  ``view.editor`` is the embedded :func:`~goldman_lib.views.ifs_editor.ifs_editor`.
+    drawn.  ``view.editor`` is the embedded :func:`~goldman_lib.widgets.ifs_editor.ifs_editor`.
 
     >>> view = tao_view()
     >>> view.last_result["distance"] < 1e-9, view.last_result["program"].startswith("level 0: FORWARD 1")
@@ -386,7 +379,7 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
     """
     import ipywidgets as widgets
 
-    from goldman_lib.views.ifs_editor import ifs_editor, system_from_values
+    from goldman_lib.widgets.ifs_editor import ifs_editor, system_from_values
 
     editor = ifs_editor(system, algorithm="deterministic", levels=as_int(levels, "levels", minimum=0, maximum=12))
     fig, left, right = _two_panels()
@@ -412,7 +405,7 @@ def tao_view(system: str = "C-curve", levels: int = 8) -> InteractiveView:
             program = cf.tao_algorithm(s, unit)
         except ValueError as exc:
             return clear(f"Tao's algorithm refuses this IFS: {exc}")
-        levels = _checks.integer(values.get("levels", 0), "levels", 0, 12)
+        levels = values.get("levels", 0)
         level = min(levels, program.max_level(MAX_COMMANDS))
         cond = [s.condensation] if s.condensation is not None else []
         # keep the IFS drawing as small as the turtle's
@@ -482,9 +475,7 @@ def bump_view(bump: str = "Koch curve", level: int = 4, height: float = 1.0) -> 
     right_title = right.set_title("", fontsize=10, y=1.0)
 
     def update(bump, level, height):
-        poly, rev = cf.BUMPS[_checks.option(cf.BUMPS, bump, "bump")]
-        level = _checks.integer(level, "level", 0, 8)
-        height = _checks.number(height, "height", -1000.0, 1000.0)
+        poly, rev = cf.BUMPS[bump]
         poly = poly * np.array([1.0, height])
         if np.any(np.hypot(*np.diff(poly, axis=0).T) < 1e-9):
             # a height of 0 folds a vertical segment to nothing: nudge it

@@ -15,9 +15,8 @@ import numpy as np
 from goldman_lib import fixed_point as fp
 from goldman_lib import ifs
 from goldman_lib.validation import as_int
-from goldman_lib.views import style
-from goldman_lib.views import _checks
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 
 __all__ = ["NEWTON_FUNCTIONS", "newton_view", "relaxation_view", "fractal_theorem_view", "START_SETS", "cobweb",
            "convergence_plot"]
@@ -47,9 +46,7 @@ def newton_view(function: str = "x^2 - 2", x0: float = 2.5, steps: int = 1) -> I
     ax.axhline(0, color="#444444", linewidth=0.8)
 
     def update(function, x0, steps):
-        f, df, (lo, hi) = NEWTON_FUNCTIONS[_checks.option(NEWTON_FUNCTIONS, function, "function")]
-        steps = _checks.integer(steps, "steps", 0, 10)
-        x0 = _checks.number(x0, "x0")
+        f, df, (lo, hi) = NEWTON_FUNCTIONS[function]
         rep = fp.newton_steps(f, df, x0, max_iter=max(int(steps), 1))
         xs = rep.history[: int(steps) + 1]
         xs = np.clip(xs, -1e6, 1e6)
@@ -106,9 +103,6 @@ def relaxation_view(method: str = "Jacobi", steps: int = 6, diagonal: float = 3.
     b = np.array([1.0, 2.0])
 
     def update(method, steps, diagonal):
-        method = _checks.option(("Jacobi", "Gauss-Seidel"), method, "method")
-        steps = _checks.integer(steps, "steps", 0, 30)
-        diagonal = _checks.number(diagonal, "diagonal")
         A = np.array([[diagonal, 1.0], [2.0, diagonal]])
         solve = fp.jacobi if method == "Jacobi" else fp.gauss_seidel
         with warnings.catch_warnings():
@@ -189,8 +183,7 @@ def fractal_theorem_view(system: str = "Sierpinski gasket", start: str = "unit s
         return cache[key]
 
     def update(system, start, level):
-        r = measure(_checks.option(names, system, "system"), _checks.option(START_SETS, start, "start"))
-        level = _checks.integer(level, "level", 0, 8)
+        r = measure(system, start)
         n = min(int(level), len(r.sets) - 1)
         S = r.sets[n]
         attractor.set_data(r.attractor[:, 0], r.attractor[:, 1])

@@ -2,7 +2,7 @@
 that does not matter (Goldman §2.2-2.3, §3.2-3.4).
 
 Plot functions take ``ax=None`` and return the axes; widget factories return an
-:class:`~goldman_lib.views.interactive.InteractiveView` (not displayed) whose ``update`` is a
+:class:`~goldman_lib.widgets.interactive.InteractiveView` (not displayed) whose ``update`` is a
 plain function returning what it drew.  Strokes are drawn as one Line2D with a NaN row between
 strokes (the drawing of :mod:`goldman_lib.views.turtle`), so a level-7 Koch curve redraws quickly.
 
@@ -20,9 +20,8 @@ import numpy as np
 
 from goldman_lib import fractals, turtle
 from goldman_lib.validation import as_float, as_int
-from goldman_lib.views import style
-from goldman_lib.views import _checks
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 from goldman_lib.views.turtle import PathArtists, plot_polylines, stroke_data
 
 __all__ = ["plot_fractal", "fractal_explorer", "looping_lemma_explorer", "base_case_explorer",
@@ -100,8 +99,7 @@ def fractal_explorer(name: str = "Koch curve", level: int = 4, *, figsize=style.
     text = widgets.HTML(layout=widgets.Layout(width="290px"))
 
     def update(name, level):
-        prog = programs[_checks.option(programs, name, "name")]
-        level = _checks.integer(level, "level", 0, 8)
+        prog = programs[name]
         shown = shown_level(prog, level)
         t = prog.trace(shown, direction=_direction(name))
         artists.set(t.polylines, (0.0, 0.0), t.point, t.direction)
@@ -176,9 +174,6 @@ def looping_lemma_explorer(angle: float = 150.0, repetitions: int = 12, bend: fl
     theta = np.linspace(0, 2 * np.pi, 181)
 
     def update(angle, repetitions, bend):
-        angle = _checks.number(angle, "angle", 0.0, 360.0)
-        bend = _checks.number(bend, "bend", -90.0, 90.0)
-        repetitions = _checks.integer(repetitions, "repetitions", 1, 72)
         a, b, k = round(float(angle), 6), round(float(bend), 6), int(repetitions)
         body = [("FORWARD", 1.0)] + ([("TURN", b), ("FORWARD", 1.0)] if b else []) + [("TURN", a - b)]
         loop = fractals.loop_analysis(body)
@@ -272,8 +267,7 @@ def base_case_explorer(base: str = "Koch: tent", level: int = 1, *, figsize=styl
     limits = {"Koch curve": ((-0.05, 1.05), (-0.45, 0.6)), "Sierpinski gasket": ((-0.1, 1.1), (-0.15, 1.0))}
 
     def update(base, level):
-        fractal, name = BASE_OPTIONS[_checks.option(BASE_OPTIONS, base, "base")]
-        level = _checks.integer(level, "level", 0, 5)
+        fractal, name = BASE_OPTIONS[base]
         prog = programs[fractal]
         alt = prog.with_base(fractals.BASE_CASES[fractal][name])
         t0 = alt.trace(0)

@@ -17,8 +17,8 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import hidden_surfaces as hs
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, int_slider
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, figure_widget, int_slider
 
 __all__ = ["hidden_surfaces_view"]
 

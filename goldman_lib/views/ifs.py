@@ -1,6 +1,6 @@
 """Chapter 6 views: iterating an IFS on a start shape, and condensation sets (Goldman §6.1-6.4).
 
-The IFS map editor itself is :mod:`goldman_lib.views.ifs_editor` (shared with chapters 7 and 8).
+The IFS map editor itself is :mod:`goldman_lib.widgets.ifs_editor` (shared with chapters 7 and 8).
 
 >>> view = iteration_view()
 >>> sorted(view.update(**view.values()))
@@ -13,9 +13,8 @@ import numpy as np
 
 from goldman_lib import ifs
 from goldman_lib.validation import as_int
-from goldman_lib.views import style
-from goldman_lib.views import _checks
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 
 __all__ = ["START_SHAPES", "plot_copies", "iteration_view", "condensation_view"]
 
@@ -78,9 +77,8 @@ def iteration_view(system: str = "Sierpinski gasket", start: str = "unit square"
     cache = {}
 
     def update(system, start, level):
-        s = ifs.STANDARD[_checks.option(names, system, "system")]()
-        shape = START_SHAPES[_checks.option(START_SHAPES, start, "start")]
-        level = _checks.integer(level, "level", 0, max_level)
+        s = ifs.STANDARD[system]()
+        shape = START_SHAPES[start]
         if system not in cache:
             cache[system] = ifs.chaos_game(s, 30_000, rng=0)
         A = cache[system]
@@ -122,7 +120,6 @@ def condensation_view(angle: float = 30.0, ratio: float = 0.6, level: int = 6, m
     ax.set_ylim(-0.1, 2.9)
 
     def update(angle, ratio, level):
-        level = _checks.integer(level, "level", 0, max_level)
         s = ifs.tree(angle, ratio)
         pts = ifs.deterministic(s, level)
         branches = pts.reshape(-1, 2, 2)

@@ -3,7 +3,7 @@
 editor (Goldman §28.3-28.4).
 
 Plot functions take ``ax=None`` and return their artists; widget factories return an
-:class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a plain function.
+:class:`~goldman_lib.widgets.interactive.InteractiveView` whose ``update`` is a plain function.
 
 >>> view = bspline_subdivision_view()
 >>> sorted(view.update(**view.values()))
@@ -17,8 +17,8 @@ import numpy as np
 from goldman_lib import bspline
 from goldman_lib import knot_insertion as ki
 from goldman_lib.validation import as_int, as_points
-from goldman_lib.views import style
-from goldman_lib.views.interactive import (
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import (
     InteractiveView,
     dropdown,
     figure_widget,
@@ -372,7 +372,7 @@ def bspline_subdivision_view(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE,
 
 def insertion_editor(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, u: float = 0.6, times: int = 1) -> InteractiveView:
     """Knot insertion on a knot vector you set (Goldman §28.3): the shared knot-vector editor
-    (:mod:`goldman_lib.views.knot_editor`) sets the degree and the knots, and two more sliders
+    (:mod:`goldman_lib.widgets.knot_editor`) sets the degree and the knots, and two more sliders
     pick the knot ``u`` to insert and how many times.  The view draws the curve, the old and new
     polygons, and the Bezier polygons of the pieces once every knot has multiplicity p (§28.3.3)
     when ``bezier`` is ticked.
@@ -381,7 +381,7 @@ def insertion_editor(ctrl=DEFAULT_POLYGON, degree: int = DEFAULT_DEGREE, u: floa
     """
     import ipywidgets as widgets
 
-    from goldman_lib.views.knot_editor import knot_vector_editor
+    from goldman_lib.widgets.knot_editor import knot_vector_editor
 
     ctrl = as_points(ctrl, "ctrl", dim=2, min_count=3)
     editor = knot_vector_editor(n_ctrl=len(ctrl), degree=degree, max_degree=min(5, len(ctrl) - 1))

@@ -1,7 +1,7 @@
 """Chapter 14 views: the law of the lever with mass-points you drag, and perspective versus
 pseudoperspective of a small scene seen from the side (Goldman §14.3-14.4).
 
-Both factories return an :class:`~goldman_lib.views.interactive.InteractiveView` whose ``update``
+Both factories return an :class:`~goldman_lib.widgets.interactive.InteractiveView` whose ``update``
 is a plain function returning what it drew; all the mathematics is
 :mod:`goldman_lib.mass_points`:
 
@@ -27,9 +27,9 @@ import numpy as np
 from matplotlib import ticker
 
 from goldman_lib import mass_points as mp
-from goldman_lib.views import style
-from goldman_lib.views.drag import drag_sliders
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
+from goldman_lib.widgets import style
+from goldman_lib.widgets.drag import drag_sliders
+from goldman_lib.widgets.interactive import InteractiveView, figure_widget, float_slider
 
 __all__ = ["LEVER_POINTS", "LEVER_MASSES", "SCENE", "LABELLED", "lever_view", "pseudoperspective_view"]
 

@@ -21,10 +21,10 @@ import numpy as np
 
 from goldman_lib import quaternions as qt
 from goldman_lib.validation import as_float
-from goldman_lib.views import style
-from goldman_lib.views.drag import drag_sliders
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
-from goldman_lib.views.vectors3d import COLOURS, VectorScene
+from goldman_lib.widgets import style
+from goldman_lib.widgets.drag import drag_sliders
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
+from goldman_lib.widgets.vectors3d import COLOURS, VectorScene
 
 __all__ = ["complex_plane_view", "quaternion_rotation_view", "key_frame_view", "double_cover_view", "slerp_s3_view",
            "one_sided_product_plot", "FIGURE_F", "BODY_ARROWS", "KEY_SETS", "BRICK", "FRAMES", "COVER_AXIS", "S3_KEYS", "S3_MARKS"]

@@ -26,10 +26,10 @@ from matplotlib import ticker
 
 from goldman_lib import radiosity as rd
 from goldman_lib.validation import as_int
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, dropdown, figure_png, figure_widget, int_slider
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, figure_png, figure_widget, int_slider
 from goldman_lib.lighting import Light
-from goldman_lib.views.light_control import LightControl
+from goldman_lib.widgets.light_control import LightControl
 
 __all__ = ["radiosity_view", "cornell_scene", "SOLVERS", "MAX_STEPS", "LIGHT_SIZE", "EMISSION", "WHITE"]
 
@@ -56,7 +56,7 @@ def cornell_scene(n: int = 8, resolution: int = 16, progress=None):
 
     progress: ``progress(done, total)`` for the hemi-cubes as they are made (about a second at the
     default size; see :func:`goldman_lib.radiosity.hemicube_form_factors`), for instance a
-    :class:`goldman_lib.views.render_control.ProgressBar`; a cached scene reports itself done at once."""
+    :class:`goldman_lib.widgets.render_control.ProgressBar`; a cached scene reports itself done at once."""
     n = as_int(n, "n", minimum=1)
     key = (n, resolution)
     if key not in _SCENES:
@@ -121,7 +121,7 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
     if solver not in SOLVERS:
         raise ValueError(f"solver must be one of {sorted(SOLVERS)}; got {solver!r}")
     import ipywidgets as widgets
-    from goldman_lib.views.three import SceneView
+    from goldman_lib.widgets.three import SceneView
 
     box, F = cornell_scene()
     shooting = _shooting()

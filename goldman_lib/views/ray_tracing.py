@@ -14,7 +14,7 @@ is drawn across a sphere it does not meet (issue 18: the former x-z side view ov
 different y and drew a reflected ray through a sphere it missed).  The legend is part of the
 figure, so the static picture carries it.  Choose the pixel with its sliders or by clicking the
 image; drag the light in the right panel (it moves in the drawing's plane, keeping its distance
-from it) or use its sliders (the shared :class:`~goldman_lib.views.light_control.LightControl`).
+from it) or use its sliders (the shared :class:`~goldman_lib.widgets.light_control.LightControl`).
 The depth slider sets the recursion depth, the index slider the glass sphere's index of refraction.
 
 A slider move re-renders the whole image (about 27,000 rays at the default 160 x 120, depth 3):
@@ -35,9 +35,9 @@ import numpy as np
 from goldman_lib import ray_tracing as rt
 from goldman_lib.simple_surfaces import Sphere
 from goldman_lib.validation import as_float, as_int
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
-from goldman_lib.views.light_control import LightControl
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
+from goldman_lib.widgets.light_control import LightControl
 
 __all__ = ["ray_tracing_view", "image_strip", "ray_plane", "project", "draw_tree", "WIDTH", "HEIGHT", "KIND_COLOURS", "KINDS",
            "FULL_SIZE", "FULL_SAMPLES", "FULL_DEPTH", "SAFEGUARDS_OFF"]
@@ -176,7 +176,7 @@ def image_strip(images, titles=None, width: float = 2.6) -> bytes:
     """
     from matplotlib.figure import Figure
 
-    from goldman_lib.views.interactive import figure_png
+    from goldman_lib.widgets.interactive import figure_png
 
     images = [np.clip(np.asarray(img, dtype=float), 0, 1) for img in images]
     if not images or any(img.ndim != 3 or img.shape[2] != 3 for img in images):
@@ -212,7 +212,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
     ``view.render_full(progress, size=FULL_SIZE, samples=FULL_SAMPLES, full_depth=FULL_DEPTH, **values)``
     is the full-size picture of the view's scene (its glass index and light; the depth slider and the
     pixel are the small picture's): :func:`goldman_lib.ray_tracing.render` at 640 x 480, 2 x 2
-    anti-aliased, depth 5, the function a :class:`goldman_lib.views.render_control.RenderControl`
+    anti-aliased, depth 5, the function a :class:`goldman_lib.widgets.render_control.RenderControl`
     calls.  The glass index is the view's first slider (the render button's browser test moves it).
 
     >>> r = ray_tracing_view().set_values(depth=2, index=1.0)     # index 1: the glass bends nothing
@@ -385,7 +385,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
                                                   widgets.VBox(list(control.controls.values()))])])
 
     # drag the light in the plane of the drawing (it keeps its distance from that plane)
-    from goldman_lib.views.drag import PointDrag, snap_to_slider
+    from goldman_lib.widgets.drag import PointDrag, snap_to_slider
 
     def light_point():
         return project(frame["plane"], control.marker_positions(view.values()))

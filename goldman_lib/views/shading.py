@@ -19,9 +19,9 @@ import numpy as np
 
 from goldman_lib import lighting, rasteriser, shading
 from goldman_lib.camera import Camera
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
-from goldman_lib.views.light_control import LightControl
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
+from goldman_lib.widgets.light_control import LightControl
 
 __all__ = ["shading_view", "mach_band_view", "plot_images", "MODE_LABELS", "SHADING_CAMERA", "MACH_LIGHT",
            "MACH_MATERIAL"]

@@ -24,9 +24,9 @@ from goldman_lib import lighting, simple_surfaces as S
 from goldman_lib.camera import Camera
 from goldman_lib.lighting import Material
 from goldman_lib.validation import as_float, within_budget
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider
-from goldman_lib.views.light_control import LightControl
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, figure_widget, float_slider
+from goldman_lib.widgets.light_control import LightControl
 
 __all__ = ["SURFACES", "make_surface", "gallery_view", "gallery_render_control", "gallery_figure",
            "surface_scene_view", "torus_ray_view", "GALLERY_SIZE"]
@@ -202,7 +202,7 @@ def gallery_render_control(view: InteractiveView, width: int = 640, height_px: i
     traces the surface and the lights the view shows now, at ``width x height_px`` with ``samples x
     samples`` anti-aliasing and recursion ``depth`` (:func:`goldman_lib.ray_tracing.render`, the same
     scene and camera as the view's small picture), filling a progress bar as the rows are done; the
-    sliders stay as fast as before.  Returns a :class:`goldman_lib.views.render_control.RenderControl`
+    sliders stay as fast as before.  Returns a :class:`goldman_lib.widgets.render_control.RenderControl`
     (not displayed); ``.render()`` does the same from the keyboard.
 
     >>> v = gallery_view(width=40, height_px=30)
@@ -211,7 +211,7 @@ def gallery_render_control(view: InteractiveView, width: int = 640, height_px: i
     (12, 16, 3)
     """
     from goldman_lib import ray_tracing as rt
-    from goldman_lib.views.render_control import RenderControl
+    from goldman_lib.widgets.render_control import RenderControl
 
     if not isinstance(view, InteractiveView) or not hasattr(view, "light_control"):
         raise TypeError("view must be the gallery's InteractiveView (from gallery_view())")
@@ -283,7 +283,7 @@ def surface_scene_view(kind: str = "torus", radius: float = 0.8, height: float =
     >>> len(v.set_values(kind="cylinder", radius=0.5)["triangles"]) > 0
     True
     """
-    from goldman_lib.views.three import SceneView
+    from goldman_lib.widgets.three import SceneView
 
     resolution = within_budget(resolution, "resolution", cost=lambda v: 6 * v * v, what="the mesh", unit="indices",
                                limit=6 * 200 ** 2, minimum=3)
@@ -335,7 +335,7 @@ def torus_ray_view(ox: float = -3.5, oz: float = 1.2, angle: float = -15.0, R: f
     """
     from matplotlib.patches import Circle
 
-    from goldman_lib.views.drag import drag_sliders
+    from goldman_lib.widgets.drag import drag_sliders
 
     controls = {"ox": float_slider("origin x", ox, -4.0, 4.0, 0.05), "oz": float_slider("origin z", oz, -3.0, 3.0, 0.05),
                 "angle": float_slider("angle °", angle, -180.0, 180.0, 1.0),

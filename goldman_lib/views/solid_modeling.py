@@ -21,8 +21,8 @@ from goldman_lib import solid_modeling as sm
 from goldman_lib.lighting import Material
 from goldman_lib.simple_surfaces import Cylinder, Plane, Sphere, Torus
 from goldman_lib.validation import as_float
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, figure_widget, float_slider, int_slider
 
 __all__ = ["PRIMITIVES", "OPERATIONS", "BREPS", "SOLIDS", "csg_tree", "csg_view", "octree_view", "brep_view",
            "EXTENT", "FULL_SIZE", "csg_render", "csg_render_control"]
@@ -203,7 +203,7 @@ def csg_render(progress=None, first: str = "ball A (left)", op: str = "differenc
     ``samples x samples`` rays per pixel, reflections to ``depth``) with the view's camera, light and
     window, the classification ray ``(-3, 0, ray_z) + t (1, 0, 0)`` drawn as a thin dark rod.
     ``progress(done, total)`` is called as bands of rows are finished (a
-    :class:`goldman_lib.views.render_control.ProgressBar`, say).  Returns ``(height, width, 3)``.
+    :class:`goldman_lib.widgets.render_control.ProgressBar`, say).  Returns ``(height, width, 3)``.
 
     >>> csg_render(None, op="intersection", width=8, height=6, samples=1, depth=1).shape
     (6, 8, 3)
@@ -220,10 +220,10 @@ def csg_render(progress=None, first: str = "ball A (left)", op: str = "differenc
 
 def csg_render_control(view):
     """The render button under :func:`csg_view` (issue 18 §4): a
-    :class:`goldman_lib.views.render_control.RenderControl` that renders the view's current tree with
+    :class:`goldman_lib.widgets.render_control.RenderControl` that renders the view's current tree with
     :func:`csg_render` at :data:`FULL_SIZE` (640 x 480, 2 x 2 anti-aliased, depth 5; several seconds)
     while a progress bar fills.  ``.render()`` does it from the keyboard."""
-    from goldman_lib.views.render_control import RenderControl
+    from goldman_lib.widgets.render_control import RenderControl
 
     f = FULL_SIZE
     return RenderControl(csg_render, view=view,
@@ -274,7 +274,7 @@ def brep_view(solid: str = "torus mesh (8 x 6 quads)", lift: float = 0.0) -> Int
     """
     import ipywidgets as widgets
 
-    from goldman_lib.views.three import SceneView
+    from goldman_lib.widgets.three import SceneView
 
     if solid not in BREPS:
         raise ValueError(f"solid must be one of {sorted(BREPS)}; got {solid!r}")
@@ -352,7 +352,7 @@ def octree_view(solid: str = "ball (r = 0.8)", depth: int = 4, show: str = "full
     >>> r["counts"], r["bounds"].tolist()
     ({'empty': 8, 'full': 0, 'partial': 56}, [0.0, 7.0])
     """
-    from goldman_lib.views.three import SceneView
+    from goldman_lib.widgets.three import SceneView
 
     if solid not in SOLIDS:
         raise ValueError(f"solid must be one of {sorted(SOLIDS)}; got {solid!r}")

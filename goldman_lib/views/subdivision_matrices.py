@@ -15,8 +15,8 @@ from goldman_lib import subdivision_matrices as sm
 from goldman_lib.subdivision_matrices import barycentric_attractor  # noqa: F401  (moved to the library)
 from goldman_lib.validation import (as_float, as_float_array, as_int, as_points, check_finite, finite_result,
                                      within_budget)
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
 __all__ = ["DEFAULT_TRIANGLE", "DEFAULT_CUBIC", "plot_attractor_levels",
            "curve_attractor_view", "fractal_editor"]
@@ -142,7 +142,7 @@ def fractal_editor(ctrl=DEFAULT_TRIANGLE, middle: float = -0.3, levels: int = 10
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="fractal with control points", arrange=arrange, side=True)
     # the control points are also dragged with the mouse; a drag sets their sliders
-    from goldman_lib.views.drag import drag_sliders, point_pairs
+    from goldman_lib.widgets.drag import drag_sliders, point_pairs
 
     view.ax = ax
     drag_sliders(view, ax, point_pairs(3))

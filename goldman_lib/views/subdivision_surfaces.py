@@ -2,7 +2,7 @@
 three.js subdivision viewer with a mesh picker, a scheme picker and a level slider (Goldman §30.2-30.4).
 
 Plot functions take ``ax=None`` and return their artists; widget factories return an
-:class:`~goldman_lib.views.interactive.InteractiveView` whose ``update`` is a plain function.
+:class:`~goldman_lib.widgets.interactive.InteractiveView` whose ``update`` is a plain function.
 
 >>> view = subdivision_surface_view()
 >>> sorted(view.update(**view.values()))
@@ -16,9 +16,9 @@ import numpy as np
 from goldman_lib import lighting, shading
 from goldman_lib import subdivision_surfaces as ss
 from goldman_lib.validation import as_int, as_points
-from goldman_lib.views import style
-from goldman_lib.views.interactive import dropdown, figure_widget, int_slider, InteractiveView
-from goldman_lib.views.three import SceneView
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import dropdown, figure_widget, int_slider, InteractiveView
+from goldman_lib.widgets.three import SceneView
 
 __all__ = ["MESHES", "DEFAULT_POLYGON", "plot_polygon_levels", "plot_mesh", "plot_quad_stencils",
            "plot_triangle_stencils", "plot_cone_ratios", "plot_rule_comparison", "plot_angle_defects",

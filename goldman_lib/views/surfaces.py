@@ -23,8 +23,8 @@ import numpy as np
 
 from goldman_lib import surfaces as sf
 from goldman_lib.camera import Camera
-from goldman_lib.views.interactive import InteractiveView, dropdown, float_slider, int_slider  # noqa: F401
-from goldman_lib.views.three import SceneView
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, float_slider, int_slider  # noqa: F401
+from goldman_lib.widgets.three import SceneView
 
 __all__ = ["curvature_view", "SURFACES", "CURVATURES", "DEFORMATIONS", "curvature_colours", "terrain_png",
            "SHEAR", "normal_map_png", "full_size_render"]
@@ -143,7 +143,7 @@ def terrain_png(roughnesses=(0.35, 0.5, 0.7), level: int = 6, seed: int = 18) ->
     from matplotlib.colors import LightSource
     from matplotlib.figure import Figure
 
-    from goldman_lib.views.interactive import figure_png
+    from goldman_lib.widgets.interactive import figure_png
 
     roughnesses = [float(r) for r in roughnesses]
     if not 1 <= len(roughnesses) <= 6:
@@ -189,7 +189,7 @@ def normal_map_png(M=SHEAR, arrows: int = 16, size: tuple = (160, 120)) -> bytes
     from goldman_lib import ray_tracing as rt
     from goldman_lib.lighting import Light, Material
     from goldman_lib.simple_surfaces import Plane, Sphere
-    from goldman_lib.views.interactive import figure_png
+    from goldman_lib.widgets.interactive import figure_png
 
     M = np.asarray(M, dtype=float)
     if M.shape != (3, 3) or abs(M[1, 1]) < 1e-9 or np.any(M[[0, 2], 1] != 0):
@@ -238,7 +238,7 @@ def normal_map_png(M=SHEAR, arrows: int = 16, size: tuple = (160, 120)) -> bytes
 
 
 def full_size_render(scene, camera, width: int = 640, height: int = 480, samples: int = 2, depth: int = 5):
-    """A "render" control (:class:`goldman_lib.views.render_control.RenderControl`, issue 18 §4) that ray
+    """A "render" control (:class:`goldman_lib.widgets.render_control.RenderControl`, issue 18 §4) that ray
     traces ``scene`` through ``camera`` at full size with :func:`goldman_lib.ray_tracing.render`
     (``samples x samples`` anti-aliasing, recursion ``depth``) when its button is pressed, with a
     progress bar; nothing is rendered until then.  For a picture the chapter draws once (no sliders).
@@ -249,7 +249,7 @@ def full_size_render(scene, camera, width: int = 640, height: int = 480, samples
     (12, 16, 3)
     """
     from goldman_lib import ray_tracing as rt
-    from goldman_lib.views.render_control import RenderControl
+    from goldman_lib.widgets.render_control import RenderControl
 
     if not isinstance(scene, rt.Scene) or not isinstance(camera, Camera):
         raise TypeError("scene and camera must be a goldman_lib.ray_tracing.Scene and Camera (goldman_lib.camera)")

@@ -25,8 +25,8 @@ import html
 import numpy as np
 
 from goldman_lib import transforms, vector_geometry, vectors
-from goldman_lib.views.interactive import InteractiveView, dropdown, float_slider
-from goldman_lib.views.vectors3d import COLOURS, VectorScene
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, float_slider
+from goldman_lib.widgets.vectors3d import COLOURS, VectorScene
 
 __all__ = ["letter_f", "axis_rotation_view", "mirror_view", "scaling_view", "projection_view", "matrix_html", "MAPS",
            "composition_view", "perspective_matrix_view"]

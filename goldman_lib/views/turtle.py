@@ -2,7 +2,7 @@
 
 :func:`plot_polylines` and :func:`plot_program` draw in the house style and mark the turtle's
 final position and heading with a small arrowhead.  The two widget factories return an
-:class:`~goldman_lib.views.interactive.InteractiveView` (not displayed) whose ``update`` is a
+:class:`~goldman_lib.widgets.interactive.InteractiveView` (not displayed) whose ``update`` is a
 plain function returning what it drew::
 
     {"polylines": [(k, 2) arrays, one per stroke], "point": (2,), "direction": (2,),
@@ -25,10 +25,9 @@ import numpy as np
 
 from goldman_lib import turtle
 from goldman_lib.validation import as_float, as_int, as_points
-from goldman_lib.views import style
-from goldman_lib.views import _checks
-from goldman_lib.views._program_editor import program_editor
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider, int_slider
+from goldman_lib.widgets import style
+from goldman_lib.widgets.program_editor import program_editor
+from goldman_lib.widgets.interactive import InteractiveView, figure_widget, float_slider, int_slider
 
 __all__ = ["plot_polylines", "plot_program", "polygon_explorer", "turtle_program_editor", "EXAMPLES",
            "DEFAULT_PROGRAM", "stroke_data", "heading_marker"]
@@ -217,10 +216,6 @@ def polygon_explorer(angle: float = 72.0, step: float = 1.0, repetitions: int = 
     artists = PathArtists(ax)
 
     def update(angle, step, repetitions, factor):
-        angle = _checks.number(angle, "angle", 0.0, 360.0)
-        step = _checks.number(step, "step", 0.1, 3.0)
-        repetitions = _checks.integer(repetitions, "repetitions", 1, 120)
-        factor = _checks.number(factor, "factor", 0.8, 1.2)
         body = f"FORWARD {turtle.format_number(round(step, 6))} TURN {turtle.format_number(round(angle, 6))}"
         if factor != 1:
             body += f" RESIZE {turtle.format_number(round(factor, 6))}"
@@ -248,7 +243,7 @@ _HELP = ("<small>Commands: <code>FORWARD d</code>, <code>MOVE d</code> (pen up),
 
 def turtle_program_editor(program: str = DEFAULT_PROGRAM, *, figsize=style.FIGSIZE) -> InteractiveView:
     """A text box for a turtle program with live drawing (Goldman §1.3); the course's one program
-    editor (:mod:`goldman_lib.views._program_editor`, shared with CODO) running the turtle.
+    editor (:mod:`goldman_lib.widgets.program_editor`, shared with CODO) running the turtle.
 
     program: the initial text.  The turtle starts at ``(0, 0)`` heading ``(1, 0)``.  A program
     that does not parse leaves the last good drawing and shows the parser's message

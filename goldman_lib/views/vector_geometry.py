@@ -1,6 +1,6 @@
 """Chapter 11 views: the formulas of vector geometry drawn and printed (Goldman §11.3-11.7).
 
-Four three.js scenes (:class:`~goldman_lib.views.vectors3d.VectorScene`) whose points, lines and
+Four three.js scenes (:class:`~goldman_lib.widgets.vectors3d.VectorScene`) whose points, lines and
 planes are set by sliders: a point and a plane with the foot of the perpendicular
 (:func:`point_plane_view`), two skew lines with their closest points and common perpendicular
 (:func:`skew_lines_view`), three planes meeting in a point (:func:`three_planes_view`) and the
@@ -29,9 +29,9 @@ import numpy as np
 from goldman_lib import vector_geometry as vg
 from goldman_lib import vectors
 from goldman_lib.validation import as_int, as_points
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, dropdown, figure_widget, float_slider
-from goldman_lib.views.vectors3d import COLOURS, VectorScene
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, figure_widget, float_slider
+from goldman_lib.widgets.vectors3d import COLOURS, VectorScene
 
 __all__ = ["point_plane_view", "skew_lines_view", "three_planes_view", "volume_view", "inside_outside_view",
            "slerp_view", "STAR", "WINDING_COLOURS", "THREE_PLANE_NORMALS"]
@@ -309,7 +309,7 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
     (:func:`~goldman_lib.vector_geometry.winding_number`), by the even-odd rule
     (:func:`~goldman_lib.vector_geometry.ray_casting_inside`), or marked where the two rules
     disagree.  The polygon's vertices (sliders ``x0, y0, x1, y1, ...``) and the query point
-    (sliders ``qx, qy``) can also be dragged with the mouse (:func:`~goldman_lib.views.drag.drag_sliders`).
+    (sliders ``qx, qy``) can also be dragged with the mouse (:func:`~goldman_lib.widgets.drag.drag_sliders`).
     The query point's ray to the right is drawn with its crossings (▲ an edge going up, +1; ▼ going
     down, -1); the status gives its winding number, the crossing count and both verdicts.
 
@@ -404,7 +404,7 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
         return {"polygon": pts, "query": q, "winding": w_q, "even_odd": odd_q, "crossings": crossings,
                 "signs": signs, "map": wind, "status": status}
 
-    from goldman_lib.views.drag import drag_sliders
+    from goldman_lib.widgets.drag import drag_sliders
 
     arrange = ([controls["mode"], widgets.HTML("<small>query point ★</small>"), controls["qx"], controls["qy"],
                 widgets.HTML("<small>polygon vertices</small>")]

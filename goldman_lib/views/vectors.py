@@ -1,7 +1,7 @@
 """Chapter 9-10 views: affine combinations in the plane, and the determinant as a signed volume.
 
 * :func:`affine_combination_view` (Goldman §9.3): three points and an origin you drag with the
-  mouse (ipympl, through :func:`~goldman_lib.views.drag.drag_sliders`), three weight sliders, and
+  mouse (ipympl, through :func:`~goldman_lib.widgets.drag.drag_sliders`), three weight sliders, and
   the location ``O + Σ w_i (P_i - O)`` that the coordinate sum ``Σ w_i P_i`` names when the
   coordinates are measured from the origin ``O``.  Drag the origin: with weights summing to 1 the
   point stays put among the P_i (an affine combination); otherwise it slides with the origin.
@@ -24,10 +24,10 @@ from __future__ import annotations
 import numpy as np
 
 from goldman_lib import vectors
-from goldman_lib.views import style
-from goldman_lib.views.drag import drag_sliders
-from goldman_lib.views.interactive import InteractiveView, figure_widget, float_slider
-from goldman_lib.views.vectors3d import COLOURS, VectorScene
+from goldman_lib.widgets import style
+from goldman_lib.widgets.drag import drag_sliders
+from goldman_lib.widgets.interactive import InteractiveView, figure_widget, float_slider
+from goldman_lib.widgets.vectors3d import COLOURS, VectorScene
 
 __all__ = ["affine_combination_view", "determinant_view", "parallelepiped_vertices"]
 

@@ -94,7 +94,7 @@ def play_moves_the_key_frame_animation(lab, nb) -> str:
 
 
 def render_button_renders(lab, nb, rc, where: str, shot: str) -> str:
-    """Press a render control's button (``views.render_control.RenderControl``): its progress bar
+    """Press a render control's button (``widgets.render_control.RenderControl``): its progress bar
     must reach the end and a non-blank picture show; then the first slider of the view it renders
     moves (``goldman-renders-<uid>``), a second press must change the picture."""
     page = lab.page

@@ -1,25 +1,70 @@
-"""What the browser tests ask the notebook's kernel (issue 19 §3: test hooks live with the tests,
-not in the library).  The tests run this file in the kernel with ``runpy.run_path`` and call its
-functions on the live views; the unit tests load it the same way.
+"""What the tests ask the notebook's kernel, and how they drive a view from code (issue 19 §3: test
+hooks live with the tests, not in the library).  The browser tests run this file in the kernel with
+``runpy.run_path`` and call its functions on the live views; the view tests load it the same way
+(the ``hooks`` fixture of ``tests/views/conftest.py``).  Every function takes the view or the drag
+and reads only its public attributes.
 
-* :func:`find_view` -- the live :class:`~goldman_lib.views.interactive.InteractiveView` whose box
-  carries the CSS class ``goldman-view-<uid>`` (the framework keeps every live view by its number).
-* :func:`drag_plan` -- a drag a real mouse can make on a view's :class:`~goldman_lib.views.drag.PointDrag`.
+* :func:`find_view` -- the live :class:`~goldman_lib.widgets.interactive.InteractiveView` whose box
+  carries the CSS class ``goldman-view-<uid>``.
+* :func:`drag_plan` -- a drag a real mouse can make on a view's :class:`~goldman_lib.widgets.drag.PointDrag`.
+* :func:`position`, :func:`screen_position` -- where a drag's point is now (data coordinates,
+  figure pixels).
+* :func:`press_at`, :func:`move_to`, :func:`release` -- the mouse, driven from code: matplotlib's
+  own events sent through the figure's canvas, as ipympl sends them when a learner drags.
 """
+
+import gc
 
 import numpy as np
 
-from goldman_lib.views.interactive import InteractiveView
+from goldman_lib.widgets.interactive import InteractiveView
 
 
 def find_view(uid) -> InteractiveView:
     """The live view numbered ``uid`` (its box has the CSS class ``goldman-view-<uid>``)."""
     if isinstance(uid, bool) or not isinstance(uid, (int, np.integer)):
         raise TypeError(f"uid must be an integer; got {type(uid).__name__}")
-    try:
-        return InteractiveView._live[int(uid)]
-    except KeyError:
-        raise ValueError(f"uid must name a live view; no view numbered {uid}") from None
+    for obj in gc.get_objects():
+        if isinstance(obj, InteractiveView) and obj.uid == int(uid):
+            return obj
+    raise ValueError(f"uid must name a live view; no view numbered {uid}")
+
+
+def position(drag, index) -> list:
+    """Where point ``index`` of ``drag`` is now, in data coordinates."""
+    pts = np.asarray(drag.get_points(), dtype=float).reshape(-1, 2)
+    if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or not 0 <= index < len(pts):
+        raise ValueError(f"index must be a point number in [0, {len(pts) - 1}]; got {index!r}")
+    return [float(v) for v in pts[int(index)]]
+
+
+def screen_position(drag, index) -> list:
+    """Where point ``index`` of ``drag`` is drawn now, in figure pixels (origin bottom left)."""
+    return [float(v) for v in drag.ax.transData.transform(position(drag, index))]
+
+
+def _send(drag, name: str, x, y):
+    from matplotlib.backend_bases import MouseEvent
+
+    px, py = drag.ax.transData.transform((x, y)) if x is not None else (0, 0)
+    canvas = drag.ax.figure.canvas
+    canvas.callbacks.process(name, MouseEvent(name, canvas, px, py, button=1))
+
+
+def press_at(drag, x: float, y: float):
+    """Press the mouse at data position (x, y) of the drag's axes, as a learner would."""
+    _send(drag, "button_press_event", x, y)
+
+
+def move_to(drag, x: float, y: float):
+    """Move the mouse to data position (x, y)."""
+    _send(drag, "motion_notify_event", x, y)
+
+
+def release(drag, x: float | None = None, y: float | None = None):
+    """Release the mouse button (at data position (x, y) if given, so the held point ends there;
+    otherwise at the figure's corner, outside the axes)."""
+    _send(drag, "button_release_event", None if x is None or y is None else x, y)
 
 
 def drag_plan(drag, distance: float = 40.0) -> dict | None:

@@ -47,7 +47,7 @@ print(_json.dumps(_goldman_plan(_goldman["find_view"](UID))))
 del _goldman_plan
 """.replace("HOOKS", repr(_HOOKS))
 # Where point K of view UID is now (data coordinates).
-_WHERE = "import json as _json; print(_json.dumps(_goldman['find_view'](UID).drag.position(K)))"
+_WHERE = "import json as _json; print(_json.dumps(_goldman['position'](_goldman['find_view'](UID).drag, K)))"
 # The label and the readout (as the slider formats it) of the sliders that point K of view UID
 # moves, or null if its drag moves no slider.
 _SLIDERS = """
@@ -253,7 +253,7 @@ def test_notebook_runs_and_views_respond(lab, notebook):
             assert lit_frac > CHANGE_TOLERANCE, (
                 f"{rel}: moving the light of interactive view {i} changed only {lit_frac:.2%} of its {kind} "
                 f"(see screenshots/{stem}-view{i}-light.png)")
-    # A render button (views.render_control.RenderControl) under a view: pressed, its progress bar
+    # A render button (widgets.render_control.RenderControl) under a view: pressed, its progress bar
     # must reach the end and a full-size picture show; after the view's first slider moves, a
     # second render must change the picture.
     renders = nb.locator(".goldman-render-control")

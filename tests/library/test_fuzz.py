@@ -57,7 +57,7 @@ import goldman_lib
 TIME_LIMIT = float(os.environ.get("GOLDMAN_FUZZ_TIME_LIMIT", "1.0"))
 MEMORY_LIMIT = 2 * 1024 ** 3
 WORKERS = max(1, min(4, os.cpu_count() or 1))
-SKIP_PACKAGES = ("goldman_lib.views", "goldman_lib.exercises", "goldman_lib.kernels")
+SKIP_PACKAGES = ("goldman_lib.views", "goldman_lib.widgets", "goldman_lib.exercises", "goldman_lib.kernels")
 
 
 # -- discovery -----------------------------------------------------------------------------------

@@ -19,10 +19,10 @@ def test_import_is_light(module):
     assert out.stdout.strip() == "", f"importing {module} imported {out.stdout.strip()}"
 
 
-def test_views_import_heavy_libraries_lazily_only_where_needed():
-    code = "import sys, goldman_lib.views.three as t; print('pythreejs' in sys.modules)"
+def test_widgets_import_heavy_libraries_lazily_only_where_needed():
+    code = "import sys, goldman_lib.widgets.three as t; print('pythreejs' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    assert out.stdout.strip() == "False", "views.three must import pythreejs only when a SceneView is built"
+    assert out.stdout.strip() == "False", "widgets.three must import pythreejs only when a SceneView is built"
 
 
 def test_chapter_25_modules_import_in_any_order():

@@ -10,9 +10,10 @@ and exercises included) with ``ast`` and fails, naming file and line, on
 - ``X._name`` where ``X`` is bound to another goldman_lib module (``from goldman_lib import X``,
   ``import goldman_lib.X as X``, ``from . import X``), and the dotted ``goldman_lib.X._name``.
 
-Dunder names (``__version__``) are not private, and a private module of a package (``views._checks``,
-``views._program_editor``) may be imported by the modules of that same package: it is the package's
-own business, not another module's private name.
+Dunder names (``__version__``) are not private, and a private module of a package may be imported
+by the modules of that same package: it is the package's own business, not another module's
+private name.  (A module other packages import is public: the widget framework's ``checks`` and
+``program_editor``, used by the chapters' views, have no leading underscore.)
 """
 
 from __future__ import annotations
@@ -57,7 +58,7 @@ def _absolute(node: ast.ImportFrom, here: str, is_package: bool) -> str | None:
 
 def _own_package_private_module(dotted: str, here: str) -> bool:
     """Whether ``dotted`` is (or lies inside) a private module of ``here``'s own package: a
-    package-internal module (``views._checks`` for ``views.turtle``) is the package's business."""
+    package-internal module (``pkg._helpers`` for ``pkg.module``) is the package's business."""
     parts = dotted.split(".")
     first = next((i for i, p in enumerate(parts) if _private(p)), None)
     if first is None or not _is_module(".".join(parts[:first + 1])):

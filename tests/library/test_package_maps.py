@@ -1,10 +1,12 @@
 """The package docstrings are the map a newcomer reads (issue 19 §3): every module of
-``goldman_lib`` and of ``goldman_lib.views`` is named there."""
+``goldman_lib``, of the widget framework ``goldman_lib.widgets`` and of the chapters' views
+``goldman_lib.views`` is named there, and the library's map names both packages."""
 
 import pkgutil
 
 import goldman_lib
 import goldman_lib.views
+import goldman_lib.widgets
 
 
 def _modules(package, private: bool):
@@ -17,8 +19,29 @@ def test_the_library_docstring_names_every_module():
     assert not missing, f"goldman_lib/__init__.py's docstring does not name: {missing}"
 
 
+def test_the_library_docstring_names_both_view_packages():
+    for package in ("goldman_lib.widgets", "goldman_lib.views"):
+        assert f"``{package}``" in goldman_lib.__doc__, package
+
+
 def test_the_views_docstring_names_every_module():
     doc = goldman_lib.views.__doc__
     missing = [n for n in _modules(goldman_lib.views, private=True) if f"``{n}``" not in doc
                and f"``views.{n}``" not in doc]
     assert not missing, f"goldman_lib/views/__init__.py's docstring does not name: {missing}"
+
+
+def test_the_widgets_docstring_names_every_module_and_the_rule():
+    doc = goldman_lib.widgets.__doc__
+    missing = [n for n in _modules(goldman_lib.widgets, private=True) if f"``widgets.{n}``" not in doc]
+    assert not missing, f"goldman_lib/widgets/__init__.py's docstring does not name: {missing}"
+    words = " ".join(doc.split())
+    assert "more than one chapter" in words and "knows no chapter" in words   # the rule that puts a module there
+
+
+def test_views_holds_only_chapters_and_widgets_only_the_framework():
+    """No module sits in both packages, and neither package has a private (helper) module."""
+    views = set(_modules(goldman_lib.views, private=True))
+    widgets = set(_modules(goldman_lib.widgets, private=True))
+    assert not views & widgets, views & widgets
+    assert not [n for n in views | widgets if n.startswith("_")]

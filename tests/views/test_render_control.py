@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 from goldman_lib import ray_tracing as rt
-from goldman_lib.views.interactive import InteractiveView, float_slider
-from goldman_lib.views.render_control import ProgressBar, RenderControl, image_png
+from goldman_lib.widgets.interactive import InteractiveView, float_slider
+from goldman_lib.widgets.render_control import ProgressBar, RenderControl, image_png
 
 
 @pytest.fixture(scope="module")

@@ -13,6 +13,7 @@ import pytest  # noqa: E402
 
 from goldman_lib import affine  # noqa: E402
 from goldman_lib.views import affine as av  # noqa: E402
+from sweeps import sweep_values
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
@@ -109,7 +110,7 @@ def test_rotation_about_point_steps_end_on_the_direct_rotation():
 
 def test_sweeps_static_images_and_bad_arguments():
     for view in (av.transform_explorer(), av.three_point_explorer(), av.rotation_about_point_view()):
-        for values in view.sweep_values(n=3)[:40]:
+        for values in sweep_values(view, n=3)[:40]:
             r = view.update(**values)
             polys = r["image"] if "image" in r else [p for step in r["steps"] for p in step]
             assert all(np.isfinite(p).all() for p in polys)

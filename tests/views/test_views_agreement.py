@@ -1,9 +1,9 @@
-"""goldman_lib.views.agreement: a check printed as the values it compares (issue 18, part 5)."""
+"""goldman_lib.widgets.agreement: a check printed as the values it compares (issue 18, part 5)."""
 
 import numpy as np
 import pytest
 
-from goldman_lib.views import agreement
+from goldman_lib.widgets import agreement
 
 
 def test_a_gap_within_the_bound_prints_the_bound_not_the_noise():

@@ -24,13 +24,13 @@ def test_elevation_keeps_the_curve_and_closes_in_on_it():
     np.testing.assert_allclose(bezier.de_casteljau(elevated, t), bezier.de_casteljau(views.DEFAULT_CUBIC, t), atol=1e-12)
 
 
-def test_explorer_control_point_follows_the_mouse_and_the_sliders_follow():
+def test_explorer_control_point_follows_the_mouse_and_the_sliders_follow(hooks):
     view = views.de_casteljau_explorer()
     before = view.last_result["curve"].copy()
-    view.drag.press_at(1.0, 2.5)          # on P1
-    view.drag.move_to(1.5, 3.0)
-    view.drag.move_to(2.04, 3.51)
-    view.drag.release()
+    hooks["press_at"](view.drag, 1.0, 2.5)          # on P1
+    hooks["move_to"](view.drag, 1.5, 3.0)
+    hooks["move_to"](view.drag, 2.04, 3.51)
+    hooks["release"](view.drag)
     assert view.values()["x1"] == 2.0 and view.values()["y1"] == 3.5   # snapped to the 0.1 steps
     pts = np.array([[0, 0], [2.0, 3.5], [3, 2.5], [4, 0.5]])
     np.testing.assert_allclose(view.last_result["polygon"], pts)
@@ -40,11 +40,11 @@ def test_explorer_control_point_follows_the_mouse_and_the_sliders_follow():
     np.testing.assert_allclose(np.column_stack(view.figure.axes[0].lines[1].get_data()), view.last_result["curve"])
 
 
-def test_elevation_view_drags_the_original_points():
+def test_elevation_view_drags_the_original_points(hooks):
     view = views.degree_elevation_view(times=3)
-    view.drag.press_at(3.0, 2.5)          # on P2
-    view.drag.move_to(2.5, 1.5)
-    view.drag.release()
+    hooks["press_at"](view.drag, 3.0, 2.5)          # on P2
+    hooks["move_to"](view.drag, 2.5, 1.5)
+    hooks["release"](view.drag)
     assert (view.values()["x2"], view.values()["y2"]) == (2.5, 1.5)
     P = np.array([[0, 0], [1, 2.5], [2.5, 1.5], [4, 0.5]])
     np.testing.assert_allclose(view.last_result["original"], P)

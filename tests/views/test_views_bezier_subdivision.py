@@ -28,11 +28,11 @@ def test_bezier_subdivision_view_draws_pieces_of_the_curve():
     assert all(g1 < g0 for g0, g1 in zip(gaps, gaps[1:]))
 
 
-def test_bezier_subdivision_view_control_points_are_dragged():
+def test_bezier_subdivision_view_control_points_are_dragged(hooks):
     view = views.bezier_subdivision_view(depth=2)
-    view.drag.press_at(3.0, 2.5)          # on P2
-    view.drag.move_to(2.0, 1.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, 3.0, 2.5)          # on P2
+    hooks["move_to"](view.drag, 2.0, 1.0)
+    hooks["release"](view.drag)
     assert (view.values()["x2"], view.values()["y2"]) == (2.0, 1.0)
     P = np.array([[0, 0], [1, 2.5], [2, 1.0], [4, 0.5]])
     r = view.last_result
@@ -52,11 +52,11 @@ def test_adaptive_rendering_view_polyline_lies_on_the_curve():
         prev = r["segments"]
 
 
-def test_adaptive_rendering_view_control_points_are_dragged():
+def test_adaptive_rendering_view_control_points_are_dragged(hooks):
     view = views.adaptive_rendering_view(digits=3)
-    view.drag.press_at(2.0, -1.0)         # on P2 of WAVY
-    view.drag.move_to(2.0, 1.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, 2.0, -1.0)         # on P2 of WAVY
+    hooks["move_to"](view.drag, 2.0, 1.0)
+    hooks["release"](view.drag)
     assert (view.values()["x2"], view.values()["y2"]) == (2.0, 1.0)
     P = views.WAVY.copy()
     P[2] = (2.0, 1.0)

@@ -28,11 +28,11 @@ def test_blossom_view_apex_is_symmetric_and_the_control_points_appear():
     np.testing.assert_allclose(view.set_values(u1=1.0, u2=0.0, u3=1.0)["point"], DEFAULT_CUBIC[2], atol=1e-12)
 
 
-def test_blossom_view_control_points_are_dragged_and_the_pyramid_follows():
+def test_blossom_view_control_points_are_dragged_and_the_pyramid_follows(hooks):
     view = views.blossom_view()
-    view.drag.press_at(4.0, 0.5)          # on P3
-    view.drag.move_to(3.5, 1.5)
-    view.drag.release()
+    hooks["press_at"](view.drag, 4.0, 0.5)          # on P3
+    hooks["move_to"](view.drag, 3.5, 1.5)
+    hooks["release"](view.drag)
     assert (view.values()["x3"], view.values()["y3"]) == (3.5, 1.5)
     P = DEFAULT_CUBIC.copy()
     P[3] = (3.5, 1.5)

@@ -6,6 +6,7 @@ from scipy.interpolate import BSpline
 
 from goldman_lib import bspline
 from goldman_lib.views import bspline as views
+from sweeps import sweep_values
 
 matplotlib.use("Agg")
 
@@ -13,7 +14,7 @@ matplotlib.use("Agg")
 def test_de_boor_explorer_draws_the_scipy_curve_and_point():
     view = views.de_boor_explorer()
     ctrl = views.DEFAULT_POLYGON
-    for vals in view.sweep_values(n=5):
+    for vals in sweep_values(view, n=5):
         r = view.update(**vals)
         ctrl = np.array([[vals[f"x{k}"], vals[f"y{k}"]] for k in range(len(views.DEFAULT_POLYGON))])
         p = vals["degree"]
@@ -27,14 +28,14 @@ def test_de_boor_explorer_draws_the_scipy_curve_and_point():
         np.testing.assert_allclose(r["levels"][0], ctrl[k - p:k + 1])
 
 
-def test_de_boor_explorer_control_points_are_dragged():
+def test_de_boor_explorer_control_points_are_dragged(hooks):
     view = views.de_boor_explorer()
     ctrl = views.DEFAULT_POLYGON.copy()
     k = 3
-    view.drag.press_at(*ctrl[k])
+    hooks["press_at"](view.drag, *ctrl[k])
     target = np.round(ctrl[k] + [0.3, -0.6], 1)
-    view.drag.move_to(*target)
-    view.drag.release()
+    hooks["move_to"](view.drag, *target)
+    hooks["release"](view.drag)
     assert (view.values()[f"x{k}"], view.values()[f"y{k}"]) == tuple(target)
     ctrl[k] = target
     r = view.last_result
@@ -47,7 +48,7 @@ def test_de_boor_explorer_control_points_are_dragged():
 
 def test_local_control_changes_only_the_support():
     view = views.local_control_view()
-    for vals in view.sweep_values(n=4):
+    for vals in sweep_values(view, n=4):
         r = view.update(**vals)
         assert r["change_outside"] < 1e-12
         p, i = vals["degree"], vals["index"]

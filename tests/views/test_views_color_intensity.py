@@ -78,13 +78,13 @@ def test_material_and_light_sliders_change_the_picture_in_place():
     assert np.allclose(r["intensity"], 0.4 * np.array(RED))
 
 
-def test_dragging_the_light_in_the_side_view_moves_its_x_and_z():
+def test_dragging_the_light_in_the_side_view_moves_its_x_and_z(hooks):
     view = ci.shaded_sphere_view(size=32)
     drag = view.drag
     x, z = view.values()["light0_x"], view.values()["light0_z"]
-    drag.press_at(x, z)
-    drag.move_to(-4.0, 2.0)
-    drag.release()
+    hooks["press_at"](drag, x, z)
+    hooks["move_to"](drag, -4.0, 2.0)
+    hooks["release"](drag)
     assert view.values()["light0_x"] == pytest.approx(-4.0) and view.values()["light0_z"] == pytest.approx(2.0)
     assert np.allclose(view.last_result["light"][[0, 2]], [-4.0, 2.0])
 
@@ -129,11 +129,11 @@ def test_rgb_lights_add_and_the_wall_filters():
     assert r["image"][..., 2].max() == 0.0
 
 
-def test_dragging_a_coloured_light_moves_it_over_the_wall():
+def test_dragging_a_coloured_light_moves_it_over_the_wall(hooks):
     view = ci.rgb_mixing_view(size=32)
-    view.drag.press_at(0.0, 0.4)
-    view.drag.move_to(1.0, 1.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, 0.0, 0.4)
+    hooks["move_to"](view.drag, 1.0, 1.0)
+    hooks["release"](view.drag)
     assert np.allclose(view.last_result["lights"][0], [1.0, 1.0, 0.3])
 
 

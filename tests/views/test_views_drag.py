@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from goldman_lib.views.drag import PointDrag, drag_sliders
-from goldman_lib.views.interactive import InteractiveView, float_slider
+from goldman_lib.widgets.drag import PointDrag, drag_sliders
+from goldman_lib.widgets.interactive import InteractiveView, float_slider
 
 
 def _view():
@@ -28,47 +28,47 @@ def _view():
     return view, ax, calls
 
 
-def test_a_drag_moves_the_nearest_point_and_its_sliders_follow():
+def test_a_drag_moves_the_nearest_point_and_its_sliders_follow(hooks):
     view, ax, calls = _view()
     drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
     calls.clear()
-    drag.press_at(5.05, 4.95)            # near point 1
-    drag.move_to(7.23, 2.0)
-    drag.move_to(8.0, 3.04)
-    drag.release()
+    hooks["press_at"](drag, 5.05, 4.95)            # near point 1
+    hooks["move_to"](drag, 7.23, 2.0)
+    hooks["move_to"](drag, 8.0, 3.04)
+    hooks["release"](drag)
     assert view.values() == {"x0": 1.0, "y0": 1.0, "x1": 8.0, "y1": 3.0}   # snapped to the 0.1 steps
     assert calls == [(1.0, 1.0, 7.2, 2.0), (1.0, 1.0, 8.0, 3.0)]            # one update per motion
-    drag.move_to(2.0, 2.0)               # released: motions do nothing
+    hooks["move_to"](drag, 2.0, 2.0)               # released: motions do nothing
     assert len(calls) == 2
 
 
-def test_a_press_far_from_every_point_grabs_nothing_and_drags_stay_in_range():
+def test_a_press_far_from_every_point_grabs_nothing_and_drags_stay_in_range(hooks):
     view, ax, calls = _view()
     drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
     calls.clear()
-    drag.press_at(9.0, 9.0)
-    drag.move_to(3.0, 3.0)
-    drag.release()
+    hooks["press_at"](drag, 9.0, 9.0)
+    hooks["move_to"](drag, 3.0, 3.0)
+    hooks["release"](drag)
     assert calls == [] and view.values()["x1"] == 5.0
-    drag.press_at(1.0, 1.0)
-    drag.move_to(-1.0, 11.0)              # past the sliders' ranges: clamped
+    hooks["press_at"](drag, 1.0, 1.0)
+    hooks["move_to"](drag, -1.0, 11.0)              # past the sliders' ranges: clamped
     assert view.values()["x0"] == 0.0 and view.values()["y0"] == 10.0
 
 
-def test_point_drag_reports_index_and_data_coordinates():
+def test_point_drag_reports_index_and_data_coordinates(hooks):
     fig = Figure()
     ax = fig.add_subplot()
     ax.set_xlim(-1, 1), ax.set_ylim(-1, 1)
     got = []
     d = PointDrag(ax, lambda: np.array([[0.0, 0.0], [0.5, 0.5]]), lambda k, x, y: got.append((k, x, y)),
                   on_release=lambda k: got.append(("released", k)))
-    d.press_at(0.01, -0.01)
-    d.move_to(-0.25, 0.75)
-    d.release()
+    hooks["press_at"](d, 0.01, -0.01)
+    hooks["move_to"](d, -0.25, 0.75)
+    hooks["release"](d)
     assert got[0][0] == 0 and np.allclose(got[0][1:], (-0.25, 0.75)) and got[1] == ("released", 0)
     d.enabled = False
-    d.press_at(0.5, 0.5)
-    d.move_to(0.0, 0.0)
+    hooks["press_at"](d, 0.5, 0.5)
+    hooks["move_to"](d, 0.0, 0.0)
     assert len(got) == 2
     d.disconnect()
 
@@ -92,14 +92,14 @@ def test_the_drag_plan_grabs_a_point_and_takes_it_where_it_says(hooks):
     view.figure.canvas.draw()
     plan = hooks["drag_plan"](drag, distance=40)
     assert plan["index"] == 0
-    assert np.allclose(plan["start"], drag.screen_position(0))
+    assert np.allclose(plan["start"], hooks["screen_position"](drag, 0))
     assert np.hypot(*np.subtract(plan["end"], plan["start"])) == pytest.approx(40.0)
     assert plan["figure"] == [view.figure.bbox.width, view.figure.bbox.height]
     x0, y0 = plan["start"]
     _pixel_event(drag, "button_press_event", x0, y0)
     _pixel_event(drag, "motion_notify_event", *plan["end"])
     _pixel_event(drag, "button_release_event", *plan["end"])
-    now = drag.screen_position(0)
+    now = hooks["screen_position"](drag, 0)
     assert np.hypot(now[0] - plan["end"][0], now[1] - plan["end"][1]) < 6   # within a 0.1 slider step
     assert view.values()["x1"] == 5.0 and view.values()["y1"] == 5.0
 
@@ -112,11 +112,11 @@ def test_the_drag_plan_is_none_when_no_point_is_inside_the_axes(hooks):
     with pytest.raises(ValueError, match="distance"):
         hooks["drag_plan"](drag, distance=-1)
     with pytest.raises(ValueError, match="index"):
-        drag.screen_position(2)
+        hooks["screen_position"](drag, 2)
 
 
 def _draggable_factories():
-    from goldman_lib.views.interactive import discover_factories
+    from goldman_lib.views import factories
 
     import inspect
 
@@ -129,7 +129,7 @@ def _draggable_factories():
         return depth > 0 and any(inspect.isfunction(h) and h.__module__ == f.__module__ and drags(h, depth - 1)
                                  for h in helpers)
 
-    return [(name, f) for name, f in discover_factories() if drags(f)]
+    return [(name, f) for name, f in factories() if drags(f)]
 
 
 @pytest.mark.parametrize("name,factory", _draggable_factories(), ids=lambda v: v if isinstance(v, str) else "")
@@ -149,7 +149,7 @@ def test_every_drag_plan_takes_its_point_to_the_mouse(name, factory, hooks):
     _pixel_event(drag, "button_press_event", *start)
     for k in range(1, 5):
         _pixel_event(drag, "motion_notify_event", *(start + (end - start) * k / 4))
-    now = np.array(drag.screen_position(plan["index"]))
+    now = np.array(hooks["screen_position"](drag, plan["index"]))
     _pixel_event(drag, "button_release_event", *end)
     assert np.hypot(*(now - end)) <= 10.0, f"{name}: the point is {np.hypot(*(now - end)):.1f} px from the mouse"
     after = np.delete(np.asarray(drag.get_points(), float).reshape(-1, 2), plan["index"], axis=0)
@@ -169,24 +169,24 @@ def test_interactive_view_find_names_its_rules(hooks):
         hooks["find_view"](-1)
 
 
-def test_the_point_ends_where_the_mouse_lets_go_even_if_motions_were_lost():
+def test_the_point_ends_where_the_mouse_lets_go_even_if_motions_were_lost(hooks):
     """A browser may drop motion events while the kernel draws; the release still carries the
     mouse's position, and the held point ends there (once: no second update if it is already there)."""
     view, ax, calls = _view()
     drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
     calls.clear()
-    drag.press_at(1.0, 1.0)
-    drag.move_to(2.0, 2.0)                 # the motions to (4, 3) never arrived
-    drag.release(4.0, 3.0)
+    hooks["press_at"](drag, 1.0, 1.0)
+    hooks["move_to"](drag, 2.0, 2.0)                 # the motions to (4, 3) never arrived
+    hooks["release"](drag, 4.0, 3.0)
     assert view.values()["x0"] == 4.0 and view.values()["y0"] == 3.0
     assert calls == [(2.0, 2.0, 5.0, 5.0), (4.0, 3.0, 5.0, 5.0)]
     calls.clear()
-    drag.press_at(4.0, 3.0)
-    drag.move_to(6.0, 3.0)
-    drag.release(6.0, 3.0)                 # released where the last motion was: no extra update
+    hooks["press_at"](drag, 4.0, 3.0)
+    hooks["move_to"](drag, 6.0, 3.0)
+    hooks["release"](drag, 6.0, 3.0)                 # released where the last motion was: no extra update
     assert calls == [(6.0, 3.0, 5.0, 5.0)]
     calls.clear()
-    drag.release(8.0, 8.0)                 # nothing held: a release moves nothing
+    hooks["release"](drag, 8.0, 8.0)                 # nothing held: a release moves nothing
     assert calls == [] and view.values()["x1"] == 5.0
 
 
@@ -195,7 +195,7 @@ def test_the_drag_plan_also_gives_data_coordinates_and_the_scale(hooks):
     drag = drag_sliders(view, ax, [("x0", "y0"), ("x1", "y1")])
     view.figure.canvas.draw()
     plan = hooks["drag_plan"](drag, distance=40)
-    assert plan["start_data"] == drag.position(0) == [1.0, 1.0]
+    assert plan["start_data"] == hooks["position"](drag, 0) == [1.0, 1.0]
     scale = np.array(plan["pixels_per_unit"])
     assert np.allclose((np.array(plan["end_data"]) - plan["start_data"]) * scale,
                        np.abs(np.subtract(plan["end"], plan["start"])))

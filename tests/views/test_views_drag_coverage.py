@@ -15,7 +15,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
-from goldman_lib.views.interactive import discover_factories, figure_png
+from goldman_lib.views import factories
+from goldman_lib.widgets.interactive import figure_png
 
 #: Views whose x/y slider pairs are not points the learner places in the 2D drawing.
 NOT_PLACED_POINTS = {
@@ -94,7 +95,7 @@ def _two_d_factories():
     has point pairs among its update's parameters (every parameter is a control: InteractiveView
     passes them by name)."""
     out = []
-    for name, factory in discover_factories():
+    for name, factory in factories():
         if "figure_widget(" not in inspect.getsource(factory):
             continue                      # a three.js view: the mouse orbits the camera
         if _drags(factory):
@@ -109,7 +110,7 @@ def _two_d_factories():
 def test_the_static_reading_matches_a_built_view():
     """The parameters read from the code are the controls of the built view (for one view with
     a dropdown and point sliders, and one whose light sliders come from the light control)."""
-    table = dict(discover_factories())
+    table = dict(factories())
     for name in ("affine.three_point_explorer", "color_intensity.shaded_sphere_view"):
         view = table[name]()
         controls = set(view.controls) - {k for k in view.controls if k.endswith("_colour")}
@@ -128,7 +129,7 @@ def test_every_2d_view_that_places_points_drags_them():
 
 
 def _factories(*names):
-    table = dict(discover_factories())
+    table = dict(factories())
     return [(n, table[n]) for n in names]
 
 
@@ -145,7 +146,7 @@ NEW = {
 
 
 @pytest.mark.parametrize("name,factory", _factories(*NEW), ids=lambda v: v if isinstance(v, str) else "")
-def test_a_mouse_drag_moves_the_point_its_sliders_and_the_drawing(name, factory):
+def test_a_mouse_drag_moves_the_point_its_sliders_and_the_drawing(name, factory, hooks):
     (xs, ys), (dx, dy) = NEW[name]
     view = factory()
     drag = view.drag
@@ -153,10 +154,10 @@ def test_a_mouse_drag_moves_the_point_its_sliders_and_the_drawing(name, factory)
     before_png = figure_png(view.figure)
     start = np.array([view.values()[xs], view.values()[ys]])
     target = start + (dx, dy)
-    drag.press_at(*start)
-    drag.move_to(*(start + target) / 2)
-    drag.move_to(*target)
-    drag.release()
+    hooks["press_at"](drag, *start)
+    hooks["move_to"](drag, *(start + target) / 2)
+    hooks["move_to"](drag, *target)
+    hooks["release"](drag)
     assert view.last_error is None, view.last_error
     assert view.values()[xs] == pytest.approx(target[0], abs=1e-9)       # the sliders followed
     assert view.values()[ys] == pytest.approx(target[1], abs=1e-9)
@@ -166,17 +167,17 @@ def test_a_mouse_drag_moves_the_point_its_sliders_and_the_drawing(name, factory)
     plt.close(view.figure)
 
 
-def test_the_translation_drags_the_tip_of_v_and_the_other_maps_their_centre():
+def test_the_translation_drags_the_tip_of_v_and_the_other_maps_their_centre(hooks):
     (_, factory), = _factories("affine.transform_explorer")
     view = factory(kind="translation")
     view.figure.canvas.draw()
     drag = view.drag
-    assert drag.position(0) == [1.5, 0.5]                # the tip of v = (tx, ty), where the guide ends
-    drag.press_at(1.5, 0.5)
-    drag.move_to(-1.0, 2.0)
-    drag.release()
+    assert hooks["position"](drag, 0) == [1.5, 0.5]                # the tip of v = (tx, ty), where the guide ends
+    hooks["press_at"](drag, 1.5, 0.5)
+    hooks["move_to"](drag, -1.0, 2.0)
+    hooks["release"](drag)
     assert (view.values()["tx"], view.values()["ty"]) == (-1.0, 2.0)
     assert np.allclose(view.last_result["image"][0] - view.last_result["original"][0], [-1.0, 2.0])
     view.set_values(kind="rotation")
-    assert drag.position(0) == [view.values()["cx"], view.values()["cy"]]
+    assert hooks["position"](drag, 0) == [view.values()["cx"], view.values()["cy"]]
     plt.close(view.figure)

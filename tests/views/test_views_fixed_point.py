@@ -64,7 +64,7 @@ def test_convergence_plot_skips_zeros():
 def test_two_panel_views_draw_few_ticks_and_plain_log_labels():
     """Tick labels were most of a redraw (issue 13 §5): the relaxation and fractal-theorem views keep
     a few ticks per axis, and their log axes label decades in plain text with no minor ticks."""
-    from goldman_lib.views import style
+    from goldman_lib.widgets import style
 
     for view in (views.relaxation_view(), views.fractal_theorem_view()):
         view.figure.canvas.draw()

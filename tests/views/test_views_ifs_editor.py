@@ -8,7 +8,8 @@ import pytest
 from scipy.spatial.distance import directed_hausdorff
 
 from goldman_lib import affine, ifs
-from goldman_lib.views import ifs_editor as ed
+from goldman_lib.widgets import ifs_editor as ed
+from sweeps import sweep_values
 
 
 @pytest.fixture
@@ -87,7 +88,7 @@ def test_condensation_trunk_in_both_algorithms(view):
 
 
 def test_sweep_grid_is_safe_for_many_controls(view):
-    combos = view.sweep_values()
+    combos = sweep_values(view)
     assert 400 < len(combos) < 2000 and all(set(c) == set(view.controls) for c in combos[:5])
 
 
@@ -96,20 +97,20 @@ def test_too_many_maps_is_rejected():
         ed.values_from_system("Sierpinski gasket", max_maps=2)
 
 
-def test_a_map_is_edited_by_dragging_the_images_of_three_points():
+def test_a_map_is_edited_by_dragging_the_images_of_three_points(hooks):
     """§4.7.3: drag the image of (1, 0) under map 1 of the gasket; the map becomes the affine map
     through the three new images, and its sliders follow."""
     import numpy as np
 
     from goldman_lib import affine
-    from goldman_lib.views.ifs_editor import REFERENCE_TRIANGLE, ifs_editor, system_from_values
+    from goldman_lib.widgets.ifs_editor import REFERENCE_TRIANGLE, ifs_editor, system_from_values
 
     editor = ifs_editor("Sierpinski gasket", points=2000)
     before = affine.apply(REFERENCE_TRIANGLE, system_from_values(editor.values()).maps[0])
     assert np.allclose(before, [[0, 0], [0.5, 0], [0, 0.5]])           # the gasket's first map halves
-    editor.drag.press_at(0.5, 0.0)
-    editor.drag.move_to(0.5, 0.25)
-    editor.drag.release()
+    hooks["press_at"](editor.drag, 0.5, 0.0)
+    hooks["move_to"](editor.drag, 0.5, 0.25)
+    hooks["release"](editor.drag)
     after = affine.apply(REFERENCE_TRIANGLE, system_from_values(editor.values()).maps[0])
     # the sliders snap to steps of 0.001 and of 0.1 degree
     assert np.allclose(after, [[0, 0], [0.5, 0.25], [0, 0.5]], atol=6e-3)
@@ -126,13 +127,13 @@ def test_the_frame_holds_still_while_a_grip_is_dragged_and_fits_on_release(hooks
     plan = hooks["drag_plan"](editor.drag, distance=60)
     x, y = editor.ax.transData.inverted().transform(plan["start"])
     x1, y1 = editor.ax.transData.inverted().transform(plan["end"])
-    editor.drag.press_at(x, y)
+    hooks["press_at"](editor.drag, x, y)
     for t in (0.5, 1.0):
-        editor.drag.move_to(x + t * (x1 - x), y + t * (y1 - y))
+        hooks["move_to"](editor.drag, x + t * (x1 - x), y + t * (y1 - y))
         assert (editor.ax.get_xlim(), editor.ax.get_ylim()) == limits
-    now = editor.drag.screen_position(plan["index"])
+    now = hooks["screen_position"](editor.drag, plan["index"])
     assert np.hypot(now[0] - plan["end"][0], now[1] - plan["end"][1]) < 6.0   # the grip is under the mouse
-    editor.drag.release()
+    hooks["release"](editor.drag)
     assert (editor.ax.get_xlim(), editor.ax.get_ylim()) != limits                 # fitted to the new attractor
     assert editor.last_error is None
     plt.close(editor.figure)

@@ -5,8 +5,9 @@ import ipywidgets as widgets
 import numpy as np
 import pytest
 
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, control_grid, figure_png
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, figure_png
+from sweeps import control_grid, covering_corners, sweep_values
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
@@ -60,7 +61,7 @@ def test_set_values_updates_once_and_returns_the_drawing():
 
 def test_sweep_values_cover_every_corner():
     view, _, _ = make_view()
-    combos = view.sweep_values(n=3)
+    combos = sweep_values(view, n=3)
     assert {(c["a"], c["b"]) for c in combos} >= {(-2.0, -1), (-2.0, 3), (2.0, -1), (2.0, 3)}
 
 
@@ -87,7 +88,6 @@ def test_covering_corners_meet_every_three_controls_in_every_combination():
 
     import numpy as np
 
-    from goldman_lib.views.interactive import covering_corners
 
     for k in (3, 5, 9, 17):
         for strength in (2, 3):
@@ -103,7 +103,6 @@ def test_covering_corners_meet_every_three_controls_in_every_combination():
 def test_covering_corners_refuse_bad_sizes():
     import pytest
 
-    from goldman_lib.views.interactive import covering_corners
 
     for bad in (-1, 2.5, True):
         with pytest.raises(ValueError, match="k must be"):

@@ -10,7 +10,8 @@ from hypothesis import strategies as st
 from scipy.interpolate import BSpline, bisplev
 
 from goldman_lib import bspline
-from goldman_lib.views import knot_editor as ke
+from goldman_lib.widgets import knot_editor as ke
+from sweeps import sweep_values
 
 matplotlib.use("Agg")
 
@@ -107,7 +108,7 @@ def test_presets_set_and_lock_the_sliders():
 
 def test_curve_editor_draws_scipy_curve_and_basis():
     view = ke.bspline_curve_editor()
-    for vals in view.sweep_values()[:40]:
+    for vals in sweep_values(view)[:40]:
         r = view.update(**vals)
         knots, p = r["knots"], len(r["knots"]) - 8
         u = np.linspace(0, 1, len(r["curve"]))
@@ -136,13 +137,13 @@ def test_nurbs_editor_starts_as_the_circle_and_matches_geomdl():
     np.testing.assert_allclose(r["curve"], np.array(crv.evaluate_list(list(u))), atol=1e-12)
 
 
-def test_curve_editors_control_points_are_dragged():
+def test_curve_editors_control_points_are_dragged(hooks):
     view = ke.bspline_curve_editor()
     ctrl = ke.DEFAULT_POLYGON.copy()
-    view.drag.press_at(*ctrl[2])
+    hooks["press_at"](view.drag, *ctrl[2])
     target = np.round(ctrl[2] + [-0.4, 0.3], 1)
-    view.drag.move_to(*target)
-    view.drag.release()
+    hooks["move_to"](view.drag, *target)
+    hooks["release"](view.drag)
     assert (view.values()["x2"], view.values()["y2"]) == tuple(target)
     ctrl[2] = target
     r = view.last_result
@@ -154,9 +155,9 @@ def test_curve_editors_control_points_are_dragged():
 
     view = ke.nurbs_curve_editor()
     P = np.array(view.last_result["polygon"])
-    view.drag.press_at(*P[1])             # the circle's corner (1, 1): pull it out, the arc bulges
-    view.drag.move_to(1.4, 1.4)
-    view.drag.release()
+    hooks["press_at"](view.drag, *P[1])             # the circle's corner (1, 1): pull it out, the arc bulges
+    hooks["move_to"](view.drag, 1.4, 1.4)
+    hooks["release"](view.drag)
     r = view.last_result
     assert (view.values()["x1"], view.values()["y1"]) == (1.4, 1.4)
     P[1] = (1.4, 1.4)
@@ -172,7 +173,7 @@ def test_curve_editors_control_points_are_dragged():
 
 def test_surface_editor_draws_bisplev_surface():
     view = ke.bspline_surface_editor()
-    for vals in view.sweep_values()[:12]:
+    for vals in sweep_values(view)[:12]:
         r = view.update(**vals)
         tu, tv = r["knots_u"], r["knots_v"]
         pu, pv = len(tu) - 7, len(tv) - 7

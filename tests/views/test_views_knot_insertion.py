@@ -94,7 +94,7 @@ def test_insertion_editor_inserts_into_the_editor_knot_vector():
 
 def _editor_knots(view):
     vals = view.values()
-    from goldman_lib.views.knot_editor import knots_from_values
+    from goldman_lib.widgets.knot_editor import knots_from_values
     names = sorted((k for k in vals if k.startswith("k") and k[1:].isdigit()), key=lambda k: int(k[1:]))
     knots = knots_from_values([vals[k] for k in names], vals["degree"], len(P), vals["preset"])
     return knots, vals["degree"], None

@@ -5,9 +5,9 @@ import pytest
 from matplotlib.figure import Figure
 
 from goldman_lib.lighting import Light
-from goldman_lib.views.interactive import InteractiveView
-from goldman_lib.views.light_control import LightControl
-from goldman_lib.views.three import SceneView
+from goldman_lib.widgets.interactive import InteractiveView
+from goldman_lib.widgets.light_control import LightControl
+from goldman_lib.widgets.three import SceneView
 
 
 def test_two_lights_round_trip_through_the_sliders():
@@ -44,14 +44,14 @@ def _view(control, seen):
     return view, ax
 
 
-def test_dragging_the_marker_moves_the_light_and_its_sliders():
+def test_dragging_the_marker_moves_the_light_and_its_sliders(hooks):
     c = LightControl([(1.0, 0.0, 2.0)], colour=False)
     seen = []
     view, ax = _view(c, seen)
     drag = c.drag_in(view, ax, plane="xz")
-    drag.press_at(1.0, 2.0)
-    drag.move_to(-3.0, 4.0)
-    drag.release()
+    hooks["press_at"](drag, 1.0, 2.0)
+    hooks["move_to"](drag, -3.0, 4.0)
+    hooks["release"](drag)
     assert view.controls["light0_x"].value == pytest.approx(-3.0)
     assert view.controls["light0_z"].value == pytest.approx(4.0)
     assert seen[-1][0].position == pytest.approx((-3.0, 0.0, 4.0))
@@ -104,7 +104,7 @@ def test_vertex_colours_live_and_static():
 
 def test_axes_keeps_the_other_coordinates_where_the_light_starts():
     from goldman_lib.lighting import Light
-    from goldman_lib.views.light_control import LightControl
+    from goldman_lib.widgets.light_control import LightControl
 
     control = LightControl([Light((0.5, 0.5, 0.99), intensity=1.0)], box=(0.0, 1.0), axes="xy")
     assert sorted(control.controls) == ["light0_I", "light0_colour", "light0_x", "light0_y"]

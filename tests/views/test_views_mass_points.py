@@ -45,11 +45,11 @@ def test_lever_masses_that_cancel_give_a_vector_message():
     assert "zero vector" in r["status"] and view.last_error is None
 
 
-def test_lever_points_follow_the_mouse():
+def test_lever_points_follow_the_mouse(hooks):
     view = views.lever_view()
-    view.drag.press_at(2.0, 2.0)           # P1
-    view.drag.move_to(3.0, -1.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, 2.0, 2.0)           # P1
+    hooks["move_to"](view.drag, 3.0, -1.0)
+    hooks["release"](view.drag)
     assert (view.values()["x1"], view.values()["y1"]) == (3.0, -1.0)
     # 3 (-2, 0) + (3, -1) = (-3, -1), mass 4
     np.testing.assert_allclose(view.last_result["center"], [-0.75, -0.25], atol=1e-12)

@@ -12,7 +12,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
-from goldman_lib.views.interactive import InteractiveView, discover_factories, dropdown, int_slider
+from goldman_lib.views import factories
+from goldman_lib.widgets.interactive import InteractiveView, dropdown, int_slider
 
 MODES = (widgets.Dropdown, widgets.ToggleButtons, widgets.RadioButtons, widgets.Checkbox, widgets.ToggleButton)
 SLIDERS = (widgets.FloatSlider, widgets.IntSlider)
@@ -94,7 +95,7 @@ def _dead_sliders(view):
     return dead
 
 
-FACTORIES = [(name, f) for name, f in discover_factories()]
+FACTORIES = [(name, f) for name, f in factories()]
 
 
 @pytest.mark.parametrize("name,factory", FACTORIES, ids=[n for n, _ in FACTORIES])

@@ -20,11 +20,11 @@ def test_complex_plane_view_rotates_and_scales_the_figure_by_z():
     assert "z = 0" in r["status"] and np.allclose(r["image"], 0) and view.last_error is None
 
 
-def test_complex_plane_view_point_z_is_dragged_with_the_mouse():
+def test_complex_plane_view_point_z_is_dragged_with_the_mouse(hooks):
     view = qv.complex_plane_view(re=1.0, im=0.0)
-    view.drag.press_at(1.0, 0.0)
-    view.drag.move_to(-0.5, 1.2)
-    view.drag.release()
+    hooks["press_at"](view.drag, 1.0, 0.0)
+    hooks["move_to"](view.drag, -0.5, 1.2)
+    hooks["release"](view.drag)
     assert view.values() == {"re": -0.5, "im": 1.2}
     assert np.allclose(view.last_result["image"], qt.complex_multiply(qv.FIGURE_F, -0.5 + 1.2j))
 

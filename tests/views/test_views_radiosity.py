@@ -47,18 +47,18 @@ def test_flat_and_smooth_display_and_the_light():
     assert np.all(dark["radiosities"] == 0) and view.last_error is None
 
 
-def test_the_light_is_dragged_on_the_ceiling_map():
+def test_the_light_is_dragged_on_the_ceiling_map(hooks):
     view = rv.radiosity_view("jacobi")
-    view.drag.press_at(0.5, 0.5)
-    view.drag.move_to(0.25, 0.7)
-    view.drag.release()
+    hooks["press_at"](view.drag, 0.5, 0.5)
+    hooks["move_to"](view.drag, 0.25, 0.7)
+    hooks["release"](view.drag)
     assert abs(view.values()["light0_x"] - 0.25) < 0.02 and abs(view.values()["light0_y"] - 0.7) < 0.02
     glow = view.figure.axes[0].images[0].get_array()
     assert glow.max() == 1.0 and glow[5, 2] > 0 and glow[2, 5] == 0          # lit near (0.25, 0.7), not at (0.7, 0.25)
 
 
 def test_the_scene_reports_its_hemicubes_to_a_progress_bar():
-    from goldman_lib.views.render_control import ProgressBar
+    from goldman_lib.widgets.render_control import ProgressBar
 
     bar = ProgressBar("hemi-cubes")
     box, F = rv.cornell_scene(2, 8, progress=bar)             # a size of its own: computed here

@@ -79,17 +79,17 @@ def test_clicking_the_image_chooses_the_pixel():
     assert np.allclose(view.last_result["segments"][0, 0], [0.0, 0.0])     # the eye
 
 
-def test_dragging_the_light_in_the_side_view():
+def test_dragging_the_light_in_the_side_view(hooks):
     view = rv.ray_tracing_view()
     before = view.last_result["image"].copy()
     _, ax_side = view.axes
     ax_side.figure.canvas.draw()
-    a, b = view.drag.position(0)
+    a, b = hooks["position"](view.drag, 0)
     origin, U, V = view.last_result["plane"]
     lamp = np.array(rt.default_lights()[0].position)
-    view.drag.press_at(a, b)
-    view.drag.move_to(a + 1.0, b - 1.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, a, b)
+    hooks["move_to"](view.drag, a + 1.0, b - 1.0)
+    hooks["release"](view.drag)
     moved = np.array([view.values()[f"light0_{k}"] for k in "xyz"])
     # the light moved by U - V (to the sliders' 0.1 steps) and kept its distance from the plane
     assert np.allclose(moved, lamp + U - V, atol=0.051 * 3)

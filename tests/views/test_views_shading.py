@@ -41,11 +41,11 @@ def test_modes_facets_exponent_and_light_change_the_picture():
     assert moved[1, i, j].sum() > sharper[1, i, j].sum() + 0.3
 
 
-def test_dragging_the_light_marker_moves_the_light():
+def test_dragging_the_light_marker_moves_the_light(hooks):
     view = sv.shading_view()
-    view.drag.press_at(2.5, 3.0)
-    view.drag.move_to(-3.0, -2.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, 2.5, 3.0)
+    hooks["move_to"](view.drag, -3.0, -2.0)
+    hooks["release"](view.drag)
     assert view.values()["light0_x"] == pytest.approx(-3.0) and view.values()["light0_z"] == pytest.approx(-2.0)
     assert np.allclose(view.last_result["light"], [-3.0, -4.0, -2.0])
     marker = view.figure.axes[0].lines[0]

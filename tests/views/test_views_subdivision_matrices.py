@@ -33,12 +33,12 @@ def test_fractal_editor_at_one_half_draws_the_parabola_and_survives_collinear_po
     assert view.last_error is None and "collinear" in flat["status"] and np.allclose(flat["fractal"][:, 1], 0)
 
 
-def test_fractal_editor_control_points_are_dragged():
+def test_fractal_editor_control_points_are_dragged(hooks):
     view = views.fractal_editor()
     before = view.last_result["fractal"].copy()
-    view.drag.press_at(1.5, 2.5)          # on P1
-    view.drag.move_to(2.0, 3.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, 1.5, 2.5)          # on P1
+    hooks["move_to"](view.drag, 2.0, 3.0)
+    hooks["release"](view.drag)
     assert (view.values()["x1"], view.values()["y1"]) == (2.0, 3.0)
     P = np.array([[0.0, 0.0], [2.0, 3.0], [4.0, 0.0]])
     result = view.last_result

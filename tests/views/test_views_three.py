@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from goldman_lib.views.three import SceneView, grid_triangles, vertex_normals
+from goldman_lib.widgets.three import SceneView, grid_triangles, vertex_normals
 
 
 def test_grid_triangles_cover_the_grid_once_with_consistent_orientation():
@@ -85,7 +85,7 @@ def test_replace_mesh_and_segments_change_the_vertex_count_in_place():
 
 
 def test_set_color_recolours_a_mesh_in_place():
-    from goldman_lib.views.three import SceneView
+    from goldman_lib.widgets.three import SceneView
 
     view = SceneView(width=80, height=60)
     view.add_mesh("m", [[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]], color="#112233")

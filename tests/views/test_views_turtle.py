@@ -11,6 +11,7 @@ import pytest  # noqa: E402
 
 from goldman_lib import turtle  # noqa: E402
 from goldman_lib.views import turtle as tv  # noqa: E402
+from sweeps import sweep_values
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
@@ -33,7 +34,7 @@ def _line_nans_are_separators(view, polys):
 
 def test_polygon_explorer_sweep():
     view = tv.polygon_explorer()
-    combos = view.sweep_values(n=4)
+    combos = sweep_values(view, n=4)
     assert len(combos) > 20
     for values in combos:
         result = view.update(**values)
@@ -68,7 +69,7 @@ PROGRAMS_BAD = ["REPEAT 3 [FORWARD", "FORWARD abc", "TURN 1e400", "REPEAT 1000 [
 
 def test_turtle_program_editor_sweep_and_good_programs():
     view = tv.turtle_program_editor()
-    for values in view.sweep_values():
+    for values in sweep_values(view):
         _check_drawn(view.update(**values))
     for program in PROGRAMS_OK:
         result = view.update(program=program)

@@ -116,16 +116,16 @@ def test_inside_outside_map_is_the_winding_number_on_the_grid():
     assert r["winding"] == 1 and r["even_odd"] is True and "disagree" not in r["status"]
 
 
-def test_inside_outside_points_follow_the_mouse():
+def test_inside_outside_points_follow_the_mouse(hooks):
     view = vgv.inside_outside_view(grid=40)
-    view.drag.press_at(0.2, 0.4)            # the query point's default position
-    view.drag.move_to(3.0, -2.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, 0.2, 0.4)            # the query point's default position
+    hooks["move_to"](view.drag, 3.0, -2.0)
+    hooks["release"](view.drag)
     assert view.values()["qx"] == 3.0 and view.values()["qy"] == -2.0
     assert view.last_result["winding"] == 0 and "outside" in view.last_result["status"]
-    view.drag.press_at(0.0, 3.0)            # vertex 0, the top of the star
-    view.drag.move_to(0.0, 2.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, 0.0, 3.0)            # vertex 0, the top of the star
+    hooks["move_to"](view.drag, 0.0, 2.0)
+    hooks["release"](view.drag)
     assert view.values()["y0"] == 2.0 and np.allclose(view.last_result["polygon"][0], [0, 2])
 
 

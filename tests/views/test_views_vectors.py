@@ -30,16 +30,16 @@ def test_a_non_affine_sum_moves_with_the_origin():
     assert np.allclose(np.ravel(dots[0].get_data()), r["from_origin"])
 
 
-def test_points_and_origin_are_dragged_with_the_mouse():
+def test_points_and_origin_are_dragged_with_the_mouse(hooks):
     view = affine_combination_view()
-    view.drag.press_at(view.values()["ox"], view.values()["oy"])
-    view.drag.move_to(1.5, -2.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, view.values()["ox"], view.values()["oy"])
+    hooks["move_to"](view.drag, 1.5, -2.0)
+    hooks["release"](view.drag)
     assert (view.values()["ox"], view.values()["oy"]) == (1.5, -2.0)
     x1, y1 = view.values()["x1"], view.values()["y1"]
-    view.drag.press_at(x1, y1)
-    view.drag.move_to(3.0, 3.0)
-    view.drag.release()
+    hooks["press_at"](view.drag, x1, y1)
+    hooks["move_to"](view.drag, 3.0, 3.0)
+    hooks["release"](view.drag)
     assert (view.values()["x1"], view.values()["y1"]) == (3.0, 3.0)
     assert np.allclose(view.last_result["from_origin"], view.last_result["from_zero"])   # default weights sum to 1
 

@@ -3,7 +3,7 @@ products view draws what goldman_lib.vectors computes."""
 
 import numpy as np
 
-from goldman_lib.views.vectors3d import VectorScene, vector_products_view
+from goldman_lib.widgets.vectors3d import VectorScene, vector_products_view
 
 
 def test_arrows_planes_and_polygons_update_in_place():

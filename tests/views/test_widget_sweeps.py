@@ -1,4 +1,4 @@
-"""Every widget factory of goldman_lib.views, found by its return annotation (``->
+"""Every widget factory a chapter displays (:func:`goldman_lib.views.factories`), found by its return annotation (``->
 InteractiveView``), is swept over its controls' ranges, corners included: no exception escapes
 ``update``, nothing it draws is NaN or infinite, it always reports a status, and the view has a
 static fallback PNG.  A new chapter's widgets are covered as soon as they exist;
@@ -8,15 +8,12 @@ chapter tests add checks of *what* is drawn.
 import numpy as np
 import pytest
 
-from goldman_lib.views import interactive
-from goldman_lib.views.interactive import InteractiveView
+from goldman_lib.views import factories
+from goldman_lib.widgets import interactive
+from goldman_lib.widgets.interactive import InteractiveView
+from sweeps import sweep_values
 
-
-def discover_factories():
-    return [pytest.param(fn, id=name) for name, fn in interactive.discover_factories()]
-
-
-FACTORIES = discover_factories()
+FACTORIES = [pytest.param(fn, id=name) for name, fn in factories()]
 
 
 def drawn_arrays(result):
@@ -39,22 +36,26 @@ def test_every_chapter_so_far_has_widget_factories():
     assert {"bezier", "turtle", "ifs_editor", "knot_editor", "fractals", "subdivision_surfaces"} <= ids
 
 
-#: views modules that are helpers, not chapters: they may hold no widget factory (private modules,
-#: such as ``_checks``, are helpers too).
-HELPER_MODULES = {"interactive", "style", "three", "drag", "light_control", "agreement", "render_control"}
-
-
 def test_every_views_module_has_a_widget_factory():
-    """A chapter's views module whose factory loses its ``-> InteractiveView`` annotation would drop
-    out of the sweeps (and the callback benchmark) silently; here it fails instead."""
+    """``goldman_lib.views`` holds only chapters' modules, and a chapter's module whose factory loses
+    its ``-> InteractiveView`` annotation would drop out of the sweeps (and the callback benchmark)
+    silently; here it fails instead."""
     import pkgutil
 
     import goldman_lib.views as views_pkg
 
-    modules = {m.name for m in pkgutil.iter_modules(views_pkg.__path__) if not m.name.startswith("_")}
+    modules = {m.name for m in pkgutil.iter_modules(views_pkg.__path__)}
     ids = {p.id.split(".")[0] for p in FACTORIES}
-    missing = sorted(modules - HELPER_MODULES - ids)
+    missing = sorted(modules - ids)
     assert not missing, f"views modules without a widget factory (annotate it -> InteractiveView): {missing}"
+
+
+def test_the_shared_editors_factories_are_listed():
+    """The framework's shared editors hold factories the notebooks display (chapters 6-8, 9, 27);
+    the chapter package lists them with its own, under the editor module's name."""
+    ids = {p.id.split(".")[0] for p in FACTORIES}
+    assert {"ifs_editor", "knot_editor", "vectors3d"} <= ids
+    assert "program_editor" not in ids          # a builder that needs a language, not a factory
 
 
 def test_no_two_factories_share_a_name():
@@ -63,13 +64,13 @@ def test_no_two_factories_share_a_name():
     ``codo_program_editor``, both built by the one shared program editor)."""
     from collections import Counter
 
-    names = Counter(name.split(".")[1] for name, _ in interactive.discover_factories())
+    names = Counter(name.split(".")[1] for name, _ in factories())
     shared = sorted(n for n, c in names.items() if c > 1)
     assert not shared, f"widget factories sharing a name across views modules: {shared}"
 
 
-def test_private_views_modules_hold_no_discovered_factory():
-    assert not [name for name, _ in interactive.discover_factories() if name.startswith("_")]
+def test_no_private_module_or_name_is_listed():
+    assert not [name for name, _ in factories() if name.startswith("_") or ":" in name or "._" in name]
 
 
 def test_dropdown_helper_matches_the_slider_style():
@@ -105,7 +106,7 @@ def test_sweep_over_every_control_range(factory):
     # what a view carries is declared on InteractiveView (issue 19 §3), not set ad hoc
     undeclared = sorted(k for k in set(vars(view)) - _BARE - InteractiveView.CARRIES if not k.startswith("_trait"))
     assert not undeclared, f"{factory.__name__} sets attributes InteractiveView does not declare: {undeclared}"
-    combos = distinct(view.sweep_values(n=3))
+    combos = distinct(sweep_values(view, n=3))
     if any(hasattr(w, "min") and hasattr(w, "max") for w in view.controls.values()):
         assert len(combos) >= 3, "a view with sliders is swept over at least its ends and middle"
     for values in combos:

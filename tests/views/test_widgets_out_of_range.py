@@ -14,10 +14,11 @@ import ipywidgets as widgets
 import numpy as np
 import pytest
 
-from goldman_lib.views import interactive
-from goldman_lib.views.interactive import InteractiveView
+from goldman_lib.views import factories
+from goldman_lib.widgets import interactive
+from goldman_lib.widgets.interactive import InteractiveView
 
-FACTORIES = [pytest.param(fn, id=name) for name, fn in interactive.discover_factories()]
+FACTORIES = [pytest.param(fn, id=name) for name, fn in factories()]
 #: Seconds one update may take at a hostile value (the budgets make most fail in milliseconds).
 LIMIT = 3.0
 

@@ -7,15 +7,16 @@ artists and returns ``run(program) -> dict``, which parses and runs a program, u
 in place and returns what it drew with a ``"status"`` line (raising ValueError for a program that
 does not parse or run; the view then shows the message and keeps the last good drawing).
 
-This module is private: it holds no chapter's widget (widget discovery skips private modules).
+It holds no factory of its own: the chapters' factories built on it are discovered in their
+chapter modules (:func:`goldman_lib.views.factories`).
 """
 
 from __future__ import annotations
 
 from typing import Callable, Mapping
 
-from goldman_lib.views import style
-from goldman_lib.views.interactive import InteractiveView, figure_widget
+from goldman_lib.widgets import style
+from goldman_lib.widgets.interactive import InteractiveView, figure_widget
 
 __all__ = ["program_editor"]
 

@@ -14,7 +14,7 @@ by the images of three non-collinear points (Goldman §4.7.3), and the sliders f
 
 How to reuse it from another chapter::
 
-    from goldman_lib.views.ifs_editor import ifs_editor, system_from_values
+    from goldman_lib.widgets.ifs_editor import ifs_editor, system_from_values
     editor = ifs_editor("dragon")            # or any IFS: ifs_editor(my_ifs)
     editor                                   # display it
     system = system_from_values(editor.values())   # the IFS the sliders describe now
@@ -40,9 +40,9 @@ import numpy as np
 
 from goldman_lib import affine, ifs
 from goldman_lib.validation import as_int
-from goldman_lib.views import style
-from goldman_lib.views import _checks
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
+from goldman_lib.widgets import style
+from goldman_lib.widgets import checks
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, int_slider, InteractiveView
 
 __all__ = ["ifs_editor", "system_from_values", "values_from_system", "MAX_MAPS", "PARAMETERS",
            "CONDENSATIONS", "MAP_COLOURS", "attractor_points", "REFERENCE_TRIANGLE", "map_values_from_points"]
@@ -122,7 +122,7 @@ def values_from_system(system, max_maps: int = MAX_MAPS) -> dict:
 
 
 def _map_parameters(values: dict, i: int) -> tuple:
-    return tuple(_checks.number(values.get(f"{key}{i}", _spare_map(i)[key]), f"{key}{i}") for key in PARAMETERS)
+    return tuple(checks.number(values.get(f"{key}{i}", _spare_map(i)[key]), f"{key}{i}") for key in PARAMETERS)
 
 
 def system_from_values(values: dict, *, name: str = "edited IFS") -> ifs.IFS:
@@ -134,7 +134,7 @@ def system_from_values(values: dict, *, name: str = "edited IFS") -> ifs.IFS:
     >>> np.allclose(s.maps, ifs.sierpinski().maps)
     True
     """
-    k = _checks.integer(values.get("maps", 1), "maps", 1, MAX_MAPS)
+    k = checks.integer(values.get("maps", 1), "maps", 1, MAX_MAPS)
     maps, weights = [], []
     for i in range(k):
         angle, sx, sy, shear, tx, ty, p = _map_parameters(values, i)
@@ -142,7 +142,7 @@ def system_from_values(values: dict, *, name: str = "edited IFS") -> ifs.IFS:
         weights.append(max(p, 0.0))
     weights = np.array(weights)
     probs = weights if weights.sum() > 0 else None
-    C = CONDENSATIONS[_checks.option(CONDENSATIONS, values.get("condensation", "none"), "condensation")]
+    C = CONDENSATIONS[checks.option(CONDENSATIONS, values.get("condensation", "none"), "condensation")]
     return ifs.IFS(maps, probabilities=probs, condensation=C, name=name)
 
 
@@ -157,9 +157,9 @@ def attractor_points(system, algorithm: str = "chaos game", points: int = 100_00
     one of these.
     """
     s = ifs.as_ifs(system)
-    algorithm = _checks.option(_ALGORITHMS, algorithm, "algorithm")
-    points = _checks.integer(points, "points", 1, ifs.MAX_POINTS)
-    levels = _checks.integer(levels, "levels", 0, 64)
+    algorithm = checks.option(_ALGORITHMS, algorithm, "algorithm")
+    points = checks.integer(points, "points", 1, ifs.MAX_POINTS)
+    levels = checks.integer(levels, "levels", 0, 64)
     k = len(s)
     contractive = s.is_contractive()
     note = ""
@@ -256,7 +256,7 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
     frame = {"hold": False}
 
     def update(maps, edit, algorithm, points, levels, condensation, **params):
-        k = _checks.integer(maps, "maps", 1, max_maps)
+        k = checks.integer(maps, "maps", 1, max_maps)
         values = {"maps": k, "condensation": condensation, **params}
         s = system_from_values(values)
         factors = s.contraction_factors()
@@ -357,7 +357,7 @@ def ifs_editor(system="Sierpinski gasket", *, algorithm: str = "chaos game", poi
     view.ax = ax
 
     # -- direct manipulation (§4.7.3): drag the images of the reference triangle's three points --------
-    from goldman_lib.views.drag import PointDrag
+    from goldman_lib.widgets.drag import PointDrag
 
     def grips():
         vals = view.values()

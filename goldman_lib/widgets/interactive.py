@@ -15,7 +15,7 @@ Two promises every view keeps:
   default values) in the same output, as ipympl does for its canvas: JupyterLab with a kernel shows
   the live widget, while GitHub, nbconvert and the offline deck show the picture.
 
-Tests sweep every control over its range with :meth:`InteractiveView.sweep_values`.
+Tests sweep every control over its range (``tests/views/sweeps.py``).
 """
 
 from __future__ import annotations
@@ -26,16 +26,12 @@ import functools
 import html
 import io
 import itertools
-import math
-import weakref
 from typing import Callable, Mapping
 
 import ipywidgets as widgets
-import numpy as np
 
-__all__ = ["InteractiveView", "figure_widget", "figure_png", "control_grid", "float_slider", "int_slider",
-           "check_control_values",
-           "discover_factories"]
+__all__ = ["InteractiveView", "figure_widget", "figure_png", "float_slider", "int_slider", "dropdown",
+           "check_control_values"]
 
 
 def float_slider(description: str, value: float, low: float, high: float, step: float = 0.05, *,
@@ -83,95 +79,11 @@ def figure_widget(fig) -> widgets.DOMWidget:
     return widgets.Image(value=figure_png(fig), format="png")
 
 
-def _control_values(w: widgets.Widget, n: int) -> list:
-    """``n`` values spread over a control's range, ends included (all options of a picker)."""
-    if isinstance(w, (widgets.IntSlider, widgets.BoundedIntText)):
-        vals = np.linspace(w.min, w.max, min(n, w.max - w.min + 1))
-        return sorted({int(round(v)) for v in vals})
-    if isinstance(w, (widgets.FloatSlider, widgets.BoundedFloatText, widgets.FloatLogSlider)):
-        return [float(v) for v in np.linspace(w.min, w.max, n)]
-    if isinstance(w, (widgets.Dropdown, widgets.ToggleButtons, widgets.RadioButtons, widgets.SelectionSlider)):
-        return [value for _, value in _options(w)]
-    if isinstance(w, widgets.Checkbox):
-        return [False, True]
-    return [w.value]
-
-
 def _options(w):
     opts = w.options
     if isinstance(opts, Mapping):
         return list(opts.items())
     return [(o, o) if not isinstance(o, tuple) else o for o in opts]
-
-
-@functools.lru_cache(maxsize=64)
-def covering_corners(k: int, strength: int = 3, seed: int = 0) -> np.ndarray:
-    """Rows of 0s and 1s (a control at its minimum or its maximum) over ``k`` controls in which every
-    ``strength`` controls meet in each of their ``2**strength`` combinations: a covering array of
-    that strength, built greedily (each row the best of 64 seeded random candidates, one of them
-    made to cover a combination still missing), so it is the same on every run.
-
-    A fault that needs three controls at their extremes at once shows in some row, and the rows are
-    few: about 20-40 for 10-30 controls, where all the corners would be 2**k.
-
-    >>> rows = covering_corners(6)
-    >>> import itertools
-    >>> all(len({tuple(r[list(c)]) for r in rows}) == 8 for c in itertools.combinations(range(6), 3))
-    True
-    >>> len(rows) < 2 ** 6
-    True
-    """
-    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 0:
-        raise ValueError(f"k must be a whole number of controls >= 0; got {k!r}")
-    if isinstance(strength, bool) or not isinstance(strength, (int, np.integer)) or not 1 <= strength <= 4:
-        raise ValueError(f"strength must be 1, 2, 3 or 4; got {strength!r}")
-    if k <= strength:
-        out = np.array(list(itertools.product((0, 1), repeat=k)), dtype=np.int8).reshape(-1, k)
-        out.flags.writeable = False     # cached: shared by every caller
-        return out
-    groups = np.array(list(itertools.combinations(range(k), strength)))
-    weights = 1 << np.arange(strength)[::-1]
-    missing = np.ones((len(groups), 2 ** strength), dtype=bool)
-    everyone = np.arange(len(groups))
-    rng = np.random.default_rng(seed)
-    rows = []
-    while missing.any():
-        candidates = rng.integers(0, 2, size=(64, k))
-        g, combo = np.argwhere(missing)[0]
-        candidates[0, groups[g]] = (combo >> np.arange(strength)[::-1]) & 1
-        codes = (candidates[:, groups] * weights).sum(axis=-1)
-        best = candidates[int(np.argmax(missing[everyone, codes].sum(axis=1)))]
-        missing[everyone, (best[groups] * weights).sum(axis=-1)] = False
-        rows.append(best)
-    out = np.array(rows, dtype=np.int8)
-    out.flags.writeable = False     # cached: shared by every caller
-    return out
-
-
-def control_grid(controls: Mapping[str, widgets.Widget], n: int = 3, max_full: int = 400, seed: int = 0) -> list[dict]:
-    """Value combinations covering each control's range, corners included.
-
-    If the full grid has at most ``max_full`` points it is returned whole.  Otherwise: every
-    control swept over its ``n`` values with the others at their defaults, at their minima and at
-    their maxima; the two all-min / all-max corners; and the corners of :func:`covering_corners`,
-    in which every three controls meet at each of their eight min/max combinations.
-    """
-    names = list(controls)
-    axes = [_control_values(controls[k], n) for k in names]
-    total = math.prod(len(a) for a in axes)  # exact: np.prod would wrap round in int64 for ~40+ controls
-    if total <= max_full:
-        return [dict(zip(names, combo)) for combo in itertools.product(*axes)]
-    default = {k: controls[k].value for k in names}
-    lows = {k: a[0] for k, a in zip(names, axes)}
-    highs = {k: a[-1] for k, a in zip(names, axes)}
-    combos = [lows, highs]
-    for base in (default, lows, highs):
-        for k, a in zip(names, axes):
-            for v in a:
-                combos.append({**base, k: v})
-    for row in covering_corners(len(names), 3, seed):
-        combos.append({k: (a[-1] if bit else a[0]) for k, a, bit in zip(names, axes, row)})
-    return combos
 
 
 class InteractiveView(widgets.VBox):
@@ -201,11 +113,11 @@ class InteractiveView(widgets.VBox):
     #: The matplotlib axes of a 2D view (a single ``Axes``) and of a view with several panels.
     ax = None
     axes = None
-    #: The three.js scene of a 3D view (:class:`goldman_lib.views.three.SceneView`).
+    #: The three.js scene of a 3D view (:class:`goldman_lib.widgets.three.SceneView`).
     scene = None
-    #: The mouse drag of a view whose points are dragged (:class:`goldman_lib.views.drag.PointDrag`).
+    #: The mouse drag of a view whose points are dragged (:class:`goldman_lib.widgets.drag.PointDrag`).
     drag = None
-    #: The light-position control of a lit view (:class:`goldman_lib.views.light_control.LightControl`)
+    #: The light-position control of a lit view (:class:`goldman_lib.widgets.light_control.LightControl`)
     #: and a view's own light object, if it shows one.
     light_control = None
     light = None
@@ -224,16 +136,14 @@ class InteractiveView(widgets.VBox):
     #: The Play widget of an animated view (it drives a frame slider).
     play = None
     #: The full-size picture of the view's current state, ``render_full(progress, **values)``, for a
-    #: :class:`goldman_lib.views.render_control.RenderControl` under the view.
+    #: :class:`goldman_lib.widgets.render_control.RenderControl` under the view.
     render_full = None
     #: Everything above, by name: the sweep tests fail a factory that sets any other attribute.
     CARRIES = frozenset({"ax", "axes", "scene", "drag", "light_control", "light", "editor", "editors", "examples",
                          "preset", "load", "readout", "click_cid", "play", "render_full"})
 
-    #: Every live view by its number (``uid``), which its box also carries as the CSS class
-    #: ``goldman-view-<uid>``: how a browser test asks the kernel about the view it sees
-    #: (``tests/browser/kernel_hooks.py``).
-    _live: "weakref.WeakValueDictionary[int, InteractiveView]" = weakref.WeakValueDictionary()
+    #: Each view's number (``uid``), which its box carries as the CSS class ``goldman-view-<uid>``
+    #: (how a browser test names the view it sees to the kernel: ``tests/browser/kernel_hooks.py``).
     _count = itertools.count()
 
     def __init__(self, *, controls: Mapping[str, widgets.Widget], views: list, update: Callable[..., dict],
@@ -276,7 +186,6 @@ class InteractiveView(widgets.VBox):
         super().__init__(body)
         self.add_class("goldman-interactive")
         self.add_class(f"goldman-view-{self.uid}")
-        InteractiveView._live[self.uid] = self
         for w in self.controls.values():
             w.observe(self._on_change, names="value")
         self.refresh()
@@ -307,10 +216,6 @@ class InteractiveView(widgets.VBox):
             yield self
         finally:
             self._muted = old
-
-    def sweep_values(self, n: int = 3, max_full: int = 400) -> list[dict]:
-        """Value combinations over every control's range, corners included (for tests)."""
-        return control_grid(self.controls, n=n, max_full=max_full)
 
     # -- the widget side -----------------------------------------------------------------------
     def acting(self, values: Mapping | None = None) -> dict:
@@ -396,77 +301,56 @@ def _equal(a, b) -> bool:
         return False
 
 
-def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping) -> None:
-    """Raise ValueError/TypeError naming the control if a value is one its widget cannot hold: a
-    number outside a slider's range (or not a finite real number), an option a picker does not
-    offer, anything but True or False for a checkbox or toggle, a string that is no colour for a
-    colour picker, anything but a string for a text field (and, for a control of any other kind,
-    a value of another type than its current one).  Values set through the widgets always pass;
-    values passed to ``update`` by code (a notebook, a test, a saved state) are checked here
-    before any work starts (issues 10 and 20).  The message is short whatever the value.
+def check_control_values(controls: Mapping[str, widgets.Widget], values: Mapping) -> dict:
+    """The values, checked: raise ValueError/TypeError naming the control if a value is one its
+    widget cannot hold: a number outside a slider's range (or not a finite real number), an option
+    a picker does not offer, anything but True or False for a checkbox or toggle, a string that is
+    no colour for a colour picker, anything but a string for a text field (and, for a control of
+    any other kind, a value of another type than its current one).  Values set through the widgets
+    always pass; values passed to ``update`` by code (a notebook, a test, a saved state) are checked
+    here before any work starts (issues 10 and 20).  The message is short whatever the value.
 
+    Returns ``values`` with each control's value as its widget would hold it (an integer slider's
+    ``3.0`` as ``3``, a float slider's ``1`` as ``1.0``; a name that is no control passes as it
+    is), which is what ``update`` receives: a view's ``update`` need not check its values again.
+
+    >>> check_control_values({"n": int_slider("n", 1, 0, 5), "t": float_slider("t", 0.5, 0.0, 1.0)}, {"n": 3.0, "t": 1})
+    {'n': 3, 't': 1.0}
     >>> check_control_values({"t": float_slider("t", 0.5, 0.0, 1.0)}, {"t": 2.0})
     Traceback (most recent call last):
     ...
     ValueError: t must lie in [0, 1]; got 2
     """
-    from goldman_lib.views import _checks
+    from goldman_lib.widgets import checks
 
+    out = dict(values)
     for name, value in values.items():
         w = controls.get(name)
         if w is None:
             continue
         if isinstance(w, (widgets.IntSlider, widgets.BoundedIntText)):
-            _checks.integer(value, name, w.min, w.max)
+            out[name] = checks.integer(value, name, w.min, w.max)
         elif isinstance(w, (widgets.FloatSlider, widgets.BoundedFloatText)):
-            _checks.number(value, name, w.min, w.max)
+            out[name] = checks.number(value, name, w.min, w.max)
         elif isinstance(w, (widgets.Dropdown, widgets.ToggleButtons, widgets.RadioButtons, widgets.SelectionSlider)):
-            _checks.option([v for _, v in _options(w)], value, name)
+            out[name] = checks.option([v for _, v in _options(w)], value, name)
         elif isinstance(w, (widgets.Checkbox, widgets.ToggleButton)):
-            _checks.boolean(value, name)
+            out[name] = checks.boolean(value, name)
         elif isinstance(w, widgets.ColorPicker):
-            _checks.colour(value, name)
+            out[name] = checks.colour(value, name)
         elif isinstance(w, (widgets.Text, widgets.Textarea)):
-            _checks.text(value, name)
+            out[name] = checks.text(value, name)
         else:
-            _checks.same_kind(value, getattr(w, "value", None), name)
+            out[name] = checks.same_kind(value, getattr(w, "value", None), name)
+    return out
 
 
 def _checked(update: Callable[..., dict], controls: Mapping[str, widgets.Widget]) -> Callable[..., dict]:
-    """``update`` with its keyword values checked by :func:`check_control_values` first."""
-    import functools
-
+    """``update`` with its keyword values checked (and given as their widgets hold them) by
+    :func:`check_control_values` first."""
     @functools.wraps(update)
     def checked(*args, **values):
-        check_control_values(controls, values)
-        return update(*args, **values)
+        return update(*args, **check_control_values(controls, values))
 
     checked.unchecked = update
     return checked
-
-
-def discover_factories() -> list[tuple[str, Callable[[], "InteractiveView"]]]:
-    """Every public widget factory of ``goldman_lib.views``, found by its return annotation
-    (``-> InteractiveView``), as ``("module.name", factory)`` pairs sorted by name.  Private
-    modules (``_program_editor``) hold shared builders, not chapters' widgets, and are skipped.
-
-    The widget sweeps (tests) and the callback benchmark both use this list, so a new chapter's
-    widgets are swept and timed as soon as their factories exist.
-    """
-    import importlib
-    import inspect
-    import pkgutil
-
-    import goldman_lib.views as views_pkg
-
-    found = []
-    for info in pkgutil.iter_modules(views_pkg.__path__):
-        if info.name.startswith("_"):
-            continue  # private modules (_checks, _program_editor) are helpers the chapters' views share
-        module = importlib.import_module(f"goldman_lib.views.{info.name}")
-        for name, fn in inspect.getmembers(module, inspect.isfunction):
-            if fn.__module__ != module.__name__ or name.startswith("_"):
-                continue
-            if inspect.signature(fn).return_annotation in (InteractiveView, "InteractiveView"):
-                found.append((f"{info.name}.{name}", fn))
-    return sorted(found)

@@ -25,7 +25,7 @@ import numpy as np
 from goldman_lib import lighting, shading
 from goldman_lib.shading import vertex_normals
 from goldman_lib.validation import as_points, within_budget
-from goldman_lib.views import style
+from goldman_lib.widgets import style
 
 __all__ = ["SceneView", "grid_triangles", "vertex_normals"]
 

@@ -1,5 +1,5 @@
-"""The light-position control: the one widget that places lights, shared by chapters 16, 17, 21
-and 23 (and any view lit by :mod:`goldman_lib.lighting`).
+"""The light-position control: the one widget that places lights, shared by chapters 16, 17, 19,
+21 and 23 (and any view lit by :mod:`goldman_lib.lighting`).
 
 For each light it makes an x, a y and a z slider, an intensity slider and (optionally) a colour
 picker, named ``light0_x``, ``light0_y``, ``light0_z``, ``light0_I``, ``light0_colour``,
@@ -31,7 +31,7 @@ import numpy as np
 
 from goldman_lib.lighting import Light
 from goldman_lib.validation import as_points
-from goldman_lib.views.interactive import float_slider
+from goldman_lib.widgets.interactive import float_slider
 
 __all__ = ["LightControl"]
 
@@ -121,7 +121,7 @@ class LightControl:
         """Let the mouse drag each light's marker in ``ax``, a 2D view of the ``plane`` (two of x, y, z,
         in the order of the axes' horizontal and vertical directions): a drag sets those two sliders
         of the light (through the shared drag helper).  Returns the :class:`PointDrag`."""
-        from goldman_lib.views.drag import drag_sliders
+        from goldman_lib.widgets.drag import drag_sliders
 
         if len(plane) != 2 or not set(plane) <= set("xyz") or plane[0] == plane[1]:
             raise ValueError(f"plane must be two different letters of 'xyz' (e.g. 'xz'); got {plane!r}")
@@ -131,7 +131,7 @@ class LightControl:
         return drag_sliders(view, ax, pairs, radius=radius)
 
     def show_in_scene(self, scene, values: Mapping, name: str = "lights", size: float = 0.25):
-        """Draw the lights as yellow markers in a :class:`~goldman_lib.views.three.SceneView` and light
+        """Draw the lights as yellow markers in a :class:`~goldman_lib.widgets.three.SceneView` and light
         the scene with them; call again with new values to move both in place.  Build the scene with
         ``SceneView(lights=control.lights(control.defaults()))`` so it has as many lights."""
         lights = self.lights(values)

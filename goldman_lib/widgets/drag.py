@@ -9,15 +9,19 @@ view's points to the sliders that also set them, so both the mouse and the keybo
 same plain ``update`` callback: a drag sets the point's two sliders (through
 :meth:`InteractiveView.set_values`, which updates once for both) and the sliders follow the mouse.
 
-The same events arrive on any canvas, so tests drive a drag without a browser:
+The same events arrive on any canvas, so a drag works without a browser (the tests drive one with
+the functions of ``tests/browser/kernel_hooks.py``, which send these events):
 
->>> import matplotlib
+>>> from matplotlib.backend_bases import MouseEvent
 >>> from matplotlib.figure import Figure
 >>> fig = Figure(); ax = fig.add_subplot(); _ = ax.set_xlim(0, 10), ax.set_ylim(0, 10)
 >>> pts = np.array([[2.0, 2.0], [8.0, 5.0]])
 >>> moved = []
 >>> drag = PointDrag(ax, lambda: pts, lambda k, x, y: moved.append((k, round(x, 3), round(y, 3))))
->>> drag.press_at(8.1, 5.0); drag.move_to(7.0, 6.0); drag.release()
+>>> for name, at in (("button_press_event", (8.1, 5.0)), ("motion_notify_event", (7.0, 6.0)),
+...                  ("button_release_event", (7.0, 6.0))):
+...     x, y = ax.transData.transform(at)
+...     fig.canvas.callbacks.process(name, MouseEvent(name, fig.canvas, x, y, button=1))
 >>> moved
 [(1, 7.0, 6.0)]
 """
@@ -72,17 +76,6 @@ class PointDrag:
         k = int(np.argmin(d))
         return k if d[k] <= self.radius else None
 
-    def position(self, index: int) -> list[float]:
-        """Where point ``index`` is now, in data coordinates."""
-        pts = np.asarray(self.get_points(), dtype=float).reshape(-1, 2)
-        if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or not 0 <= index < len(pts):
-            raise ValueError(f"index must be a point number in [0, {len(pts) - 1}]; got {index!r}")
-        return [float(v) for v in pts[int(index)]]
-
-    def screen_position(self, index: int) -> list[float]:
-        """Where point ``index`` is drawn now, in figure pixels (origin bottom left)."""
-        return [float(v) for v in self.ax.transData.transform(self.position(index))]
-
     # -- matplotlib event handlers ------------------------------------------------------------------
     def _press(self, event):
         if not self.enabled or event.inaxes is not self.ax or event.button not in (1, None):
@@ -114,32 +107,6 @@ class PointDrag:
             return
         self._last = (x, y)
         self.on_drag(self.active, float(x), float(y))
-
-    # -- driving it from code (tests, demos) ------------------------------------------------------------
-    def _event(self, name: str, x: float, y: float):
-        from matplotlib.backend_bases import MouseEvent
-
-        px, py = self.ax.transData.transform((x, y))
-        event = MouseEvent(name, self.ax.figure.canvas, px, py, button=1)
-        self.ax.figure.canvas.callbacks.process(name, event)
-
-    def press_at(self, x: float, y: float):
-        """Press the mouse at data position (x, y) of the axes, as a learner would."""
-        self._event("button_press_event", x, y)
-
-    def move_to(self, x: float, y: float):
-        """Move the mouse to data position (x, y)."""
-        self._event("motion_notify_event", x, y)
-
-    def release(self, x: float | None = None, y: float | None = None):
-        """Release the mouse button (at data position (x, y) if given: the held point ends there)."""
-        from matplotlib.backend_bases import MouseEvent
-
-        if x is None or y is None:
-            event = MouseEvent("button_release_event", self.ax.figure.canvas, 0, 0, button=1)
-            self.ax.figure.canvas.callbacks.process("button_release_event", event)
-        else:
-            self._event("button_release_event", x, y)
 
 
 def snap_to_slider(slider, value: float) -> float:
@@ -189,7 +156,7 @@ def point_sliders(points, box, step: float = 0.1, prefix: str = "", width: str =
     >>> sorted(point_sliders([[0, 0], [1, 2]], (-1, 2, -1, 3)))
     ['x0', 'x1', 'y0', 'y1']
     """
-    from goldman_lib.views.interactive import float_slider
+    from goldman_lib.widgets.interactive import float_slider
 
     pts = np.asarray(points, dtype=float).reshape(-1, 2)
     xmin, xmax, ymin, ymax = (float(v) for v in box)

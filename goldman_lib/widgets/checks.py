@@ -1,7 +1,7 @@
 """Checks of the values a widget's ``update`` receives (issue 10): a control's value may come from
 a learner's code (``view.update(level=10**12)``) rather than from the slider, so each update
 checks its values here and raises a ValueError/TypeError naming the control, which the view
-shows in its status line (:class:`goldman_lib.views.interactive.InteractiveView`).
+shows in its status line (:class:`goldman_lib.widgets.interactive.InteractiveView`).
 
 One check per kind of control (issue 20): sliders (:func:`number`, :func:`integer`), pickers
 (:func:`option`), checkboxes and toggles (:func:`boolean`), colour pickers (:func:`colour`) and

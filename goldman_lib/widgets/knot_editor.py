@@ -42,10 +42,10 @@ import numpy as np
 from goldman_lib import bspline
 from goldman_lib.bspline import KNOT_GAP as GAP, KNOT_PRESETS as PRESETS, interior_values, knots_from_values, push_knots
 from goldman_lib.validation import as_int, as_points
-from goldman_lib.views import style
-from goldman_lib.views.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
-from goldman_lib.views.interactive import dropdown, figure_widget, float_slider, InteractiveView
-from goldman_lib.views.three import SceneView, grid_triangles
+from goldman_lib.widgets import style
+from goldman_lib.widgets.drag import drag_sliders, pair_rows, point_pairs, point_sliders, points_from
+from goldman_lib.widgets.interactive import dropdown, figure_widget, float_slider, InteractiveView
+from goldman_lib.widgets.three import SceneView, grid_triangles
 
 __all__ = ["PRESETS", "RULE_TEXT", "knots_from_values", "push_knots", "interior_values", "KnotEditor",
            "knot_vector_editor", "plot_knot_marks", "plot_basis_functions",

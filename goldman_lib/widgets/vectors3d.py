@@ -23,8 +23,8 @@ import numpy as np
 
 from goldman_lib import vector_geometry, vectors
 from goldman_lib.validation import as_points
-from goldman_lib.views.interactive import InteractiveView, float_slider
-from goldman_lib.views.three import SceneView
+from goldman_lib.widgets.interactive import InteractiveView, float_slider
+from goldman_lib.widgets.three import SceneView
 
 __all__ = ["VectorScene", "vector_products_view", "COLOURS"]
 
@@ -47,7 +47,7 @@ def _frame(d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 class VectorScene(SceneView):
-    """A :class:`~goldman_lib.views.three.SceneView` that also draws arrows, planes and polygons.
+    """A :class:`~goldman_lib.widgets.three.SceneView` that also draws arrows, planes and polygons.
 
     Each compound object is made of primitives named ``"<name>:<part>"`` (``u:shaft``, ``u:head``,
     ``P:fill``, ...), updated in place by the ``set_*`` methods with the same number of items.
