@@ -182,3 +182,85 @@ def pin_layout(fig) -> None:
 
 
 __all__ += ["pin_layout"]
+
+
+def draw_once(artist, state=None):
+    """Let a static ``artist`` (a legend, an axis with its ticks and grid, a title) be rendered once
+    and its pixels pasted at every later redraw of an Agg canvas (ipympl's, a PNG).
+
+    Matplotlib lays out and rasterises every text glyph by glyph at every draw: a legend of seven
+    entries costs as much as redrawing an empty figure.  A view whose sliders leave an artist as it
+    is renders it once into a transparent bitmap (cropped to what it painted) and composites that
+    bitmap in its place in the drawing order; the picture is the same (blending in two steps may
+    round a pixel by one level in 255).  The bitmap is made again when the canvas size or dpi
+    changes, or when ``state()`` (a hashable summary of what the artist depends on, such as the
+    axes limits) does; other renderers (PDF, SVG) draw the artist itself.  Returns ``artist``.
+
+    >>> fig, ax = new_axes(); _ = ax.plot([0, 1], [0, 1], label="a line")
+    >>> leg = draw_once(ax.legend())
+    >>> fig.canvas.draw(); fig.canvas.draw()     # the second draw pastes the legend's pixels
+    >>> leg.get_texts()[0].get_text()
+    'a line'
+    """
+    from matplotlib.backends.backend_agg import RendererAgg
+
+    draw = artist.draw
+    cache: dict = {}
+
+    def draw_or_paste(renderer):
+        if not artist.get_visible():
+            return
+        if not isinstance(renderer, RendererAgg):
+            return draw(renderer)
+        key = (renderer.width, renderer.height, renderer.dpi, state() if state is not None else None)
+        if cache.get("key") != key:
+            off = RendererAgg(int(renderer.width), int(renderer.height), renderer.dpi)
+            draw(off)
+            rgba = np.asarray(off.buffer_rgba())
+            rows, cols = np.flatnonzero(rgba[..., 3].any(axis=1)), np.flatnonzero(rgba[..., 3].any(axis=0))
+            if len(rows):
+                r0, r1, c0, c1 = rows[0], rows[-1] + 1, cols[0], cols[-1] + 1
+                # bottom-up rows, placed by the lower-left corner in display pixels
+                cache["pixels"] = (int(c0), int(renderer.height) - int(r1), rgba[r0:r1, c0:c1][::-1].copy())
+            else:
+                cache["pixels"] = None
+            cache["key"] = key
+        if cache["pixels"] is not None:
+            x, y, pixels = cache["pixels"]
+            gc = renderer.new_gc()
+            renderer.draw_image(gc, x, y, pixels)
+            gc.restore()
+        artist.stale = False
+
+    artist.draw = draw_or_paste
+    return artist
+
+
+def freeze_axes_decorations(ax, *static, legend: bool = True):
+    """:func:`draw_once` for what an axes with fixed limits draws the same at every redraw: its axes
+    (grid, ticks, tick labels, axis labels), its legend (unless ``legend=False``) and the ``static``
+    artists given (a title, an annotation: texts the sliders do not change).  Each is made again if
+    the limits, the axes' place, (3D) the viewing angles or its own text change.  Returns ``ax``.
+    """
+    three_d = hasattr(ax, "zaxis")
+
+    def placed():
+        return (ax.get_xlim(), ax.get_ylim(), ax.get_zlim() if three_d else None, tuple(ax.get_position().bounds),
+                getattr(ax, "elev", None), getattr(ax, "azim", None), getattr(ax, "roll", None))
+
+    def state_of(artist):
+        if hasattr(artist, "get_texts"):        # a legend
+            return lambda: (placed(), tuple(t.get_text() for t in artist.get_texts()))
+        if hasattr(artist, "get_text"):
+            return lambda: (placed(), artist.get_text())
+        return placed
+
+    artists = [ax.xaxis, ax.yaxis] + ([ax.zaxis] if three_d else []) + list(static)
+    if legend and ax.get_legend() is not None:
+        artists.append(ax.get_legend())
+    for artist in artists:
+        draw_once(artist, state_of(artist))
+    return ax
+
+
+__all__ += ["draw_once", "freeze_axes_decorations"]
