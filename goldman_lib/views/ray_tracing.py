@@ -425,4 +425,9 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         return rt.render(scene, camera, size[0], size[1], full_depth, samples=samples, progress=progress)
 
     view.render_full = render_full
+    # the titles and the x label are placed once; the side axes' y label follows its tick labels
+    style.pin_layout(fig, rescaling=(ax_side,))
+    # the picture's title changes with depth and index only: rendered once per text, pasted while the
+    # pixel, the light or the safeguard moves (the side axes follow the tree: drawn afresh)
+    style.freeze_axes_decorations(ax_img, img_title)
     return view

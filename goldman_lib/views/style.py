@@ -151,7 +151,7 @@ def equal_3d_limits(ax, points) -> None:
 __all__ += ["equal_3d_limits"]
 
 
-def pin_layout(fig) -> None:
+def pin_layout(fig, rescaling=()) -> None:
     """Pin every axes' titles and axis labels of ``fig`` where matplotlib's automatic placement puts
     them now, so that a redraw does not place them again.
 
@@ -159,7 +159,9 @@ def pin_layout(fig) -> None:
     any top tick labels) and each axis label (clear of the tick labels): up to a third of the redraw
     of a small figure.  A view whose limits and tick labels do not change with its sliders calls this
     once, after ``tight_layout``; the picture is the same (the positions are kept in axes
-    coordinates, so they also hold at another dpi).  Not for views that rescale their axes.
+    coordinates, so they also hold at another dpi).  An axes whose limits follow the data is listed
+    in ``rescaling``: its title and x label are pinned all the same (neither depends on the tick
+    values: tick labels keep one height), its y label keeps following the widths of the tick labels.
 
     >>> fig, ax = new_axes(); _ = ax.set_title("t"); _ = ax.set_xlabel("x")
     >>> pin_layout(fig)
@@ -172,7 +174,7 @@ def pin_layout(fig) -> None:
         to_axes = ax.transAxes.inverted()
         for axis in (ax.xaxis, ax.yaxis):
             label = axis.label
-            if not label.get_text() or not label.get_visible():
+            if not label.get_text() or not label.get_visible() or (axis is ax.yaxis and ax in rescaling):
                 continue
             display = label.get_transform().transform(label.get_position())
             axis.set_label_coords(*to_axes.transform(display))
@@ -214,7 +216,7 @@ def draw_once(artist, state=None):
             return draw(renderer)
         key = (renderer.width, renderer.height, renderer.dpi, state() if state is not None else None)
         if cache.get("key") != key:
-            off = RendererAgg(int(renderer.width), int(renderer.height), renderer.dpi)
+            off = _offscreen(int(renderer.width), int(renderer.height), renderer.dpi)
             draw(off)
             rgba = np.asarray(off.buffer_rgba())
             rows, cols = np.flatnonzero(rgba[..., 3].any(axis=1)), np.flatnonzero(rgba[..., 3].any(axis=0))
@@ -234,6 +236,20 @@ def draw_once(artist, state=None):
 
     artist.draw = draw_or_paste
     return artist
+
+
+_OFFSCREEN: list = []   # the last transparent canvas draw_once rendered on (one, reused while the size holds)
+
+
+def _offscreen(width: int, height: int, dpi: float):
+    """A cleared transparent Agg renderer of this size and dpi (the one kept from last time if it fits)."""
+    from matplotlib.backends.backend_agg import RendererAgg
+
+    if _OFFSCREEN and (_OFFSCREEN[0].width, _OFFSCREEN[0].height, _OFFSCREEN[0].dpi) == (width, height, dpi):
+        _OFFSCREEN[0].clear()
+    else:
+        _OFFSCREEN[:] = [RendererAgg(width, height, dpi)]
+    return _OFFSCREEN[0]
 
 
 def freeze_axes_decorations(ax, *static, legend: bool = True):
