@@ -71,21 +71,23 @@ def _factories():
 
 def time_callback(view, empty=None) -> tuple[float, float | None, float | None]:
     """(seconds per update, seconds per update + full redraw or None for three.js views, seconds
-    per redraw of the ``empty`` figure timed in interleaved rounds with the callback, or None)."""
+    per redraw of the ``empty`` figure timed in interleaved rounds with the callback, or None).
+    With ``empty``, all three are CPU times from the same interleaved rounds."""
     values = itertools.cycle(view.sweep_values(n=5)[:50] or [view.values()])
     update = lambda: view.update(**next(values))  # noqa: E731
-    alone = best_time(update, repeat=5)
     if view.figure is None:
-        return alone, None, None
+        if empty is None:
+            return best_time(update, repeat=5), None, None
+        alone, base = best_cpu_times(update, empty.canvas.draw)
+        return alone, None, base
 
     def update_and_draw():
         update()
         view.figure.canvas.draw()
 
     if empty is None:
-        return alone, best_time(update_and_draw, repeat=5), None
-    drawn, base = best_cpu_times(update_and_draw, empty.canvas.draw)
-    return alone, drawn, base
+        return best_time(update, repeat=5), best_time(update_and_draw, repeat=5), None
+    return tuple(best_cpu_times(update, update_and_draw, empty.canvas.draw))
 
 
 def main(only: str | None = None):
