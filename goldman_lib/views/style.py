@@ -195,8 +195,9 @@ def draw_once(artist, state=None):
     is renders it once into a transparent bitmap (cropped to what it painted) and composites that
     bitmap in its place in the drawing order; the picture is the same (blending in two steps may
     round a pixel by one level in 255).  The bitmap is made again when the canvas size or dpi
-    changes, or when ``state()`` (a hashable summary of what the artist depends on, such as the
-    axes limits) does; other renderers (PDF, SVG) draw the artist itself.  Returns ``artist``.
+    changes, when the artist is marked stale (one of its own properties was set) or when ``state()``
+    (a hashable summary of what else it depends on, such as the axes limits) changes; other
+    renderers (PDF, SVG) draw the artist itself.  Returns ``artist``.
 
     >>> fig, ax = new_axes(); _ = ax.plot([0, 1], [0, 1], label="a line")
     >>> leg = draw_once(ax.legend())
@@ -215,7 +216,8 @@ def draw_once(artist, state=None):
         if not isinstance(renderer, RendererAgg):
             return draw(renderer)
         key = (renderer.width, renderer.height, renderer.dpi, state() if state is not None else None)
-        if cache.get("key") != key:
+        # stale: a property of the artist itself was set since it was last drawn (a new label, new ticks)
+        if cache.get("key") != key or artist.stale:
             off = _offscreen(int(renderer.width), int(renderer.height), renderer.dpi)
             draw(off)
             rgba = np.asarray(off.buffer_rgba())

@@ -125,3 +125,15 @@ def test_pin_layout_rescaling_keeps_the_y_label_following_its_tick_labels():
     ticks = [t.get_window_extent(renderer) for t in ax.get_yticklabels() if t.get_text()]
     assert label.x1 <= min(b.x0 for b in ticks)
     plt.close(fig)
+
+
+def test_a_property_set_on_a_frozen_artist_shows():
+    plain, ax_a, _ = figure(False)
+    frozen, ax_b, _ = figure(True)
+    frozen.canvas.draw()
+    for ax in (ax_a, ax_b):
+        ax.set_xlabel("a new label")        # the x axis: stale, rendered again
+        ax.set_yticks([-1.0, 0.0, 1.0])
+    frozen.canvas.draw()
+    assert_same_picture(pixels(plain), pixels(frozen))
+    plt.close(plain), plt.close(frozen)
