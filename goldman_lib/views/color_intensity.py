@@ -232,6 +232,9 @@ def shaded_sphere_view(ka: float = 0.15, kd: float = 0.7, ks: float = 0.5, expon
     light.drag_in(view, ax_side, plane="xz")
     view.light_control = light
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+    # axes, legend, titles and the eye's label stay as they are: rendered once, pasted at each redraw
+    style.freeze_axes_decorations(ax_img, ax_img.title)
+    style.freeze_axes_decorations(ax_side, ax_side.title, *ax_side.texts)
 
     def render_full(progress=None, size=FULL_SIZE, samples=FULL_SAMPLES, clamp=True, *, ka, kd, ks, n, colour, Ia,
                     **light_values):
@@ -360,4 +363,6 @@ def rgb_mixing_view(height: float = 0.3, intensity: float = 1.6, wall: str = "#f
                            title="§16.2 RGB: coloured lights add, a coloured surface filters", side=True)
     light.drag_in(view, ax, plane="xy")
     view.light_control = light
+    style.pin_layout(fig)       # fixed limits: the title and labels need not be placed again at each redraw
+    style.freeze_axes_decorations(ax, ax.title)   # axes and title: rendered once, pasted at each redraw
     return view

@@ -309,4 +309,6 @@ def pseudoperspective_view(eye_y: float = 1.0, eye_z: float = 0.0, plane_z: floa
                            title="perspective versus pseudoperspective (side view)")
     drag_sliders(view, left, [("eye_z", "eye_y")])     # drag the eye in the side view (z across, y up)
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+    for axes in (left, right):  # axes, legend and titles stay as they are: rendered once, pasted at each redraw
+        style.freeze_axes_decorations(axes, axes.title)
     return view

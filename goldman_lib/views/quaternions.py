@@ -413,6 +413,9 @@ def double_cover_view(t: float = 200.0) -> InteractiveView:
     body = _body_lines(ax3, COLOURS["u"])
     fig.tight_layout()
     style.pin_layout(fig)            # fixed limits: titles and labels need no new placing at each move
+    # axes, legend, titles and notes stay as they are at every move: rendered once, pasted at each redraw
+    for a in fig.axes:
+        style.freeze_axes_decorations(a, a.title, *a.texts)
 
     def update(t):
         q = qt.from_axis_angle(COVER_AXIS, t)
@@ -512,6 +515,11 @@ def slerp_s3_view(keys: str = "150° about x to 150° about y", t: float = 0.3) 
     nlerp_body = _body_lines(ax3, style.PALETTE["point"], "--", 1.4)
     fig.tight_layout()
     style.pin_layout(fig)            # the 2D panel's limits are fixed; the 3D panels show no ticks
+    # axes, legends, titles and the body's axis names stay as they are at a move of t (the S³ box is
+    # fitted again only with new keys): rendered once, pasted at each redraw
+    for a in (ax, ax_turn):
+        style.freeze_axes_decorations(a, a.title)
+    style.freeze_axes_decorations(ax3, ax3.title, *ax3.texts)
     shown = {"keys": None}
     fine = np.linspace(0.0, 1.0, 61)
 

@@ -241,5 +241,7 @@ def radiosity_view(solver: str = "progressive", smooth: bool = True) -> Interact
                                  "gs_k": {"solver": ["gauss_seidel"]}})
     light.drag_in(view, ax_map, plane="xy")
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+    for a in (ax_map, ax):      # axes, legend and title stay as they are: rendered once, pasted at each redraw
+        style.freeze_axes_decorations(a, a.title)
     view.scene, view.light = scene, light
     return view

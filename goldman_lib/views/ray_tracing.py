@@ -281,8 +281,11 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
                   for k, c in KIND_COLOURS.items()]
                + [Line2D([], [], color=_BLOCKED, linestyle="--", label="blocked shadow ray"),
                   Line2D([], [], color=_THROUGH_GLASS, linestyle="--", label="shadow ray through glass (k_t)")])
-    ax_side.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False,
-                   borderaxespad=0.2, handlelength=2.2)
+    side_legend = ax_side.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                                 frameon=False, borderaxespad=0.2, handlelength=2.2)
+    # the legend never changes (the side axes' limits follow the tree, but it is placed by the axes box):
+    # rendered once, pasted at each redraw
+    style.draw_once(side_legend, lambda: (tuple(ax_side.get_position().bounds),))
     legend = widgets.HTML("<small>Right: the ray tree in the plane of the primary ray and the first reflected or "
                           "refracted ray; each sphere is drawn where that plane cuts it.  A ray that leaves the "
                           "plane is drawn projected, broken where it passes a sphere it misses.</small>")
@@ -422,4 +425,9 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
         return rt.render(scene, camera, size[0], size[1], full_depth, samples=samples, progress=progress)
 
     view.render_full = render_full
+    # the titles and the x label are placed once; the side axes' y label follows its tick labels
+    style.pin_layout(fig, rescaling=(ax_side,))
+    # the picture's title changes with depth and index only: rendered once per text, pasted while the
+    # pixel, the light or the safeguard moves (the side axes follow the tree: drawn afresh)
+    style.freeze_axes_decorations(ax_img, img_title)
     return view

@@ -107,6 +107,8 @@ def shading_view(mode_a: str = "gouraud", mode_b: str = "phong", facets: int = 8
                            title="§21.2-21.4 shading modes side by side")
     control.drag_in(view, ax_scene, plane="xz")
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+    # the scene's axes, legend and title stay as they are: rendered once, pasted at each redraw
+    style.freeze_axes_decorations(ax_scene, ax_scene.title)
     return view
 
 
@@ -176,6 +178,9 @@ def mach_band_view(row: int = 86, facets: int = 6, show: str = "Gouraud and Phon
     ax_slope.legend(loc="lower right", fontsize=7)
     fig.tight_layout()
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+    # the plots' axes and legends and the pictures' titles stay as they are: rendered once, pasted
+    for ax in fig.axes:
+        style.freeze_axes_decorations(ax, ax.title)
     mesh_cache: dict = {}
 
     def mesh(n):

@@ -184,6 +184,8 @@ def csg_view(first: str = "ball A (left)", op: str = "difference", second: str =
     view = InteractiveView(controls=controls, views=[figure_widget(fig)], update=update, figure=fig,
                            title="§20.2 CSG by ray classification")
     style.pin_layout(fig)       # fixed limits: titles and labels need not be placed again at each redraw
+    for ax in (ax_img, ax_iv):  # the axes (not the titles, which follow the sliders): rendered once, pasted
+        style.freeze_axes_decorations(ax)
     return view
 
 

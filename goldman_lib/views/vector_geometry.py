@@ -414,6 +414,7 @@ def inside_outside_view(polygon=STAR, query=(0.2, 0.4), grid: int = 160, box: fl
     view.ax = ax
     drag_sliders(view, ax, [(f"x{k}", f"y{k}") for k in range(n)] + [("qx", "qy")])
     style.pin_layout(fig)       # fixed limits: the title need not be placed again at each redraw
+    style.freeze_axes_decorations(ax, ax.title)   # axes, legend and title: rendered once, pasted at each redraw
     return view
 
 

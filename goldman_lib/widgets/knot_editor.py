@@ -371,6 +371,9 @@ def _curve_editor(ctrl, degree, max_degree, preset, interior, weights, samples, 
     view.editor = editor
     view.ax = ax
     drag_sliders(view, ax, point_pairs(n_ctrl))
+    style.pin_layout(fig)        # fixed limits: titles and labels placed once; axes and titles rendered once
+    for a in (ax, axb):
+        style.freeze_axes_decorations(a, a.title)
     return view
 
 

@@ -151,7 +151,7 @@ def equal_3d_limits(ax, points) -> None:
 __all__ += ["equal_3d_limits"]
 
 
-def pin_layout(fig) -> None:
+def pin_layout(fig, rescaling=()) -> None:
     """Pin every axes' titles and axis labels of ``fig`` where matplotlib's automatic placement puts
     them now, so that a redraw does not place them again.
 
@@ -159,7 +159,9 @@ def pin_layout(fig) -> None:
     any top tick labels) and each axis label (clear of the tick labels): up to a third of the redraw
     of a small figure.  A view whose limits and tick labels do not change with its sliders calls this
     once, after ``tight_layout``; the picture is the same (the positions are kept in axes
-    coordinates, so they also hold at another dpi).  Not for views that rescale their axes.
+    coordinates, so they also hold at another dpi).  An axes whose limits follow the data is listed
+    in ``rescaling``: its title and x label are pinned all the same (neither depends on the tick
+    values: tick labels keep one height), its y label keeps following the widths of the tick labels.
 
     >>> fig, ax = new_axes(); _ = ax.set_title("t"); _ = ax.set_xlabel("x")
     >>> pin_layout(fig)
@@ -172,7 +174,7 @@ def pin_layout(fig) -> None:
         to_axes = ax.transAxes.inverted()
         for axis in (ax.xaxis, ax.yaxis):
             label = axis.label
-            if not label.get_text() or not label.get_visible():
+            if not label.get_text() or not label.get_visible() or (axis is ax.yaxis and ax in rescaling):
                 continue
             display = label.get_transform().transform(label.get_position())
             axis.set_label_coords(*to_axes.transform(display))
@@ -182,3 +184,101 @@ def pin_layout(fig) -> None:
 
 
 __all__ += ["pin_layout"]
+
+
+def draw_once(artist, state=None):
+    """Let a static ``artist`` (a legend, an axis with its ticks and grid, a title) be rendered once
+    and its pixels pasted at every later redraw of an Agg canvas (ipympl's, a PNG).
+
+    Matplotlib lays out and rasterises every text glyph by glyph at every draw: a legend of seven
+    entries costs as much as redrawing an empty figure.  A view whose sliders leave an artist as it
+    is renders it once into a transparent bitmap (cropped to what it painted) and composites that
+    bitmap in its place in the drawing order; the picture is the same (blending in two steps may
+    round a pixel by one level in 255).  The bitmap is made again when the canvas size or dpi
+    changes, when the artist is marked stale (one of its own properties was set) or when ``state()``
+    (a hashable summary of what else it depends on, such as the axes limits) changes; other
+    renderers (PDF, SVG) draw the artist itself.  Returns ``artist``.
+
+    >>> fig, ax = new_axes(); _ = ax.plot([0, 1], [0, 1], label="a line")
+    >>> leg = draw_once(ax.legend())
+    >>> fig.canvas.draw(); fig.canvas.draw()     # the second draw pastes the legend's pixels
+    >>> leg.get_texts()[0].get_text()
+    'a line'
+    """
+    from matplotlib.backends.backend_agg import RendererAgg
+
+    draw = artist.draw
+    cache: dict = {}
+
+    def draw_or_paste(renderer):
+        if not artist.get_visible():
+            return
+        if not isinstance(renderer, RendererAgg):
+            return draw(renderer)
+        key = (renderer.width, renderer.height, renderer.dpi, state() if state is not None else None)
+        # stale: a property of the artist itself was set since it was last drawn (a new label, new ticks)
+        if cache.get("key") != key or artist.stale:
+            off = _offscreen(int(renderer.width), int(renderer.height), renderer.dpi)
+            draw(off)
+            rgba = np.asarray(off.buffer_rgba())
+            rows, cols = np.flatnonzero(rgba[..., 3].any(axis=1)), np.flatnonzero(rgba[..., 3].any(axis=0))
+            if len(rows):
+                r0, r1, c0, c1 = rows[0], rows[-1] + 1, cols[0], cols[-1] + 1
+                # bottom-up rows, placed by the lower-left corner in display pixels
+                cache["pixels"] = (int(c0), int(renderer.height) - int(r1), rgba[r0:r1, c0:c1][::-1].copy())
+            else:
+                cache["pixels"] = None
+            cache["key"] = key
+        if cache["pixels"] is not None:
+            x, y, pixels = cache["pixels"]
+            gc = renderer.new_gc()
+            renderer.draw_image(gc, x, y, pixels)
+            gc.restore()
+        artist.stale = False
+
+    artist.draw = draw_or_paste
+    return artist
+
+
+_OFFSCREEN: list = []   # the last transparent canvas draw_once rendered on (one, reused while the size holds)
+
+
+def _offscreen(width: int, height: int, dpi: float):
+    """A cleared transparent Agg renderer of this size and dpi (the one kept from last time if it fits)."""
+    from matplotlib.backends.backend_agg import RendererAgg
+
+    if _OFFSCREEN and (_OFFSCREEN[0].width, _OFFSCREEN[0].height, _OFFSCREEN[0].dpi) == (width, height, dpi):
+        _OFFSCREEN[0].clear()
+    else:
+        _OFFSCREEN[:] = [RendererAgg(width, height, dpi)]
+    return _OFFSCREEN[0]
+
+
+def freeze_axes_decorations(ax, *static, legend: bool = True):
+    """:func:`draw_once` for what an axes with fixed limits draws the same at every redraw: its axes
+    (grid, ticks, tick labels, axis labels), its legend (unless ``legend=False``) and the ``static``
+    artists given (a title, an annotation: texts the sliders do not change).  Each is made again if
+    the limits, the axes' place, (3D) the viewing angles or its own text change.  Returns ``ax``.
+    """
+    three_d = hasattr(ax, "zaxis")
+
+    def placed():
+        return (ax.get_xlim(), ax.get_ylim(), ax.get_zlim() if three_d else None, tuple(ax.get_position().bounds),
+                getattr(ax, "elev", None), getattr(ax, "azim", None), getattr(ax, "roll", None))
+
+    def state_of(artist):
+        if hasattr(artist, "get_texts"):        # a legend
+            return lambda: (placed(), tuple(t.get_text() for t in artist.get_texts()))
+        if hasattr(artist, "get_text"):
+            return lambda: (placed(), artist.get_text())
+        return placed
+
+    artists = [ax.xaxis, ax.yaxis] + ([ax.zaxis] if three_d else []) + list(static)
+    if legend and ax.get_legend() is not None:
+        artists.append(ax.get_legend())
+    for artist in artists:
+        draw_once(artist, state_of(artist))
+    return ax
+
+
+__all__ += ["draw_once", "freeze_axes_decorations"]
