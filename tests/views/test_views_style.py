@@ -1,4 +1,4 @@
-"""views.style.draw_once / freeze_axes_decorations: a static artist is rendered once and its pixels
+"""widgets.style.draw_once / freeze_axes_decorations: a static artist is rendered once and its pixels
 pasted at later Agg redraws; the picture stays the picture drawn without them (within one level in
 255, from blending in two steps), and it is made again when what it depends on changes."""
 
@@ -14,7 +14,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.legend import Legend  # noqa: E402
 
-from goldman_lib.views import style  # noqa: E402
+from goldman_lib.widgets import style  # noqa: E402
 
 
 def figure(freeze: bool):
