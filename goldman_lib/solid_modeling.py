@@ -163,7 +163,7 @@ class BRep:
 
     @classmethod
     def from_mesh(cls, mesh, tol: float = 1e-9) -> "BRep":
-        """The B-rep of a polygon mesh in space (Goldman §30 to §20.3): its vertices ``(V, 3)`` and faces
+        """The B-rep of a polygon mesh in space (Goldman §30.3, §30.4 and §20.3): its vertices ``(V, 3)`` and faces
         as outer loops, in order, no rings; its counts, validity and volume then follow.
 
         >>> from goldman_lib import subdivision_surfaces as ss

@@ -307,7 +307,7 @@ class Mesh:
 
     @classmethod
     def from_brep(cls, brep) -> "Mesh":
-        """The polygon mesh of a B-rep's faces (Goldman §20.3 to §30): its vertices and outer loops, in
+        """The polygon mesh of a B-rep's faces (Goldman §20.3; §30.3, §30.4): its vertices and outer loops, in
         order (validated as any Mesh).  Raises ValueError for a B-rep whose faces have rings (holes),
         which a Mesh cannot hold.
 
