@@ -51,7 +51,7 @@ __all__ = [
     "smooth_join", "join_continuity",
     "variation_count", "curve_crossings", "convex_hull", "convex_hull_contains", "apply_affine",
     "patch_de_casteljau", "patch_evaluate_grid", "patch_grid", "patch_derivatives", "patch_normal",
-    "BezierCurve", "BezierPatch",
+    "BezierCurve", "BezierPatch", "CurveSampler", "curve_sampler",
 ]
 
 
@@ -838,6 +838,87 @@ class BezierCurve:
 
     def __repr__(self) -> str:
         return f"BezierCurve(degree={self.degree}, ctrl={self.ctrl.tolist()})"
+
+
+class CurveSampler:
+    """Bezier curves of one degree drawn at fixed parameters: the Bernstein form as one matrix
+    (Goldman §24.3), ``points = B @ ctrl`` with ``B[i, k] = B_k^n(t_i)``.
+
+    A view redraws its curve at the same parameters every time a control point moves; only the
+    control points change.  The basis at those parameters is computed once (by :func:`bernstein`),
+    and each curve is then one matrix product: the same points as :func:`de_casteljau` to rounding
+    (both are convex combinations on [0, 1]; tested to 1e-15 of the control points' size).  It is
+    the drawing path of the chapter 24-26 views.
+
+    degree: an int >= 0.  t: the parameters, any shape (outside [0, 1] extrapolates).  Calling it
+    with ctrl ``(degree + 1, d)`` returns ``t.shape + (d,)``.  Raises ValueError/TypeError for a bad
+    degree or t (as :func:`bernstein`), for ctrl of another degree, or for control points that
+    are not finite or whose curve overflows.
+
+    >>> draw = CurveSampler(2, [0.0, 0.5, 1.0])
+    >>> draw([[0, 0], [1, 2], [2, 0]]).tolist()
+    [[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]
+    """
+
+    def __init__(self, degree, t):
+        t = as_parameter(t, "t")
+        self.degree = within_budget(degree, "degree", cost=lambda v: _bernstein_cost(v, t.size),
+                                    what=f"the Bernstein basis at {t.size} parameter(s)", unit="values computed")
+        self.t = t
+        basis = bernstein(self.degree, t).reshape(-1, self.degree + 1)
+        basis.flags.writeable = False
+        self.basis = basis
+        self._convex = bool(t.size == 0 or (t.min() >= 0.0 and t.max() <= 1.0))
+        self._shape2 = (self.degree + 1, 2)          # the planar curves of the views take the fast path
+
+    def __call__(self, ctrl) -> np.ndarray:
+        if (self._convex and type(ctrl) is np.ndarray and ctrl.dtype == np.float64 and ctrl.shape == self._shape2
+                and np.abs(ctrl).max() < 1e300):
+            # The views' call, checked in one pass: finite control points (NaN fails the comparison)
+            # well inside float64, and parameters on [0, 1], so each point is a convex combination
+            # of them and cannot overflow.
+            return (self.basis @ ctrl).reshape(self.t.shape + (2,))
+        P = _ctrl(ctrl)
+        if P.shape[0] != self.degree + 1:
+            raise ValueError(f"ctrl must hold {self.degree + 1} control points (degree {self.degree}) for this sampler; "
+                             f"got shape {P.shape}")
+        with np.errstate(over="ignore", invalid="ignore"):
+            out = self.basis @ P
+        if not np.isfinite(out).all():
+            finite_result(out, "ctrl", why="is too large: its curve overflows float64")
+        return out.reshape(self.t.shape + (P.shape[1],))
+
+    def __repr__(self) -> str:
+        return f"CurveSampler(degree={self.degree}, parameters={self.t.size})"
+
+
+_SAMPLERS: dict[tuple[int, int], CurveSampler] = {}
+
+
+def curve_sampler(degree, samples) -> CurveSampler:
+    """The :class:`CurveSampler` of ``degree`` at ``samples`` equally spaced parameters on [0, 1],
+    made once and kept (Goldman §24.3): what a view calls on every redraw.
+
+    >>> curve_sampler(3, 400) is curve_sampler(3, 400)
+    True
+    >>> curve_sampler(1, 3)([[0, 0], [2, 4]]).tolist()
+    [[0.0, 0.0], [1.0, 2.0], [2.0, 4.0]]
+    """
+    if type(degree) is int and type(samples) is int:       # the views' call: a lookup, checked on a miss
+        sampler = _SAMPLERS.get((degree, samples))
+        if sampler is not None:
+            return sampler
+    degree = within_budget(degree, "degree", cost=lambda v: 2 * (v + 1), what="the sampled Bernstein basis at 2 or more parameters",
+                           unit="values", minimum=0)
+    samples = within_budget(samples, "samples", cost=lambda v: (degree + 1) * v, what="the sampled Bernstein basis",
+                            unit="values", minimum=2)
+    key = (degree, samples)
+    sampler = _SAMPLERS.get(key)
+    if sampler is None:
+        if len(_SAMPLERS) >= 64:          # a bounded cache: views use a handful of (degree, samples)
+            _SAMPLERS.clear()
+        sampler = _SAMPLERS[key] = CurveSampler(key[0], np.linspace(0.0, 1.0, key[1]))
+    return sampler
 
 
 class BezierPatch:

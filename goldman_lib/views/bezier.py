@@ -124,7 +124,7 @@ def de_casteljau_explorer(ctrl=DEFAULT_CUBIC, t: float = 0.4, box=(-1.0, 5.0, -1
     def update(t, **coords):
         pts = points_from(coords, n + 1)
         steps = bezier.de_casteljau_steps(pts, t)
-        crv = bezier.de_casteljau(pts, samples)
+        crv = bezier.curve_sampler(len(pts) - 1, samples.size)(pts)
         polygon.set_data(pts[:, 0], pts[:, 1])
         curve.set_data(crv[:, 0], crv[:, 1])
         for line, level in zip(levels, steps[1:-1]):
@@ -172,7 +172,7 @@ def degree_elevation_view(ctrl=DEFAULT_CUBIC, times: int = 2, max_times: int = 1
     def update(times, **coords):
         times = as_int(times, "times", minimum=0)
         P = points_from(coords, n + 1)
-        crv = bezier.de_casteljau(P, samples)
+        crv = bezier.curve_sampler(len(P) - 1, samples.size)(P)
         pts = bezier.elevate_degree(P, times) if times else P
         original.set_data(P[:, 0], P[:, 1])
         curve.set_data(crv[:, 0], crv[:, 1])

@@ -145,7 +145,7 @@ def bezier_subdivision_view(ctrl=DEFAULT_CUBIC, depth: int = 1, t: float = 0.5, 
         depth = as_int(depth, "depth", minimum=0, maximum=max_depth)
         P = points_from(coords, n1)
         polys = _split_recursively(P, depth, t)
-        crv = bezier.de_casteljau(P, samples)
+        crv = bezier.curve_sampler(len(P) - 1, samples.size)(P)
         polygon.set_data(P[:, 0], P[:, 1])
         curve.set_data(crv[:, 0], crv[:, 1])
         pieces.set_segments(list(polys))
@@ -207,7 +207,7 @@ def adaptive_rendering_view(ctrl=WAVY, digits: int = 2) -> InteractiveView:
         P = points_from(coords, n1)
         tol = 10.0 ** (-digits)
         t, pts = bezier.render_by_subdivision(P, tol)
-        dense_pts = bezier.de_casteljau(P, dense)
+        dense_pts = bezier.curve_sampler(len(P) - 1, dense.size)(P)
         polygon.set_data(P[:, 0], P[:, 1])
         curve.set_data(dense_pts[::5, 0], dense_pts[::5, 1])
         poly.set_data(pts[:, 0], pts[:, 1])
@@ -258,7 +258,8 @@ def intersection_view(case: str = "two cubics, three crossings", level: int = 3,
 
     def frame(a, b):
         # the view fits both curves over the whole shift range, so it does not jump while shifting
-        pts = [bezier.de_casteljau(a, samples)] + [bezier.de_casteljau(b, samples) + [0.0, dy] for dy in (-1.0, 1.0)]
+        draw_a, draw_b = (bezier.curve_sampler(len(P) - 1, samples.size) for P in (a, b))
+        pts = [draw_a(a)] + [draw_b(b) + [0.0, dy] for dy in (-1.0, 1.0)]
         pts = np.concatenate(pts)
         ax.set_xlim(pts[:, 0].min() - 0.3, pts[:, 0].max() + 0.3)
         ax.set_ylim(pts[:, 1].min() - 0.3, pts[:, 1].max() + 0.3)
@@ -278,7 +279,7 @@ def intersection_view(case: str = "two cubics, three crossings", level: int = 3,
         for line, P in ((pa, a), (pb, b)):
             line.set_data(P[:, 0], P[:, 1])
         for line, P in ((ca, a), (cb, b)):
-            pts = bezier.de_casteljau(P, samples)
+            pts = bezier.curve_sampler(len(P) - 1, samples.size)(P)
             line.set_data(pts[:, 0], pts[:, 1])
         ba, bb, ia, ib = bezier.intersection_boxes(a, b, level)
         boxes_a.set_verts(_box_vertices(ba))

@@ -93,7 +93,7 @@ def blossom_view(ctrl=DEFAULT_CUBIC, args=(0.2, 0.5, 0.8), low: float = 0.0, hig
         u = np.array([values[name] for name in names], dtype=float)
         Q = points_from(values, n + 1)
         steps = bl.blossom_steps(Q, u)
-        crv = bezier.de_casteljau(Q, samples)
+        crv = bezier.curve_sampler(len(Q) - 1, samples.size)(Q)
         polygon.set_data(Q[:, 0], Q[:, 1])
         curve.set_data(crv[:, 0], crv[:, 1])
         for line, level in zip(lines, steps[1:-1]):

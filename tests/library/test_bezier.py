@@ -589,3 +589,72 @@ def test_de_casteljau_ends_are_the_end_points_exactly(n):
     out = gb.de_casteljau(P, t)
     assert (out[0] == P[0]).all() and (out[-1] == P[-1]).all()
     assert (gb.de_casteljau(P, 0.0) == P[0]).all() and (gb.de_casteljau(P, 1.0) == P[-1]).all()
+
+
+# -- CurveSampler: the views' drawing path (Bernstein form as one matrix, §24.3) -------------------
+
+@pytest.mark.parametrize("degree", [0, 1, 2, 3, 5, 7, 12])
+@pytest.mark.parametrize("dim", [1, 2, 3])
+def test_curve_sampler_draws_de_casteljaus_points(degree, dim):
+    rng = np.random.default_rng(100 * degree + dim)
+    P = rng.uniform(-50, 50, size=(degree + 1, dim))
+    t = np.linspace(0.0, 1.0, 401)
+    got = gb.curve_sampler(degree, 401)(P)
+    assert got.shape == (401, dim)
+    np.testing.assert_allclose(got, gb.de_casteljau(P, t), rtol=0, atol=2e-14 * 50 * (degree + 1))
+    # the endpoints interpolate the end control points (B_0(0) = B_n(1) = 1 exactly)
+    np.testing.assert_array_equal(got[0], P[0])
+    np.testing.assert_array_equal(got[-1], P[-1])
+
+
+def test_curve_sampler_against_numpy_polynomial_power_form():
+    """A cubic in Bernstein form equals its power form, computed by numpy.polynomial."""
+    P = np.array([[0.0, 0.0], [1.0, 3.0], [4.0, 3.0], [5.0, 0.0]])
+    t = np.array([0.0, 0.1, 0.5, 0.9, 1.0, 1.5, -0.5])
+    # power-form coefficients of sum_k C(3,k) t^k (1-t)^(3-k) P_k, written out
+    c0, c1, c2, c3 = P[0], 3 * (P[1] - P[0]), 3 * (P[2] - 2 * P[1] + P[0]), P[3] - 3 * P[2] + 3 * P[1] - P[0]
+    want = np.stack([np.polynomial.polynomial.polyval(t, [c0[i], c1[i], c2[i], c3[i]]) for i in range(2)], axis=1)
+    np.testing.assert_allclose(gb.CurveSampler(3, t)(P), want, rtol=0, atol=1e-13)
+    np.testing.assert_allclose(gb.CurveSampler(3, t)(P)[2], [2.5, 2.25], rtol=0, atol=1e-15)
+
+
+def test_curve_sampler_keeps_the_shape_of_t_and_takes_lists():
+    draw = gb.CurveSampler(1, [[0.0, 1.0], [0.25, 0.5]])
+    assert draw([[0, 0], [4, 8]]).tolist() == [[[0.0, 0.0], [4.0, 8.0]], [[1.0, 2.0], [2.0, 4.0]]]
+
+
+def test_curve_sampler_is_made_once_per_degree_and_size():
+    assert gb.curve_sampler(3, 400) is gb.curve_sampler(3, 400)
+    assert gb.curve_sampler(3, 400) is not gb.curve_sampler(2, 400)
+    assert gb.curve_sampler(np.int64(3), 400.0) is gb.curve_sampler(3, 400)
+
+
+@pytest.mark.parametrize("ctrl, exc, match", [
+    (np.array([[0.0, np.nan], [1, 1], [2, 2], [3, 3]]), ValueError, r"ctrl must be finite; ctrl\[0, 1\] is nan"),
+    (np.array([[0.0, 0], [1, np.inf], [2, 2], [3, 3]]), ValueError, r"ctrl must be finite"),
+    (np.ones((3, 2)), ValueError, r"ctrl must hold 4 control points \(degree 3\)"),
+    (np.ones((4, 0)), ValueError, r"at least one coordinate"),
+    ([[0, 0], [1, 1], [2, 2], [3, "a"]], TypeError, r"ctrl must be a numeric"),
+])
+def test_curve_sampler_refuses_bad_control_points(ctrl, exc, match):
+    with pytest.raises(exc, match=match):
+        gb.curve_sampler(3, 50)(ctrl)
+
+
+def test_curve_sampler_reports_an_overflow_outside_the_unit_interval():
+    with pytest.raises(ValueError, match="t is too large in magnitude"):      # the basis itself overflows
+        gb.CurveSampler(3, [0.5, 1e103])
+    draw = gb.CurveSampler(3, [0.5, 1e100])                                   # a finite basis, ~1e300
+    with pytest.raises(ValueError, match="ctrl is too large"):
+        draw([[0.0, 0], [1e10, 0], [0, 1e10], [1e10, 1e10]])
+
+
+@pytest.mark.parametrize("args, exc, match", [
+    ((-1, 10), ValueError, "degree must be >= 0"),
+    ((2.5, 10), TypeError, "degree must be an integer"),
+    ((3, 1), ValueError, "samples must be >= 2"),
+    ((3, 10**9), ValueError, "samples must be <="),
+])
+def test_curve_sampler_refuses_bad_degree_or_size(args, exc, match):
+    with pytest.raises(exc, match=match):
+        gb.curve_sampler(*args)

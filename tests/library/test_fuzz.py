@@ -195,6 +195,7 @@ def _extra_examples() -> dict:
     _ball, _ball2 = simple_surfaces.Sphere([-0.5, 0, 0], 1.0), simple_surfaces.Sphere([0.5, 0, 0], 1.0)
     return {
         "bezier.BezierCurve": ((cubic,), {}),
+        "bezier.CurveSampler": ((3, [0.0, 0.25, 1.0]), {}),
         # chapter 23
         "radiosity.Patches": (([[0, 0, 0], [0, 1, 1]], [[1, 0, 0], [1, 0, 0]], [[0, 1, 0], [0, -1, 0]],
                                [[0.5, 0.5, 0.5]] * 2, [[1.0, 1.0, 1.0], [0.0, 0.0, 0.0]]), {}),
