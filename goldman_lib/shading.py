@@ -63,9 +63,7 @@ def unit_newell_normal(polygon) -> np.ndarray:
     """
     P = as_points(polygon, "polygon", dim=3, min_count=3)
     with np.errstate(over="ignore", invalid="ignore"):
-        n = finite_result(frames.newell(P), "polygon")            # the one Newell kernel, then unit length
-        length = finite_result(np.linalg.norm(n), "polygon")
-    return n / length if length > 0 else n
+        return finite_result(frames.unit_newell(P), "polygon")      # NaN (named) where the area overflows
 
 
 def face_normals(positions, triangles) -> np.ndarray:

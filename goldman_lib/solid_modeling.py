@@ -267,7 +267,7 @@ class BRep:
             out.append(f"vertices {dangling} are in no face (dangling vertices)")
         for f in range(self.F):
             pts = self.vertices[list(self.faces[f])]
-            normal = _newell(pts)
+            normal = frames.unit_newell(pts)
             if not np.any(normal):
                 out.append(f"face {f} has no area (its outer loop is degenerate)")
                 continue
@@ -322,12 +322,6 @@ class BRep:
         for drawing."""
         corners, sizes = meshes.flatten([f for i, f in enumerate(self.faces) if i not in self.rings])
         return meshes.fan_triangles(corners, sizes).reshape(-1, 3)
-
-
-def _newell(pts: np.ndarray) -> np.ndarray:
-    n = frames.newell(pts)
-    length = np.linalg.norm(n)
-    return n / length if length > 0 else n
 
 
 def cube(size: float = 1.0, center=(0.0, 0.0, 0.0)) -> BRep:

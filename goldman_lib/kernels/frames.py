@@ -80,6 +80,23 @@ def newell(P: np.ndarray) -> np.ndarray:
                     axis=-1)
 
 
+def unit_newell(P: np.ndarray) -> np.ndarray:
+    """Newell's unit normal of one polygon ``(k, 3)`` (Goldman §21.1, §20.3): :func:`newell` divided
+    by its length (``numpy.linalg.norm``, or :func:`norm` where the squares overflow or
+    underflow), zeros for a polygon without area; NaN where :func:`newell` itself overflowed.  Callers:
+    ``shading.unit_newell_normal`` (checked) and ``solid_modeling``'s planarity test of B-rep faces.
+
+    >>> unit_newell(np.array([[0.0, 0, 0], [0, 0, 1], [0, 1, 0]])).tolist()
+    [-1.0, 0.0, 0.0]
+    """
+    n = newell(P)
+    with np.errstate(over="ignore", under="ignore"):
+        length = np.linalg.norm(n)
+    if not (np.isfinite(length) and length > 1e-150) and np.isfinite(n).all():
+        length = norm(n)                  # |n|^2 overflowed or underflowed: scale before squaring
+    return n / length if length > 0 else n
+
+
 def slerp(a: np.ndarray, b: np.ndarray, t: np.ndarray, la=None, lb=None, cos=None) -> np.ndarray:
     """Spherical linear interpolation ``sin((1-t)θ)/sin θ a + sin(tθ)/sin θ b`` of nonzero vectors a, b
     ``(..., d)`` of equal length that are not opposite, at t ``(...)`` (Goldman §11.6); linear

@@ -454,3 +454,19 @@ def test_de_boor_pyramid_per_level_is_node_by_node_bit_for_bit():
         pyramids.de_boor_pyramid(P.copy(), node, p, top=n, record=a)
         pyramids.de_boor_pyramid(P.copy(), level, p, top=n, record=b, per_level=True)
     assert all(np.array_equal(u, v, equal_nan=True) for u, v in zip(a, b))
+
+
+def test_unit_newell_is_newell_over_its_length_and_right_where_the_squares_overflow():
+    """kernels.frames.unit_newell: the one unit Newell normal (shading.unit_newell_normal and the B-rep
+    faces of solid_modeling): bit for bit newell / numpy.linalg.norm on ordinary polygons, zeros for
+    a polygon without area, and the right direction where |N|^2 overflows."""
+    from goldman_lib.kernels import frames as fr
+
+    rng = np.random.default_rng(5)
+    for _ in range(200):
+        P = rng.normal(size=(int(rng.integers(3, 8)), 3)) * 10.0 ** rng.integers(-5, 6)
+        n = fr.newell(P)
+        np.testing.assert_array_equal(fr.unit_newell(P), n / np.linalg.norm(n))
+    assert fr.unit_newell(np.array([[0.0, 0, 0], [1, 1, 1], [2, 2, 2]])).tolist() == [0.0, 0.0, 0.0]
+    big = np.array([[0.0, 0, 0], [0, 1e154, 0], [0, 0, 1e154]])         # |N|^2 = 1e616 overflows
+    assert fr.unit_newell(big).tolist() == [1.0, 0.0, 0.0]
