@@ -65,8 +65,8 @@ The map: each kernel, what it computes, the book section it serves, and who call
         ``quaternions``, ``mass_points``, ``lighting``, ``ray_tracing``.
     ``unit_rows``, ``row_dots`` (§16.5): ``lighting`` (``unit_rows`` and the shading model),
         ``ray_tracing``'s inner levels (reflected and refracted directions), ``vector_geometry``.
-    ``newell`` (§11.4, §21.1): Newell's normal, unnormalised: ``vector_geometry.newell_normal``,
-        ``shading.newell_face_normals``; ``unit_newell`` (§20.3, §21.1), of unit length:
+    ``newell`` (§11.4, §21.1): Newell's normal, unnormalised: ``vector_geometry.newell_normal``;
+        ``unit_newell`` (§20.3, §21.1), of unit length:
         ``shading.unit_newell_normal`` (checked) and the planarity test of ``solid_modeling``'s B-rep faces.
     ``slerp`` (§11.6, §21.4.4): ``vector_geometry.slerp`` (checked) and, per pixel, Phong shading with
         slerp (``shading._slerp_pair``).
