@@ -281,11 +281,15 @@ def test_project_checker_reports_whatever_the_learners_function_does():
     def deep(x):
         return deep(x)
 
+    # built here, not inside the timed call: making 100,000 nested lists in a long-lived test worker
+    # can set off full garbage collections that, beside two browsers, once took over the 2 s limit
+    deeply_nested = nested(100_000)
+
     for f, says in [(exits, "raised SystemExit ('3')"), (runtime, "raised RuntimeError ('boom')"),
                     (unprintable, "raised Unprintable"), (deep, "recursed too deeply"),
                     (lambda x: 10 ** 400, "too large a number"), (lambda x: 2 * x + 1j, "imaginary part"),
                     (lambda x: RaisingFloat(), "raised RuntimeError"), (lambda x: "x" * 10_000_000, "characters"),
-                    (lambda x: nested(100_000), "nested")]:
+                    (lambda x: deeply_nested, "nested")]:
         r = _run(f)
         assert not r.correct and r.answered and says in r.message and len(r.message) < 500, (says, r)
 
