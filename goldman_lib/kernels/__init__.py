@@ -98,6 +98,9 @@ The map: each kernel, what it computes, the book section it serves, and who call
     ``flatten``, ``edge_table``, ``fan_triangles`` (§20.3, §30.4): faces as flat corners, their distinct
         edges, their fans: ``subdivision_surfaces.Mesh`` (``edges``, ``edge_faces``, ``triangulate``) and
         ``solid_modeling.BRep`` (``edges``, ``triangles``); ``BRep.from_mesh`` and ``Mesh.from_brep`` convert.
+    ``same_direction_edges`` (§20.3, §30.4): the directed edges two faces run the same way, the one
+        orientation test: ``subdivision_surfaces.Mesh`` (its check on construction) and
+        ``solid_modeling.BRep.problems``.
     ``rasterise`` (§21.2-21.3, §22.2): the one scan conversion: ``rasteriser.rasterise_triangles`` and
         ``rasteriser.gouraud_triangle`` (checked), ``shading.render``, ``hidden_surfaces``' painter's coverage.
 

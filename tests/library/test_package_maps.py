@@ -45,3 +45,23 @@ def test_views_holds_only_chapters_and_widgets_only_the_framework():
     widgets = set(_modules(goldman_lib.widgets, private=True))
     assert not views & widgets, views & widgets
     assert not [n for n in views | widgets if n.startswith("_")]
+
+
+def test_the_kernels_map_names_every_kernel_in_its_modules_section():
+    """goldman_lib.kernels' docstring is where a kernel is found: every public callable of each kernel
+    module is named in that module's section of the map (with its callers beside it)."""
+    import importlib
+
+    import goldman_lib.kernels as kernels
+
+    doc = kernels.__doc__
+    missing = []
+    modules = [name for name in kernels.__all__ if name != "number"]
+    assert len(modules) >= 7
+    for name in modules:
+        module = importlib.import_module(f"goldman_lib.kernels.{name}")
+        start = doc.index(f"goldman_lib.kernels.{name}`")
+        end = doc.find(":mod:", start + 1)
+        section = doc[start:end if end > 0 else None]
+        missing += [f"{name}.{k}" for k in module.__all__ if callable(getattr(module, k)) and f"``{k}``" not in section]
+    assert not missing, f"kernels missing from the map in goldman_lib/kernels/__init__.py: {missing}"
