@@ -280,7 +280,7 @@ def ray_tracing_view(depth: int = 3, index: float = 1.5, px: int = 52, py: int =
                + [Line2D([], [], color=c, linestyle="--" if k == "shadow" else "-", label=f"{k} ray")
                   for k, c in KIND_COLOURS.items()]
                + [Line2D([], [], color=_BLOCKED, linestyle="--", label="blocked shadow ray"),
-                  Line2D([], [], color=_THROUGH_GLASS, linestyle="--", label="shadow ray through glass (k_t)")])
+                  Line2D([], [], color=_THROUGH_GLASS, linestyle="--", label="shadow ray through\nglass (k_t)")])
     side_legend = ax_side.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
                                  frameon=False, borderaxespad=0.2, handlelength=2.2)
     # the legend never changes (the side axes' limits follow the tree, but it is placed by the axes box):
