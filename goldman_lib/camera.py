@@ -117,6 +117,23 @@ class Camera:
         object.__setattr__(self, "near", near)
         object.__setattr__(self, "_frame", ViewFrame(E, n, right, np.cross(right, n)))
 
+    @classmethod
+    def framing(cls, eye, target, half_height, **kwargs) -> "Camera":
+        """The camera at ``eye`` looking at ``target`` whose image spans ``[-half_height, half_height]``
+        vertically in the plane through ``target`` square to the view (Goldman §17.2): its field of
+        view is ``2 atan(half_height / |target - eye|)``.  Other keywords (``up``, ``width``,
+        ``height``, ``near``) go to the camera as they are.
+
+        >>> round(Camera.framing((0, 0, 6), (0, 0, 0), 6.0, up=(0, 1, 0)).fov, 9)
+        90.0
+        """
+        E = as_points(eye, "eye", ndim=1, dim=3)
+        T = as_points(target, "target", ndim=1, dim=3)
+        half = as_float(half_height, "half_height", positive=True)
+        with np.errstate(over="ignore", invalid="ignore"):
+            distance = finite_result(np.linalg.norm(T - E), "target", why="is too far from eye")
+        return cls(E, T, fov=float(np.degrees(2 * np.arctan2(half, distance))), **kwargs)
+
     @property
     def frame(self) -> ViewFrame:
         """The eye and the unit ``view``, ``right`` and ``up`` directions (read-only arrays are not

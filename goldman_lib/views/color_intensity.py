@@ -63,11 +63,10 @@ def camera(size: int | None = None) -> Camera:
     (False, 160)
     """
     if size is None:
-        return Camera(EYE, (0.0, 0.0, 0.0), up=(0.0, 1.0, 0.0), fov=float(np.degrees(2 * np.arctan2(WINDOW, EYE[2]))))
+        return Camera.framing(EYE, (0.0, 0.0, 0.0), WINDOW, up=(0.0, 1.0, 0.0))
     size = _size(size)
     half = WINDOW * size / (size - 1)                   # the window's half-side at the pixels' outer edges
-    return Camera(EYE, (0.0, 0.0, 0.0), up=(0.0, 1.0, 0.0), fov=float(np.degrees(2 * np.arctan2(half, EYE[2]))),
-                  width=size, height=size)
+    return Camera.framing(EYE, (0.0, 0.0, 0.0), half, up=(0.0, 1.0, 0.0), width=size, height=size)
 
 
 def _size(size, name="size") -> int:

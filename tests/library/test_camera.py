@@ -196,3 +196,18 @@ def test_the_frame_is_orthonormal_and_looks_at_the_target():
 def test_frustum_slopes_refuses_a_guard_below_one():
     with pytest.raises(ValueError, match="guard must be in"):
         Camera(eye=(0, -5, 0), target=(0, 0, 0)).frustum_slopes(0.5)
+
+
+def test_framing_puts_the_images_top_edge_at_half_height_in_the_targets_plane():
+    cam = Camera.framing((0.0, -5.0, 0.0), (0.0, 0.0, 0.0), 2.0, width=10, height=10)
+    d = cam.pixel_directions(4.5, -0.5)              # the centre of the image's top edge
+    t = 5.0 / d[1]                                   # where the ray meets the plane y = 0
+    assert abs(t * d[2] - 2.0) < 1e-12 and abs(t * d[0]) < 1e-12
+    assert abs(Camera.framing((0, 0, 6), (0, 0, 0), 6.0, up=(0, 1, 0)).fov - 90.0) < 1e-12
+
+
+@pytest.mark.parametrize("half, exc, match", [(0.0, ValueError, "half_height"), (-1.0, ValueError, "half_height"),
+                                              ("a", TypeError, "half_height")])
+def test_framing_refuses_a_bad_half_height(half, exc, match):
+    with pytest.raises(exc, match=match):
+        Camera.framing((0, -5, 0), (0, 0, 0), half)
